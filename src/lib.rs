@@ -1,0 +1,31 @@
+//! Zeitner: constrained mechanical systems from plain Rust expressions.
+//!
+//! Write the unconstrained equations of motion `M(q,t) q'' = F(q, q', t)` and the constraints
+//! `g(q, q', t) = 0` as an `impl` block marked [`constrained_system`]; the macro differentiates
+//! them at compile time and implements [`ConstrainedSystem`]; a [`Simulator`] integrates them
+//! with W. Zeitner's constant-multiplier method.
+//!
+//! ```
+//! use zeitner::{constrained_system, Options, Simulator, Vector};
+//!
+//! /// A point mass on a rod of length `l`, in Cartesian coordinates.
+//! pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+//!
+//! #[constrained_system]
+//! impl Pendulum {
+//!     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+//!     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+//!     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+//! }
+//!
+//! let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+//! let q0 = Vector::<2>::new(1.0, 0.0);
+//! let mut sim = Simulator::new(&pendulum, q0, Vector::zeros(), 0.0, Options::default()).unwrap();
+//! sim.advance_to(1.0, |_| {}).unwrap();
+//! let end = sim.last().end;
+//! assert!((end.q.norm() - 1.0).abs() < 1e-9);
+//! ```
+#![no_std]
+
+pub use zeitner_macros::constrained_system;
+pub use zeitner_runtime::*;

@@ -1,0 +1,391 @@
+//! Expansion: the scheduled programs as an `impl ConstrainedSystem<N, Z>`.
+
+use proc_macro2::{Literal, Span, TokenStream};
+use quote::{format_ident, quote, quote_spanned};
+use zeitner_symbolic::{Binary, Code, CodeCond, Compare, OpCounts};
+
+use crate::check;
+use crate::errors::Errors;
+use crate::lower::{self, Call, Lowerer, VarKind, Vars};
+use crate::model::Model;
+use crate::symbolic::{self, Generated, Scene};
+
+/// The whole attribute: the user's impl, unchanged, followed by the generated trait impl, or by
+/// the errors when the model is bad.
+pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
+    let mut errors = Errors::new();
+    if !attr.is_empty() {
+        errors.error_spanned_by(&attr, "#[constrained_system] takes no arguments");
+    }
+    let item_impl: syn::ItemImpl = match syn::parse2(item.clone()) {
+        Ok(item_impl) => item_impl,
+        Err(_) => {
+            errors.error_spanned_by(
+                &item,
+                "#[constrained_system] goes on an `impl Type { .. }` block holding `mass`, `force` and `constraints`",
+            );
+            let compile_errors = errors.into_compile_errors();
+            return quote!(#item #compile_errors);
+        }
+    };
+    match generate(&item_impl, &mut errors) {
+        Some(generated) if errors.is_empty() => quote!(#item_impl #generated),
+        _ => {
+            let compile_errors = errors.into_compile_errors();
+            quote!(#item_impl #compile_errors)
+        }
+    }
+}
+
+fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
+    let model = Model::from_item(item, errors);
+    let sizes = check::sizes(&model, errors)?;
+    let mut graph = zeitner_symbolic::Graph::new();
+    let mut vars = Vars::new(sizes.n);
+    let mut calls = Vec::new();
+    let mut lowerer = Lowerer {
+        graph: &mut graph,
+        vars: &mut vars,
+        calls: &mut calls,
+        errors,
+    };
+    let lowered: Vec<_> = model
+        .functions
+        .iter()
+        .filter_map(|f| lowerer.lower_function(f))
+        .collect();
+    if !errors.is_empty() {
+        return None;
+    }
+    let scene = symbolic::build(&model, sizes, &lowered, &mut graph, &mut vars, errors)?;
+    Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
+}
+
+fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call]) -> TokenStream {
+    let rt = quote!(::zeitner::__private);
+    let n = scene.sizes.n;
+    let z = scene.sizes.z();
+    let r = scene.sizes.r;
+    let emitter = Emitter { vars, calls };
+    let methods = scene.functions.iter().map(|generated| {
+        let method = format_ident!("{}", generated.method);
+        let body = emitter.body(generated, &rt);
+        let (arguments, output) = signature(generated.method, n, z, &rt);
+        quote! {
+            #[inline]
+            fn #method(&self, #arguments) -> #output {
+                #body
+            }
+        }
+    });
+    let (mass_type, mass_kind) = match (scene.full_mass, scene.mass_is_constant) {
+        (false, true) => (quote!(#rt::DiagonalMass<#n>), quote!(ConstantDiagonal)),
+        (false, false) => (quote!(#rt::DiagonalMass<#n>), quote!(Diagonal)),
+        (true, true) => (quote!(#rt::FullMass<#n>), quote!(ConstantFull)),
+        (true, false) => (quote!(#rt::FullMass<#n>), quote!(Full)),
+    };
+    let summaries = scene.functions.iter().map(|g| function_summary(g, &rt));
+    let k = scene.sizes.k;
+    let mass_is_constant = scene.mass_is_constant;
+    let time_dependent = scene.time_dependent;
+    quote! {
+        #[allow(unused_variables, clippy::all)]
+        impl #rt::ConstrainedSystem<#n, #z> for #self_ty {
+            const POSITION_CONSTRAINTS: usize = #r;
+            const MASS_IS_CONSTANT: bool = #mass_is_constant;
+            const SUMMARY: #rt::SceneSummary = #rt::SceneSummary {
+                coordinates: #n,
+                position_constraints: #r,
+                velocity_constraints: #k,
+                mass: #rt::MassKind::#mass_kind,
+                time_dependent: #time_dependent,
+                functions: &[#(#summaries),*],
+            };
+            type Mass = #mass_type;
+            #(#methods)*
+        }
+    }
+}
+
+fn signature(method: &str, n: usize, z: usize, rt: &TokenStream) -> (TokenStream, TokenStream) {
+    let vec_n = quote!(#rt::Vector<#n>);
+    let state = quote!(q: &#vec_n, v: &#vec_n, t: f64);
+    let square = quote!(#rt::Matrix<#n, #n>);
+    match method {
+        "mass_matrix" => (quote!(q: &#vec_n, t: f64), quote!(Self::Mass)),
+        "applied_force" => (state, vec_n),
+        "constraint_residual" | "constraint_rate" | "constraint_acceleration_bias" => {
+            (state, quote!(#rt::Vector<#z>))
+        }
+        "constraint_jacobian" | "constraint_position_partials" => {
+            (state, quote!(#rt::Matrix<#z, #n>))
+        }
+        "force_jacobians" => (state, quote!((#square, #square))),
+        "constraint_force_jacobians" => (
+            quote!(#state, lambda: &#rt::Vector<#z>),
+            quote!((#square, #square)),
+        ),
+        "mass_jacobian_product" => (quote!(q: &#vec_n, t: f64, a: &#vec_n), square),
+        other => unreachable!("no signature for generated method {other}"),
+    }
+}
+
+fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
+    let name = generated.method;
+    let blocks = generated.blocks.iter().map(|block| {
+        let name = block.name;
+        let (rows, cols) = (block.rows, block.cols);
+        let nonzeros = block
+            .entries
+            .iter()
+            .filter(|e| !is_zero_entry(generated, e.2))
+            .map(|&(row, col, _, _)| quote!((#row, #col)));
+        quote!(#rt::BlockSummary { name: #name, rows: #rows, cols: #cols, nonzeros: &[#(#nonzeros),*] })
+    });
+    let ops = op_counts(&generated.program.op_counts(), rt);
+    let unshared = op_counts(&generated.unshared, rt);
+    quote!(#rt::FunctionSummary { name: #name, blocks: &[#(#blocks),*], ops: #ops, ops_unshared: #unshared })
+}
+
+fn is_zero_entry(generated: &Generated, id: zeitner_symbolic::Id) -> bool {
+    // Scheduled outputs skip structural zeros; an entry is nonzero iff it was scheduled.
+    let ids: Vec<_> = generated
+        .blocks
+        .iter()
+        .flat_map(|b| b.entries.iter().map(|e| e.2))
+        .collect();
+    let slot = ids.iter().position(|&x| x == id);
+    slot.is_none_or(|_| !generated.program.outputs.iter().any(|(s, _)| ids[*s] == id))
+}
+
+fn op_counts(counts: &OpCounts, rt: &TokenStream) -> TokenStream {
+    let OpCounts {
+        adds,
+        muls,
+        divs,
+        transcendental,
+        opaque_calls,
+    } = *counts;
+    quote!(#rt::OpCounts { adds: #adds, muls: #muls, divs: #divs, transcendental: #transcendental, opaque_calls: #opaque_calls })
+}
+
+struct Emitter<'a> {
+    vars: &'a Vars,
+    calls: &'a [Call],
+}
+
+/// Binding strength of an emitted expression, to print only the parentheses Rust needs.
+const SUM: u8 = 1;
+const PRODUCT: u8 = 2;
+const PREFIX: u8 = 3;
+const ATOM: u8 = 4;
+
+impl Emitter<'_> {
+    fn body(&self, generated: &Generated, rt: &TokenStream) -> TokenStream {
+        let temps = generated.program.temps.iter().enumerate().map(|(i, code)| {
+            let name = temp_name(i as u32);
+            let value = self.code(code, 0);
+            quote!(let #name = #value;)
+        });
+        let slots: Vec<(usize, usize, usize, Span)> = generated
+            .blocks
+            .iter()
+            .enumerate()
+            .flat_map(|(b, block)| {
+                block
+                    .entries
+                    .iter()
+                    .map(move |&(row, col, _, span)| (b, row, col, span))
+            })
+            .collect();
+        let declarations = generated.blocks.iter().map(|block| {
+            let name = format_ident!("{}", block.name);
+            let (rows, cols) = (block.rows, block.cols);
+            if cols == 1 {
+                quote!(let mut #name = #rt::Vector::<#rows>::zeros();)
+            } else {
+                quote!(let mut #name = #rt::Matrix::<#rows, #cols>::zeros();)
+            }
+        });
+        let assignments = generated.program.outputs.iter().map(|(slot, code)| {
+            let (b, row, col, span) = slots[*slot];
+            let block = &generated.blocks[b];
+            let name = format_ident!("{}", block.name, span = span);
+            let value = self.code(code, 0);
+            let (row_lit, col_lit) = (
+                Literal::usize_unsuffixed(row),
+                Literal::usize_unsuffixed(col),
+            );
+            if block.cols == 1 {
+                quote_spanned!(span=> #name[#row_lit] = #value;)
+            } else {
+                quote_spanned!(span=> #name[(#row_lit, #col_lit)] = #value;)
+            }
+        });
+        let names: Vec<_> = generated
+            .blocks
+            .iter()
+            .map(|b| format_ident!("{}", b.name))
+            .collect();
+        let result = match (generated.method, names.as_slice()) {
+            ("mass_matrix", [m]) => {
+                if generated.blocks[0].cols == 1 {
+                    quote!(#rt::DiagonalMass(#m))
+                } else {
+                    quote!(#rt::FullMass(#m))
+                }
+            }
+            (_, [single]) => quote!(#single),
+            (_, many) => quote!((#(#many),*)),
+        };
+        quote! {
+            #(#temps)*
+            #(#declarations)*
+            #(#assignments)*
+            #result
+        }
+    }
+
+    /// The tokens of `code`, parenthesised when it binds less strongly than `needed`.
+    fn code(&self, code: &Code, needed: u8) -> TokenStream {
+        let (tokens, strength) = self.code_with_strength(code);
+        if strength < needed {
+            quote!((#tokens))
+        } else {
+            tokens
+        }
+    }
+
+    fn code_with_strength(&self, code: &Code) -> (TokenStream, u8) {
+        match code {
+            Code::Const(x) => literal(*x),
+            Code::Var(v) => {
+                let kind = &self.vars.kinds[*v as usize];
+                let strength = if matches!(kind, VarKind::Parameter(_)) {
+                    ATOM
+                } else {
+                    ATOM
+                };
+                (lower::var_tokens(kind, Span::call_site()), strength)
+            }
+            Code::Temp(i) => {
+                let name = temp_name(*i);
+                (quote!(#name), ATOM)
+            }
+            Code::Add(a, b) => {
+                let (a, b) = (self.code(a, SUM), self.code(b, SUM));
+                (quote!(#a + #b), SUM)
+            }
+            Code::Sub(a, b) => {
+                let (a, b) = (self.code(a, SUM), self.code(b, PRODUCT));
+                (quote!(#a - #b), SUM)
+            }
+            Code::Mul(a, b) => {
+                let (a, b) = (self.code(a, PRODUCT), self.code(b, PREFIX));
+                (quote!(#a * #b), PRODUCT)
+            }
+            Code::Div(a, b) => {
+                let (a, b) = (self.code(a, PRODUCT), self.code(b, PREFIX));
+                (quote!(#a / #b), PRODUCT)
+            }
+            Code::Neg(a) => {
+                let a = self.code(a, ATOM);
+                (quote!(-#a), PREFIX)
+            }
+            Code::Powi(a, n) => {
+                let a = self.receiver(a);
+                let n = Literal::i32_unsuffixed(*n);
+                (quote!(#a.powi(#n)), ATOM)
+            }
+            Code::Unary(f, a) => {
+                let a = self.receiver(a);
+                let method = format_ident!("{}", f.method_name());
+                (quote!(#a.#method()), ATOM)
+            }
+            Code::Binary(f, a, b) => {
+                let a = self.receiver(a);
+                let b = self.code(b, 0);
+                let method = format_ident!("{}", binary_name(*f));
+                (quote!(#a.#method(#b)), ATOM)
+            }
+            Code::Select(cond, a, b) => {
+                let cond = self.cond(cond);
+                let (a, b) = (self.code(a, 0), self.code(b, 0));
+                (quote!(if #cond { #a } else { #b }), 0)
+            }
+            Code::Call(index, args) => {
+                let method = &self.calls[*index as usize].method;
+                let args = args.iter().map(|a| self.code(a, 0));
+                (quote!(self.#method(#(#args),*)), ATOM)
+            }
+        }
+    }
+
+    /// A method receiver: an atom, with literals typed so the method resolves.
+    fn receiver(&self, code: &Code) -> TokenStream {
+        if let Code::Const(x) = code {
+            let lit = Literal::f64_suffixed(x.abs());
+            return if x.is_sign_negative() {
+                quote!((-#lit))
+            } else {
+                quote!(#lit)
+            };
+        }
+        self.code(code, ATOM)
+    }
+
+    fn cond(&self, cond: &CodeCond) -> TokenStream {
+        match cond {
+            CodeCond::Compare(op, a, b) => {
+                let (a, b) = (self.code(a, SUM), self.code(b, SUM));
+                match op {
+                    Compare::Lt => quote!(#a < #b),
+                    Compare::Le => quote!(#a <= #b),
+                    Compare::Gt => quote!(#a > #b),
+                    Compare::Ge => quote!(#a >= #b),
+                    Compare::Eq => quote!(#a == #b),
+                    Compare::Ne => quote!(#a != #b),
+                }
+            }
+            CodeCond::And(a, b) => {
+                let (a, b) = (self.cond(a), self.cond(b));
+                quote!((#a) && (#b))
+            }
+            CodeCond::Or(a, b) => {
+                let (a, b) = (self.cond(a), self.cond(b));
+                quote!((#a) || (#b))
+            }
+            CodeCond::Not(a) => {
+                let a = self.cond(a);
+                quote!(!(#a))
+            }
+        }
+    }
+}
+
+fn binary_name(f: Binary) -> &'static str {
+    f.method_name()
+}
+
+fn temp_name(i: u32) -> syn::Ident {
+    format_ident!("s{}", i)
+}
+
+fn literal(x: f64) -> (TokenStream, u8) {
+    if x.is_nan() {
+        return (quote!(f64::NAN), ATOM);
+    }
+    if x.is_infinite() {
+        return if x > 0.0 {
+            (quote!(f64::INFINITY), ATOM)
+        } else {
+            (quote!(f64::NEG_INFINITY), ATOM)
+        };
+    }
+    let lit = Literal::f64_unsuffixed(x.abs());
+    if x.is_sign_negative() {
+        (quote!(-#lit), PREFIX)
+    } else {
+        (quote!(#lit), ATOM)
+    }
+}

@@ -1,0 +1,663 @@
+//! Lowering: the user's expressions into the symbolic graph, with every unsupported construct
+//! reported at its token.
+
+use std::collections::HashMap;
+
+use proc_macro2::Literal;
+use proc_macro2::{Span, TokenStream};
+use quote::{quote_spanned, ToTokens};
+use syn::{BinOp, Expr, UnOp};
+use zeitner_symbolic::{Binary, Compare, CondId, Graph, Id, Unary};
+
+use crate::errors::Errors;
+use crate::model::{ArrayArg, ArrayBinding, ModelFn, Role};
+
+/// What a variable of the graph stands for in the generated code.
+#[derive(Clone)]
+pub enum VarKind {
+    Coordinate(usize),
+    Velocity(usize),
+    Time,
+    /// `self.field` or a constant path, reproduced as written.
+    Parameter(TokenStream),
+    /// Symbol for the multipliers a directional derivative is taken along.
+    Multiplier(usize),
+    /// Symbol for the accelerations a directional derivative is taken along.
+    Acceleration(usize),
+}
+
+/// The variables of one model: coordinates `0..n`, velocities `n..2n`, time `2n`, then the rest.
+pub struct Vars {
+    pub kinds: Vec<VarKind>,
+    parameters: HashMap<String, u32>,
+    pub n: usize,
+}
+
+impl Vars {
+    pub fn new(n: usize) -> Self {
+        let mut kinds: Vec<VarKind> = (0..n).map(VarKind::Coordinate).collect();
+        kinds.extend((0..n).map(VarKind::Velocity));
+        kinds.push(VarKind::Time);
+        Vars {
+            kinds,
+            parameters: HashMap::new(),
+            n,
+        }
+    }
+
+    pub fn coordinate(&self, i: usize) -> u32 {
+        i as u32
+    }
+
+    pub fn velocity(&self, i: usize) -> u32 {
+        (self.n + i) as u32
+    }
+
+    pub fn time(&self) -> u32 {
+        (2 * self.n) as u32
+    }
+
+    pub fn push(&mut self, kind: VarKind) -> u32 {
+        self.kinds.push(kind);
+        (self.kinds.len() - 1) as u32
+    }
+
+    fn parameter(&mut self, tokens: TokenStream) -> u32 {
+        let key = tokens.to_string();
+        if let Some(&var) = self.parameters.get(&key) {
+            return var;
+        }
+        let var = self.push(VarKind::Parameter(tokens));
+        self.parameters.insert(key, var);
+        var
+    }
+
+    pub fn is_state(&self, var: u32) -> bool {
+        (var as usize) < 2 * self.n
+    }
+}
+
+/// An opaque call `self.method(..)`, by method name.
+pub struct Call {
+    pub method: syn::Ident,
+}
+
+/// A lowered model function: one graph node per returned entry (rows of a matrix flattened).
+pub struct Lowered {
+    pub role: Role,
+    pub entries: Vec<Id>,
+}
+
+#[derive(Clone)]
+enum Binding {
+    Scalar(Id),
+    Array(Vec<Id>),
+}
+
+pub struct Lowerer<'g> {
+    pub graph: &'g mut Graph,
+    pub vars: &'g mut Vars,
+    pub calls: &'g mut Vec<Call>,
+    pub errors: &'g mut Errors,
+}
+
+struct Scope<'a> {
+    role: Role,
+    names: HashMap<String, Binding>,
+    /// Span of the function, for messages that concern it as a whole.
+    _function: &'a ModelFn<'a>,
+}
+
+impl Lowerer<'_> {
+    pub fn lower_function(&mut self, function: &ModelFn<'_>) -> Option<Lowered> {
+        let before = self.errors.count();
+        let mut scope = Scope {
+            role: function.role,
+            names: HashMap::new(),
+            _function: function,
+        };
+        self.bind_array(&mut scope, function.q.as_ref(), false);
+        self.bind_array(&mut scope, function.v.as_ref(), true);
+        if let Some(Some(t)) = function.t {
+            let time = self.graph.var(self.vars.time());
+            self.bind_name(&mut scope, t, Binding::Scalar(time));
+        }
+        for (name, expr) in &function.lets {
+            if let Some(value) = self.lower(&scope, expr) {
+                // Shadowing is allowed, as in Rust.
+                scope.names.insert(name.to_string(), Binding::Scalar(value));
+            }
+        }
+        let mut entries = Vec::new();
+        for element in &function.result.elems {
+            match (&function.shape, element) {
+                (crate::model::Shape::Matrix { len, .. }, Expr::Array(row)) => {
+                    if row.elems.len() != *len {
+                        self.errors.error_spanned_by(
+                            row,
+                            format_args!(
+                                "this row has {} entries, the mass matrix is {len}×{len}",
+                                row.elems.len()
+                            ),
+                        );
+                    }
+                    for entry in &row.elems {
+                        entries.extend(self.lower(&scope, entry));
+                    }
+                }
+                (crate::model::Shape::Matrix { .. }, other) => self.errors.error_spanned_by(
+                    other,
+                    "a full mass matrix is an array of rows: `[[m11, m12], [m21, m22]]`",
+                ),
+                (_, entry) => entries.extend(self.lower(&scope, entry)),
+            }
+        }
+        (self.errors.count() == before).then_some(Lowered {
+            role: function.role,
+            entries,
+        })
+    }
+
+    fn bind_array(&mut self, scope: &mut Scope<'_>, arg: Option<&ArrayArg<'_>>, velocity: bool) {
+        let Some(arg) = arg else { return };
+        let ids: Vec<Id> = (0..arg.len.min(self.vars.n))
+            .map(|i| {
+                let var = if velocity {
+                    self.vars.velocity(i)
+                } else {
+                    self.vars.coordinate(i)
+                };
+                self.graph.var(var)
+            })
+            .collect();
+        match &arg.binding {
+            ArrayBinding::Named(Some(name)) => self.bind_name(scope, name, Binding::Array(ids)),
+            ArrayBinding::Named(None) => {}
+            ArrayBinding::Elements(names) => {
+                for (name, id) in names.iter().zip(ids) {
+                    if let Some(name) = name {
+                        self.bind_name(scope, name, Binding::Scalar(id));
+                    }
+                }
+            }
+        }
+    }
+
+    fn bind_name(&mut self, scope: &mut Scope<'_>, name: &syn::Ident, binding: Binding) {
+        if scope.names.insert(name.to_string(), binding).is_some() {
+            self.errors.error_spanned_by(
+                name,
+                format_args!("duplicate name `{name}`: every coordinate, velocity and the time need their own name"),
+            );
+        }
+    }
+
+    fn depends_on_state(&self, id: Id) -> bool {
+        let vars = &*self.vars;
+        self.graph.depends_on_any(id, &|v| vars.is_state(v))
+    }
+
+    fn lower(&mut self, scope: &Scope<'_>, expr: &Expr) -> Option<Id> {
+        match expr {
+            Expr::Lit(lit) => match &lit.lit {
+                syn::Lit::Float(f) => f.base10_parse::<f64>().ok().map(|x| self.graph.num(x)),
+                syn::Lit::Int(i) => i.base10_parse::<f64>().ok().map(|x| self.graph.num(x)),
+                other => {
+                    self.errors.error_spanned_by(other, "expected a number");
+                    None
+                }
+            },
+            Expr::Paren(p) => self.lower(scope, &p.expr),
+            Expr::Group(g) => self.lower(scope, &g.expr),
+            Expr::Path(path) => self.lower_path(scope, path),
+            Expr::Field(field) => {
+                if is_self_rooted(&field.base) {
+                    let var = self.vars.parameter(field.to_token_stream());
+                    Some(self.graph.var(var))
+                } else {
+                    self.errors.error_spanned_by(
+                        field,
+                        "only fields of `self` may be read in a model (`self.mass`)",
+                    );
+                    None
+                }
+            }
+            Expr::Index(index) => self.lower_index(scope, index),
+            Expr::Unary(unary) => match unary.op {
+                UnOp::Neg(_) => {
+                    let a = self.lower(scope, &unary.expr)?;
+                    Some(self.graph.neg(a))
+                }
+                _ => {
+                    self.errors.error_spanned_by(
+                        unary,
+                        "only unary minus is supported in numeric expressions",
+                    );
+                    None
+                }
+            },
+            Expr::Binary(binary) => {
+                let (a, b) = (
+                    self.lower(scope, &binary.left),
+                    self.lower(scope, &binary.right),
+                );
+                let (a, b) = (a?, b?);
+                match binary.op {
+                    BinOp::Add(_) => Some(self.graph.add(a, b)),
+                    BinOp::Sub(_) => Some(self.graph.sub(a, b)),
+                    BinOp::Mul(_) => Some(self.graph.mul(a, b)),
+                    BinOp::Div(_) => Some(self.graph.div(a, b)),
+                    _ => {
+                        self.errors.error_spanned_by(
+                            binary.op,
+                            "unsupported operator: numeric expressions use `+ - * /`; comparisons belong in an `if` condition",
+                        );
+                        None
+                    }
+                }
+            }
+            Expr::MethodCall(call) => self.lower_method_call(scope, call),
+            Expr::Call(call) => self.lower_function_call(scope, call),
+            Expr::If(if_expr) => self.lower_if(scope, if_expr),
+            Expr::Cast(cast) => {
+                self.errors.error_spanned_by(
+                    cast,
+                    "casts are not supported: write float literals, e.g. `2.0`",
+                );
+                None
+            }
+            Expr::ForLoop(_) | Expr::While(_) | Expr::Loop(_) => {
+                self.errors.error_spanned_by(
+                    expr,
+                    "loops are not supported in model functions: write each term out so it can be differentiated",
+                );
+                None
+            }
+            Expr::Closure(_) => {
+                self.errors.error_spanned_by(
+                    expr,
+                    "closures are not supported in model functions: use a `let` binding instead",
+                );
+                None
+            }
+            Expr::Macro(_) => {
+                self.errors.error_spanned_by(
+                    expr,
+                    "macros are not supported in model functions: the body must be plain expressions the macro can differentiate",
+                );
+                None
+            }
+            Expr::Block(_) => {
+                self.errors.error_spanned_by(
+                    expr,
+                    "blocks are not supported here: use `let` bindings at the top of the function",
+                );
+                None
+            }
+            _ => {
+                self.errors.error_spanned_by(
+                    expr,
+                    "unsupported expression in a model: use numbers, names, `self.field`, `+ - * /`, f64 methods and `if`/`else`",
+                );
+                None
+            }
+        }
+    }
+
+    fn lower_path(&mut self, scope: &Scope<'_>, path: &syn::ExprPath) -> Option<Id> {
+        if let Some(ident) = path.path.get_ident() {
+            let name = ident.to_string();
+            match scope.names.get(&name) {
+                Some(Binding::Scalar(id)) => return Some(*id),
+                Some(Binding::Array(_)) => {
+                    self.errors.error_spanned_by(
+                        ident,
+                        format_args!("`{name}` is an array: use one component, e.g. `{name}[0]`"),
+                    );
+                    return None;
+                }
+                None => {}
+            }
+            let looks_like_const = name.chars().next().is_some_and(|c| c.is_ascii_uppercase());
+            if !looks_like_const {
+                let mut known: Vec<&String> = scope.names.keys().collect();
+                known.sort();
+                let known: Vec<String> = known.iter().map(|k| format!("`{k}`")).collect();
+                let hint = if name == "t" {
+                    format!(" add `t: f64` to the arguments of `{}`", scope.role.name())
+                } else if known.is_empty() {
+                    " nothing is bound here".to_string()
+                } else {
+                    format!(" in scope: {}", known.join(", "))
+                };
+                self.errors
+                    .error_spanned_by(ident, format_args!("unknown variable `{name}`;{hint}"));
+                return None;
+            }
+        }
+        // A constant: `G`, `core::f64::consts::PI`, `Self::LENGTH`. Its value is not differentiated.
+        let var = self.vars.parameter(path.to_token_stream());
+        Some(self.graph.var(var))
+    }
+
+    fn lower_index(&mut self, scope: &Scope<'_>, index: &syn::ExprIndex) -> Option<Id> {
+        let name = match &*index.expr {
+            Expr::Path(p) => p.path.get_ident().map(|i| i.to_string()),
+            _ => None,
+        };
+        let Some(Binding::Array(ids)) = name.as_ref().and_then(|n| scope.names.get(n)) else {
+            self.errors.error_spanned_by(
+                &index.expr,
+                "only the coordinate and velocity arrays of the signature can be indexed",
+            );
+            return None;
+        };
+        let literal = match &*index.index {
+            Expr::Lit(syn::ExprLit {
+                lit: syn::Lit::Int(i),
+                ..
+            }) => i.base10_parse::<usize>().ok(),
+            _ => None,
+        };
+        match literal {
+            Some(i) if i < ids.len() => Some(ids[i]),
+            Some(i) => {
+                self.errors.error_spanned_by(
+                    &index.index,
+                    format_args!(
+                        "index {i} is out of bounds for `{}` of length {}",
+                        name.unwrap_or_default(),
+                        ids.len()
+                    ),
+                );
+                None
+            }
+            None => {
+                self.errors
+                    .error_spanned_by(&index.index, "index with an integer literal, e.g. `q[2]`");
+                None
+            }
+        }
+    }
+
+    fn lower_method_call(&mut self, scope: &Scope<'_>, call: &syn::ExprMethodCall) -> Option<Id> {
+        if call.turbofish.is_some() {
+            self.errors
+                .error_spanned_by(&call.turbofish, "type arguments are not supported here");
+            return None;
+        }
+        if is_self(&call.receiver) {
+            return self.lower_opaque_call(scope, call);
+        }
+        let method = call.method.to_string();
+        let receiver = self.lower(scope, &call.receiver);
+        self.apply_method(
+            scope,
+            &call.method,
+            &method,
+            receiver,
+            call.args.iter().collect(),
+            call,
+        )
+    }
+
+    /// `f64::sin(x)` is the same as `x.sin()`.
+    fn lower_function_call(&mut self, scope: &Scope<'_>, call: &syn::ExprCall) -> Option<Id> {
+        if let Expr::Path(path) = &*call.func {
+            let segments: Vec<_> = path.path.segments.iter().collect();
+            if segments.len() == 2 && segments[0].ident == "f64" && !call.args.is_empty() {
+                let method = &segments[1].ident;
+                let mut args = call.args.iter();
+                let receiver = args.next().and_then(|first| self.lower(scope, first));
+                return self.apply_method(
+                    scope,
+                    method,
+                    &method.to_string(),
+                    receiver,
+                    args.collect(),
+                    call,
+                );
+            }
+        }
+        self.errors.error_spanned_by(
+            &call.func,
+            "free functions are not supported in a model: use f64 methods (`x.sin()`) or an opaque `self.method(t)`",
+        );
+        None
+    }
+
+    fn apply_method(
+        &mut self,
+        scope: &Scope<'_>,
+        method_ident: &syn::Ident,
+        method: &str,
+        receiver: Option<Id>,
+        args: Vec<&Expr>,
+        whole: &dyn ToTokens,
+    ) -> Option<Id> {
+        if let Some(f) = Unary::from_method_name(method) {
+            if !args.is_empty() {
+                self.errors
+                    .error_spanned_by(whole, format_args!("`{method}` takes no arguments"));
+                return None;
+            }
+            return Some(self.graph.unary(f, receiver?));
+        }
+        if method == "powi" {
+            let exponent = match args.as_slice() {
+                [arg] => integer_literal(arg),
+                _ => None,
+            };
+            let Some(n) = exponent else {
+                let blame: &dyn ToTokens = match args.first() {
+                    Some(arg) => arg,
+                    None => whole,
+                };
+                self.errors.error_spanned_by(
+                    blame,
+                    "`powi` takes an integer literal exponent, e.g. `x.powi(2)`; for other exponents use `powf`",
+                );
+                return None;
+            };
+            return Some(self.graph.powi(receiver?, n));
+        }
+        if let Some(f) = Binary::from_method_name(method) {
+            let [arg] = args.as_slice() else {
+                self.errors
+                    .error_spanned_by(whole, format_args!("`{method}` takes one argument"));
+                return None;
+            };
+            let other = self.lower(scope, arg);
+            return Some(self.graph.binary(f, receiver?, other?));
+        }
+        let mut supported: Vec<&str> = Unary::ALL.iter().map(|u| u.method_name()).collect();
+        supported.push("powi");
+        supported.extend(Binary::ALL.iter().map(|b| b.method_name()));
+        self.errors.error_spanned_by(
+            method_ident,
+            format_args!(
+                "unsupported function `{method}`: the macro differentiates only {}",
+                supported.join(", ")
+            ),
+        );
+        None
+    }
+
+    fn lower_opaque_call(&mut self, scope: &Scope<'_>, call: &syn::ExprMethodCall) -> Option<Id> {
+        let mut args = Vec::new();
+        let mut ok = true;
+        for arg in &call.args {
+            match self.lower(scope, arg) {
+                Some(id) => args.push(id),
+                None => ok = false,
+            }
+        }
+        if !ok {
+            return None;
+        }
+        let method = call.method.to_string();
+        for (arg, &id) in call.args.iter().zip(&args) {
+            if self.depends_on_state(id) {
+                self.errors.error_spanned_by(
+                    arg,
+                    format_args!(
+                        "`self.{method}(..)` depends on a coordinate or velocity; opaque calls may take only `t` \
+                         and parameters, because the macro cannot differentiate them — write `{method}` inline \
+                         or make it a function of `t`"
+                    ),
+                );
+                return None;
+            }
+            let time = self.vars.time();
+            if matches!(scope.role, Role::Constraints | Role::VelocityConstraints)
+                && self.graph.depends_on(id, time)
+            {
+                self.errors.error_spanned_by(
+                    arg,
+                    format_args!(
+                        "`self.{method}(..)` depends on `t`, but constraints are differentiated by time; \
+                         write `{method}` inline in the constraint"
+                    ),
+                );
+                return None;
+            }
+        }
+        let index = match self.calls.iter().position(|c| c.method == call.method) {
+            Some(index) => index,
+            None => {
+                self.calls.push(Call {
+                    method: call.method.clone(),
+                });
+                self.calls.len() - 1
+            }
+        };
+        Some(self.graph.call(index as u32, args))
+    }
+
+    fn lower_if(&mut self, scope: &Scope<'_>, if_expr: &syn::ExprIf) -> Option<Id> {
+        let cond = self.lower_cond(scope, &if_expr.cond);
+        let then = self.lower_block_value(scope, &if_expr.then_branch);
+        let otherwise = match &if_expr.else_branch {
+            Some((_, otherwise)) => self.lower(scope, otherwise),
+            None => {
+                self.errors
+                    .error_spanned_by(if_expr, "an `if` in a model needs an `else` branch");
+                None
+            }
+        };
+        let cond = cond?;
+        let vars = &*self.vars;
+        if self.graph.cond_depends_on_any(cond, &|v| vars.is_state(v)) {
+            self.errors.error_spanned_by(
+                &if_expr.cond,
+                "this condition depends on a coordinate or velocity; conditions may use only `t` and parameters \
+                 (use `min`, `max` or `abs` for piecewise terms in the state)",
+            );
+            return None;
+        }
+        Some(self.graph.select(cond, then?, otherwise?))
+    }
+
+    fn lower_block_value(&mut self, scope: &Scope<'_>, block: &syn::Block) -> Option<Id> {
+        match block.stmts.as_slice() {
+            [syn::Stmt::Expr(expr, None)] => self.lower(scope, expr),
+            _ => {
+                self.errors.error_spanned_by(
+                    block,
+                    "an `if` branch holds one expression: `if c { a } else { b }`",
+                );
+                None
+            }
+        }
+    }
+
+    fn lower_cond(&mut self, scope: &Scope<'_>, expr: &Expr) -> Option<CondId> {
+        match expr {
+            Expr::Paren(p) => self.lower_cond(scope, &p.expr),
+            Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
+                let inner = self.lower_cond(scope, &u.expr)?;
+                Some(self.graph.not(inner))
+            }
+            Expr::Binary(b) => {
+                let compare = match b.op {
+                    BinOp::Lt(_) => Some(Compare::Lt),
+                    BinOp::Le(_) => Some(Compare::Le),
+                    BinOp::Gt(_) => Some(Compare::Gt),
+                    BinOp::Ge(_) => Some(Compare::Ge),
+                    BinOp::Eq(_) => Some(Compare::Eq),
+                    BinOp::Ne(_) => Some(Compare::Ne),
+                    _ => None,
+                };
+                if let Some(op) = compare {
+                    let (l, r) = (self.lower(scope, &b.left), self.lower(scope, &b.right));
+                    return Some(self.graph.compare(op, l?, r?));
+                }
+                match b.op {
+                    BinOp::And(_) | BinOp::Or(_) => {
+                        let (l, r) = (
+                            self.lower_cond(scope, &b.left),
+                            self.lower_cond(scope, &b.right),
+                        );
+                        let (l, r) = (l?, r?);
+                        Some(if matches!(b.op, BinOp::And(_)) {
+                            self.graph.and(l, r)
+                        } else {
+                            self.graph.or(l, r)
+                        })
+                    }
+                    _ => {
+                        self.errors
+                            .error_spanned_by(b, "a condition compares numbers: `t < self.t_off`");
+                        None
+                    }
+                }
+            }
+            other => {
+                self.errors
+                    .error_spanned_by(other, "a condition compares numbers: `t < self.t_off`");
+                None
+            }
+        }
+    }
+}
+
+fn is_self(expr: &Expr) -> bool {
+    matches!(expr, Expr::Path(p) if p.path.is_ident("self"))
+}
+
+fn is_self_rooted(expr: &Expr) -> bool {
+    match expr {
+        Expr::Field(f) => is_self_rooted(&f.base),
+        other => is_self(other),
+    }
+}
+
+fn integer_literal(expr: &Expr) -> Option<i32> {
+    match expr {
+        Expr::Lit(syn::ExprLit {
+            lit: syn::Lit::Int(i),
+            ..
+        }) => i.base10_parse().ok(),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => integer_literal(&u.expr).map(|n: i32| -n),
+        Expr::Paren(p) => integer_literal(&p.expr),
+        _ => None,
+    }
+}
+
+/// Code for a variable in the generated functions.
+pub fn var_tokens(kind: &VarKind, span: Span) -> TokenStream {
+    match kind {
+        VarKind::Coordinate(i) => index_tokens("q", *i, span),
+        VarKind::Velocity(i) => index_tokens("v", *i, span),
+        VarKind::Time => quote_spanned!(span=> t),
+        VarKind::Parameter(tokens) => tokens.clone(),
+        VarKind::Multiplier(j) => index_tokens("lambda", *j, span),
+        VarKind::Acceleration(i) => index_tokens("a", *i, span),
+    }
+}
+
+fn index_tokens(array: &str, index: usize, span: Span) -> TokenStream {
+    let array = syn::Ident::new(array, span);
+    let index = Literal::usize_unsuffixed(index);
+    quote_spanned!(span=> #array[#index])
+}

@@ -1,0 +1,452 @@
+//! The parsed model: which function is which, what its arguments bind, what it returns.
+//! Every piece keeps a reference to the user's syntax so later stages can point at it.
+
+use syn::spanned::Spanned;
+use syn::{Expr, FnArg, ImplItem, ImplItemFn, ItemImpl, Pat, ReturnType, Stmt, Type};
+
+use crate::errors::Errors;
+
+/// The four functions a model may define.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    Mass,
+    Force,
+    Constraints,
+    VelocityConstraints,
+}
+
+impl Role {
+    pub const ALL: [Role; 4] = [
+        Role::Mass,
+        Role::Force,
+        Role::Constraints,
+        Role::VelocityConstraints,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Role::Mass => "mass",
+            Role::Force => "force",
+            Role::Constraints => "constraints",
+            Role::VelocityConstraints => "velocity_constraints",
+        }
+    }
+
+    /// Whether the function may take velocities.
+    pub fn takes_velocities(self) -> bool {
+        matches!(self, Role::Force | Role::VelocityConstraints)
+    }
+
+    fn signature_hint(self) -> &'static str {
+        match self {
+            Role::Mass => "fn mass(&self, q: [f64; N], t: f64) -> [f64; N] (or [[f64; N]; N])",
+            Role::Force => "fn force(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; N]",
+            Role::Constraints => "fn constraints(&self, q: [f64; N], t: f64) -> [f64; R]",
+            Role::VelocityConstraints => {
+                "fn velocity_constraints(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; K]"
+            }
+        }
+    }
+}
+
+/// An argument `[f64; N]`, bound either by a name or element by element.
+pub struct ArrayArg<'a> {
+    pub len: usize,
+    pub len_expr: &'a Expr,
+    pub binding: ArrayBinding<'a>,
+}
+
+pub enum ArrayBinding<'a> {
+    /// `q: [f64; 7]`, used as `q[3]`; `None` for `_`.
+    Named(Option<&'a syn::Ident>),
+    /// `[q1, q2, _]: [f64; 3]`.
+    Elements(Vec<Option<&'a syn::Ident>>),
+}
+
+/// What a function returns.
+pub enum Shape<'a> {
+    Vector { len: usize, len_expr: &'a Expr },
+    Matrix { len: usize, len_expr: &'a Expr },
+}
+
+impl Shape<'_> {
+    pub fn len(&self) -> usize {
+        match self {
+            Shape::Vector { len, .. } | Shape::Matrix { len, .. } => *len,
+        }
+    }
+
+    pub fn len_expr(&self) -> &Expr {
+        match self {
+            Shape::Vector { len_expr, .. } | Shape::Matrix { len_expr, .. } => len_expr,
+        }
+    }
+}
+
+/// One model function, its body split into `let` bindings and the returned array.
+pub struct ModelFn<'a> {
+    pub role: Role,
+    pub q: Option<ArrayArg<'a>>,
+    pub v: Option<ArrayArg<'a>>,
+    pub t: Option<Option<&'a syn::Ident>>,
+    pub shape: Shape<'a>,
+    pub lets: Vec<(&'a syn::Ident, &'a Expr)>,
+    pub result: &'a syn::ExprArray,
+}
+
+pub struct Model<'a> {
+    pub functions: Vec<ModelFn<'a>>,
+}
+
+impl<'a> Model<'a> {
+    pub fn function(&self, role: Role) -> Option<&ModelFn<'a>> {
+        self.functions.iter().find(|f| f.role == role)
+    }
+
+    /// Reads the impl block, recording every problem in `errors`.
+    pub fn from_item(item: &'a ItemImpl, errors: &mut Errors) -> Model<'a> {
+        if let Some((_, path, _)) = &item.trait_ {
+            errors.error_spanned_by(
+                path,
+                "#[constrained_system] goes on an inherent `impl Type { .. }` block, not on a trait impl",
+            );
+        }
+        if !item.generics.params.is_empty() {
+            errors.error_spanned_by(
+                &item.generics,
+                "#[constrained_system] does not support generic impls: the generated code is monomorphic",
+            );
+        }
+        let mut functions: Vec<ModelFn<'a>> = Vec::new();
+        for member in &item.items {
+            let ImplItem::Fn(function) = member else {
+                errors.error_spanned_by(
+                    member,
+                    "only the model functions `mass`, `force`, `constraints` and `velocity_constraints` \
+                     may stand in a #[constrained_system] impl; put other items in a second `impl` block",
+                );
+                continue;
+            };
+            let name = function.sig.ident.to_string();
+            let Some(role) = Role::ALL.into_iter().find(|r| r.name() == name) else {
+                errors.error_spanned_by(
+                    &function.sig.ident,
+                    format_args!(
+                        "unknown model function `{name}`: expected `mass`, `force`, `constraints` or \
+                         `velocity_constraints`; put helper methods in a second `impl` block"
+                    ),
+                );
+                continue;
+            };
+            if functions.iter().any(|f| f.role == role) {
+                errors.error_spanned_by(
+                    &function.sig.ident,
+                    format_args!("`{name}` is defined twice"),
+                );
+                continue;
+            }
+            if let Some(parsed) = parse_function(role, function, errors) {
+                functions.push(parsed);
+            }
+        }
+        for role in [Role::Mass, Role::Force, Role::Constraints] {
+            if !functions.iter().any(|f| f.role == role) {
+                errors.error_spanned_by(
+                    &item.self_ty,
+                    format_args!(
+                        "missing model function `{}`: add `{}`",
+                        role.name(),
+                        role.signature_hint()
+                    ),
+                );
+            }
+        }
+        Model { functions }
+    }
+}
+
+fn parse_function<'a>(
+    role: Role,
+    function: &'a ImplItemFn,
+    errors: &mut Errors,
+) -> Option<ModelFn<'a>> {
+    let sig = &function.sig;
+    let before = errors.count();
+    let mut ok = true;
+    if !sig.generics.params.is_empty() || sig.asyncness.is_some() || sig.unsafety.is_some() {
+        errors.error_spanned_by(
+            sig,
+            format_args!(
+                "model functions are plain: expected `{}`",
+                role.signature_hint()
+            ),
+        );
+        ok = false;
+    }
+    let mut inputs = sig.inputs.iter();
+    match inputs.next() {
+        Some(FnArg::Receiver(receiver))
+            if receiver.reference.is_some() && receiver.mutability.is_none() => {}
+        Some(other) => {
+            errors.error_spanned_by(
+                other,
+                format_args!(
+                    "the first argument must be `&self`: expected `{}`",
+                    role.signature_hint()
+                ),
+            );
+            ok = false;
+        }
+        None => {
+            errors.error_spanned_by(
+                sig,
+                format_args!("missing `&self`: expected `{}`", role.signature_hint()),
+            );
+            ok = false;
+        }
+    }
+    let (mut q, mut v, mut t) = (None, None, None);
+    for input in inputs {
+        let FnArg::Typed(typed) = input else { continue };
+        if is_f64(&typed.ty) {
+            if t.is_some() {
+                errors.error_spanned_by(typed, "only one `f64` argument (the time) is allowed");
+                ok = false;
+                continue;
+            }
+            t = Some(match &*typed.pat {
+                Pat::Ident(p) => Some(&p.ident),
+                Pat::Wild(_) => None,
+                other => {
+                    errors
+                        .error_spanned_by(other, "the time argument must be a name, e.g. `t: f64`");
+                    ok = false;
+                    None
+                }
+            });
+            continue;
+        }
+        let Some((len, len_expr)) = array_len(&typed.ty) else {
+            errors.error_spanned_by(
+                &typed.ty,
+                format_args!(
+                    "unsupported argument type: coordinates and velocities are `[f64; N]`, time is `f64`; expected `{}`",
+                    role.signature_hint()
+                ),
+            );
+            ok = false;
+            continue;
+        };
+        let binding = match &*typed.pat {
+            Pat::Ident(p) => ArrayBinding::Named(Some(&p.ident)),
+            Pat::Wild(_) => ArrayBinding::Named(None),
+            Pat::Slice(slice) => {
+                let mut names = Vec::new();
+                for element in &slice.elems {
+                    match element {
+                        Pat::Ident(p) => names.push(Some(&p.ident)),
+                        Pat::Wild(_) => names.push(None),
+                        other => {
+                            errors.error_spanned_by(
+                                other,
+                                "expected a name or `_` in the array pattern",
+                            );
+                            ok = false;
+                        }
+                    }
+                }
+                if names.len() != len {
+                    errors.error_spanned_by(
+                        slice,
+                        format_args!(
+                            "the pattern binds {} names but the array has {len}",
+                            names.len()
+                        ),
+                    );
+                    ok = false;
+                }
+                ArrayBinding::Elements(names)
+            }
+            other => {
+                errors.error_spanned_by(
+                    other,
+                    "expected a name (`q: [f64; N]`) or an array pattern (`[q1, q2]: [f64; 2]`)",
+                );
+                ok = false;
+                continue;
+            }
+        };
+        let arg = ArrayArg {
+            len,
+            len_expr,
+            binding,
+        };
+        if q.is_none() {
+            q = Some(arg);
+        } else if v.is_none() && role.takes_velocities() {
+            v = Some(arg);
+        } else {
+            let message = if role.takes_velocities() {
+                format!(
+                    "too many array arguments: expected `{}`",
+                    role.signature_hint()
+                )
+            } else {
+                format!(
+                    "`{}` takes no velocities: expected `{}`{}",
+                    role.name(),
+                    role.signature_hint(),
+                    if role == Role::Constraints {
+                        "; constraints on velocities go in `velocity_constraints`"
+                    } else {
+                        ""
+                    }
+                )
+            };
+            errors.error_spanned_by(typed, message);
+            ok = false;
+        }
+    }
+    let shape = match &sig.output {
+        ReturnType::Type(_, ty) => match (array_len(ty), matrix_len(ty)) {
+            (Some((len, len_expr)), _) => Some(Shape::Vector { len, len_expr }),
+            (None, Some((len, len_expr))) if role == Role::Mass => {
+                Some(Shape::Matrix { len, len_expr })
+            }
+            _ => None,
+        },
+        ReturnType::Default => None,
+    };
+    let Some(shape) = shape else {
+        errors.error_spanned_by(
+            &sig.output,
+            format_args!(
+                "unsupported return type: expected `{}`",
+                role.signature_hint()
+            ),
+        );
+        return None;
+    };
+    let (lets, result) = parse_body(function, errors)?;
+    if !ok || errors.count() != before {
+        return None;
+    }
+    Some(ModelFn {
+        role,
+        q,
+        v,
+        t,
+        shape,
+        lets,
+        result,
+    })
+}
+
+type Body<'a> = (Vec<(&'a syn::Ident, &'a Expr)>, &'a syn::ExprArray);
+
+fn parse_body<'a>(function: &'a ImplItemFn, errors: &mut Errors) -> Option<Body<'a>> {
+    let before = errors.count();
+    let mut lets = Vec::new();
+    let mut result = None;
+    let statements = &function.block.stmts;
+    for (index, statement) in statements.iter().enumerate() {
+        let last = index + 1 == statements.len();
+        match statement {
+            Stmt::Local(local) => {
+                let ident = match &local.pat {
+                    Pat::Ident(p) if p.by_ref.is_none() && p.mutability.is_none() => Some(&p.ident),
+                    Pat::Type(typed) => match &*typed.pat {
+                        Pat::Ident(p) if is_f64(&typed.ty) && p.mutability.is_none() => Some(&p.ident),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                let Some(ident) = ident else {
+                    errors.error_spanned_by(
+                        &local.pat,
+                        "a `let` in a model binds one immutable `f64` name: `let x = ..;`",
+                    );
+                    continue;
+                };
+                match &local.init {
+                    Some(init) if init.diverge.is_none() => lets.push((ident, &*init.expr)),
+                    _ => errors.error_spanned_by(local, "a `let` in a model needs a value: `let x = ..;`"),
+                }
+            }
+            Stmt::Expr(Expr::Array(array), None) if last => result = Some(array),
+            Stmt::Expr(Expr::Return(ret), _) => {
+                errors.error_spanned_by(ret, "write the result as the final array expression, without `return`")
+            }
+            Stmt::Expr(expr, None) if last => errors.error_spanned_by(
+                expr,
+                "a model function ends with an array literal `[e1, e2, ..]`, one entry per component",
+            ),
+            Stmt::Expr(expr, _) => errors.error_spanned_by(
+                expr,
+                "only `let` bindings and a final array literal may stand in a model function",
+            ),
+            Stmt::Macro(mac) => errors.error_spanned_by(
+                mac,
+                "macros are not supported in model functions: the body must be plain expressions the macro can differentiate",
+            ),
+            Stmt::Item(item) => errors.error_spanned_by(
+                item,
+                "items are not supported in model functions; define helpers outside the #[constrained_system] impl",
+            ),
+        }
+    }
+    match result {
+        Some(result) => Some((lets, result)),
+        None => {
+            if errors.count() == before {
+                errors.error_spanned_by(
+                    &function.block,
+                    "a model function ends with an array literal `[e1, e2, ..]`, one entry per component",
+                );
+            }
+            None
+        }
+    }
+}
+
+fn is_f64(ty: &Type) -> bool {
+    matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+}
+
+/// `[f64; N]` with a literal `N`.
+fn array_len(ty: &Type) -> Option<(usize, &Expr)> {
+    let Type::Array(array) = ty else { return None };
+    if !is_f64(&array.elem) {
+        return None;
+    }
+    literal_len(&array.len)
+}
+
+/// `[[f64; N]; N]` with literal, equal `N`s.
+fn matrix_len(ty: &Type) -> Option<(usize, &Expr)> {
+    let Type::Array(outer) = ty else { return None };
+    let (inner, _) = array_len(&outer.elem)?;
+    let (rows, rows_expr) = literal_len(&outer.len)?;
+    (inner == rows).then_some((rows, rows_expr))
+}
+
+fn literal_len(expr: &Expr) -> Option<(usize, &Expr)> {
+    match expr {
+        Expr::Lit(syn::ExprLit {
+            lit: syn::Lit::Int(int),
+            ..
+        }) => int.base10_parse::<usize>().ok().map(|n| (n, expr)),
+        _ => None,
+    }
+}
+
+/// The span of the `i`th returned entry.
+pub fn entry_span(function: &ModelFn<'_>, index: usize) -> proc_macro2::Span {
+    function
+        .result
+        .elems
+        .iter()
+        .nth(index)
+        .map(|e| e.span())
+        .unwrap_or_else(|| function.result.span())
+}

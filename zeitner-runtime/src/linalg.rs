@@ -1,0 +1,160 @@
+//! Small dense linear algebra on fixed sizes, with rank detection that names rows.
+
+use crate::error::RowSet;
+use crate::system::{Matrix, Vector};
+
+/// Pivots below this fraction of the largest diagonal entry count as lost rank (a condition
+/// number of about 1e12 for the symmetric systems `G M⁻¹ Gᵀ`).
+const RELATIVE_PIVOT: f64 = 1e-12;
+
+/// Rows of the symmetric positive semidefinite `a` that depend on the others, found by
+/// Cholesky with diagonal pivoting: the rows left when the remaining pivots vanish.
+pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) -> RowSet {
+    let mut work = *a;
+    let mut remaining = [true; Z];
+    let scale = (0..Z).map(|i| work[(i, i)].abs()).fold(0.0, f64::max);
+    let mut rows = RowSet::new(position_rows);
+    for _ in 0..Z {
+        let pivot = (0..Z)
+            .filter(|&i| remaining[i])
+            .max_by(|&i, &j| work[(i, i)].total_cmp(&work[(j, j)]));
+        let Some(p) = pivot else { break };
+        let d = work[(p, p)];
+        if !(d > RELATIVE_PIVOT * scale) || !d.is_finite() {
+            (0..Z)
+                .filter(|&i| remaining[i])
+                .for_each(|i| rows.insert(i));
+            break;
+        }
+        remaining[p] = false;
+        for i in 0..Z {
+            for j in 0..Z {
+                if remaining[i] && remaining[j] {
+                    work[(i, j)] -= work[(i, p)] * work[(p, j)] / d;
+                }
+            }
+        }
+    }
+    rows
+}
+
+/// Solves the symmetric positive definite `a x = b`, or names the dependent rows.
+pub fn solve_spd<const Z: usize, const C: usize>(
+    a: &Matrix<Z, Z>,
+    b: &Matrix<Z, C>,
+    position_rows: usize,
+) -> Result<Matrix<Z, C>, RowSet> {
+    let well_conditioned = nalgebra::Cholesky::new(*a).filter(|c| {
+        let d = c.l_dirty().diagonal();
+        let (lo, hi) = d.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
+        lo > 0.0 && lo * lo > RELATIVE_PIVOT * hi * hi
+    });
+    match well_conditioned {
+        Some(c) => {
+            let x = c.solve(b);
+            if x.iter().all(|v| v.is_finite()) {
+                Ok(x)
+            } else {
+                Err(dependent_rows(a, position_rows))
+            }
+        }
+        None => Err(dependent_rows(a, position_rows)),
+    }
+}
+
+/// An LU factorisation with partial pivoting of a square fixed-size matrix. (nalgebra's `lu()`
+/// needs typenum bounds that a generic `const N` cannot meet.)
+#[derive(Clone, Copy, Debug)]
+pub struct Lu<const N: usize> {
+    lu: Matrix<N, N>,
+    pivots: [usize; N],
+}
+
+impl<const N: usize> Lu<N> {
+    /// `None` when a pivot falls below `1e-13` of the largest one: numerically singular.
+    pub fn new(mut a: Matrix<N, N>) -> Option<Self> {
+        let mut pivots = [0usize; N];
+        let mut largest = 0.0f64;
+        for k in 0..N {
+            let (p, value) = (k..N)
+                .map(|i| (i, a[(i, k)].abs()))
+                .fold(
+                    (k, -1.0),
+                    |best, cur| if cur.1 > best.1 { cur } else { best },
+                );
+            if !value.is_finite() {
+                return None;
+            }
+            largest = largest.max(value);
+            if !(value > 1e-13 * largest) || value == 0.0 {
+                return None;
+            }
+            pivots[k] = p;
+            a.swap_rows(k, p);
+            let pivot = a[(k, k)];
+            for i in k + 1..N {
+                let factor = a[(i, k)] / pivot;
+                a[(i, k)] = factor;
+                for j in k + 1..N {
+                    a[(i, j)] -= factor * a[(k, j)];
+                }
+            }
+        }
+        Some(Lu { lu: a, pivots })
+    }
+
+    pub fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
+        let mut x = *b;
+        for k in 0..N {
+            x.swap_rows(k, self.pivots[k]);
+        }
+        for c in 0..C {
+            for i in 0..N {
+                let mut sum = x[(i, c)];
+                for j in 0..i {
+                    sum -= self.lu[(i, j)] * x[(j, c)];
+                }
+                x[(i, c)] = sum;
+            }
+            for i in (0..N).rev() {
+                let mut sum = x[(i, c)];
+                for j in i + 1..N {
+                    sum -= self.lu[(i, j)] * x[(j, c)];
+                }
+                x[(i, c)] = sum / self.lu[(i, i)];
+            }
+        }
+        x
+    }
+}
+
+/// Solves the general `a x = b`; `None` when `a` is numerically singular or the result is not
+/// finite.
+pub fn solve_general<const Z: usize>(a: &Matrix<Z, Z>, b: &Vector<Z>) -> Option<Vector<Z>> {
+    let x = Lu::new(*a)?.solve(b);
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Replaces the rows and columns from `from` on by the identity, so that a system over all `Z`
+/// constraints acts on the first `from` only.
+pub fn keep_leading_rows<const Z: usize>(a: &mut Matrix<Z, Z>, rhs: &mut Vector<Z>, from: usize) {
+    for j in from..Z {
+        a.row_mut(j).fill(0.0);
+        a.column_mut(j).fill(0.0);
+        a[(j, j)] = 1.0;
+        rhs[j] = 0.0;
+    }
+}
+
+/// Largest absolute entry and its index.
+pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
+    x.iter().enumerate().fold((0.0, 0), |(m, k), (i, &v)| {
+        if v.abs() > m || v.is_nan() {
+            (v.abs(), i)
+        } else {
+            (m, k)
+        }
+    })
+}

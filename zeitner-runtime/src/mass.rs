@@ -1,0 +1,85 @@
+//! Mass matrices: a diagonal one becomes divisions, a full one a Cholesky factor.
+
+use nalgebra::Cholesky;
+
+use crate::system::{Matrix, Vector};
+
+/// Storage of `M`, as the generated code returns it.
+pub trait MassMatrix<const N: usize>: Copy {
+    type Factor: MassFactor<N>;
+    /// The factorisation, or `None` when `M` is not symmetric positive definite (or not finite).
+    fn factor(&self) -> Option<Self::Factor>;
+    /// `M x`.
+    fn mul(&self, x: &Vector<N>) -> Vector<N>;
+}
+
+/// A factorised mass matrix.
+pub trait MassFactor<const N: usize>: Clone {
+    /// `M⁻¹ B` for a block of columns.
+    fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C>;
+}
+
+/// A diagonal mass matrix, its diagonal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DiagonalMass<const N: usize>(pub Vector<N>);
+
+/// A full symmetric mass matrix.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FullMass<const N: usize>(pub Matrix<N, N>);
+
+/// The reciprocal diagonal.
+#[derive(Clone, Copy, Debug)]
+pub struct DiagonalFactor<const N: usize>(Vector<N>);
+
+impl<const N: usize> MassMatrix<N> for DiagonalMass<N> {
+    type Factor = DiagonalFactor<N>;
+
+    fn factor(&self) -> Option<DiagonalFactor<N>> {
+        let positive = self.0.iter().all(|&m| m.is_finite() && m > 0.0);
+        let inverse = self.0.map(|m| 1.0 / m);
+        (positive && inverse.iter().all(|x| x.is_finite())).then_some(DiagonalFactor(inverse))
+    }
+
+    fn mul(&self, x: &Vector<N>) -> Vector<N> {
+        self.0.component_mul(x)
+    }
+}
+
+impl<const N: usize> MassFactor<N> for DiagonalFactor<N> {
+    fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
+        let mut out = *b;
+        for (mut row, &scale) in out.row_iter_mut().zip(self.0.iter()) {
+            row *= scale;
+        }
+        out
+    }
+}
+
+impl<const N: usize> MassMatrix<N> for FullMass<N> {
+    type Factor = Cholesky<f64, nalgebra::Const<N>>;
+
+    fn factor(&self) -> Option<Self::Factor> {
+        if !self.0.iter().all(|m| m.is_finite()) {
+            return None;
+        }
+        let factor = Cholesky::new(self.0)?;
+        // Cholesky accepts tiny positive pivots; a condition beyond 1e15 is singular in practice.
+        let diagonal = factor.l_dirty().diagonal();
+        let (lo, hi) = diagonal
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &d| {
+                (lo.min(d), hi.max(d))
+            });
+        (lo > 0.0 && hi / lo < 3.0e7).then_some(factor)
+    }
+
+    fn mul(&self, x: &Vector<N>) -> Vector<N> {
+        self.0 * x
+    }
+}
+
+impl<const N: usize> MassFactor<N> for Cholesky<f64, nalgebra::Const<N>> {
+    fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
+        Cholesky::solve(self, b)
+    }
+}

@@ -1,0 +1,630 @@
+//! Zeitner's step: integrate with the multipliers frozen, then correct them by Newton until the
+//! constraints hold at the step end.
+
+use crate::error::{InvalidOption, Row, StepError};
+use crate::inner::{explicit_step, sdirk2_step, Start, StepEnd, DOPRI5, RK4};
+use crate::linalg::{keep_leading_rows, max_abs, solve_general, solve_spd};
+use crate::mass::MassFactor;
+use crate::model::{Evaluations, Model};
+use crate::options::{InnerMethod, Options, Sensitivity, StepControl, VelocityProjection};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+/// A consistent point of the trajectory: state, acceleration and multipliers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Point<const N: usize, const Z: usize> {
+    pub t: f64,
+    pub q: Vector<N>,
+    pub v: Vector<N>,
+    pub a: Vector<N>,
+    pub lambda: Vector<Z>,
+}
+
+/// What one accepted step produced.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepReport<const N: usize, const Z: usize> {
+    /// The step's start and end; [`StepReport::sample`] interpolates between them.
+    pub start: Point<N, Z>,
+    /// Reported end point: velocities and multipliers as the options say (by default the
+    /// velocities projected onto the velocity-level constraint, the multipliers from the
+    /// acceleration-level system).
+    pub end: Point<N, Z>,
+    /// The multipliers `p` held constant over the step (the paper's `λ`), after Newton.
+    pub step_multipliers: Vector<Z>,
+    /// `-Gᵀλ` at the step end: the generalised constraint forces.
+    pub constraint_force: Vector<N>,
+    /// `g` at the step end.
+    pub residual: Vector<Z>,
+    /// The velocity-level residual `w` (`ġ` for position rows) at the step end.
+    pub rate_residual: Vector<Z>,
+    /// Integrations of the step (sweeps), the first one included.
+    pub newton_iterations: u32,
+}
+
+impl<const N: usize, const Z: usize> StepReport<N, Z> {
+    /// Dense output at `t` within the step: cubic Hermite in `q` (from `q'`) and in `q'` (from
+    /// `q''`), linear in `q''` and `λ`. Outside the step it extrapolates.
+    pub fn sample(&self, t: f64) -> Point<N, Z> {
+        let (a, b) = (&self.start, &self.end);
+        let h = b.t - a.t;
+        if h <= 0.0 {
+            return *b;
+        }
+        let s = (t - a.t) / h;
+        let (s2, s3) = (s * s, s * s * s);
+        let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
+        let h10 = s3 - 2.0 * s2 + s;
+        let h01 = -2.0 * s3 + 3.0 * s2;
+        let h11 = s3 - s2;
+        Point {
+            t,
+            q: h00 * a.q + (h10 * h) * a.v + h01 * b.q + (h11 * h) * b.v,
+            v: h00 * a.v + (h10 * h) * a.a + h01 * b.v + (h11 * h) * b.a,
+            a: a.a + s * (b.a - a.a),
+            lambda: a.lambda + s * (b.lambda - a.lambda),
+        }
+    }
+}
+
+/// Counts over the whole run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Statistics {
+    pub steps: u64,
+    pub rejected_steps: u64,
+    /// Integrations of a step with frozen multipliers, over all attempts.
+    pub newton_iterations: u64,
+    /// The most integrations one accepted step needed.
+    pub max_newton_iterations: u32,
+    pub evaluations: Evaluations,
+}
+
+/// A constrained system being integrated. Holds the last accepted state; a failed step leaves
+/// it untouched.
+pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    model: Model<'s, S, N, Z>,
+    options: Options,
+    /// The integration state; `v` is raw unless velocities are projected into the state.
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+    /// The multipliers of the last step, the next step's starting guess.
+    p: Vector<Z>,
+    last: StepReport<N, Z>,
+    step_size: f64,
+    statistics: Statistics,
+}
+
+enum Attempt<const N: usize, const Z: usize> {
+    Accepted {
+        end: StepEnd<N, Z>,
+        p: Vector<Z>,
+        iterations: u32,
+        error_norm: f64,
+    },
+    /// Retry with a smaller step; the cause is returned if no smaller step is possible.
+    Rejected { shrink: f64, cause: StepError },
+}
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// Starts at `(q0, v0)` at time `t0`, first made consistent: positions projected onto
+    /// `g = 0` and velocities onto the velocity-level constraint, both in the mass-matrix
+    /// metric, and the multipliers computed from the acceleration-level system.
+    pub fn new(
+        system: &'s S,
+        q0: Vector<N>,
+        v0: Vector<N>,
+        t0: f64,
+        options: Options,
+    ) -> Result<Self, StepError> {
+        options.validate()?;
+        if !t0.is_finite() {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        check_state(&q0, &v0, t0)?;
+        let mut model = Model::new(system);
+        model.prepare(&q0, t0)?;
+        let tolerance = options.constraint_tolerance;
+        let q = project_positions(&mut model, q0, &v0, t0, tolerance)?;
+        let v = project_velocities(&mut model, &q, v0, t0, tolerance, 20)?;
+        let point = consistent_point(&mut model, t0, q, v)?;
+        let report = end_report(&mut model, point, point, point.lambda, 0)?;
+        let step_size = match options.step {
+            StepControl::Fixed { step } => step,
+            StepControl::Adaptive { initial_step, .. } => initial_step,
+        };
+        Ok(Simulator {
+            model,
+            options,
+            t: t0,
+            q,
+            v,
+            p: point.lambda,
+            last: report,
+            step_size,
+            statistics: Statistics::default(),
+        })
+    }
+
+    /// The last accepted step (at the start: the consistent initial point).
+    pub fn last(&self) -> &StepReport<N, Z> {
+        &self.last
+    }
+
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    pub fn statistics(&self) -> Statistics {
+        Statistics {
+            evaluations: self.model.evaluations,
+            ..self.statistics
+        }
+    }
+
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// Changes the options; the state is kept.
+    pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
+        options.validate()?;
+        if let StepControl::Fixed { step } = options.step {
+            self.step_size = step;
+        }
+        self.options = options;
+        Ok(())
+    }
+
+    /// One accepted step, not beyond `t_limit`.
+    pub fn step_until(&mut self, t_limit: f64) -> Result<&StepReport<N, Z>, StepError> {
+        if !(t_limit > self.t) || !t_limit.is_finite() {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        let mut h = self.step_size;
+        loop {
+            let remaining = t_limit - self.t;
+            // Land exactly on the limit rather than leave a sliver of a step.
+            let last_step = h >= remaining * (1.0 - 1e-9);
+            let h_try = if last_step { remaining } else { h };
+            match self.attempt(h_try)? {
+                Attempt::Accepted {
+                    end,
+                    p,
+                    iterations,
+                    error_norm,
+                } => {
+                    let t_end = if last_step { t_limit } else { self.t + h_try };
+                    self.accept(end, p, t_end, iterations)?;
+                    self.step_size =
+                        self.next_step_size(h_try, h, error_norm, iterations, last_step);
+                    return Ok(&self.last);
+                }
+                Attempt::Rejected { shrink, cause } => {
+                    self.statistics.rejected_steps += 1;
+                    let StepControl::Adaptive { min_step, .. } = self.options.step else {
+                        return Err(cause);
+                    };
+                    h = h_try * shrink;
+                    if h < min_step || h <= f64::EPSILON * self.t.abs() {
+                        return Err(match cause {
+                            StepError::NewtonDidNotConverge { .. }
+                            | StepError::StageDidNotConverge { .. } => {
+                                StepError::StepSizeTooSmall { t: self.t, step: h }
+                            }
+                            other => other,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    /// Steps to `t_end`, calling `observer` after every accepted step.
+    pub fn advance_to(
+        &mut self,
+        t_end: f64,
+        mut observer: impl FnMut(&StepReport<N, Z>),
+    ) -> Result<(), StepError> {
+        if !(t_end >= self.t) || !t_end.is_finite() {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        while self.t < t_end {
+            let report = self.step_until(t_end)?;
+            observer(report);
+        }
+        Ok(())
+    }
+
+    fn next_step_size(
+        &self,
+        h_used: f64,
+        h_planned: f64,
+        error_norm: f64,
+        iterations: u32,
+        landed: bool,
+    ) -> f64 {
+        match self.options.step {
+            StepControl::Fixed { step } => step,
+            StepControl::Adaptive { max_step, .. } => {
+                let mut factor = if error_norm > 0.0 {
+                    0.9 * libm::pow(error_norm, -0.2)
+                } else {
+                    5.0
+                };
+                factor = factor.clamp(0.2, 5.0);
+                // Many Newton sweeps: the multipliers change fast; do not grow.
+                if iterations > self.options.max_newton_iterations / 2 {
+                    factor = factor.min(0.8);
+                } else if iterations > 4 {
+                    factor = factor.min(1.0);
+                }
+                // A step shortened to land on the limit says nothing about the next one.
+                let base = if landed {
+                    h_planned.max(h_used)
+                } else {
+                    h_used
+                };
+                (base * factor).min(max_step)
+            }
+        }
+    }
+
+    /// One try of a step of size `h` from the current state.
+    fn attempt(&mut self, h: f64) -> Result<Attempt<N, Z>, StepError> {
+        let options = self.options;
+        let exact = options.sensitivity == Sensitivity::Exact;
+        let start = Start {
+            t: self.t,
+            q: self.q,
+            v: self.v,
+            dq_dp: Matrix::zeros(),
+            dv_dp: Matrix::zeros(),
+        };
+        let t_end = self.t + h;
+        // The paper's estimate: M⁻¹Gᵀ frozen at the step start.
+        let frozen_b = if exact {
+            Matrix::<N, Z>::zeros()
+        } else {
+            let factor = self.model.mass_factor(&self.q, self.t)?;
+            let g = self.model.jacobian(&self.q, &self.v, self.t)?;
+            -factor.solve(&g.transpose())
+        };
+        let mut p = self.p;
+        let mut worst = (f64::INFINITY, 0usize);
+        for iteration in 1..=options.max_newton_iterations {
+            self.statistics.newton_iterations += 1;
+            let end = match self.integrate(&start, h, &p, exact) {
+                Ok(end) => end,
+                Err(
+                    error @ (StepError::NonFinite { .. } | StepError::StageDidNotConverge { .. }),
+                ) => {
+                    return Ok(Attempt::Rejected {
+                        shrink: 0.25,
+                        cause: error,
+                    });
+                }
+                Err(error) => return Err(error),
+            };
+            if let Err(error) = check_state(&end.q, &end.v, t_end) {
+                return Ok(Attempt::Rejected {
+                    shrink: 0.25,
+                    cause: error,
+                });
+            }
+            let g = self.model.residual(&end.q, &end.v, t_end)?;
+            worst = max_abs(&g);
+            if worst.0 <= options.constraint_tolerance {
+                let error_norm = self.error_norm(&start, &end);
+                if error_norm > 1.0 {
+                    let shrink = (0.9 * libm::pow(error_norm, -0.2)).clamp(0.2, 0.9);
+                    return Ok(Attempt::Rejected {
+                        shrink,
+                        cause: StepError::StepSizeTooSmall { t: self.t, step: h },
+                    });
+                }
+                return Ok(Attempt::Accepted {
+                    end,
+                    p,
+                    iterations: iteration,
+                    error_norm,
+                });
+            }
+            let (dg_dq, dg_dv) = self.model.linearisation(&end.q, &end.v, t_end)?;
+            let (dq_dp, dv_dp) = if exact {
+                (end.dq_dp, end.dv_dp)
+            } else {
+                ((0.5 * h * h) * frozen_b, h * frozen_b)
+            };
+            let newton = if S::POSITION_CONSTRAINTS == Z {
+                dg_dq * dq_dp
+            } else {
+                dg_dq * dq_dp + dg_dv * dv_dp
+            };
+            let Some(delta) = solve_general(&newton, &(-g)) else {
+                let factor = self.model.mass_factor(&end.q, t_end)?;
+                let projected = dg_dq * factor.solve(&dg_dq.transpose());
+                let rows = crate::linalg::dependent_rows(&projected, S::POSITION_CONSTRAINTS);
+                if rows.is_empty() {
+                    return Ok(Attempt::Rejected {
+                        shrink: 0.25,
+                        cause: self.newton_failure(h, iteration, worst),
+                    });
+                }
+                return Err(StepError::RankDeficientConstraints {
+                    t: t_end,
+                    dependent_rows: rows,
+                });
+            };
+            p += delta;
+        }
+        Ok(Attempt::Rejected {
+            shrink: 0.25,
+            cause: self.newton_failure(h, options.max_newton_iterations, worst),
+        })
+    }
+
+    fn newton_failure(&self, h: f64, iterations: u32, worst: (f64, usize)) -> StepError {
+        StepError::NewtonDidNotConverge {
+            t: self.t,
+            step: h,
+            iterations,
+            residual: worst.0,
+            worst_row: Row {
+                index: worst.1,
+                position_rows: S::POSITION_CONSTRAINTS,
+            },
+        }
+    }
+
+    fn integrate(
+        &mut self,
+        start: &Start<N, Z>,
+        h: f64,
+        p: &Vector<Z>,
+        exact: bool,
+    ) -> Result<StepEnd<N, Z>, StepError> {
+        match self.options.method {
+            InnerMethod::Rk4 { substeps } => {
+                let hs = h / f64::from(substeps);
+                let mut at = Start {
+                    t: start.t,
+                    q: start.q,
+                    v: start.v,
+                    dq_dp: start.dq_dp,
+                    dv_dp: start.dv_dp,
+                };
+                let mut end = explicit_step(&mut self.model, &RK4, &at, hs, p, exact)?;
+                for k in 1..substeps {
+                    at = Start {
+                        t: start.t + f64::from(k) * hs,
+                        q: end.q,
+                        v: end.v,
+                        dq_dp: end.dq_dp,
+                        dv_dp: end.dv_dp,
+                    };
+                    end = explicit_step(&mut self.model, &RK4, &at, hs, p, exact)?;
+                }
+                Ok(end)
+            }
+            InnerMethod::DormandPrince54 => {
+                explicit_step(&mut self.model, &DOPRI5, start, h, p, exact)
+            }
+            InnerMethod::Sdirk2 => sdirk2_step(&mut self.model, start, h, p, exact),
+        }
+    }
+
+    /// Weighted RMS norm of the embedded error estimate; 0 without one.
+    fn error_norm(&self, start: &Start<N, Z>, end: &StepEnd<N, Z>) -> f64 {
+        let (StepControl::Adaptive { rtol, atol, .. }, Some((eq, ev))) =
+            (self.options.step, end.error)
+        else {
+            return 0.0;
+        };
+        let mut sum = 0.0;
+        for i in 0..N {
+            let sq = atol + rtol * start.q[i].abs().max(end.q[i].abs());
+            let sv = atol + rtol * start.v[i].abs().max(end.v[i].abs());
+            sum += (eq[i] / sq) * (eq[i] / sq) + (ev[i] / sv) * (ev[i] / sv);
+        }
+        libm::sqrt(sum / (2 * N) as f64)
+    }
+
+    fn accept(
+        &mut self,
+        end: StepEnd<N, Z>,
+        p: Vector<Z>,
+        t_end: f64,
+        iterations: u32,
+    ) -> Result<(), StepError> {
+        let v_reported = match self.options.velocity_projection {
+            VelocityProjection::Off => end.v,
+            VelocityProjection::Output | VelocityProjection::State => project_velocities(
+                &mut self.model,
+                &end.q,
+                end.v,
+                t_end,
+                self.options.constraint_tolerance,
+                1,
+            )?,
+        };
+        let mut point = consistent_point(&mut self.model, t_end, end.q, v_reported)?;
+        if self.options.velocity_projection == VelocityProjection::Off {
+            // Raw output: the multipliers as the paper has them.
+            point.lambda = p;
+            let factor = self.model.mass_factor(&end.q, t_end)?;
+            let force = self.model.force(&end.q, &end.v, t_end)?;
+            let g = self.model.jacobian(&end.q, &end.v, t_end)?;
+            point.a = factor.solve(&(force - g.tr_mul(&p)));
+        }
+        let report = end_report(&mut self.model, self.last.end, point, p, iterations)?;
+        self.t = t_end;
+        self.q = end.q;
+        self.v = if self.options.velocity_projection == VelocityProjection::State {
+            v_reported
+        } else {
+            end.v
+        };
+        self.p = p;
+        self.last = report;
+        self.statistics.steps += 1;
+        self.statistics.max_newton_iterations =
+            self.statistics.max_newton_iterations.max(iterations);
+        Ok(())
+    }
+}
+
+fn check_state<const N: usize>(q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<(), StepError> {
+    if q.iter().chain(v.iter()).all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(StepError::NonFinite {
+            t,
+            function: crate::error::ModelFunction::State,
+        })
+    }
+}
+
+/// `G M⁻¹ Gᵀ` and `M⁻¹ Gᵀ` at a point.
+fn projector<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    q: &Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+) -> Result<(Matrix<Z, Z>, Matrix<N, Z>, Matrix<Z, N>), StepError> {
+    let factor = model.mass_factor(q, t)?;
+    let g = model.jacobian(q, v, t)?;
+    let m_inv_gt = factor.solve(&g.transpose());
+    Ok((g * m_inv_gt, m_inv_gt, g))
+}
+
+/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric.
+fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    mut q: Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+    tolerance: f64,
+) -> Result<Vector<N>, StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    for _ in 0..50 {
+        let mut g = model.residual(&q, v, t)?;
+        keep_only_leading(&mut g, r);
+        let (worst, row) = max_abs(&g);
+        if worst <= tolerance {
+            return Ok(q);
+        }
+        let (mut a, m_inv_gt, _) = projector(model, &q, v, t)?;
+        keep_leading_rows(&mut a, &mut g, r);
+        let mu = solve_spd(&a, &g, r).map_err(|rows| StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        })?;
+        q -= m_inv_gt * mu;
+        if !q.iter().all(|x| x.is_finite()) {
+            return Err(StepError::InconsistentStart {
+                worst_row: Row {
+                    index: row,
+                    position_rows: r,
+                },
+                residual: worst,
+            });
+        }
+    }
+    let mut g = model.residual(&q, v, t)?;
+    keep_only_leading(&mut g, r);
+    let (worst, row) = max_abs(&g);
+    if worst <= tolerance {
+        Ok(q)
+    } else {
+        Err(StepError::InconsistentStart {
+            worst_row: Row {
+                index: row,
+                position_rows: r,
+            },
+            residual: worst,
+        })
+    }
+}
+
+fn keep_only_leading<const Z: usize>(g: &mut Vector<Z>, r: usize) {
+    for j in r..Z {
+        g[j] = 0.0;
+    }
+}
+
+/// Newton onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the mass
+/// metric; `iterations` = 1 is a single projection (exact when `w` is linear in `q'`).
+fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    q: &Vector<N>,
+    mut v: Vector<N>,
+    t: f64,
+    tolerance: f64,
+    iterations: u32,
+) -> Result<Vector<N>, StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    for _ in 0..iterations {
+        let w = model.rate(q, &v, t)?;
+        let (a, m_inv_gt, _) = projector(model, q, &v, t)?;
+        let mu = solve_spd(&a, &w, r).map_err(|rows| StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        })?;
+        v -= m_inv_gt * mu;
+        if iterations > 1 && max_abs(&model.rate(q, &v, t)?).0 <= tolerance * 1e-3 {
+            break;
+        }
+    }
+    if !v.iter().all(|x| x.is_finite()) {
+        return Err(StepError::NonFinite {
+            t,
+            function: crate::error::ModelFunction::State,
+        });
+    }
+    Ok(v)
+}
+
+/// Multipliers and accelerations from the acceleration-level system
+/// `G M⁻¹ Gᵀ λ = G M⁻¹ F + b`.
+fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+) -> Result<Point<N, Z>, StepError> {
+    let factor = model.mass_factor(&q, t)?;
+    let force = model.force(&q, &v, t)?;
+    let g = model.jacobian(&q, &v, t)?;
+    let m_inv_gt = factor.solve(&g.transpose());
+    let m_inv_f = factor.solve(&force);
+    let bias = model.bias(&q, &v, t)?;
+    let lambda = solve_spd(
+        &(g * m_inv_gt),
+        &(g * m_inv_f + bias),
+        S::POSITION_CONSTRAINTS,
+    )
+    .map_err(|rows| StepError::RankDeficientConstraints {
+        t,
+        dependent_rows: rows,
+    })?;
+    let a = m_inv_f - m_inv_gt * lambda;
+    Ok(Point { t, q, v, a, lambda })
+}
+
+fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    start: Point<N, Z>,
+    end: Point<N, Z>,
+    step_multipliers: Vector<Z>,
+    newton_iterations: u32,
+) -> Result<StepReport<N, Z>, StepError> {
+    let g = model.jacobian(&end.q, &end.v, end.t)?;
+    Ok(StepReport {
+        start,
+        end,
+        step_multipliers,
+        constraint_force: -g.tr_mul(&end.lambda),
+        residual: model.residual(&end.q, &end.v, end.t)?,
+        rate_residual: model.rate(&end.q, &end.v, end.t)?,
+        newton_iterations,
+    })
+}

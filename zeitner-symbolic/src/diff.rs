@@ -1,0 +1,212 @@
+//! Symbolic differentiation on the graph, memoised per node so shared subexpressions are
+//! differentiated once.
+
+use std::collections::HashMap;
+use std::fmt;
+
+use crate::graph::{Binary, Compare, Graph, Id, Node, Unary};
+
+/// Why a derivative could not be formed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DiffError {
+    /// The opaque call with this index has an argument that depends on the variable.
+    OpaqueCallDependsOnVariable { call: u32, var: u32 },
+}
+
+impl fmt::Display for DiffError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DiffError::OpaqueCallDependsOnVariable { call, var } => write!(
+                f,
+                "opaque call #{call} depends on variable #{var} and cannot be differentiated"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for DiffError {}
+
+/// Differentiates many expressions by one variable, sharing work between them.
+pub struct Differentiator {
+    var: u32,
+    memo: HashMap<Id, Id>,
+}
+
+impl Differentiator {
+    pub fn new(var: u32) -> Self {
+        Self {
+            var,
+            memo: HashMap::new(),
+        }
+    }
+
+    /// `d expr / d var`.
+    pub fn derive(&mut self, graph: &mut Graph, expr: Id) -> Result<Id, DiffError> {
+        if let Some(&d) = self.memo.get(&expr) {
+            return Ok(d);
+        }
+        let d = self.derive_uncached(graph, expr)?;
+        self.memo.insert(expr, d);
+        Ok(d)
+    }
+
+    fn derive_uncached(&mut self, g: &mut Graph, expr: Id) -> Result<Id, DiffError> {
+        let node = g.node(expr).clone();
+        Ok(match node {
+            Node::Const(_) => g.zero(),
+            Node::Var(v) => g.num(if v == self.var { 1.0 } else { 0.0 }),
+            Node::Add(a, b) => {
+                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                g.add(da, db)
+            }
+            Node::Sub(a, b) => {
+                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                g.sub(da, db)
+            }
+            Node::Neg(a) => {
+                let da = self.derive(g, a)?;
+                g.neg(da)
+            }
+            Node::Mul(a, b) => {
+                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let left = g.mul(da, b);
+                let right = g.mul(a, db);
+                g.add(left, right)
+            }
+            Node::Div(a, b) => {
+                // (a/b)' = (a' - (a/b) b') / b reuses the quotient itself.
+                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let correction = g.mul(expr, db);
+                let numerator = g.sub(da, correction);
+                g.div(numerator, b)
+            }
+            Node::Powi(a, n) => {
+                let da = self.derive(g, a)?;
+                if g.is_zero(da) {
+                    return Ok(g.zero());
+                }
+                let factor = g.num(n as f64);
+                let power = g.powi(a, n - 1);
+                let scaled = g.mul(factor, power);
+                g.mul(scaled, da)
+            }
+            Node::Unary(f, a) => {
+                let da = self.derive(g, a)?;
+                if g.is_zero(da) {
+                    return Ok(g.zero());
+                }
+                let outer = unary_derivative(g, f, a, expr);
+                g.mul(outer, da)
+            }
+            Node::Binary(f, a, b) => {
+                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                if g.is_zero(da) && g.is_zero(db) {
+                    return Ok(g.zero());
+                }
+                binary_derivative(g, f, a, b, expr, da, db)
+            }
+            Node::Select(cond, then, otherwise) => {
+                let (dt, de) = (self.derive(g, then)?, self.derive(g, otherwise)?);
+                g.select(cond, dt, de)
+            }
+            Node::Call(call, args) => {
+                let var = self.var;
+                if args.iter().any(|&arg| g.depends_on(arg, var)) {
+                    return Err(DiffError::OpaqueCallDependsOnVariable { call, var });
+                }
+                g.zero()
+            }
+        })
+    }
+}
+
+/// `f'(a)`, given `expr = f(a)`.
+fn unary_derivative(g: &mut Graph, f: Unary, a: Id, expr: Id) -> Id {
+    let one = g.one();
+    match f {
+        Unary::Sqrt => {
+            let two = g.num(2.0);
+            let denominator = g.mul(two, expr);
+            g.div(one, denominator)
+        }
+        Unary::Sin => g.unary(Unary::Cos, a),
+        Unary::Cos => {
+            let sin = g.unary(Unary::Sin, a);
+            g.neg(sin)
+        }
+        Unary::Tan => {
+            let square = g.powi(expr, 2);
+            g.add(one, square)
+        }
+        Unary::Asin | Unary::Acos => {
+            let square = g.powi(a, 2);
+            let rest = g.sub(one, square);
+            let root = g.unary(Unary::Sqrt, rest);
+            let d = g.div(one, root);
+            if f == Unary::Acos {
+                g.neg(d)
+            } else {
+                d
+            }
+        }
+        Unary::Atan => {
+            let square = g.powi(a, 2);
+            let denominator = g.add(one, square);
+            g.div(one, denominator)
+        }
+        Unary::Sinh => g.unary(Unary::Cosh, a),
+        Unary::Cosh => g.unary(Unary::Sinh, a),
+        Unary::Tanh => {
+            let square = g.powi(expr, 2);
+            g.sub(one, square)
+        }
+        Unary::Exp => expr,
+        Unary::Ln => g.div(one, a),
+        Unary::Log10 => {
+            let ln10 = g.num(core::f64::consts::LN_10);
+            let denominator = g.mul(ln10, a);
+            g.div(one, denominator)
+        }
+        Unary::Abs => g.unary(Unary::Signum, a),
+        Unary::Signum => g.zero(),
+    }
+}
+
+/// `d f(a, b)` given the derivatives `da`, `db` of the arguments.
+fn binary_derivative(g: &mut Graph, f: Binary, a: Id, b: Id, expr: Id, da: Id, db: Id) -> Id {
+    match f {
+        Binary::Powf => {
+            // d(a^b) = a^b (b' ln a + b a' / a)
+            let ln_a = g.unary(Unary::Ln, a);
+            let from_exponent = g.mul(db, ln_a);
+            let ratio = g.div(b, a);
+            let from_base = g.mul(ratio, da);
+            let sum = g.add(from_exponent, from_base);
+            g.mul(expr, sum)
+        }
+        Binary::Atan2 => {
+            // atan2(a, b) = angle of (b, a): d = (b a' - a b') / (a² + b²)
+            let left = g.mul(b, da);
+            let right = g.mul(a, db);
+            let numerator = g.sub(left, right);
+            let a2 = g.powi(a, 2);
+            let b2 = g.powi(b, 2);
+            let denominator = g.add(a2, b2);
+            g.div(numerator, denominator)
+        }
+        Binary::Hypot => {
+            let left = g.mul(a, da);
+            let right = g.mul(b, db);
+            let numerator = g.add(left, right);
+            g.div(numerator, expr)
+        }
+        Binary::Min => {
+            let cond = g.compare(Compare::Le, a, b);
+            g.select(cond, da, db)
+        }
+        Binary::Max => {
+            let cond = g.compare(Compare::Ge, a, b);
+            g.select(cond, da, db)
+        }
+    }
+}

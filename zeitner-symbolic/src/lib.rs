@@ -1,0 +1,15 @@
+//! The symbolic engine behind `#[constrained_system]`: an expression graph that simplifies and
+//! shares subexpressions as it is built ([`graph`]), differentiation ([`diff`]), numeric
+//! evaluation for testing ([`eval`]) and scheduling into straight-line code ([`program`]).
+//!
+//! It knows nothing of syn or Rust syntax, so it can be property-tested and fuzzed directly.
+
+pub mod diff;
+pub mod eval;
+pub mod graph;
+pub mod program;
+
+pub use diff::{DiffError, Differentiator};
+pub use eval::{Evaluator, Real};
+pub use graph::{Binary, Compare, Cond, CondId, Graph, Id, Node, Unary};
+pub use program::{tree_op_counts, Code, CodeCond, OpCounts, Program};

@@ -1,0 +1,289 @@
+//! Scheduling: turns the outputs of one generated function into straight-line code in which
+//! every subexpression used more than once is computed once, into a temporary.
+
+use crate::graph::{Binary, Compare, Cond, CondId, Graph, Id, Node, Unary};
+
+/// An expression tree of the emitted code; shared subexpressions are [`Code::Temp`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Code {
+    Const(f64),
+    Var(u32),
+    Temp(u32),
+    Add(Box<Code>, Box<Code>),
+    Sub(Box<Code>, Box<Code>),
+    Mul(Box<Code>, Box<Code>),
+    Div(Box<Code>, Box<Code>),
+    Neg(Box<Code>),
+    Powi(Box<Code>, i32),
+    Unary(Unary, Box<Code>),
+    Binary(Binary, Box<Code>, Box<Code>),
+    Select(Box<CodeCond>, Box<Code>, Box<Code>),
+    Call(u32, Vec<Code>),
+}
+
+/// A condition of the emitted code.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CodeCond {
+    Compare(Compare, Code, Code),
+    And(Box<CodeCond>, Box<CodeCond>),
+    Or(Box<CodeCond>, Box<CodeCond>),
+    Not(Box<CodeCond>),
+}
+
+/// Straight-line code: temporaries in order, then one expression per output slot.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Program {
+    pub temps: Vec<Code>,
+    pub outputs: Vec<(usize, Code)>,
+}
+
+/// Operation counts of emitted code.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpCounts {
+    /// Additions, subtractions and negations.
+    pub adds: u64,
+    /// Multiplications, with `powi(n)` counted as `|n| - 1` of them.
+    pub muls: u64,
+    pub divs: u64,
+    /// Calls of `sqrt`, `sin`, `powf`, `atan2` and the other library functions.
+    pub transcendental: u64,
+    /// Calls of the user's opaque methods.
+    pub opaque_calls: u64,
+}
+
+impl OpCounts {
+    pub fn total(&self) -> u64 {
+        self.adds + self.muls + self.divs + self.transcendental + self.opaque_calls
+    }
+
+    fn saturating_add(self, other: OpCounts) -> OpCounts {
+        OpCounts {
+            adds: self.adds.saturating_add(other.adds),
+            muls: self.muls.saturating_add(other.muls),
+            divs: self.divs.saturating_add(other.divs),
+            transcendental: self.transcendental.saturating_add(other.transcendental),
+            opaque_calls: self.opaque_calls.saturating_add(other.opaque_calls),
+        }
+    }
+}
+
+impl Program {
+    /// Schedules the given `(slot, expression)` outputs. Structural zeros are left out: the
+    /// caller's storage starts zeroed.
+    pub fn schedule(graph: &Graph, outputs: &[(usize, Id)]) -> Program {
+        let outputs: Vec<(usize, Id)> = outputs
+            .iter()
+            .copied()
+            .filter(|&(_, id)| !graph.is_zero(id))
+            .collect();
+        let mut uses = vec![0u32; graph.len()];
+        let mut reached = vec![false; graph.len()];
+        let mut stack: Vec<Id> = Vec::new();
+        for &(_, id) in &outputs {
+            uses[id.0 as usize] += 1;
+            stack.push(id);
+        }
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut reached[id.0 as usize], true) {
+                continue;
+            }
+            for child in children(graph, id) {
+                uses[child.0 as usize] += 1;
+                stack.push(child);
+            }
+        }
+        let mut temp_of = vec![None; graph.len()];
+        let mut program = Program::default();
+        // Ids are topologically ordered, so a temporary's operands are always defined before it.
+        for index in 0..graph.len() {
+            let id = Id(index as u32);
+            let leaf = matches!(graph.node(id), Node::Const(_) | Node::Var(_));
+            if reached[index] && uses[index] >= 2 && !leaf {
+                let code = code_of(graph, id, &temp_of, true);
+                temp_of[index] = Some(program.temps.len() as u32);
+                program.temps.push(code);
+            }
+        }
+        program.outputs = outputs
+            .iter()
+            .map(|&(slot, id)| (slot, code_of(graph, id, &temp_of, false)))
+            .collect();
+        program
+    }
+
+    /// What the emitted code costs per call.
+    pub fn op_counts(&self) -> OpCounts {
+        let mut counts = OpCounts::default();
+        for code in self.temps.iter().chain(self.outputs.iter().map(|(_, c)| c)) {
+            count_code(code, &mut counts);
+        }
+        counts
+    }
+}
+
+/// What the outputs would cost as independent expression trees: no sharing at all.
+pub fn tree_op_counts(graph: &Graph, outputs: &[Id]) -> OpCounts {
+    let mut memo: Vec<Option<OpCounts>> = vec![None; graph.len()];
+    outputs
+        .iter()
+        .filter(|&&id| !graph.is_zero(id))
+        .fold(OpCounts::default(), |acc, &id| {
+            acc.saturating_add(tree_counts(graph, id, &mut memo))
+        })
+}
+
+fn tree_counts(graph: &Graph, id: Id, memo: &mut Vec<Option<OpCounts>>) -> OpCounts {
+    if let Some(c) = memo[id.0 as usize] {
+        return c;
+    }
+    let mut own = OpCounts::default();
+    count_node(graph.node(id), &mut own);
+    let mut total = own;
+    for child in children(graph, id) {
+        total = total.saturating_add(tree_counts(graph, child, memo));
+    }
+    memo[id.0 as usize] = Some(total);
+    total
+}
+
+fn count_node(node: &Node, counts: &mut OpCounts) {
+    match node {
+        Node::Const(_) | Node::Var(_) | Node::Select(..) => {}
+        Node::Add(..) | Node::Sub(..) | Node::Neg(_) => counts.adds += 1,
+        Node::Mul(..) => counts.muls += 1,
+        Node::Div(..) => counts.divs += 1,
+        Node::Powi(_, n) => counts.muls += u64::from(n.unsigned_abs().saturating_sub(1)),
+        Node::Unary(..) | Node::Binary(..) => counts.transcendental += 1,
+        Node::Call(..) => counts.opaque_calls += 1,
+    }
+}
+
+fn count_code(code: &Code, counts: &mut OpCounts) {
+    match code {
+        Code::Const(_) | Code::Var(_) | Code::Temp(_) => {}
+        Code::Add(a, b) | Code::Sub(a, b) => {
+            counts.adds += 1;
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        Code::Mul(a, b) => {
+            counts.muls += 1;
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        Code::Div(a, b) => {
+            counts.divs += 1;
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        Code::Neg(a) => {
+            counts.adds += 1;
+            count_code(a, counts);
+        }
+        Code::Powi(a, n) => {
+            counts.muls += u64::from(n.unsigned_abs().saturating_sub(1));
+            count_code(a, counts);
+        }
+        Code::Unary(_, a) => {
+            counts.transcendental += 1;
+            count_code(a, counts);
+        }
+        Code::Binary(_, a, b) => {
+            counts.transcendental += 1;
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        Code::Select(c, a, b) => {
+            count_cond(c, counts);
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        Code::Call(_, args) => {
+            counts.opaque_calls += 1;
+            args.iter().for_each(|a| count_code(a, counts));
+        }
+    }
+}
+
+fn count_cond(cond: &CodeCond, counts: &mut OpCounts) {
+    match cond {
+        CodeCond::Compare(_, a, b) => {
+            count_code(a, counts);
+            count_code(b, counts);
+        }
+        CodeCond::And(a, b) | CodeCond::Or(a, b) => {
+            count_cond(a, counts);
+            count_cond(b, counts);
+        }
+        CodeCond::Not(a) => count_cond(a, counts),
+    }
+}
+
+/// The direct operands of a node, condition operands included.
+pub(crate) fn children(graph: &Graph, id: Id) -> Vec<Id> {
+    match graph.node(id) {
+        Node::Const(_) | Node::Var(_) => Vec::new(),
+        Node::Add(a, b)
+        | Node::Sub(a, b)
+        | Node::Mul(a, b)
+        | Node::Div(a, b)
+        | Node::Binary(_, a, b) => vec![*a, *b],
+        Node::Neg(a) | Node::Powi(a, _) | Node::Unary(_, a) => vec![*a],
+        Node::Select(c, a, b) => {
+            let mut out = Vec::new();
+            graph.push_cond_operands(*c, &mut out);
+            out.extend([*a, *b]);
+            out
+        }
+        Node::Call(_, args) => args.clone(),
+    }
+}
+
+fn code_of(graph: &Graph, id: Id, temp_of: &[Option<u32>], defining: bool) -> Code {
+    if !defining {
+        if let Some(t) = temp_of[id.0 as usize] {
+            return Code::Temp(t);
+        }
+    }
+    let sub = |child: Id| Box::new(code_of(graph, child, temp_of, false));
+    match graph.node(id) {
+        Node::Const(bits) => Code::Const(f64::from_bits(*bits)),
+        Node::Var(v) => Code::Var(*v),
+        Node::Add(a, b) => Code::Add(sub(*a), sub(*b)),
+        Node::Sub(a, b) => Code::Sub(sub(*a), sub(*b)),
+        Node::Mul(a, b) => Code::Mul(sub(*a), sub(*b)),
+        Node::Div(a, b) => Code::Div(sub(*a), sub(*b)),
+        Node::Neg(a) => Code::Neg(sub(*a)),
+        Node::Powi(a, n) => Code::Powi(sub(*a), *n),
+        Node::Unary(f, a) => Code::Unary(*f, sub(*a)),
+        Node::Binary(f, a, b) => Code::Binary(*f, sub(*a), sub(*b)),
+        Node::Select(c, a, b) => {
+            Code::Select(Box::new(cond_code(graph, *c, temp_of)), sub(*a), sub(*b))
+        }
+        Node::Call(f, args) => Code::Call(
+            *f,
+            args.iter()
+                .map(|&a| code_of(graph, a, temp_of, false))
+                .collect(),
+        ),
+    }
+}
+
+fn cond_code(graph: &Graph, cond: CondId, temp_of: &[Option<u32>]) -> CodeCond {
+    match graph.cond(cond) {
+        Cond::Compare(op, a, b) => CodeCond::Compare(
+            *op,
+            code_of(graph, *a, temp_of, false),
+            code_of(graph, *b, temp_of, false),
+        ),
+        Cond::And(a, b) => CodeCond::And(
+            Box::new(cond_code(graph, *a, temp_of)),
+            Box::new(cond_code(graph, *b, temp_of)),
+        ),
+        Cond::Or(a, b) => CodeCond::Or(
+            Box::new(cond_code(graph, *a, temp_of)),
+            Box::new(cond_code(graph, *b, temp_of)),
+        ),
+        Cond::Not(a) => CodeCond::Not(Box::new(cond_code(graph, *a, temp_of))),
+    }
+}
