@@ -1,0 +1,53 @@
+//! The paper's scene (eqs. 12–13): a steam generator on a pendulum column and a lateral strut.
+//! q1, q2: horizontal and vertical displacement of the centre of mass; q3: rotation.
+
+use zeitner::constrained_system;
+
+pub struct SteamGenerator {
+    /// Mass, kg.
+    pub m: f64,
+    /// Moment of inertia about the centre of mass, kg m².
+    pub j: f64,
+    /// Gravity, m/s².
+    pub g: f64,
+    /// Height of the load's line of action above the centre of mass, m.
+    pub h1: f64,
+    /// Length of the pendulum column, m.
+    pub h2: f64,
+    /// Lever arm of the lateral strut at C, m.
+    pub h3: f64,
+    /// Damper coefficient, N s/m.
+    pub d: f64,
+    /// Peak horizontal load, N.
+    pub p0: f64,
+    /// Rise time of the load, s.
+    pub rise: f64,
+}
+
+impl SteamGenerator {
+    /// The paper's defaults (SI units); the paper itself gives no figures.
+    pub fn paper() -> Self {
+        SteamGenerator { m: 4.0e5, j: 1.5e7, g: 9.81, h1: 4.0, h2: 6.0, h3: 8.0, d: 2.0e6, p0: 1.0e6, rise: 0.01 }
+    }
+
+    /// The horizontal load P(t): a ramp to `p0` over the rise time.
+    pub fn load(&self, t: f64) -> f64 {
+        self.p0 * (t / self.rise).min(1.0)
+    }
+}
+
+#[constrained_system]
+impl SteamGenerator {
+    fn mass(&self) -> [f64; 3] {
+        [self.m, self.m, self.j]
+    }
+
+    fn force(&self, [_q1, _q2, _q3]: [f64; 3], [v1, _v2, _v3]: [f64; 3], t: f64) -> [f64; 3] {
+        let p = self.load(t);
+        [p - self.d * v1, -self.m * self.g, p * self.h1]
+    }
+
+    fn constraints(&self, [q1, q2, q3]: [f64; 3]) -> [f64; 2] {
+        [q1 - self.h3 * q3, q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2]
+    }
+}
