@@ -88,6 +88,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     v: Vector<N>,
     /// The multipliers of the last step, the next step's starting guess.
     p: Vector<Z>,
+    /// The multipliers from the acceleration-level system at the current time.
+    consistent_lambda: Vector<Z>,
     last: StepReport<N, Z>,
     step_size: f64,
     statistics: Statistics,
@@ -96,6 +98,7 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
 enum Attempt<const N: usize, const Z: usize> {
     Accepted {
         end: StepEnd<N, Z>,
+        point: Point<N, Z>,
         p: Vector<Z>,
         iterations: u32,
         error_norm: f64,
@@ -138,6 +141,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             q,
             v,
             p: point.lambda,
+            consistent_lambda: point.lambda,
             last: report,
             step_size,
             statistics: Statistics::default(),
@@ -188,12 +192,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             match self.attempt(h_try)? {
                 Attempt::Accepted {
                     end,
+                    point,
                     p,
                     iterations,
                     error_norm,
                 } => {
                     let t_end = if last_step { t_limit } else { self.t + h_try };
-                    self.accept(end, p, t_end, iterations)?;
+                    self.accept(end, point, p, t_end, iterations)?;
                     self.step_size =
                         self.next_step_size(h_try, h, error_norm, iterations, last_step);
                     return Ok(&self.last);
@@ -313,7 +318,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let g = self.model.residual(&end.q, &end.v, t_end)?;
             worst = max_abs(&g);
             if worst.0 <= options.constraint_tolerance {
-                let error_norm = self.error_norm(&start, &end);
+                let point = self.end_point(&end, t_end)?;
+                let frozen = self.freezing_error(&start, &end, &point, h)?;
+                let error_norm = self.error_norm(&start, &end, &frozen);
                 if error_norm > 1.0 {
                     let shrink = (0.9 * libm::pow(error_norm, -0.2)).clamp(0.2, 0.9);
                     return Ok(Attempt::Rejected {
@@ -323,6 +330,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 }
                 return Ok(Attempt::Accepted {
                     end,
+                    point,
                     p,
                     iterations: iteration,
                     error_norm,
@@ -412,13 +420,42 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
     }
 
-    /// Weighted RMS norm of the embedded error estimate; 0 without one.
-    fn error_norm(&self, start: &Start<N, Z>, end: &StepEnd<N, Z>) -> f64 {
+    /// The consistent end point: velocities projected onto the velocity-level constraint,
+    /// multipliers and accelerations from the acceleration-level system.
+    fn end_point(&mut self, end: &StepEnd<N, Z>, t_end: f64) -> Result<Point<N, Z>, StepError> {
+        let tolerance = self.options.constraint_tolerance;
+        let v = project_velocities(&mut self.model, &end.q, end.v, t_end, tolerance, 1)?;
+        consistent_point(&mut self.model, t_end, end.q, v)
+    }
+
+    /// Position error from holding the multipliers fixed while `G` turns: to leading order
+    /// `τ⁴/36 M⁻¹ Ġᵀ λ'`, with `Ġ` and `λ'` from the step's two ends. The embedded estimate of
+    /// the inner method cannot see it, since it integrates the frozen-multiplier equations.
+    fn freezing_error(
+        &mut self,
+        start: &Start<N, Z>,
+        end: &StepEnd<N, Z>,
+        point: &Point<N, Z>,
+        h: f64,
+    ) -> Result<Vector<N>, StepError> {
+        if !matches!(self.options.step, StepControl::Adaptive { .. }) {
+            return Ok(Vector::zeros());
+        }
+        let g0 = self.model.jacobian(&start.q, &start.v, start.t)?;
+        let g1 = self.model.jacobian(&end.q, &point.v, point.t)?;
+        let factor = self.model.mass_factor(&end.q, point.t)?;
+        let turn = (g1 - g0).tr_mul(&(point.lambda - self.consistent_lambda));
+        Ok((h * h / 36.0) * factor.solve(&turn))
+    }
+
+    /// Weighted RMS norm of the error estimate (embedded plus freezing); 0 in fixed-step mode.
+    fn error_norm(&self, start: &Start<N, Z>, end: &StepEnd<N, Z>, frozen: &Vector<N>) -> f64 {
         let (StepControl::Adaptive { rtol, atol, .. }, Some((eq, ev))) =
             (self.options.step, end.error)
         else {
             return 0.0;
         };
+        let eq = eq.abs() + frozen.abs();
         let mut sum = 0.0;
         for i in 0..N {
             let sq = atol + rtol * start.q[i].abs().max(end.q[i].abs());
@@ -431,24 +468,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     fn accept(
         &mut self,
         end: StepEnd<N, Z>,
+        consistent: Point<N, Z>,
         p: Vector<Z>,
         t_end: f64,
         iterations: u32,
     ) -> Result<(), StepError> {
-        let v_reported = match self.options.velocity_projection {
-            VelocityProjection::Off => end.v,
-            VelocityProjection::Output | VelocityProjection::State => project_velocities(
-                &mut self.model,
-                &end.q,
-                end.v,
-                t_end,
-                self.options.constraint_tolerance,
-                1,
-            )?,
-        };
-        let mut point = consistent_point(&mut self.model, t_end, end.q, v_reported)?;
+        let mut point = consistent;
         if self.options.velocity_projection == VelocityProjection::Off {
-            // Raw output: the multipliers as the paper has them.
+            // Raw output: velocities and multipliers as the paper has them.
+            point.v = end.v;
             point.lambda = p;
             let factor = self.model.mass_factor(&end.q, t_end)?;
             let force = self.model.force(&end.q, &end.v, t_end)?;
@@ -458,8 +486,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let report = end_report(&mut self.model, self.last.end, point, p, iterations)?;
         self.t = t_end;
         self.q = end.q;
+        self.consistent_lambda = consistent.lambda;
         self.v = if self.options.velocity_projection == VelocityProjection::State {
-            v_reported
+            consistent.v
         } else {
             end.v
         };
