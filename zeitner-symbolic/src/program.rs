@@ -287,3 +287,53 @@ fn cond_code(graph: &Graph, cond: CondId, temp_of: &[Option<u32>]) -> CodeCond {
         Cond::Not(a) => CodeCond::Not(Box::new(cond_code(graph, *a, temp_of))),
     }
 }
+
+impl Program {
+    /// Runs the straight-line code: `(slot, value)` per scheduled output. For testing the
+    /// scheduler against the graph.
+    pub fn evaluate(&self, vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> Vec<(usize, f64)> {
+        let mut temps = Vec::with_capacity(self.temps.len());
+        for code in &self.temps {
+            let value = run(code, &temps, vars, calls);
+            temps.push(value);
+        }
+        self.outputs.iter().map(|(slot, code)| (*slot, run(code, &temps, vars, calls))).collect()
+    }
+}
+
+fn run(code: &Code, temps: &[f64], vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> f64 {
+    let go = |c: &Code| run(c, temps, vars, calls);
+    match code {
+        Code::Const(x) => *x,
+        Code::Var(v) => vars(*v),
+        Code::Temp(t) => temps[*t as usize],
+        Code::Add(a, b) => go(a) + go(b),
+        Code::Sub(a, b) => go(a) - go(b),
+        Code::Mul(a, b) => go(a) * go(b),
+        Code::Div(a, b) => go(a) / go(b),
+        Code::Neg(a) => -go(a),
+        Code::Powi(a, n) => go(a).powi(*n),
+        Code::Unary(f, a) => f.apply(go(a)),
+        Code::Binary(f, a, b) => f.apply(go(a), go(b)),
+        Code::Select(c, a, b) => {
+            if run_cond(c, temps, vars, calls) {
+                go(a)
+            } else {
+                go(b)
+            }
+        }
+        Code::Call(f, args) => {
+            let values: Vec<f64> = args.iter().map(go).collect();
+            calls(*f, &values)
+        }
+    }
+}
+
+fn run_cond(cond: &CodeCond, temps: &[f64], vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> bool {
+    match cond {
+        CodeCond::Compare(op, a, b) => op.apply(run(a, temps, vars, calls), run(b, temps, vars, calls)),
+        CodeCond::And(a, b) => run_cond(a, temps, vars, calls) && run_cond(b, temps, vars, calls),
+        CodeCond::Or(a, b) => run_cond(a, temps, vars, calls) || run_cond(b, temps, vars, calls),
+        CodeCond::Not(a) => !run_cond(a, temps, vars, calls),
+    }
+}
