@@ -184,7 +184,7 @@ impl Emitter<'_> {
     fn body(&self, generated: &Generated, rt: &TokenStream) -> TokenStream {
         let temps = generated.program.temps.iter().enumerate().map(|(i, code)| {
             let name = temp_name(i as u32);
-            let value = self.code(code, 0);
+            let value = self.code(code, 0, Span::call_site());
             quote!(let #name = #value;)
         });
         let slots: Vec<(usize, usize, usize, Span)> = generated
@@ -211,7 +211,7 @@ impl Emitter<'_> {
             let (b, row, col, span) = slots[*slot];
             let block = &generated.blocks[b];
             let name = format_ident!("{}", block.name, span = span);
-            let value = self.code(code, 0);
+            let value = self.code(code, 0, span);
             let (row_lit, col_lit) = (
                 Literal::usize_unsuffixed(row),
                 Literal::usize_unsuffixed(col),
@@ -247,8 +247,9 @@ impl Emitter<'_> {
     }
 
     /// The tokens of `code`, parenthesised when it binds less strongly than `needed`.
-    fn code(&self, code: &Code, needed: u8) -> TokenStream {
-        let (tokens, strength) = self.code_with_strength(code);
+    /// Operators carry `span`, the user's equation, so that a type error lands on it.
+    fn code(&self, code: &Code, needed: u8, span: Span) -> TokenStream {
+        let (tokens, strength) = self.code_with_strength(code, span);
         if strength < needed {
             quote!((#tokens))
         } else {
@@ -256,7 +257,7 @@ impl Emitter<'_> {
         }
     }
 
-    fn code_with_strength(&self, code: &Code) -> (TokenStream, u8) {
+    fn code_with_strength(&self, code: &Code, span: Span) -> (TokenStream, u8) {
         match code {
             Code::Const(x) => literal(*x),
             Code::Var(v) => {
@@ -270,59 +271,59 @@ impl Emitter<'_> {
             }
             Code::Temp(i) => {
                 let name = temp_name(*i);
-                (quote!(#name), ATOM)
+                (quote_spanned!(span=> #name), ATOM)
             }
             Code::Add(a, b) => {
-                let (a, b) = (self.code(a, SUM), self.code(b, SUM));
-                (quote!(#a + #b), SUM)
+                let (a, b) = (self.code(a, SUM, span), self.code(b, SUM, span));
+                (quote_spanned!(span=> #a + #b), SUM)
             }
             Code::Sub(a, b) => {
-                let (a, b) = (self.code(a, SUM), self.code(b, PRODUCT));
-                (quote!(#a - #b), SUM)
+                let (a, b) = (self.code(a, SUM, span), self.code(b, PRODUCT, span));
+                (quote_spanned!(span=> #a - #b), SUM)
             }
             Code::Mul(a, b) => {
-                let (a, b) = (self.code(a, PRODUCT), self.code(b, PREFIX));
-                (quote!(#a * #b), PRODUCT)
+                let (a, b) = (self.code(a, PRODUCT, span), self.code(b, PREFIX, span));
+                (quote_spanned!(span=> #a * #b), PRODUCT)
             }
             Code::Div(a, b) => {
-                let (a, b) = (self.code(a, PRODUCT), self.code(b, PREFIX));
-                (quote!(#a / #b), PRODUCT)
+                let (a, b) = (self.code(a, PRODUCT, span), self.code(b, PREFIX, span));
+                (quote_spanned!(span=> #a / #b), PRODUCT)
             }
             Code::Neg(a) => {
-                let a = self.code(a, ATOM);
-                (quote!(-#a), PREFIX)
+                let a = self.code(a, ATOM, span);
+                (quote_spanned!(span=> -#a), PREFIX)
             }
             Code::Powi(a, n) => {
-                let a = self.receiver(a);
+                let a = self.receiver(a, span);
                 let n = Literal::i32_unsuffixed(*n);
-                (quote!(#a.powi(#n)), ATOM)
+                (quote_spanned!(span=> #a.powi(#n)), ATOM)
             }
             Code::Unary(f, a) => {
-                let a = self.receiver(a);
+                let a = self.receiver(a, span);
                 let method = format_ident!("{}", f.method_name());
-                (quote!(#a.#method()), ATOM)
+                (quote_spanned!(span=> #a.#method()), ATOM)
             }
             Code::Binary(f, a, b) => {
-                let a = self.receiver(a);
-                let b = self.code(b, 0);
+                let a = self.receiver(a, span);
+                let b = self.code(b, 0, span);
                 let method = format_ident!("{}", binary_name(*f));
-                (quote!(#a.#method(#b)), ATOM)
+                (quote_spanned!(span=> #a.#method(#b)), ATOM)
             }
             Code::Select(cond, a, b) => {
-                let cond = self.cond(cond);
-                let (a, b) = (self.code(a, 0), self.code(b, 0));
-                (quote!(if #cond { #a } else { #b }), 0)
+                let cond = self.cond(cond, span);
+                let (a, b) = (self.code(a, 0, span), self.code(b, 0, span));
+                (quote_spanned!(span=> if #cond { #a } else { #b }), 0)
             }
             Code::Call(index, args) => {
                 let method = &self.calls[*index as usize].method;
-                let args = args.iter().map(|a| self.code(a, 0));
-                (quote!(self.#method(#(#args),*)), ATOM)
+                let args = args.iter().map(|a| self.code(a, 0, span));
+                (quote_spanned!(span=> self.#method(#(#args),*)), ATOM)
             }
         }
     }
 
     /// A method receiver: an atom, with literals typed so the method resolves.
-    fn receiver(&self, code: &Code) -> TokenStream {
+    fn receiver(&self, code: &Code, span: Span) -> TokenStream {
         if let Code::Const(x) = code {
             let lit = Literal::f64_suffixed(x.abs());
             return if x.is_sign_negative() {
@@ -331,13 +332,13 @@ impl Emitter<'_> {
                 quote!(#lit)
             };
         }
-        self.code(code, ATOM)
+        self.code(code, ATOM, span)
     }
 
-    fn cond(&self, cond: &CodeCond) -> TokenStream {
+    fn cond(&self, cond: &CodeCond, span: Span) -> TokenStream {
         match cond {
             CodeCond::Compare(op, a, b) => {
-                let (a, b) = (self.code(a, SUM), self.code(b, SUM));
+                let (a, b) = (self.code(a, SUM, span), self.code(b, SUM, span));
                 match op {
                     Compare::Lt => quote!(#a < #b),
                     Compare::Le => quote!(#a <= #b),
@@ -348,15 +349,15 @@ impl Emitter<'_> {
                 }
             }
             CodeCond::And(a, b) => {
-                let (a, b) = (self.cond(a), self.cond(b));
+                let (a, b) = (self.cond(a, span), self.cond(b, span));
                 quote!((#a) && (#b))
             }
             CodeCond::Or(a, b) => {
-                let (a, b) = (self.cond(a), self.cond(b));
+                let (a, b) = (self.cond(a, span), self.cond(b, span));
                 quote!((#a) || (#b))
             }
             CodeCond::Not(a) => {
-                let a = self.cond(a);
+                let a = self.cond(a, span);
                 quote!(!(#a))
             }
         }

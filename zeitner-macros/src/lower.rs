@@ -538,7 +538,10 @@ impl Lowerer<'_> {
         let cond = self.lower_cond(scope, &if_expr.cond);
         let then = self.lower_block_value(scope, &if_expr.then_branch);
         let otherwise = match &if_expr.else_branch {
-            Some((_, otherwise)) => self.lower(scope, otherwise),
+            Some((_, otherwise)) => match &**otherwise {
+                Expr::Block(block) => self.lower_block_value(scope, &block.block),
+                chained => self.lower(scope, chained),
+            },
             None => {
                 self.errors
                     .error_spanned_by(if_expr, "an `if` in a model needs an `else` branch");

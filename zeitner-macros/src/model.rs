@@ -118,6 +118,7 @@ impl<'a> Model<'a> {
             );
         }
         let mut functions: Vec<ModelFn<'a>> = Vec::new();
+        let mut seen: Vec<Role> = Vec::new();
         for member in &item.items {
             let ImplItem::Fn(function) = member else {
                 errors.error_spanned_by(
@@ -138,19 +139,20 @@ impl<'a> Model<'a> {
                 );
                 continue;
             };
-            if functions.iter().any(|f| f.role == role) {
+            if seen.contains(&role) {
                 errors.error_spanned_by(
                     &function.sig.ident,
                     format_args!("`{name}` is defined twice"),
                 );
                 continue;
             }
+            seen.push(role);
             if let Some(parsed) = parse_function(role, function, errors) {
                 functions.push(parsed);
             }
         }
         for role in [Role::Mass, Role::Force, Role::Constraints] {
-            if !functions.iter().any(|f| f.role == role) {
+            if !seen.contains(&role) {
                 errors.error_spanned_by(
                     &item.self_ty,
                     format_args!(
