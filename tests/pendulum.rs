@@ -6,22 +6,45 @@ mod common;
 
 use common::pendulum::Pendulum;
 use common::rk4;
-use zeitner::{InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection};
+use zeitner::{
+    InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection,
+};
 
-const SCENE: Pendulum = Pendulum { m: 1.0, length: 1.0, g: 9.81 };
+const SCENE: Pendulum = Pendulum {
+    m: 1.0,
+    length: 1.0,
+    g: 9.81,
+};
 
 /// `(q, v, λ)` of the reference at `t`, released horizontally at rest.
 fn reference(t: f64) -> ([f64; 2], [f64; 2], f64) {
     let (g, l, m) = (SCENE.g, SCENE.length, SCENE.m);
     let steps = (t / 2e-5).round().max(1.0) as usize;
-    let y = rk4(|_, y: &[f64; 2]| [y[1], -(g / l) * y[0].sin()], 0.0, [core::f64::consts::FRAC_PI_2, 0.0], t, steps);
+    let y = rk4(
+        |_, y: &[f64; 2]| [y[1], -(g / l) * y[0].sin()],
+        0.0,
+        [core::f64::consts::FRAC_PI_2, 0.0],
+        t,
+        steps,
+    );
     let (theta, w) = (y[0], y[1]);
     let (sin, cos) = theta.sin_cos();
-    ([l * sin, -l * cos], [l * w * cos, l * w * sin], m * (l * w * w + g * cos) / (2.0 * l))
+    (
+        [l * sin, -l * cos],
+        [l * w * cos, l * w * sin],
+        m * (l * w * w + g * cos) / (2.0 * l),
+    )
 }
 
 fn start(options: Options) -> Simulator<'static, Pendulum, 2, 1> {
-    Simulator::new(&SCENE, Vector::<2>::new(1.0, 0.0), Vector::zeros(), 0.0, options).unwrap()
+    Simulator::new(
+        &SCENE,
+        Vector::<2>::new(1.0, 0.0),
+        Vector::zeros(),
+        0.0,
+        options,
+    )
+    .unwrap()
 }
 
 fn energy(q: &Vector<2>, v: &Vector<2>) -> f64 {
@@ -31,7 +54,13 @@ fn energy(q: &Vector<2>, v: &Vector<2>) -> f64 {
 #[test]
 fn ten_seconds_within_1e8_of_the_angle_reference() {
     let options = Options {
-        step: StepControl::Adaptive { initial_step: 1e-3, min_step: 1e-12, max_step: 0.1, rtol: 1e-10, atol: 1e-12 },
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: 0.1,
+            rtol: 1e-10,
+            atol: 1e-12,
+        },
         constraint_tolerance: 1e-12,
         ..Options::default()
     };
@@ -63,7 +92,9 @@ fn ten_seconds_within_1e8_of_the_angle_reference() {
 fn errors(method: InnerMethod, sensitivity: Sensitivity, n: u32) -> [f64; 5] {
     let fixed = |projection| Options {
         method,
-        step: StepControl::Fixed { step: 1.0 / f64::from(n) },
+        step: StepControl::Fixed {
+            step: 1.0 / f64::from(n),
+        },
         sensitivity,
         constraint_tolerance: 1e-14,
         max_newton_iterations: 30,
@@ -96,28 +127,67 @@ fn observed_orders(method: InnerMethod, sensitivity: Sensitivity, ns: [u32; 2]) 
 /// constraint-normal direction at order 2; the step multiplier `p` is a mean of λ over the step
 /// (order 1 as a point value); projecting the velocities for output and recomputing λ from the
 /// acceleration-level system restores the position order in both.
-fn assert_orders(label: &str, method: InnerMethod, sensitivity: Sensitivity, ns: [u32; 2], claims: [f64; 5]) {
+fn assert_orders(
+    label: &str,
+    method: InnerMethod,
+    sensitivity: Sensitivity,
+    ns: [u32; 2],
+    claims: [f64; 5],
+) {
     let orders = observed_orders(method, sensitivity, ns);
     let names = ["q", "raw v", "output v", "raw p", "output λ"];
     for i in 0..5 {
-        eprintln!("{label}: {} order {:.2} (claimed {})", names[i], orders[i], claims[i]);
-        assert!((orders[i] - claims[i]).abs() <= 0.3, "{label}: {} order {:.2}, claimed {}", names[i], orders[i], claims[i]);
+        eprintln!(
+            "{label}: {} order {:.2} (claimed {})",
+            names[i], orders[i], claims[i]
+        );
+        assert!(
+            (orders[i] - claims[i]).abs() <= 0.3,
+            "{label}: {} order {:.2}, claimed {}",
+            names[i],
+            orders[i],
+            claims[i]
+        );
     }
 }
 
 #[test]
 fn convergence_orders_rk4_exact_and_paper_sensitivity() {
     let claims = [4.0, 2.0, 4.0, 1.0, 4.0];
-    assert_orders("RK4, exact Q", InnerMethod::Rk4 { substeps: 1 }, Sensitivity::Exact, [50, 100], claims);
-    assert_orders("RK4, paper's Q", InnerMethod::Rk4 { substeps: 1 }, Sensitivity::Paper, [50, 100], claims);
+    assert_orders(
+        "RK4, exact Q",
+        InnerMethod::Rk4 { substeps: 1 },
+        Sensitivity::Exact,
+        [50, 100],
+        claims,
+    );
+    assert_orders(
+        "RK4, paper's Q",
+        InnerMethod::Rk4 { substeps: 1 },
+        Sensitivity::Paper,
+        [50, 100],
+        claims,
+    );
 }
 
 #[test]
 fn convergence_orders_dormand_prince() {
-    assert_orders("DOPRI5", InnerMethod::DormandPrince54, Sensitivity::Exact, [50, 100], [4.0, 2.0, 4.0, 1.0, 4.0]);
+    assert_orders(
+        "DOPRI5",
+        InnerMethod::DormandPrince54,
+        Sensitivity::Exact,
+        [50, 100],
+        [4.0, 2.0, 4.0, 1.0, 4.0],
+    );
 }
 
 #[test]
 fn convergence_orders_sdirk2() {
-    assert_orders("SDIRK2", InnerMethod::Sdirk2, Sensitivity::Exact, [100, 200], [2.0, 2.0, 2.0, 1.0, 2.0]);
+    assert_orders(
+        "SDIRK2",
+        InnerMethod::Sdirk2,
+        Sensitivity::Exact,
+        [100, 200],
+        [2.0, 2.0, 2.0, 1.0, 2.0],
+    );
 }

@@ -16,7 +16,9 @@ mod common;
 
 use common::steam_generator::SteamGenerator;
 use common::{relative_error, rk4};
-use zeitner::{InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection};
+use zeitner::{
+    InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection,
+};
 
 struct Reference {
     q: [f64; 3],
@@ -29,14 +31,30 @@ fn phi_rhs(s: &SteamGenerator, t: f64, y: &[f64; 2]) -> [f64; 2] {
     let (sin, cos) = phi.sin_cos();
     let p = s.load(t);
     let mu = s.m * s.h2 * s.h2 + s.j * s.h2 * s.h2 * cos * cos / (s.h3 * s.h3);
-    let q = (p - s.d * s.h2 * cos * w) * s.h2 * cos - s.m * s.g * s.h2 * sin + p * s.h1 * s.h2 * cos / s.h3;
-    [w, (q + s.j * s.h2 * s.h2 * sin * cos * w * w / (s.h3 * s.h3)) / mu]
+    let q = (p - s.d * s.h2 * cos * w) * s.h2 * cos - s.m * s.g * s.h2 * sin
+        + p * s.h1 * s.h2 * cos / s.h3;
+    [
+        w,
+        (q + s.j * s.h2 * s.h2 * sin * cos * w * w / (s.h3 * s.h3)) / mu,
+    ]
 }
 
 fn reference(s: &SteamGenerator, t: f64) -> Reference {
     // Integrate across the load's kink at t = rise in two pieces, 1e-5 s steps (RK4 error ~1e-15).
-    let y = rk4(|t, y| phi_rhs(s, t, y), 0.0, [0.0, 0.0], s.rise, (s.rise / 1e-5).round() as usize);
-    let y = rk4(|t, y| phi_rhs(s, t, y), s.rise, y, t, ((t - s.rise) / 1e-5).round() as usize);
+    let y = rk4(
+        |t, y| phi_rhs(s, t, y),
+        0.0,
+        [0.0, 0.0],
+        s.rise,
+        (s.rise / 1e-5).round() as usize,
+    );
+    let y = rk4(
+        |t, y| phi_rhs(s, t, y),
+        s.rise,
+        y,
+        t,
+        ((t - s.rise) / 1e-5).round() as usize,
+    );
     let (phi, w) = (y[0], y[1]);
     let acc = phi_rhs(s, t, &y)[1];
     let (sin, cos) = phi.sin_cos();
@@ -65,7 +83,13 @@ fn reference(s: &SteamGenerator, t: f64) -> Reference {
 fn tight() -> Options {
     Options {
         method: InnerMethod::DormandPrince54,
-        step: StepControl::Adaptive { initial_step: 1e-4, min_step: 1e-12, max_step: 0.01, rtol: 1e-12, atol: 1e-14 },
+        step: StepControl::Adaptive {
+            initial_step: 1e-4,
+            min_step: 1e-12,
+            max_step: 0.01,
+            rtol: 1e-12,
+            atol: 1e-14,
+        },
         sensitivity: Sensitivity::Exact,
         constraint_tolerance: 1e-13,
         max_newton_iterations: 12,
@@ -98,12 +122,20 @@ fn matches_the_reduced_coordinate_solution() {
 #[test]
 fn constraints_hold_after_every_step_with_the_papers_method() {
     let scene = SteamGenerator::paper();
-    let options = Options { constraint_tolerance: 1e-9, ..Options::paper(1e-3) };
+    let options = Options {
+        constraint_tolerance: 1e-9,
+        ..Options::paper(1e-3)
+    };
     let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
     let mut steps = 0;
     sim.advance_to(2.0, |report| {
         steps += 1;
-        assert!(report.residual.amax() <= 1e-9, "g = {:?} at t = {}", report.residual, report.end.t);
+        assert!(
+            report.residual.amax() <= 1e-9,
+            "g = {:?} at t = {}",
+            report.residual,
+            report.end.t
+        );
     })
     .unwrap();
     assert_eq!(steps, 2000);

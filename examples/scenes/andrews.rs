@@ -7,26 +7,96 @@ use zeitner::constrained_system;
 /// The mechanism's parameters, named as in the test set.
 #[derive(Clone, Copy, Debug)]
 pub struct Andrews {
-    pub m1: f64, pub m2: f64, pub m3: f64, pub m4: f64, pub m5: f64, pub m6: f64, pub m7: f64,
-    pub i1: f64, pub i2: f64, pub i3: f64, pub i4: f64, pub i5: f64, pub i6: f64, pub i7: f64,
-    pub xa: f64, pub ya: f64, pub xb: f64, pub yb: f64, pub xc: f64, pub yc: f64,
-    pub c0: f64, pub l0: f64, pub mom: f64,
-    pub d: f64, pub da: f64, pub e: f64, pub ea: f64, pub rr: f64, pub ra: f64, pub ss: f64,
-    pub sa: f64, pub sb: f64, pub sc: f64, pub sd: f64, pub ta: f64, pub tb: f64, pub u: f64,
-    pub ua: f64, pub ub: f64, pub zf: f64, pub zt: f64, pub fa: f64,
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub m4: f64,
+    pub m5: f64,
+    pub m6: f64,
+    pub m7: f64,
+    pub i1: f64,
+    pub i2: f64,
+    pub i3: f64,
+    pub i4: f64,
+    pub i5: f64,
+    pub i6: f64,
+    pub i7: f64,
+    pub xa: f64,
+    pub ya: f64,
+    pub xb: f64,
+    pub yb: f64,
+    pub xc: f64,
+    pub yc: f64,
+    pub c0: f64,
+    pub l0: f64,
+    pub mom: f64,
+    pub d: f64,
+    pub da: f64,
+    pub e: f64,
+    pub ea: f64,
+    pub rr: f64,
+    pub ra: f64,
+    pub ss: f64,
+    pub sa: f64,
+    pub sb: f64,
+    pub sc: f64,
+    pub sd: f64,
+    pub ta: f64,
+    pub tb: f64,
+    pub u: f64,
+    pub ua: f64,
+    pub ub: f64,
+    pub zf: f64,
+    pub zt: f64,
+    pub fa: f64,
 }
 
 impl Andrews {
     /// The published parameters.
     pub fn published() -> Self {
         Andrews {
-            m1: 0.04325, m2: 0.00365, m3: 0.02373, m4: 0.00706, m5: 0.07050, m6: 0.00706, m7: 0.05498,
-            i1: 2.194e-6, i2: 4.410e-7, i3: 5.255e-6, i4: 5.667e-7, i5: 1.169e-5, i6: 5.667e-7, i7: 1.912e-5,
-            xa: -0.06934, ya: -0.00227, xb: -0.03635, yb: 0.03273, xc: 0.014, yc: 0.072,
-            c0: 4530.0, l0: 0.07785, mom: 0.033,
-            d: 0.028, da: 0.0115, e: 0.02, ea: 0.01421, rr: 0.007, ra: 0.00092, ss: 0.035,
-            sa: 0.01874, sb: 0.01043, sc: 0.018, sd: 0.02, ta: 0.02308, tb: 0.00916, u: 0.04,
-            ua: 0.01228, ub: 0.00449, zf: 0.02, zt: 0.04, fa: 0.01421,
+            m1: 0.04325,
+            m2: 0.00365,
+            m3: 0.02373,
+            m4: 0.00706,
+            m5: 0.07050,
+            m6: 0.00706,
+            m7: 0.05498,
+            i1: 2.194e-6,
+            i2: 4.410e-7,
+            i3: 5.255e-6,
+            i4: 5.667e-7,
+            i5: 1.169e-5,
+            i6: 5.667e-7,
+            i7: 1.912e-5,
+            xa: -0.06934,
+            ya: -0.00227,
+            xb: -0.03635,
+            yb: 0.03273,
+            xc: 0.014,
+            yc: 0.072,
+            c0: 4530.0,
+            l0: 0.07785,
+            mom: 0.033,
+            d: 0.028,
+            da: 0.0115,
+            e: 0.02,
+            ea: 0.01421,
+            rr: 0.007,
+            ra: 0.00092,
+            ss: 0.035,
+            sa: 0.01874,
+            sb: 0.01043,
+            sc: 0.018,
+            sd: 0.02,
+            ta: 0.02308,
+            tb: 0.00916,
+            u: 0.04,
+            ua: 0.01228,
+            ub: 0.00449,
+            zf: 0.02,
+            zt: 0.04,
+            fa: 0.01421,
         }
     }
 
@@ -44,7 +114,10 @@ impl Andrews {
 
 #[constrained_system]
 impl Andrews {
-    fn mass(&self, [_beta, theta, _gamma, phi, _delta, omega, _epsilon]: [f64; 7]) -> [[f64; 7]; 7] {
+    fn mass(
+        &self,
+        [_beta, theta, _gamma, phi, _delta, omega, _epsilon]: [f64; 7],
+    ) -> [[f64; 7]; 7] {
         let m2 = self.m2;
         let m4 = self.m4;
         let m6 = self.m6;
@@ -96,7 +169,8 @@ impl Andrews {
         [
             self.mom - self.m2 * self.da * self.rr * vtheta * (vtheta + 2.0 * vbeta) * theta.sin(),
             self.m2 * self.da * self.rr * vbeta * vbeta * theta.sin(),
-            fx * (self.sc * gamma.cos() - self.sd * gamma.sin()) + fy * (self.sd * gamma.cos() + self.sc * gamma.sin()),
+            fx * (self.sc * gamma.cos() - self.sd * gamma.sin())
+                + fy * (self.sd * gamma.cos() + self.sc * gamma.sin()),
             self.m4 * self.zt * ee * vdelta * vdelta * phi.cos(),
             -self.m4 * self.zt * ee * vphi * (vphi + 2.0 * vdelta) * phi.cos(),
             -self.m6 * self.u * zz * vepsilon * vepsilon * omega.cos(),

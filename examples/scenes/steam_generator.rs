@@ -27,7 +27,17 @@ pub struct SteamGenerator {
 impl SteamGenerator {
     /// The paper's defaults (SI units); the paper itself gives no figures.
     pub fn paper() -> Self {
-        SteamGenerator { m: 4.0e5, j: 1.5e7, g: 9.81, h1: 4.0, h2: 6.0, h3: 8.0, d: 2.0e6, p0: 1.0e6, rise: 0.01 }
+        SteamGenerator {
+            m: 4.0e5,
+            j: 1.5e7,
+            g: 9.81,
+            h1: 4.0,
+            h2: 6.0,
+            h3: 8.0,
+            d: 2.0e6,
+            p0: 1.0e6,
+            rise: 0.01,
+        }
     }
 
     /// The horizontal load P(t): a ramp to `p0` over the rise time.
@@ -48,6 +58,9 @@ impl SteamGenerator {
     }
 
     fn constraints(&self, [q1, q2, q3]: [f64; 3]) -> [f64; 2] {
-        [q1 - self.h3 * q3, q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2]
+        [
+            q1 - self.h3 * q3,
+            q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2,
+        ]
     }
 }

@@ -63,14 +63,14 @@ fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
 
 fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call]) -> TokenStream {
     let rt = quote!(::zeitner::__private);
-    let n = scene.sizes.n;
-    let z = scene.sizes.z();
-    let r = scene.sizes.r;
+    let n = Literal::usize_unsuffixed(scene.sizes.n);
+    let z = Literal::usize_unsuffixed(scene.sizes.z());
+    let r = Literal::usize_unsuffixed(scene.sizes.r);
     let emitter = Emitter { vars, calls };
     let methods = scene.functions.iter().map(|generated| {
         let method = format_ident!("{}", generated.method);
         let body = emitter.body(generated, &rt);
-        let (arguments, output) = signature(generated.method, n, z, &rt);
+        let (arguments, output) = signature(generated.method, &n, &z, &rt);
         quote! {
             #[inline]
             fn #method(&self, #arguments) -> #output {
@@ -85,11 +85,11 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
         (true, false) => (quote!(#rt::FullMass<#n>), quote!(Full)),
     };
     let summaries = scene.functions.iter().map(|g| function_summary(g, &rt));
-    let k = scene.sizes.k;
+    let k = Literal::usize_unsuffixed(scene.sizes.k);
     let mass_is_constant = scene.mass_is_constant;
     let time_dependent = scene.time_dependent;
     quote! {
-        #[allow(unused_variables, clippy::all)]
+        #[allow(unused_variables, unused_mut, clippy::all)]
         impl #rt::ConstrainedSystem<#n, #z> for #self_ty {
             const POSITION_CONSTRAINTS: usize = #r;
             const MASS_IS_CONSTANT: bool = #mass_is_constant;
@@ -107,7 +107,12 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     }
 }
 
-fn signature(method: &str, n: usize, z: usize, rt: &TokenStream) -> (TokenStream, TokenStream) {
+fn signature(
+    method: &str,
+    n: &Literal,
+    z: &Literal,
+    rt: &TokenStream,
+) -> (TokenStream, TokenStream) {
     let vec_n = quote!(#rt::Vector<#n>);
     let state = quote!(q: &#vec_n, v: &#vec_n, t: f64);
     let square = quote!(#rt::Matrix<#n, #n>);
@@ -134,12 +139,15 @@ fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
     let name = generated.method;
     let blocks = generated.blocks.iter().map(|block| {
         let name = block.name;
-        let (rows, cols) = (block.rows, block.cols);
+        let (rows, cols) = (Literal::usize_unsuffixed(block.rows), Literal::usize_unsuffixed(block.cols));
         let nonzeros = block
             .entries
             .iter()
             .filter(|e| !is_zero_entry(generated, e.2))
-            .map(|&(row, col, _, _)| quote!((#row, #col)));
+            .map(|&(row, col, _, _)| {
+                let (row, col) = (Literal::usize_unsuffixed(row), Literal::usize_unsuffixed(col));
+                quote!((#row, #col))
+            });
         quote!(#rt::BlockSummary { name: #name, rows: #rows, cols: #cols, nonzeros: &[#(#nonzeros),*] })
     });
     let ops = op_counts(&generated.program.op_counts(), rt);
@@ -200,8 +208,11 @@ impl Emitter<'_> {
             .collect();
         let declarations = generated.blocks.iter().map(|block| {
             let name = format_ident!("{}", block.name);
-            let (rows, cols) = (block.rows, block.cols);
-            if cols == 1 {
+            let (rows, cols) = (
+                Literal::usize_unsuffixed(block.rows),
+                Literal::usize_unsuffixed(block.cols),
+            );
+            if block.cols == 1 {
                 quote!(let mut #name = #rt::Vector::<#rows>::zeros();)
             } else {
                 quote!(let mut #name = #rt::Matrix::<#rows, #cols>::zeros();)

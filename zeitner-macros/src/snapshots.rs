@@ -1,5 +1,6 @@
-//! Expansion snapshots: every scene in `tests/expand/*.rs` is expanded and compared with the
-//! checked-in `*.expanded.rs`, so a change to code generation shows in review.
+//! Expansion snapshots: every example scene in `examples/scenes/*.rs` is expanded and compared
+//! with the checked-in `tests/expand/<scene>.expanded.rs`, so a change to code generation
+//! shows in review.
 //! `ZEITNER_BLESS=1 cargo test -p zeitner-macros` rewrites them.
 
 use std::path::PathBuf;
@@ -39,23 +40,25 @@ fn expand_file(source: &str) -> String {
 
 #[test]
 fn expansions_match_snapshots() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests/expand");
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let scenes = root.join("examples/scenes");
+    let expand = root.join("tests/expand");
     let bless = std::env::var_os("ZEITNER_BLESS").is_some();
     let mut checked = 0;
     let mut mismatched = Vec::new();
-    let mut entries: Vec<_> = std::fs::read_dir(&dir)
-        .expect("tests/expand exists")
+    let mut entries: Vec<_> = std::fs::read_dir(&scenes)
+        .expect("examples/scenes exists")
         .flatten()
         .collect();
     entries.sort_by_key(|e| e.path());
     for entry in entries {
         let path = entry.path();
         let name = path.file_name().unwrap().to_string_lossy().to_string();
-        if !name.ends_with(".rs") || name.ends_with(".expanded.rs") {
+        let Some(stem) = name.strip_suffix(".rs") else {
             continue;
-        }
+        };
         let expanded = expand_file(&std::fs::read_to_string(&path).unwrap());
-        let snapshot = path.with_extension("expanded.rs");
+        let snapshot = expand.join(format!("{stem}.expanded.rs"));
         if bless {
             std::fs::write(&snapshot, &expanded).unwrap();
         } else if std::fs::read_to_string(&snapshot).ok().as_deref() != Some(expanded.as_str()) {

@@ -291,17 +291,29 @@ fn cond_code(graph: &Graph, cond: CondId, temp_of: &[Option<u32>]) -> CodeCond {
 impl Program {
     /// Runs the straight-line code: `(slot, value)` per scheduled output. For testing the
     /// scheduler against the graph.
-    pub fn evaluate(&self, vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> Vec<(usize, f64)> {
+    pub fn evaluate(
+        &self,
+        vars: &dyn Fn(u32) -> f64,
+        calls: &dyn Fn(u32, &[f64]) -> f64,
+    ) -> Vec<(usize, f64)> {
         let mut temps = Vec::with_capacity(self.temps.len());
         for code in &self.temps {
             let value = run(code, &temps, vars, calls);
             temps.push(value);
         }
-        self.outputs.iter().map(|(slot, code)| (*slot, run(code, &temps, vars, calls))).collect()
+        self.outputs
+            .iter()
+            .map(|(slot, code)| (*slot, run(code, &temps, vars, calls)))
+            .collect()
     }
 }
 
-fn run(code: &Code, temps: &[f64], vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> f64 {
+fn run(
+    code: &Code,
+    temps: &[f64],
+    vars: &dyn Fn(u32) -> f64,
+    calls: &dyn Fn(u32, &[f64]) -> f64,
+) -> f64 {
     let go = |c: &Code| run(c, temps, vars, calls);
     match code {
         Code::Const(x) => *x,
@@ -329,9 +341,16 @@ fn run(code: &Code, temps: &[f64], vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32
     }
 }
 
-fn run_cond(cond: &CodeCond, temps: &[f64], vars: &dyn Fn(u32) -> f64, calls: &dyn Fn(u32, &[f64]) -> f64) -> bool {
+fn run_cond(
+    cond: &CodeCond,
+    temps: &[f64],
+    vars: &dyn Fn(u32) -> f64,
+    calls: &dyn Fn(u32, &[f64]) -> f64,
+) -> bool {
     match cond {
-        CodeCond::Compare(op, a, b) => op.apply(run(a, temps, vars, calls), run(b, temps, vars, calls)),
+        CodeCond::Compare(op, a, b) => {
+            op.apply(run(a, temps, vars, calls), run(b, temps, vars, calls))
+        }
         CodeCond::And(a, b) => run_cond(a, temps, vars, calls) && run_cond(b, temps, vars, calls),
         CodeCond::Or(a, b) => run_cond(a, temps, vars, calls) || run_cond(b, temps, vars, calls),
         CodeCond::Not(a) => !run_cond(a, temps, vars, calls),

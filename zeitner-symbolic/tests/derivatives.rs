@@ -4,7 +4,9 @@
 
 use num_dual::{Dual64, DualNum};
 use proptest::prelude::*;
-use zeitner_symbolic::{Binary, Compare, Differentiator, Evaluator, Graph, Id, Program, Real, Unary};
+use zeitner_symbolic::{
+    Binary, Compare, Differentiator, Evaluator, Graph, Id, Program, Real, Unary,
+};
 
 /// Variables 0..3 are differentiated; variable 3 plays a parameter (used in conditions and calls).
 const VARS: u32 = 4;
@@ -37,16 +39,25 @@ fn tree() -> impl Strategy<Value = Tree> {
     ];
     leaf.prop_recursive(5, 40, 2, |inner| {
         prop_oneof![
-            (proptest::sample::select(Unary::ALL.to_vec()), inner.clone()).prop_map(|(f, a)| Tree::Unary(f, Box::new(a))),
+            (proptest::sample::select(Unary::ALL.to_vec()), inner.clone())
+                .prop_map(|(f, a)| Tree::Unary(f, Box::new(a))),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Add(Box::new(a), Box::new(b))),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Sub(Box::new(a), Box::new(b))),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Mul(Box::new(a), Box::new(b))),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Div(Box::new(a), Box::new(b))),
             inner.clone().prop_map(|a| Tree::Neg(Box::new(a))),
             (inner.clone(), -3..5i32).prop_map(|(a, n)| Tree::Powi(Box::new(a), n)),
-            (proptest::sample::select(Binary::ALL.to_vec()), inner.clone(), inner.clone())
+            (
+                proptest::sample::select(Binary::ALL.to_vec()),
+                inner.clone(),
+                inner.clone()
+            )
                 .prop_map(|(f, a, b)| Tree::Binary(f, Box::new(a), Box::new(b))),
-            (-1.0..1.0f64, inner.clone(), inner).prop_map(|(c, a, b)| Tree::Select(c, Box::new(a), Box::new(b))),
+            (-1.0..1.0f64, inner.clone(), inner).prop_map(|(c, a, b)| Tree::Select(
+                c,
+                Box::new(a),
+                Box::new(b)
+            )),
         ]
     })
 }

@@ -1,0 +1,865 @@
+use zeitner::constrained_system;
+/// The mechanism's parameters, named as in the test set.
+#[derive(Clone, Copy, Debug)]
+pub struct Andrews {
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub m4: f64,
+    pub m5: f64,
+    pub m6: f64,
+    pub m7: f64,
+    pub i1: f64,
+    pub i2: f64,
+    pub i3: f64,
+    pub i4: f64,
+    pub i5: f64,
+    pub i6: f64,
+    pub i7: f64,
+    pub xa: f64,
+    pub ya: f64,
+    pub xb: f64,
+    pub yb: f64,
+    pub xc: f64,
+    pub yc: f64,
+    pub c0: f64,
+    pub l0: f64,
+    pub mom: f64,
+    pub d: f64,
+    pub da: f64,
+    pub e: f64,
+    pub ea: f64,
+    pub rr: f64,
+    pub ra: f64,
+    pub ss: f64,
+    pub sa: f64,
+    pub sb: f64,
+    pub sc: f64,
+    pub sd: f64,
+    pub ta: f64,
+    pub tb: f64,
+    pub u: f64,
+    pub ua: f64,
+    pub ub: f64,
+    pub zf: f64,
+    pub zt: f64,
+    pub fa: f64,
+}
+impl Andrews {
+    /// The published parameters.
+    pub fn published() -> Self {
+        Andrews {
+            m1: 0.04325,
+            m2: 0.00365,
+            m3: 0.02373,
+            m4: 0.00706,
+            m5: 0.07050,
+            m6: 0.00706,
+            m7: 0.05498,
+            i1: 2.194e-6,
+            i2: 4.410e-7,
+            i3: 5.255e-6,
+            i4: 5.667e-7,
+            i5: 1.169e-5,
+            i6: 5.667e-7,
+            i7: 1.912e-5,
+            xa: -0.06934,
+            ya: -0.00227,
+            xb: -0.03635,
+            yb: 0.03273,
+            xc: 0.014,
+            yc: 0.072,
+            c0: 4530.0,
+            l0: 0.07785,
+            mom: 0.033,
+            d: 0.028,
+            da: 0.0115,
+            e: 0.02,
+            ea: 0.01421,
+            rr: 0.007,
+            ra: 0.00092,
+            ss: 0.035,
+            sa: 0.01874,
+            sb: 0.01043,
+            sc: 0.018,
+            sd: 0.02,
+            ta: 0.02308,
+            tb: 0.00916,
+            u: 0.04,
+            ua: 0.01228,
+            ub: 0.00449,
+            zf: 0.02,
+            zt: 0.04,
+            fa: 0.01421,
+        }
+    }
+    /// The published consistent initial angles (velocities are zero).
+    pub const Q0: [f64; 7] = [
+        -0.0617138900142764496358948458001,
+        0.0,
+        0.455279819163070380255912382449,
+        0.222668390165885884674473185609,
+        0.487364979543842550225598953530,
+        -0.222668390165885884674473185609,
+        1.23054744454982119249735015568,
+    ];
+}
+impl Andrews {
+    fn mass(
+        &self,
+        [_beta,
+        theta,
+        _gamma,
+        phi,
+        _delta,
+        omega,
+        _epsilon,
+        ]: [f64; 7],
+    ) -> [[f64; 7]; 7] {
+        let m2 = self.m2;
+        let m4 = self.m4;
+        let m6 = self.m6;
+        let ee = self.e - self.ea;
+        let zz = self.zf - self.fa;
+        let m11 = self.m1 * self.ra * self.ra
+            + m2
+                * (self.rr * self.rr - 2.0 * self.da * self.rr * theta.cos()
+                    + self.da * self.da) + self.i1 + self.i2;
+        let m12 = m2 * (self.da * self.da - self.da * self.rr * theta.cos()) + self.i2;
+        let m22 = m2 * self.da * self.da + self.i2;
+        let m33 = self.m3 * (self.sa * self.sa + self.sb * self.sb) + self.i3;
+        let m44 = m4 * ee * ee + self.i4;
+        let m45 = m4 * (ee * ee + self.zt * ee * phi.sin()) + self.i4;
+        let m55 = m4 * (self.zt * self.zt + 2.0 * self.zt * ee * phi.sin() + ee * ee)
+            + self.m5 * (self.ta * self.ta + self.tb * self.tb) + self.i4 + self.i5;
+        let m66 = m6 * zz * zz + self.i6;
+        let m67 = m6 * (zz * zz - self.u * zz * omega.sin()) + self.i6;
+        let m77 = m6 * (zz * zz - 2.0 * self.u * zz * omega.sin() + self.u * self.u)
+            + self.m7 * (self.ua * self.ua + self.ub * self.ub) + self.i6 + self.i7;
+        [
+            [m11, m12, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [m12, m22, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, m33, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, m44, m45, 0.0, 0.0],
+            [0.0, 0.0, 0.0, m45, m55, 0.0, 0.0],
+            [0.0, 0.0, 0.0, 0.0, 0.0, m66, m67],
+            [0.0, 0.0, 0.0, 0.0, 0.0, m67, m77],
+        ]
+    }
+    fn force(
+        &self,
+        [_beta,
+        theta,
+        gamma,
+        phi,
+        _delta,
+        omega,
+        _epsilon,
+        ]: [f64; 7],
+        [vbeta,
+        vtheta,
+        _vgamma,
+        vphi,
+        vdelta,
+        vomega,
+        vepsilon,
+        ]: [f64; 7],
+    ) -> [f64; 7] {
+        let xd = self.sd * gamma.cos() + self.sc * gamma.sin() + self.xb;
+        let yd = self.sd * gamma.sin() - self.sc * gamma.cos() + self.yb;
+        let ls = ((xd - self.xc).powi(2) + (yd - self.yc).powi(2)).sqrt();
+        let fs = -self.c0 * (ls - self.l0) / ls;
+        let fx = fs * (xd - self.xc);
+        let fy = fs * (yd - self.yc);
+        let ee = self.e - self.ea;
+        let zz = self.zf - self.fa;
+        [
+            self.mom
+                - self.m2 * self.da * self.rr * vtheta * (vtheta + 2.0 * vbeta)
+                    * theta.sin(),
+            self.m2 * self.da * self.rr * vbeta * vbeta * theta.sin(),
+            fx * (self.sc * gamma.cos() - self.sd * gamma.sin())
+                + fy * (self.sd * gamma.cos() + self.sc * gamma.sin()),
+            self.m4 * self.zt * ee * vdelta * vdelta * phi.cos(),
+            -self.m4 * self.zt * ee * vphi * (vphi + 2.0 * vdelta) * phi.cos(),
+            -self.m6 * self.u * zz * vepsilon * vepsilon * omega.cos(),
+            self.m6 * self.u * zz * vomega * (vomega + 2.0 * vepsilon) * omega.cos(),
+        ]
+    }
+    fn constraints(
+        &self,
+        [beta,
+        theta,
+        gamma,
+        phi,
+        delta,
+        omega,
+        epsilon,
+        ]: [f64; 7],
+    ) -> [f64; 6] {
+        let x = self.rr * beta.cos() - self.d * (beta + theta).cos();
+        let y = self.rr * beta.sin() - self.d * (beta + theta).sin();
+        [
+            x - self.ss * gamma.sin() - self.xb,
+            y + self.ss * gamma.cos() - self.yb,
+            x - self.e * (phi + delta).sin() - self.zt * delta.cos() - self.xa,
+            y + self.e * (phi + delta).cos() - self.zt * delta.sin() - self.ya,
+            x - self.zf * (omega + epsilon).cos() - self.u * epsilon.sin() - self.xa,
+            y - self.zf * (omega + epsilon).sin() + self.u * epsilon.cos() - self.ya,
+        ]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
+    const POSITION_CONSTRAINTS: usize = 6;
+    const MASS_IS_CONSTANT: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 7,
+        position_constraints: 6,
+        velocity_constraints: 0,
+        mass: ::zeitner::__private::MassKind::Full,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (2, 2),
+                            (3, 3),
+                            (3, 4),
+                            (4, 3),
+                            (4, 4),
+                            (5, 5),
+                            (5, 6),
+                            (6, 5),
+                            (6, 6),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 30u64,
+                    muls: 44u64,
+                    divs: 0u64,
+                    transcendental: 3u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 50u64,
+                    muls: 59u64,
+                    divs: 0u64,
+                    transcendental: 9u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 7,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 19u64,
+                    muls: 38u64,
+                    divs: 1u64,
+                    transcendental: 6u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 50u64,
+                    muls: 71u64,
+                    divs: 2u64,
+                    transcendental: 34u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 6,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 21u64,
+                    muls: 14u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 32u64,
+                    muls: 22u64,
+                    divs: 0u64,
+                    transcendental: 22u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 15u64,
+                    muls: 14u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 40u64,
+                    muls: 32u64,
+                    divs: 0u64,
+                    transcendental: 32u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 6,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 23u64,
+                    muls: 28u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 48u64,
+                    muls: 54u64,
+                    divs: 0u64,
+                    transcendental: 32u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 6,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 34u64,
+                    muls: 48u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 87u64,
+                    muls: 116u64,
+                    divs: 0u64,
+                    transcendental: 52u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 1),
+                            (1, 1),
+                            (2, 2),
+                            (3, 3),
+                            (4, 3),
+                            (5, 5),
+                            (6, 5),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (3, 4),
+                            (4, 3),
+                            (4, 4),
+                            (5, 6),
+                            (6, 5),
+                            (6, 6),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 35u64,
+                    muls: 70u64,
+                    divs: 3u64,
+                    transcendental: 9u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 224u64,
+                    muls: 291u64,
+                    divs: 12u64,
+                    transcendental: 157u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (2, 2),
+                            (3, 3),
+                            (3, 4),
+                            (4, 3),
+                            (4, 4),
+                            (5, 5),
+                            (5, 6),
+                            (6, 5),
+                            (6, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 24u64,
+                    muls: 36u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 79u64,
+                    muls: 94u64,
+                    divs: 0u64,
+                    transcendental: 52u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_jacobian_product",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[(0, 1), (1, 1), (3, 3), (4, 3), (5, 5), (6, 5)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 30u64,
+                    divs: 0u64,
+                    transcendental: 3u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 11u64,
+                    muls: 39u64,
+                    divs: 0u64,
+                    transcendental: 9u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::FullMass<7>;
+    #[inline]
+    fn mass_matrix(&self, q: &::zeitner::__private::Vector<7>, t: f64) -> Self::Mass {
+        let s0 = self.e - self.ea;
+        let s1 = self.zf - self.fa;
+        let s2 = q[1].cos();
+        let s3 = self.da.powi(2);
+        let s4 = self.i2 + self.m2 * (s3 - s2 * (self.rr * self.da));
+        let s5 = s0.powi(2);
+        let s6 = q[3].sin();
+        let s7 = self.i4 + self.m4 * (s5 + s0 * self.zt * s6);
+        let s8 = s1.powi(2);
+        let s9 = q[5].sin();
+        let s10 = self.i6 + self.m6 * (s8 - s1 * self.u * s9);
+        let mut m = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        m[(0, 0)] = self.ra * (self.m1 * self.ra)
+            + self.m2 * (self.rr.powi(2) - self.rr * (2.0 * self.da) * s2 + s3) + self.i1
+            + self.i2;
+        m[(0, 1)] = s4;
+        m[(1, 0)] = s4;
+        m[(1, 1)] = self.i2 + self.da * (self.m2 * self.da);
+        m[(2, 2)] = self.m3 * (self.sa.powi(2) + self.sb.powi(2)) + self.i3;
+        m[(3, 3)] = s0 * (self.m4 * s0) + self.i4;
+        m[(3, 4)] = s7;
+        m[(4, 3)] = s7;
+        m[(4, 4)] = self.i4
+            + self.m4 * (s5 + self.zt.powi(2) + s6 * (s0 * (2.0 * self.zt)))
+            + self.m5 * (self.ta.powi(2) + self.tb.powi(2)) + self.i5;
+        m[(5, 5)] = s1 * (self.m6 * s1) + self.i6;
+        m[(5, 6)] = s10;
+        m[(6, 5)] = s10;
+        m[(6, 6)] = self.i6
+            + self.m6 * (s8 - s9 * (s1 * (2.0 * self.u)) + self.u.powi(2))
+            + self.m7 * (self.ua.powi(2) + self.ub.powi(2)) + self.i7;
+        ::zeitner::__private::FullMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<7> {
+        let s0 = q[2].cos();
+        let s1 = q[2].sin();
+        let s2 = self.sd * s0 + self.sc * s1;
+        let s3 = self.sd * s1;
+        let s4 = s0 * self.sc;
+        let s5 = s2 + self.xb - self.xc;
+        let s6 = s3 - s4 + self.yb - self.yc;
+        let s7 = (s5.powi(2) + s6.powi(2)).sqrt();
+        let s8 = self.c0 * (s7 - self.l0) / s7;
+        let s9 = self.rr * (self.m2 * self.da);
+        let s10 = q[1].sin();
+        let s11 = (self.e - self.ea) * (self.m4 * self.zt);
+        let s12 = q[3].cos();
+        let s13 = (self.zf - self.fa) * (self.m6 * self.u);
+        let s14 = q[5].cos();
+        let mut f = ::zeitner::__private::Vector::<7>::zeros();
+        f[0] = self.mom - v[1] * s9 * (v[1] + 2.0 * v[0]) * s10;
+        f[1] = s10 * (v[0] * (v[0] * s9));
+        f[2] = -(s5 * s8 * (s4 - s3)) - s2 * (s6 * s8);
+        f[3] = v[4] * (v[4] * s11) * s12;
+        f[4] = -(s12 * (v[3] * s11 * (v[3] + 2.0 * v[4])));
+        f[5] = -(v[6] * (v[6] * s13) * s14);
+        f[6] = s14 * (v[5] * s13 * (v[5] + 2.0 * v[6]));
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<6> {
+        let s0 = q[0] + q[1];
+        let s1 = self.rr * q[0].cos() - self.d * s0.cos();
+        let s2 = self.rr * q[0].sin() - self.d * s0.sin();
+        let s3 = q[3] + q[4];
+        let s4 = q[5] + q[6];
+        let mut g = ::zeitner::__private::Vector::<6>::zeros();
+        g[0] = s1 - q[2].sin() * self.ss - self.xb;
+        g[1] = s2 + q[2].cos() * self.ss - self.yb;
+        g[2] = s1 - self.e * s3.sin() - self.zt * q[4].cos() - self.xa;
+        g[3] = s2 + self.e * s3.cos() - self.zt * q[4].sin() - self.ya;
+        g[4] = s1 - self.zf * s4.cos() - self.u * q[6].sin() - self.xa;
+        g[5] = s2 - self.zf * s4.sin() + self.u * q[6].cos() - self.ya;
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> ::zeitner::__private::Matrix<6, 7> {
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.rr * q[0].cos() - s1;
+        let s3 = self.d * s0.sin();
+        let s4 = q[3] + q[4];
+        let s5 = self.e * s4.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.sin();
+        let s8 = s3 - self.rr * q[0].sin();
+        let s9 = -s1;
+        let s10 = -(self.e * s4.sin());
+        let s11 = -(self.zf * s6.cos());
+        let mut g = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        g[(0, 0)] = s8;
+        g[(0, 1)] = s3;
+        g[(0, 2)] = -(q[2].cos() * self.ss);
+        g[(1, 0)] = s2;
+        g[(1, 1)] = s9;
+        g[(1, 2)] = -(q[2].sin() * self.ss);
+        g[(2, 0)] = s8;
+        g[(2, 1)] = s3;
+        g[(2, 3)] = -s5;
+        g[(2, 4)] = self.zt * q[4].sin() - s5;
+        g[(3, 0)] = s2;
+        g[(3, 1)] = s9;
+        g[(3, 3)] = s10;
+        g[(3, 4)] = s10 - self.zt * q[4].cos();
+        g[(4, 0)] = s8;
+        g[(4, 1)] = s3;
+        g[(4, 5)] = s7;
+        g[(4, 6)] = s7 - self.u * q[6].cos();
+        g[(5, 0)] = s2;
+        g[(5, 1)] = s9;
+        g[(5, 5)] = s11;
+        g[(5, 6)] = s11 - self.u * q[6].sin();
+        g
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<6> {
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.d * s0.sin();
+        let s3 = q[3] + q[4];
+        let s4 = self.e * s3.sin();
+        let s5 = self.e * s3.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.cos();
+        let s8 = self.zf * s6.sin();
+        let s9 = v[0] * (s2 - self.rr * q[0].sin()) + v[1] * s2;
+        let s10 = v[0] * (self.rr * q[0].cos() - s1) - v[1] * s1;
+        let mut w = ::zeitner::__private::Vector::<6>::zeros();
+        w[0] = s9 - v[2] * (q[2].cos() * self.ss);
+        w[1] = s10 - v[2] * (q[2].sin() * self.ss);
+        w[2] = s9 - v[3] * s5 + v[4] * (self.zt * q[4].sin() - s5);
+        w[3] = s10 - v[3] * s4 + v[4] * (-s4 - self.zt * q[4].cos());
+        w[4] = s9 + v[5] * s8 + v[6] * (s8 - self.u * q[6].cos());
+        w[5] = s10 - v[5] * s7 + v[6] * (-s7 - self.u * q[6].sin());
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<6> {
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.d * s0.sin();
+        let s3 = q[3] + q[4];
+        let s4 = self.e * s3.sin();
+        let s5 = self.e * s3.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.cos();
+        let s8 = self.zf * s6.sin();
+        let s9 = v[1] * s2;
+        let s10 = v[1] * s1;
+        let s11 = v[0] * (v[0] * (s1 - self.rr * q[0].cos()) + s10)
+            + v[1] * (s10 + v[0] * s1);
+        let s12 = v[0] * (v[0] * (s2 - self.rr * q[0].sin()) + s9)
+            + v[1] * (s9 + v[0] * s2);
+        let s13 = v[3] * s5;
+        let s14 = v[3] * s4;
+        let s15 = v[5] * s8;
+        let s16 = v[5] * s7;
+        let mut b = ::zeitner::__private::Vector::<6>::zeros();
+        b[0] = s11 + v[2] * (v[2] * (q[2].sin() * self.ss));
+        b[1] = s12 - v[2] * (v[2] * (q[2].cos() * self.ss));
+        b[2] = s11 + v[3] * (s14 + v[4] * s4)
+            + v[4] * (s14 + v[4] * (s4 + self.zt * q[4].cos()));
+        b[3] = s12 + v[3] * (-s13 - v[4] * s5)
+            + v[4] * (v[4] * (self.zt * q[4].sin() - s5) - s13);
+        b[4] = s11 + v[5] * (s16 + v[6] * s7)
+            + v[6] * (s16 + v[6] * (s7 + self.u * q[6].sin()));
+        b[5] = s12 + v[5] * (s15 + v[6] * s8)
+            + v[6] * (s15 + v[6] * (s8 - self.u * q[6].cos()));
+        b
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
+        let s0 = q[1].cos();
+        let s1 = q[3].sin();
+        let s2 = q[5].sin();
+        let s3 = q[2].cos();
+        let s4 = self.sd * s3;
+        let s5 = q[2].sin();
+        let s6 = self.sc * s5;
+        let s7 = s4 + s6;
+        let s8 = self.sd * s5;
+        let s9 = s3 * self.sc;
+        let s10 = s7 + self.xb - self.xc;
+        let s11 = s8 - s9 + self.yb - self.yc;
+        let s12 = (s10.powi(2) + s11.powi(2)).sqrt();
+        let s13 = self.c0 * (s12 - self.l0) / s12;
+        let s14 = self.rr * (self.m2 * self.da);
+        let s15 = v[1] * s14;
+        let s16 = v[1] + 2.0 * v[0];
+        let s17 = q[1].sin();
+        let s18 = v[0] * s14;
+        let s19 = s9 - s8;
+        let s20 = (self.e - self.ea) * (self.m4 * self.zt);
+        let s21 = v[4] * s20;
+        let s22 = q[3].cos();
+        let s23 = v[3] * s20;
+        let s24 = v[3] + 2.0 * v[4];
+        let s25 = (self.zf - self.fa) * (self.m6 * self.u);
+        let s26 = v[6] * s25;
+        let s27 = q[5].cos();
+        let s28 = v[5] * s25;
+        let s29 = v[5] + 2.0 * v[6];
+        let s30 = (s19 * (2.0 * s10) + s7 * (2.0 * s11)) * (1.0 / (2.0 * s12));
+        let s31 = (self.c0 * s30 - s13 * s30) / s12;
+        let mut dq = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        dq[(0, 1)] = -(s0 * (s15 * s16));
+        dq[(1, 1)] = s0 * (v[0] * s18);
+        dq[(2, 2)] = -(s19 * (s13 * s19 + s10 * s31) + s10 * s13 * (-s6 - s4))
+            - (s11 * s13 * s19 + s7 * (s7 * s13 + s11 * s31));
+        dq[(3, 3)] = -(s1 * (v[4] * s21));
+        dq[(4, 3)] = s1 * (s23 * s24);
+        dq[(5, 5)] = s2 * (v[6] * s26);
+        dq[(6, 5)] = -(s2 * (s28 * s29));
+        dv[(0, 0)] = -(s17 * (2.0 * s15));
+        dv[(0, 1)] = -(s17 * (s15 + s14 * s16));
+        dv[(1, 0)] = s17 * (2.0 * s18);
+        dv[(3, 4)] = s22 * (2.0 * s21);
+        dv[(4, 3)] = -(s22 * (s23 + s20 * s24));
+        dv[(4, 4)] = -(s22 * (2.0 * s23));
+        dv[(5, 6)] = -(s27 * (2.0 * s26));
+        dv[(6, 5)] = s27 * (s28 + s25 * s29);
+        dv[(6, 6)] = s27 * (2.0 * s28);
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<6>,
+    ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.d * s0.sin();
+        let s3 = q[3] + q[4];
+        let s4 = self.e * s3.sin();
+        let s5 = self.e * s3.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.cos();
+        let s8 = self.zf * s6.sin();
+        let s9 = s2 - self.rr * q[0].sin();
+        let s10 = s1 - self.rr * q[0].cos();
+        let s11 = s1 * lambda[0] + s2 * lambda[1] + s1 * lambda[2] + s2 * lambda[3]
+            + s1 * lambda[4] + s2 * lambda[5];
+        let s12 = s4 * lambda[2] - s5 * lambda[3];
+        let s13 = s7 * lambda[4] + s8 * lambda[5];
+        let mut dq = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        dq[(0, 0)] = s10 * lambda[0] + s9 * lambda[1] + s10 * lambda[2] + s9 * lambda[3]
+            + s10 * lambda[4] + s9 * lambda[5];
+        dq[(0, 1)] = s11;
+        dq[(1, 0)] = s11;
+        dq[(1, 1)] = s11;
+        dq[(2, 2)] = q[2].sin() * self.ss * lambda[0] - q[2].cos() * self.ss * lambda[1];
+        dq[(3, 3)] = s12;
+        dq[(3, 4)] = s12;
+        dq[(4, 3)] = s12;
+        dq[(4, 4)] = (s4 + self.zt * q[4].cos()) * lambda[2]
+            + (self.zt * q[4].sin() - s5) * lambda[3];
+        dq[(5, 5)] = s13;
+        dq[(5, 6)] = s13;
+        dq[(6, 5)] = s13;
+        dq[(6, 6)] = (s7 + self.u * q[6].sin()) * lambda[4]
+            + (s8 - self.u * q[6].cos()) * lambda[5];
+        (dq, dv)
+    }
+    #[inline]
+    fn mass_jacobian_product(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        t: f64,
+        a: &::zeitner::__private::Vector<7>,
+    ) -> ::zeitner::__private::Matrix<7, 7> {
+        let s0 = self.e - self.ea;
+        let s1 = self.zf - self.fa;
+        let s2 = q[1].sin();
+        let s3 = q[3].cos();
+        let s4 = q[5].cos();
+        let s5 = self.m2 * (self.rr * self.da * s2);
+        let s6 = self.m4 * (s0 * self.zt * s3);
+        let s7 = self.m6 * (s1 * self.u * s4);
+        let mut dq = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        dq[(0, 1)] = a[0] * (self.m2 * (self.rr * (2.0 * self.da) * s2)) + a[1] * s5;
+        dq[(1, 1)] = a[0] * s5;
+        dq[(3, 3)] = a[4] * s6;
+        dq[(4, 3)] = a[3] * s6 + a[4] * (self.m4 * (s0 * (2.0 * self.zt) * s3));
+        dq[(5, 5)] = -(a[6] * s7);
+        dq[(6, 5)] = -(a[5] * s7) - a[6] * (self.m6 * (s1 * (2.0 * self.u) * s4));
+        dq
+    }
+}

@@ -1,0 +1,333 @@
+use zeitner::constrained_system;
+pub struct Pendulum {
+    pub m: f64,
+    pub length: f64,
+    pub g: f64,
+}
+impl Pendulum {
+    fn mass(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+    fn force(&self) -> [f64; 2] {
+        [0.0, -self.m * self.g]
+    }
+    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+        [x * x + y * y - self.length * self.length]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 2,
+        position_constraints: 1,
+        velocity_constraints: 0,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<2>;
+    #[inline]
+    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<2> {
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        let mut g = ::zeitner::__private::Vector::<1>::zeros();
+        g[0] = q[0].powi(2) + q[1].powi(2) - self.length.powi(2);
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Matrix<1, 2> {
+        let mut g = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        let mut w = ::zeitner::__private::Vector::<1>::zeros();
+        w[0] = 2.0 * q[0] * v[0] + 2.0 * q[1] * v[1];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        b
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        let s0 = 2.0 * lambda[0];
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        dq[(0, 0)] = s0;
+        dq[(1, 1)] = s0;
+        (dq, dv)
+    }
+}
