@@ -104,6 +104,7 @@ impl Andrews {
         1.23054744454982119249735015568,
     ];
 }
+#[allow(dead_code)]
 impl Andrews {
     fn mass(
         &self,

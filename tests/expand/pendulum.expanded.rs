@@ -4,6 +4,7 @@ pub struct Pendulum {
     pub length: f64,
     pub g: f64,
 }
+#[allow(dead_code)]
 impl Pendulum {
     fn mass(&self) -> [f64; 2] {
         [self.m, self.m]

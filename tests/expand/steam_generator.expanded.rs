@@ -39,6 +39,7 @@ impl SteamGenerator {
         self.p0 * (t / self.rise).min(1.0)
     }
 }
+#[allow(dead_code)]
 impl SteamGenerator {
     fn mass(&self) -> [f64; 3] {
         [self.m, self.m, self.j]

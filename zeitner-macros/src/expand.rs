@@ -28,7 +28,11 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
             return quote!(#item #compile_errors);
         }
     };
-    match generate(&item_impl, &mut errors) {
+    let generated = generate(&item_impl, &mut errors);
+    // The model functions are read by the macro, not necessarily called by the user.
+    let mut item_impl = item_impl;
+    item_impl.attrs.push(syn::parse_quote!(#[allow(dead_code)]));
+    match generated {
         Some(generated) if errors.is_empty() => quote!(#item_impl #generated),
         _ => {
             let compile_errors = errors.into_compile_errors();
