@@ -176,9 +176,13 @@ fn unary_derivative(g: &mut Graph, f: Unary, a: Id, expr: Id) -> Id {
 fn binary_derivative(g: &mut Graph, f: Binary, a: Id, b: Id, expr: Id, da: Id, db: Id) -> Id {
     match f {
         Binary::Powf => {
-            // d(a^b) = a^b (b' ln a + b a' / a)
+            // d(a^b) = a^b (b' ln a + b a' / a); the ln term only where b' ≠ 0, so that a
+            // negative base under a locally constant exponent keeps a finite derivative.
             let ln_a = g.unary(Unary::Ln, a);
-            let from_exponent = g.mul(db, ln_a);
+            let product = g.mul(db, ln_a);
+            let zero = g.zero();
+            let exponent_constant = g.compare(Compare::Eq, db, zero);
+            let from_exponent = g.select(exponent_constant, zero, product);
             let ratio = g.div(b, a);
             let from_base = g.mul(ratio, da);
             let sum = g.add(from_exponent, from_base);
