@@ -117,6 +117,8 @@ impl Andrews {
         _epsilon,
         ]: [f64; 7],
     ) -> [[f64; 7]; 7] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let m2 = self.m2;
         let m4 = self.m4;
         let m6 = self.m6;
@@ -166,6 +168,8 @@ impl Andrews {
         vepsilon,
         ]: [f64; 7],
     ) -> [f64; 7] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let xd = self.sd * gamma.cos() + self.sc * gamma.sin() + self.xb;
         let yd = self.sd * gamma.sin() - self.sc * gamma.cos() + self.yb;
         let ls = ((xd - self.xc).powi(2) + (yd - self.yc).powi(2)).sqrt();
@@ -198,6 +202,8 @@ impl Andrews {
         epsilon,
         ]: [f64; 7],
     ) -> [f64; 6] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let x = self.rr * beta.cos() - self.d * (beta + theta).cos();
         let y = self.rr * beta.sin() - self.d * (beta + theta).sin();
         [
@@ -540,6 +546,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
     type Mass = ::zeitner::__private::FullMass<7>;
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<7>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = self.e - self.ea;
         let s1 = self.zf - self.fa;
         let s2 = q[1].cos();
@@ -580,6 +588,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> ::zeitner::__private::Vector<7> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[2].cos();
         let s1 = q[2].sin();
         let s2 = self.sd * s0 + self.sc * s1;
@@ -612,6 +622,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> ::zeitner::__private::Vector<6> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[0] + q[1];
         let s1 = self.rr * q[0].cos() - self.d * s0.cos();
         let s2 = self.rr * q[0].sin() - self.d * s0.sin();
@@ -633,6 +645,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> ::zeitner::__private::Matrix<6, 7> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[0] + q[1];
         let s1 = self.d * s0.cos();
         let s2 = self.rr * q[0].cos() - s1;
@@ -677,6 +691,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> ::zeitner::__private::Vector<6> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[0] + q[1];
         let s1 = self.d * s0.cos();
         let s2 = self.d * s0.sin();
@@ -704,6 +720,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> ::zeitner::__private::Vector<6> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[0] + q[1];
         let s1 = self.d * s0.cos();
         let s2 = self.d * s0.sin();
@@ -743,6 +761,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         v: &::zeitner::__private::Vector<7>,
         t: f64,
     ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[1].cos();
         let s1 = q[3].sin();
         let s2 = q[5].sin();
@@ -804,6 +824,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         t: f64,
         lambda: &::zeitner::__private::Vector<6>,
     ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = q[0] + q[1];
         let s1 = self.d * s0.cos();
         let s2 = self.d * s0.sin();
@@ -846,6 +868,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         t: f64,
         a: &::zeitner::__private::Vector<7>,
     ) -> ::zeitner::__private::Matrix<7, 7> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = self.e - self.ea;
         let s1 = self.zf - self.fa;
         let s2 = q[1].sin();

@@ -7,12 +7,18 @@ pub struct Pendulum {
 #[allow(dead_code)]
 impl Pendulum {
     fn mass(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         [self.m, self.m]
     }
     fn force(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g]
     }
     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         [x * x + y * y - self.length * self.length]
     }
 }
@@ -244,6 +250,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
     type Mass = ::zeitner::__private::DiagonalMass<2>;
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<2>::zeros();
         m[0] = self.m;
         m[1] = self.m;
@@ -256,6 +264,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut f = ::zeitner::__private::Vector::<2>::zeros();
         f[1] = -(self.m * self.g);
         f
@@ -267,6 +277,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut g = ::zeitner::__private::Vector::<1>::zeros();
         g[0] = q[0].powi(2) + q[1].powi(2) - self.length.powi(2);
         g
@@ -278,6 +290,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> ::zeitner::__private::Matrix<1, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut g = ::zeitner::__private::Matrix::<1, 2>::zeros();
         g[(0, 0)] = 2.0 * q[0];
         g[(0, 1)] = 2.0 * q[1];
@@ -290,6 +304,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut w = ::zeitner::__private::Vector::<1>::zeros();
         w[0] = 2.0 * q[0] * v[0] + 2.0 * q[1] * v[1];
         w
@@ -301,6 +317,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
@@ -312,6 +330,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         v: &::zeitner::__private::Vector<2>,
         t: f64,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
         let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
         (dq, dv)
@@ -324,6 +344,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         t: f64,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = 2.0 * lambda[0];
         let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
         let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();

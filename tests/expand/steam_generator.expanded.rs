@@ -42,6 +42,8 @@ impl SteamGenerator {
 #[allow(dead_code)]
 impl SteamGenerator {
     fn mass(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         [self.m, self.m, self.j]
     }
     fn force(
@@ -56,10 +58,14 @@ impl SteamGenerator {
         ]: [f64; 3],
         t: f64,
     ) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let p = self.load(t);
         [p - self.d * v1, -self.m * self.g, p * self.h1]
     }
     fn constraints(&self, [q1, q2, q3]: [f64; 3]) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         [q1 - self.h3 * q3, q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2]
     }
 }
@@ -291,6 +297,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
     type Mass = ::zeitner::__private::DiagonalMass<3>;
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
         m[0] = self.m;
         m[1] = self.m;
@@ -304,6 +312,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = self.load(t);
         let mut f = ::zeitner::__private::Vector::<3>::zeros();
         f[0] = s0 - v[0] * self.d;
@@ -318,6 +328,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut g = ::zeitner::__private::Vector::<2>::zeros();
         g[0] = q[0] - q[2] * self.h3;
         g[1] = q[0].powi(2) + (q[1] - self.h2).powi(2) - self.h2.powi(2);
@@ -330,6 +342,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> ::zeitner::__private::Matrix<2, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
         g[(0, 0)] = 1.0;
         g[(0, 2)] = -self.h3;
@@ -344,6 +358,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut w = ::zeitner::__private::Vector::<2>::zeros();
         w[0] = v[0] - v[2] * self.h3;
         w[1] = v[0] * (2.0 * q[0]) + v[1] * (2.0 * (q[1] - self.h2));
@@ -356,6 +372,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut b = ::zeitner::__private::Vector::<2>::zeros();
         b[1] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
@@ -367,6 +385,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         v: &::zeitner::__private::Vector<3>,
         t: f64,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
         let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
         dv[(0, 0)] = -self.d;
@@ -380,6 +400,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         t: f64,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
         let s0 = 2.0 * lambda[1];
         let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
         let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();

@@ -29,9 +29,21 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
         }
     };
     let generated = generate(&item_impl, &mut errors);
-    // The model functions are read by the macro, not necessarily called by the user.
+    // The model functions are read by the macro, not necessarily called by the user; under
+    // `no_std` their f64 methods come from the runtime's `Real` (inherent ones win under std).
     let mut item_impl = item_impl;
     item_impl.attrs.push(syn::parse_quote!(#[allow(dead_code)]));
+    for member in &mut item_impl.items {
+        if let syn::ImplItem::Fn(function) = member {
+            function.block.stmts.insert(
+                0,
+                syn::parse_quote!(
+                    #[allow(unused_imports)]
+                    use ::zeitner::__private::Real as _;
+                ),
+            );
+        }
+    }
     match generated {
         Some(generated) if errors.is_empty() => quote!(#item_impl #generated),
         _ => {
@@ -254,6 +266,8 @@ impl Emitter<'_> {
             (_, many) => quote!((#(#many),*)),
         };
         quote! {
+            #[allow(unused_imports)]
+            use #rt::Real as _;
             #(#temps)*
             #(#declarations)*
             #(#assignments)*

@@ -18,6 +18,7 @@ pub mod error;
 mod inner;
 mod linalg;
 pub mod mass;
+pub mod math;
 mod model;
 pub mod options;
 pub mod simulator;
@@ -36,6 +37,7 @@ pub use system::{
 /// What generated code names; not part of the public API.
 #[doc(hidden)]
 pub mod __private {
+    pub use crate::math::Real;
     pub use crate::{
         BlockSummary, ConstrainedSystem, DiagonalMass, FullMass, FunctionSummary, MassKind, Matrix,
         OpCounts, SceneSummary, Vector,

@@ -1,0 +1,97 @@
+//! After construction the simulation loop allocates nothing: a counting global allocator sees
+//! zero allocations over 10⁴ steps, for the explicit, adaptive and implicit inner methods.
+
+mod common;
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use common::andrews::Andrews;
+use common::steam_generator::SteamGenerator;
+use zeitner::{InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// Allocations during `steps` accepted steps.
+fn allocations_during<const N: usize, const Z: usize, S: zeitner::ConstrainedSystem<N, Z>>(
+    sim: &mut Simulator<'_, S, N, Z>,
+    steps: usize,
+) -> usize {
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let mut taken = 0;
+    while taken < steps {
+        sim.step_until(f64::MAX).unwrap();
+        taken += 1;
+    }
+    ALLOCATIONS.load(Ordering::SeqCst) - before
+}
+
+#[test]
+fn ten_thousand_steps_allocate_nothing() {
+    let scene = SteamGenerator::paper();
+    let configurations = [
+        Options::paper(1e-4),
+        Options {
+            method: InnerMethod::Rk4 { substeps: 2 },
+            step: StepControl::Fixed { step: 1e-4 },
+            sensitivity: Sensitivity::Exact,
+            ..Options::default()
+        },
+        Options {
+            step: StepControl::Adaptive {
+                initial_step: 1e-5,
+                min_step: 1e-12,
+                max_step: 1e-4,
+                rtol: 1e-8,
+                atol: 1e-10,
+            },
+            ..Options::default()
+        },
+        Options {
+            method: InnerMethod::Sdirk2,
+            step: StepControl::Fixed { step: 1e-4 },
+            ..Options::default()
+        },
+    ];
+    for options in configurations {
+        let mut sim =
+            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let allocations = allocations_during(&mut sim, 10_000);
+        assert_eq!(allocations, 0, "{options:?}");
+        assert_eq!(sim.statistics().steps, 10_000);
+    }
+    // A full, configuration-dependent mass matrix (Cholesky every evaluation).
+    let andrews = Andrews::published();
+    let options = Options {
+        step: StepControl::Fixed { step: 1e-6 },
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(
+        &andrews,
+        Vector::from(Andrews::Q0),
+        Vector::zeros(),
+        0.0,
+        options,
+    )
+    .unwrap();
+    assert_eq!(allocations_during(&mut sim, 10_000), 0);
+}
