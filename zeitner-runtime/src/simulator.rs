@@ -189,6 +189,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             // Land exactly on the limit rather than leave a sliver of a step.
             let last_step = h >= remaining * (1.0 - 1e-9);
             let h_try = if last_step { remaining } else { h };
+            if !(self.t + h_try > self.t) {
+                // The step no longer moves the time: report it rather than loop.
+                return Err(StepError::StepSizeTooSmall {
+                    t: self.t,
+                    step: h_try,
+                });
+            }
             match self.attempt(h_try)? {
                 Attempt::Accepted {
                     end,
@@ -209,7 +216,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                         return Err(cause);
                     };
                     h = h_try * shrink;
-                    if h < min_step || h <= f64::EPSILON * self.t.abs() {
+                    // Written to also stop on a NaN step.
+                    if !(h >= min_step && h > f64::EPSILON * self.t.abs()) {
                         return Err(match cause {
                             StepError::NewtonDidNotConverge { .. }
                             | StepError::StageDidNotConverge { .. } => {

@@ -1,0 +1,323 @@
+//! Bad input gets a typed error, never a panic, and a failed step loses nothing.
+
+mod common;
+
+use common::pendulum::Pendulum;
+use proptest::prelude::*;
+use zeitner::{
+    constrained_system, InnerMethod, InvalidOption, ModelFunction, Options, Sensitivity, Simulator,
+    StepControl, StepError, Vector, VelocityProjection,
+};
+
+fn released() -> (Vector<2>, Vector<2>) {
+    (Vector::<2>::new(1.0, 0.0), Vector::zeros())
+}
+
+const PENDULUM: Pendulum = Pendulum {
+    m: 1.0,
+    length: 1.0,
+    g: 9.81,
+};
+
+#[test]
+fn absurd_options_are_refused() {
+    let (q, v) = released();
+    let cases = [
+        (
+            Options {
+                constraint_tolerance: 0.0,
+                ..Options::default()
+            },
+            InvalidOption::Tolerance,
+        ),
+        (
+            Options {
+                constraint_tolerance: f64::NAN,
+                ..Options::default()
+            },
+            InvalidOption::Tolerance,
+        ),
+        (Options::paper(-1e-3), InvalidOption::StepSize),
+        (Options::paper(f64::INFINITY), InvalidOption::StepSize),
+        (
+            Options {
+                max_newton_iterations: 0,
+                ..Options::default()
+            },
+            InvalidOption::IterationLimit,
+        ),
+        (
+            Options {
+                method: InnerMethod::Rk4 { substeps: 0 },
+                ..Options::paper(1e-3)
+            },
+            InvalidOption::IterationLimit,
+        ),
+        (
+            Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                ..Options::default()
+            },
+            InvalidOption::AdaptiveNeedsErrorEstimate,
+        ),
+    ];
+    for (options, expected) in cases {
+        let error = Simulator::new(&PENDULUM, q, v, 0.0, options).err();
+        assert_eq!(
+            error,
+            Some(StepError::InvalidOption(expected)),
+            "{options:?}"
+        );
+    }
+}
+
+#[test]
+fn non_finite_parameters_and_states_name_the_culprit() {
+    let (q, v) = released();
+    let nan_gravity = Pendulum {
+        g: f64::NAN,
+        ..PENDULUM
+    };
+    let error = Simulator::new(&nan_gravity, q, v, 0.0, Options::default()).err();
+    assert!(
+        matches!(
+            error,
+            Some(StepError::NonFinite {
+                function: ModelFunction::AppliedForce,
+                ..
+            })
+        ),
+        "{error:?}"
+    );
+    let infinite_length = Pendulum {
+        length: f64::INFINITY,
+        ..PENDULUM
+    };
+    assert!(matches!(
+        Simulator::new(&infinite_length, q, v, 0.0, Options::default()),
+        Err(StepError::NonFinite { .. })
+    ));
+    let error = Simulator::new(
+        &PENDULUM,
+        Vector::<2>::new(f64::NAN, 0.0),
+        v,
+        0.0,
+        Options::default(),
+    )
+    .err();
+    assert!(
+        matches!(
+            error,
+            Some(StepError::NonFinite {
+                function: ModelFunction::State,
+                ..
+            })
+        ),
+        "{error:?}"
+    );
+}
+
+#[test]
+fn zero_and_negative_masses_are_not_positive_definite() {
+    let (q, v) = released();
+    for m in [0.0, -1.0] {
+        let error =
+            Simulator::new(&Pendulum { m, ..PENDULUM }, q, v, 0.0, Options::default()).err();
+        assert!(
+            matches!(error, Some(StepError::MassNotPositiveDefinite { .. })),
+            "m = {m}: {error:?}"
+        );
+    }
+    let error = Simulator::new(
+        &Pendulum {
+            m: f64::NAN,
+            ..PENDULUM
+        },
+        q,
+        v,
+        0.0,
+        Options::default(),
+    )
+    .err();
+    assert!(
+        matches!(
+            error,
+            Some(StepError::NonFinite {
+                function: ModelFunction::MassMatrix,
+                ..
+            })
+        ),
+        "{error:?}"
+    );
+}
+
+/// The pendulum with its rod stated twice.
+struct Redundant;
+
+#[constrained_system]
+impl Redundant {
+    fn mass(&self) -> [f64; 2] {
+        [1.0, 1.0]
+    }
+    fn force(&self) -> [f64; 2] {
+        [0.0, -9.81]
+    }
+    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 2] {
+        [x * x + y * y - 1.0, 2.0 * (x * x + y * y - 1.0)]
+    }
+}
+
+#[test]
+fn redundant_constraints_are_named() {
+    let (q, v) = released();
+    let error = Simulator::new(&Redundant, q, v, 0.0, Options::default()).err();
+    let Some(StepError::RankDeficientConstraints { dependent_rows, .. }) = error else {
+        panic!("expected rank deficiency, got {error:?}");
+    };
+    assert_eq!(dependent_rows.len(), 1);
+    let message = StepError::RankDeficientConstraints {
+        t: 0.0,
+        dependent_rows,
+    }
+    .to_string();
+    assert!(
+        message.contains("constraints[0]") || message.contains("constraints[1]"),
+        "{message}"
+    );
+}
+
+#[test]
+fn an_inconsistent_start_is_projected_onto_the_constraints() {
+    let q = Vector::<2>::new(1.1, 0.05);
+    let v = Vector::<2>::new(0.3, 0.4);
+    let sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let start = sim.last().end;
+    assert!((start.q.norm() - 1.0).abs() < 1e-10, "{}", start.q);
+    assert!(
+        start.q.dot(&start.v).abs() < 1e-10,
+        "velocity not tangent: {}",
+        start.v
+    );
+}
+
+#[test]
+fn a_failed_step_keeps_the_last_accepted_state_and_the_run_can_go_on() {
+    let (q, v) = released();
+    let options = Options {
+        max_newton_iterations: 1,
+        constraint_tolerance: 1e-14,
+        ..Options::paper(0.2)
+    };
+    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    let before = *sim.last();
+    let error = sim.step_until(1.0).err();
+    assert!(
+        matches!(error, Some(StepError::NewtonDidNotConverge { .. })),
+        "{error:?}"
+    );
+    assert_eq!(*sim.last(), before);
+    assert_eq!(sim.time(), 0.0);
+    sim.set_options(Options::paper(1e-3)).unwrap();
+    sim.advance_to(0.1, |_| {}).unwrap();
+    assert!((sim.time() - 0.1).abs() < 1e-15);
+}
+
+#[test]
+fn end_times_in_the_past_are_refused() {
+    let (q, v) = released();
+    let mut sim = Simulator::new(&PENDULUM, q, v, 1.0, Options::default()).unwrap();
+    assert_eq!(
+        sim.advance_to(0.5, |_| {}),
+        Err(StepError::InvalidOption(InvalidOption::EndTime))
+    );
+    assert_eq!(
+        sim.step_until(f64::NAN).err(),
+        Some(StepError::InvalidOption(InvalidOption::EndTime))
+    );
+}
+
+fn wild() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        Just(f64::NAN),
+        Just(f64::INFINITY),
+        Just(f64::NEG_INFINITY),
+        Just(0.0),
+        Just(-0.0),
+        Just(1e300),
+        Just(-1e300),
+        Just(1e-300),
+        -10.0..10.0f64,
+    ]
+}
+
+fn options() -> impl Strategy<Value = Options> {
+    (
+        prop_oneof![
+            Just(InnerMethod::Rk4 { substeps: 1 }),
+            Just(InnerMethod::DormandPrince54),
+            Just(InnerMethod::Sdirk2)
+        ],
+        prop_oneof![Just(Sensitivity::Exact), Just(Sensitivity::Paper)],
+        prop_oneof![
+            Just(VelocityProjection::Off),
+            Just(VelocityProjection::Output),
+            Just(VelocityProjection::State)
+        ],
+        wild(),
+        wild(),
+        0u32..6,
+        any::<bool>(),
+    )
+        .prop_map(
+            |(method, sensitivity, velocity_projection, tolerance, step, iterations, adaptive)| {
+                Options {
+                    method,
+                    step: if adaptive {
+                        StepControl::Adaptive {
+                            initial_step: step,
+                            min_step: 1e-10,
+                            max_step: 1.0,
+                            rtol: tolerance.abs(),
+                            atol: 0.0,
+                        }
+                    } else {
+                        StepControl::Fixed { step }
+                    },
+                    sensitivity,
+                    constraint_tolerance: tolerance,
+                    max_newton_iterations: iterations,
+                    velocity_projection,
+                }
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Random states, parameters and options: `step` never panics and never returns a
+    /// non-finite state as success.
+    #[test]
+    fn step_never_panics_nor_accepts_non_finite_states(
+        params in proptest::array::uniform3(wild()),
+        state in proptest::array::uniform4(wild()),
+        options in options(),
+        t_end in wild(),
+    ) {
+        let scene = Pendulum { m: params[0], length: params[1], g: params[2] };
+        let q = Vector::<2>::new(state[0], state[1]);
+        let v = Vector::<2>::new(state[2], state[3]);
+        if let Ok(mut sim) = Simulator::new(&scene, q, v, 0.0, options) {
+            for _ in 0..3 {
+                match sim.step_until(t_end) {
+                    Ok(report) => {
+                        let end = report.end;
+                        prop_assert!(end.q.iter().chain(end.v.iter()).chain(end.lambda.iter()).all(|x| x.is_finite()));
+                        prop_assert!(end.t.is_finite());
+                    }
+                    Err(_) => break,
+                }
+            }
+        }
+    }
+}
