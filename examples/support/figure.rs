@@ -64,7 +64,7 @@ where
             y0 = y0.min(y);
             y1 = y1.max(y);
         }
-        if !(y1 > y0) {
+        if y1 <= y0 || y1.is_nan() || y0.is_nan() {
             let pad = y0.abs().max(1e-300) * 0.1 + 1e-300;
             y0 -= pad;
             y1 += pad;

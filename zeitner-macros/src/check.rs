@@ -30,8 +30,8 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Option<Sizes> {
     let before = errors.count();
     for function in &model.functions {
         let owner = function.role.name();
-        if function.role == Role::Mass || function.role == Role::Force {
-            if function.shape.len() != n {
+        if matches!(function.role, Role::Mass | Role::Force) && function.shape.len() != n {
+            {
                 errors.error_spanned_by(
                     function.shape.len_expr(),
                     format_args!(

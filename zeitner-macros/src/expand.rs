@@ -6,7 +6,7 @@ use zeitner_symbolic::{Binary, Code, CodeCond, Compare, OpCounts};
 
 use crate::check;
 use crate::errors::Errors;
-use crate::lower::{self, Call, Lowerer, VarKind, Vars};
+use crate::lower::{self, Call, Lowerer, Vars};
 use crate::model::Model;
 use crate::symbolic::{self, Generated, Scene};
 
@@ -291,12 +291,7 @@ impl Emitter<'_> {
             Code::Const(x) => literal(*x),
             Code::Var(v) => {
                 let kind = &self.vars.kinds[*v as usize];
-                let strength = if matches!(kind, VarKind::Parameter(_)) {
-                    ATOM
-                } else {
-                    ATOM
-                };
-                (lower::var_tokens(kind, Span::call_site()), strength)
+                (lower::var_tokens(kind, Span::call_site()), ATOM)
             }
             Code::Temp(i) => {
                 let name = temp_name(*i);

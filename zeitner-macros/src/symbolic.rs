@@ -319,8 +319,8 @@ pub fn build(
                 }
             }
             let span = mass[if full_mass { i * n } else { i }].span;
-            for c in 0..n {
-                product_dq.push((i, c, derive.by(&mut d_dq[c], product, span), span));
+            for (c, by_q) in d_dq.iter_mut().enumerate() {
+                product_dq.push((i, c, derive.by(by_q, product, span), span));
             }
         }
         functions.push((

@@ -10,6 +10,8 @@
 //! the multipliers, step control, dense output).
 
 #![no_std]
+// `!(x > y)` is how this crate rejects NaN along with the too-small values: on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 #[cfg(feature = "std")]
 extern crate std;

@@ -127,7 +127,7 @@ impl Options {
                 {
                     return Err(StepError::InvalidOption(InvalidOption::StepSize));
                 }
-                if !positive(rtol) || !(atol.is_finite() && atol >= 0.0) {
+                if !(positive(rtol) && atol.is_finite() && atol >= 0.0) {
                     return Err(StepError::InvalidOption(InvalidOption::Tolerance));
                 }
                 if self.method != InnerMethod::DormandPrince54 {
