@@ -93,7 +93,8 @@ impl Andrews {
             fa: 0.01421,
         }
     }
-    /// The published consistent initial angles (velocities are zero).
+    /// The published consistent initial angles (velocities are zero), with all published digits.
+    #[allow(clippy::excessive_precision)]
     pub const Q0: [f64; 7] = [
         -0.0617138900142764496358948458001,
         0.0,
