@@ -1,0 +1,124 @@
+//! Andrews' squeezing mechanism against the published test-set values
+//! (`../shared/references/andrews.md`), within their stated reliability: 1e-9 relative in q,
+//! 1e-7 in q', 1e-5 in λ.
+
+mod common;
+
+use common::andrews::Andrews;
+use zeitner::{Options, Simulator, StepControl, Vector};
+
+const Q_END: [f64; 7] = [
+    1.5810771196299040e+01,
+    -1.5756371059842980e+01,
+    4.0822240130731012e-02,
+    -5.3473011632269485e-01,
+    5.2440996588053035e-01,
+    5.3473011632269485e-01,
+    1.0480807410422630e+00,
+];
+const V_END: [f64; 7] = [
+    1.1399203021512080e+03,
+    -1.4243792949941110e+03,
+    1.1032912219371340e+01,
+    1.9293374644213849e+01,
+    5.7356992847908084e-01,
+    -1.9293374644213849e+01,
+    3.2317916580269551e-01,
+];
+const LAMBDA_END: [f64; 6] = [
+    1.9917533337319099e+02,
+    -2.9755312280150520e+01,
+    2.3066541190983990e+01,
+    3.1452713654759268e+01,
+    2.2642492320827390e+01,
+    1.1617407000196730e+01,
+];
+
+/// Component-wise relative error, the largest over the components.
+fn worst_relative(x: &[f64], reference: &[f64]) -> f64 {
+    x.iter()
+        .zip(reference)
+        .map(|(a, b)| ((a - b) / b).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn the_consistent_start_reproduces_the_published_initial_multipliers_and_accelerations() {
+    let scene = Andrews::published();
+    let sim = Simulator::new(
+        &scene,
+        Vector::from(Andrews::Q0),
+        Vector::zeros(),
+        0.0,
+        Options::default(),
+    )
+    .unwrap();
+    let start = sim.last().end;
+    let lambda0 = [
+        98.5668703962410896057654982170,
+        -6.12268834425566265503114393122,
+    ];
+    let a0 = [
+        14222.4439199541138705911625887,
+        -10666.8329399655854029433719415,
+    ];
+    assert!(
+        worst_relative(&start.lambda.as_slice()[..2], &lambda0) < 1e-10,
+        "{}",
+        start.lambda
+    );
+    assert!(
+        start.lambda.as_slice()[2..].iter().all(|x| x.abs() < 1e-9),
+        "{}",
+        start.lambda
+    );
+    assert!(
+        worst_relative(&start.a.as_slice()[..2], &a0) < 1e-10,
+        "{}",
+        start.a
+    );
+    assert!(
+        start.a.as_slice()[2..].iter().all(|x| x.abs() < 1e-6),
+        "{}",
+        start.a
+    );
+}
+
+#[test]
+fn matches_the_published_solution_at_t_003() {
+    let scene = Andrews::published();
+    let options = Options {
+        step: StepControl::Adaptive {
+            initial_step: 1e-6,
+            min_step: 1e-14,
+            max_step: 1e-3,
+            rtol: 1e-12,
+            atol: 1e-12,
+        },
+        constraint_tolerance: 1e-14,
+        max_newton_iterations: 20,
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(
+        &scene,
+        Vector::from(Andrews::Q0),
+        Vector::zeros(),
+        0.0,
+        options,
+    )
+    .unwrap();
+    sim.advance_to(0.03, |_| {}).unwrap();
+    let end = sim.last().end;
+    let (eq, ev, el) = (
+        worst_relative(end.q.as_slice(), &Q_END),
+        worst_relative(end.v.as_slice(), &V_END),
+        worst_relative(end.lambda.as_slice(), &LAMBDA_END),
+    );
+    eprintln!(
+        "andrews at t = 0.03: relative errors q {eq:.2e}, q' {ev:.2e}, λ {el:.2e}; {:?}",
+        sim.statistics()
+    );
+    assert!(eq < 1e-9, "q: {eq:e}");
+    assert!(ev < 1e-7, "q': {ev:e}");
+    assert!(el < 1e-5, "λ: {el:e}");
+}
