@@ -17,10 +17,42 @@ mod symbolic;
 use proc_macro::TokenStream;
 
 /// Turns an `impl` block with `mass`, `force`, `constraints` (and optionally
-/// `velocity_constraints`) into an implementation of `zeitner::ConstrainedSystem`.
+/// `velocity_constraints`) into an implementation of `zeitner::ConstrainedSystem`, with exact
+/// derivatives computed at compile time.
 ///
-/// The user's methods stay as written and callable. See the `zeitner` crate for the grammar,
-/// the sign convention `M q'' = F - Gᵀλ` and an example.
+/// Sign convention: `M(q,t) q'' = F(q, q', t) - Gᵀλ` with `G = ∂g/∂q` for position-level rows
+/// and `G = ∂g/∂q'` for velocity-level rows. The user's methods stay as written and callable.
+/// The grammar is in the README: `let` bindings and a final array literal, `+ - * /`, f64
+/// methods, `self.field`, constants, `if`/`else` on time and parameters, opaque
+/// `self.method(t)` calls.
+///
+/// ```
+/// use zeitner::{constrained_system, ConstrainedSystem, Vector};
+///
+/// /// A bead on a rotating hoop of radius `r`, in the plane: a time-dependent constraint.
+/// pub struct Bead { pub m: f64, pub r: f64, pub omega: f64 }
+///
+/// #[constrained_system]
+/// impl Bead {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, 0.0] }
+///     fn constraints(&self, [x, y]: [f64; 2], t: f64) -> [f64; 1] {
+///         // The hoop's centre moves on a circle.
+///         let cx = (self.omega * t).cos();
+///         let cy = (self.omega * t).sin();
+///         [(x - cx).powi(2) + (y - cy).powi(2) - self.r * self.r]
+///     }
+/// }
+///
+/// let bead = Bead { m: 1.0, r: 0.5, omega: 2.0 };
+/// let q = Vector::<2>::new(1.5, 0.3);
+/// let g = bead.constraint_jacobian(&q, &Vector::zeros(), 0.0);
+/// assert_eq!((g[(0, 0)], g[(0, 1)]), (2.0 * (1.5 - 1.0), 2.0 * 0.3));
+/// // At rest, w = G q' + ∂g/∂t is ∂g/∂t = 2 (y - sin ωt)(-ω cos ωt) = -1.2 at t = 0.
+/// let w = bead.constraint_rate(&q, &Vector::zeros(), 0.0);
+/// assert!((w[0] + 1.2).abs() < 1e-12);
+/// # let _ = <Bead as ConstrainedSystem<2, 1>>::SUMMARY;
+/// ```
 #[proc_macro_attribute]
 pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
     expand::constrained_system(attr.into(), item.into()).into()
