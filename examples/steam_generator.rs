@@ -6,10 +6,8 @@
 
 #[path = "support/figure.rs"]
 mod figure;
-#[path = "scenes/steam_generator_reference.rs"]
-mod reference;
-#[path = "scenes/steam_generator.rs"]
-mod scene;
+#[path = "scenes/mod.rs"]
+mod scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -17,7 +15,7 @@ use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
 use figure::{write_panels, Panel};
-use scene::SteamGenerator;
+use scenes::steam_generator::SteamGenerator;
 use zeitner::{
     ConstrainedSystem, InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector,
     VelocityProjection,
@@ -218,7 +216,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     )?;
 
     let end = sim.last().end;
-    let exact = reference::reference(&scene, end.t);
+    let exact = scenes::reference::steam_generator(&scene, end.t);
     let relative = |x: &[f64], r: &[f64]| {
         let scale = r.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         x.iter()

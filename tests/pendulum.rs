@@ -5,7 +5,7 @@
 mod common;
 
 use common::pendulum::Pendulum;
-use common::rk4;
+use common::reference::pendulum_released_horizontally;
 use zeitner::{
     InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection,
 };
@@ -16,24 +16,10 @@ const SCENE: Pendulum = Pendulum {
     g: 9.81,
 };
 
-/// `(q, v, λ)` of the reference at `t`, released horizontally at rest.
+/// `(q, v, λ)` of the reference at `t`.
 fn reference(t: f64) -> ([f64; 2], [f64; 2], f64) {
-    let (g, l, m) = (SCENE.g, SCENE.length, SCENE.m);
-    let steps = (t / 2e-5).round().max(1.0) as usize;
-    let y = rk4(
-        |_, y: &[f64; 2]| [y[1], -(g / l) * y[0].sin()],
-        0.0,
-        [core::f64::consts::FRAC_PI_2, 0.0],
-        t,
-        steps,
-    );
-    let (theta, w) = (y[0], y[1]);
-    let (sin, cos) = theta.sin_cos();
-    (
-        [l * sin, -l * cos],
-        [l * w * cos, l * w * sin],
-        m * (l * w * w + g * cos) / (2.0 * l),
-    )
+    let r = pendulum_released_horizontally(&SCENE, t);
+    (r.q, r.v, r.lambda[0])
 }
 
 fn start(options: Options) -> Simulator<'static, Pendulum, 2, 1> {

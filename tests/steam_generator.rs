@@ -1,11 +1,11 @@
 //! The paper's steam generator against an independent reduced-coordinate solution
-//! (derived in `examples/scenes/steam_generator_reference.rs`).
+//! (derived in `examples/scenes/reference.rs`).
 
 mod common;
 
+use common::reference::steam_generator as reference;
 use common::relative_error;
 use common::steam_generator::SteamGenerator;
-use common::steam_generator_reference::reference;
 use zeitner::{
     InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection,
 };

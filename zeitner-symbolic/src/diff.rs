@@ -176,15 +176,18 @@ fn unary_derivative(g: &mut Graph, f: Unary, a: Id, expr: Id) -> Id {
 fn binary_derivative(g: &mut Graph, f: Binary, a: Id, b: Id, expr: Id, da: Id, db: Id) -> Id {
     match f {
         Binary::Powf => {
-            // d(a^b) = a^b (b' ln a + b a' / a); the ln term only where b' ≠ 0, so that a
-            // negative base under a locally constant exponent keeps a finite derivative.
-            let ln_a = g.unary(Unary::Ln, a);
-            let product = g.mul(db, ln_a);
+            // d(a^b) = a^b (b' ln a + b a' / a). Each term only where its factor b' or a' is
+            // nonzero, so that a locally constant negative or zero base (or exponent) keeps a
+            // finite derivative instead of 0 · ∞.
             let zero = g.zero();
+            let ln_a = g.unary(Unary::Ln, a);
+            let exponent_term = g.mul(db, ln_a);
             let exponent_constant = g.compare(Compare::Eq, db, zero);
-            let from_exponent = g.select(exponent_constant, zero, product);
+            let from_exponent = g.select(exponent_constant, zero, exponent_term);
             let ratio = g.div(b, a);
-            let from_base = g.mul(ratio, da);
+            let base_term = g.mul(ratio, da);
+            let base_constant = g.compare(Compare::Eq, da, zero);
+            let from_base = g.select(base_constant, zero, base_term);
             let sum = g.add(from_exponent, from_base);
             g.mul(expr, sum)
         }

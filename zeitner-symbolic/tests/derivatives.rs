@@ -186,7 +186,17 @@ impl Real for D {
         let (a, b) = (self.0, other.0);
         D(match f {
             // A constant exponent is defined for negative bases too.
-            Binary::Powf if b.eps == 0.0 => a.powf(b.re),
+            Binary::Powf if b.eps == 0.0 => {
+                // The power rule, written out so that a zero base with a constant exponent
+                // stays exact (num-dual goes through ln there).
+                let c = b.re;
+                let eps = if a.eps == 0.0 {
+                    0.0
+                } else {
+                    c * a.re.powf(c - 1.0) * a.eps
+                };
+                Dual64::new(a.re.powf(c), eps)
+            }
             Binary::Powf => (b * a.ln()).exp(),
             Binary::Atan2 => a.atan2(b),
             Binary::Hypot => (a * a + b * b).sqrt(),
@@ -213,7 +223,13 @@ fn close(symbolic: f64, dual: f64) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 4000, max_global_rejects: 400_000, ..ProptestConfig::default() })]
+    // A fixed seed keeps CI reproducible; change it locally to explore further.
+    #![proptest_config(ProptestConfig {
+        cases: 4000,
+        max_global_rejects: 400_000,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x2e17),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn symbolic_derivatives_match_dual_numbers(
@@ -226,19 +242,23 @@ proptest! {
         // Points where any subexpression is undefined, infinite or huge say nothing about
         // derivatives (e.g. x^(1/0)).
         prop_assume!((0..g.len()).all(|i| values.eval(Id(i as u32)).abs() < 1e6));
+        let value = values.eval(expr);
         // Stay away from the kinks of abs/min/max/signum and the select boundaries.
         prop_assume!(point.iter().all(|x| x.abs() > 1e-3));
         for var in 0..VARS - 1 {
             let derivative = Differentiator::new(var).derive(&mut g, expr).unwrap();
-            let dual = Evaluator::new(
+            let dual_result = Evaluator::new(
                 &g,
                 |v| D(if v == var { Dual64::from_re(point[v as usize]).derivative() } else { Dual64::from_re(point[v as usize]) }),
                 |_, a: &[D]| call(a),
             )
             .eval(expr)
-            .0
-            .eps;
+            .0;
+            let dual = dual_result.eps;
             prop_assume!(dual.is_finite() && dual.abs() < 1e8);
+            // Where the oracle's own rounding moves the value (num-dual divides through a
+            // reciprocal), an ill-conditioned point such as asin near 1 amplifies it: skip.
+            prop_assume!((dual_result.re - value).abs() <= 1e-13 * value.abs().max(1.0));
             let symbolic = Evaluator::new(&g, |v| point[v as usize], |_, a: &[f64]| call(a)).eval(derivative);
             prop_assert!(close(symbolic, dual), "d/dx{var}: symbolic {symbolic}, dual {dual}, tree {tree:?}");
             let program = Program::schedule(&g, &[(0, derivative)]);

@@ -1,24 +1,14 @@
-//! Independent reference for the steam generator: its reduced-coordinate solution.
-//!
-//! The scene has one degree of freedom. With the column angle φ,
-//!   q1 = h2 sin φ,  q2 = h2 (1 - cos φ),  q3 = q1 / h3,
-//! both constraints hold identically. Kinetic energy:
-//!   T = ½ m (q1'² + q2'²) + ½ J q3'² = ½ μ(φ) φ'²,  μ(φ) = m h2² + J h2² cos²φ / h3².
-//! Generalised force, F · ∂q/∂φ with F = (P - d q1', -m g, P h1):
-//!   Q = (P - d h2 cos φ φ') h2 cos φ - m g h2 sin φ + P h1 h2 cos φ / h3.
-//! Lagrange's equation of the second kind, d/dt(μ φ') - ½ μ'(φ) φ'² = Q, with
-//! μ'(φ) = -2 J h2² sin φ cos φ / h3², gives
-//!   φ'' = (Q + J h2² sin φ cos φ φ'² / h3²) / μ(φ).
-//! The multipliers follow from the full equations: Gᵀλ = F - M q'', solved in least squares
-//! (it is consistent), with G = [[1, 0, -h3], [2 q1, 2 (q2 - h2), 0]].
+//! Independent references, derived by hand in reduced coordinates and integrated far below
+//! any tolerance the tests use.
 
-use super::scene::SteamGenerator;
+use super::pendulum::Pendulum;
+use super::steam_generator::SteamGenerator;
 
-/// Reference state and multipliers at one time.
-pub struct Reference {
-    pub q: [f64; 3],
-    pub v: [f64; 3],
-    pub lambda: [f64; 2],
+/// A reference state and its multipliers at one time.
+pub struct State<const N: usize, const Z: usize> {
+    pub q: [f64; N],
+    pub v: [f64; N],
+    pub lambda: [f64; Z],
 }
 
 fn phi_rhs(s: &SteamGenerator, t: f64, y: &[f64; 2]) -> [f64; 2] {
@@ -34,8 +24,21 @@ fn phi_rhs(s: &SteamGenerator, t: f64, y: &[f64; 2]) -> [f64; 2] {
     ]
 }
 
-/// The reduced-coordinate solution at `t`, integrated to about 1e-15.
-pub fn reference(s: &SteamGenerator, t: f64) -> Reference {
+/// The steam generator has one degree of freedom; the derivation:
+/// The scene has one degree of freedom. With the column angle φ,
+///   q1 = h2 sin φ,  q2 = h2 (1 - cos φ),  q3 = q1 / h3,
+/// both constraints hold identically. Kinetic energy:
+///   T = ½ m (q1'² + q2'²) + ½ J q3'² = ½ μ(φ) φ'²,  μ(φ) = m h2² + J h2² cos²φ / h3².
+/// Generalised force, F · ∂q/∂φ with F = (P - d q1', -m g, P h1):
+///   Q = (P - d h2 cos φ φ') h2 cos φ - m g h2 sin φ + P h1 h2 cos φ / h3.
+/// Lagrange's equation of the second kind, d/dt(μ φ') - ½ μ'(φ) φ'² = Q, with
+/// μ'(φ) = -2 J h2² sin φ cos φ / h3², gives
+///   φ'' = (Q + J h2² sin φ cos φ φ'² / h3²) / μ(φ).
+/// The multipliers follow from the full equations: Gᵀλ = F - M q'', solved in least squares
+/// (it is consistent), with G = [[1, 0, -h3], [2 q1, 2 (q2 - h2), 0]].
+///
+/// The steam generator's reduced-coordinate solution at `t`, integrated to about 1e-15.
+pub fn steam_generator(s: &SteamGenerator, t: f64) -> State<3, 2> {
     // Integrate across the load's kink at t = rise in two pieces, 1e-5 s steps (RK4 error ~1e-15).
     let y = rk4(
         |t, y| phi_rhs(s, t, y),
@@ -73,7 +76,7 @@ pub fn reference(s: &SteamGenerator, t: f64) -> Reference {
         (ggt(1, 1) * gr(0) - ggt(0, 1) * gr(1)) / det,
         (ggt(0, 0) * gr(1) - ggt(1, 0) * gr(0)) / det,
     ];
-    Reference { q, v, lambda }
+    State { q, v, lambda }
 }
 
 /// Classical RK4 for a first-order system `y' = f(t, y)` of `K` components, fixed step `h`,
@@ -99,4 +102,26 @@ pub fn rk4<const K: usize>(
         y = core::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
     }
     y
+}
+
+/// The pendulum released horizontally at rest, from its angle ODE θ'' = -(g/L) sin θ
+/// (θ from the downward vertical, x = L sin θ, y = -L cos θ), with λ from the radial balance
+/// m L θ'² + m g cos θ = 2 L λ (G = (2x, 2y)). RK4 with steps of about 2e-5 s.
+pub fn pendulum_released_horizontally(p: &Pendulum, t: f64) -> State<2, 1> {
+    let (g, l, m) = (p.g, p.length, p.m);
+    let steps = (t / 2e-5).round().max(1.0) as usize;
+    let y = rk4(
+        |_, y: &[f64; 2]| [y[1], -(g / l) * y[0].sin()],
+        0.0,
+        [core::f64::consts::FRAC_PI_2, 0.0],
+        t,
+        steps,
+    );
+    let (theta, w) = (y[0], y[1]);
+    let (sin, cos) = theta.sin_cos();
+    State {
+        q: [l * sin, -l * cos],
+        v: [l * w * cos, l * w * sin],
+        lambda: [m * (l * w * w + g * cos) / (2.0 * l)],
+    }
 }

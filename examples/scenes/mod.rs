@@ -1,0 +1,8 @@
+//! The example scenes, written with `#[constrained_system]` as a user would, and their
+//! independent references. Shared by the examples, the tests and the benchmark.
+#![allow(dead_code)]
+
+pub mod andrews;
+pub mod pendulum;
+pub mod reference;
+pub mod steam_generator;
