@@ -5,35 +5,8 @@
 
 mod common;
 
-use common::andrews::Andrews;
+use common::andrews::{published_end, Andrews};
 use zeitner::{Options, Simulator, StepControl, Vector};
-
-const Q_END: [f64; 7] = [
-    1.5810771196299040e+01,
-    -1.5756371059842980e+01,
-    4.0822240130731012e-02,
-    -5.3473011632269485e-01,
-    5.2440996588053035e-01,
-    5.3473011632269485e-01,
-    1.0480807410422630e+00,
-];
-const V_END: [f64; 7] = [
-    1.1399203021512080e+03,
-    -1.4243792949941110e+03,
-    1.1032912219371340e+01,
-    1.9293374644213849e+01,
-    5.7356992847908084e-01,
-    -1.9293374644213849e+01,
-    3.2317916580269551e-01,
-];
-const LAMBDA_END: [f64; 6] = [
-    1.9917533337319099e+02,
-    -2.9755312280150520e+01,
-    2.3066541190983990e+01,
-    3.1452713654759268e+01,
-    2.2642492320827390e+01,
-    1.1617407000196730e+01,
-];
 
 /// Component-wise relative error, the largest over the components.
 fn worst_relative(x: &[f64], reference: &[f64]) -> f64 {
@@ -110,10 +83,11 @@ fn matches_the_published_solution_at_t_003() {
     .unwrap();
     sim.advance_to(0.03, |_| {}).unwrap();
     let end = sim.last().end;
+    let published = published_end();
     let (eq, ev, el) = (
-        worst_relative(end.q.as_slice(), &Q_END),
-        worst_relative(end.v.as_slice(), &V_END),
-        worst_relative(end.lambda.as_slice(), &LAMBDA_END),
+        worst_relative(end.q.as_slice(), &published.q),
+        worst_relative(end.v.as_slice(), &published.v),
+        worst_relative(end.lambda.as_slice(), &published.lambda),
     );
     eprintln!(
         "andrews at t = 0.03: relative errors q {eq:.2e}, q' {ev:.2e}, λ {el:.2e}; {:?}",

@@ -1,5 +1,6 @@
 //! Line charts as SVG and PNG, stacked in panels, with a font shipped in a crate so that a
 //! fresh machine needs no system fonts.
+#![allow(dead_code)] // shared by the example and the benchmark; each uses a part
 
 use std::path::Path;
 
@@ -116,4 +117,101 @@ fn tick(value: f64, magnitude: f64) -> String {
     } else {
         format!("{value:.2e}")
     }
+}
+
+/// Writes one log–log chart (e.g. error against CPU time) with a line and markers per series,
+/// to `<stem>.svg` and `<stem>.png`. Non-positive values are left out (they have no logarithm).
+pub fn write_log_log(stem: &Path, panel: &Panel<'_>) -> Result<(), Box<dyn std::error::Error>> {
+    register_fonts();
+    let svg = stem.with_extension("svg");
+    draw_log_log(
+        SVGBackend::new(&svg, (1000, 700)).into_drawing_area(),
+        panel,
+    )?;
+    let png = stem.with_extension("png");
+    draw_log_log(
+        BitMapBackend::new(&png, (1000, 700)).into_drawing_area(),
+        panel,
+    )?;
+    Ok(())
+}
+
+fn draw_log_log<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    panel: &Panel<'_>,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE)?;
+    let positive = |s: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        s.iter()
+            .copied()
+            .filter(|&(x, y)| x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite())
+            .collect()
+    };
+    let series: Vec<(&str, Vec<(f64, f64)>)> = panel
+        .series
+        .iter()
+        .map(|(n, s)| (*n, positive(s)))
+        .collect();
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, 0.0f64, f64::INFINITY, 0.0f64);
+    for &(x, y) in series.iter().flat_map(|(_, s)| s.iter()) {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    if x1 <= 0.0 {
+        (x0, x1, y0, y1) = (1e-6, 1.0, 1e-12, 1.0);
+    }
+    let mut chart = ChartBuilder::on(&root)
+        .caption(panel.title, ("sans-serif", 22))
+        .margin(16)
+        .x_label_area_size(45)
+        .y_label_area_size(80)
+        .build_cartesian_2d(
+            (x0 / 1.5..x1 * 1.5).log_scale(),
+            (y0 / 3.0..y1 * 3.0).log_scale(),
+        )?;
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_label)
+        .y_desc(panel.y_label)
+        .x_label_formatter(&|x| format!("{x:.0e}"))
+        .y_label_formatter(&|y| format!("{y:.0e}"))
+        .label_style(("sans-serif", 14))
+        .draw()?;
+    let palette = [
+        RGBColor(31, 119, 180),
+        RGBColor(214, 39, 40),
+        RGBColor(44, 160, 44),
+        RGBColor(148, 103, 189),
+        RGBColor(255, 127, 14),
+        RGBColor(140, 86, 75),
+        RGBColor(227, 119, 194),
+        RGBColor(23, 190, 207),
+    ];
+    for (k, (name, points)) in series.iter().enumerate() {
+        let color = palette[k % palette.len()];
+        chart
+            .draw_series(LineSeries::new(
+                points.iter().copied(),
+                color.stroke_width(2),
+            ))?
+            .label(*name)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+        chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 13))
+        .draw()?;
+    root.present()?;
+    Ok(())
 }
