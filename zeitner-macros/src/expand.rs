@@ -54,9 +54,18 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
 }
 
 fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
+    let (scene, vars, calls) = analyse(item, zeitner_symbolic::Graph::new(), errors)?;
+    Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
+}
+
+/// Model → checks → lowering → symbolic stage, on the given graph.
+fn analyse(
+    item: &syn::ItemImpl,
+    mut graph: zeitner_symbolic::Graph,
+    errors: &mut Errors,
+) -> Option<(Scene, Vars, Vec<Call>)> {
     let model = Model::from_item(item, errors);
     let sizes = check::sizes(&model, errors)?;
-    let mut graph = zeitner_symbolic::Graph::new();
     let mut vars = Vars::new(sizes.n);
     let mut calls = Vec::new();
     let mut lowerer = Lowerer {
@@ -74,7 +83,29 @@ fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
         return None;
     }
     let scene = symbolic::build(&model, sizes, &lowered, &mut graph, &mut vars, errors)?;
-    Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
+    Some((scene, vars, calls))
+}
+
+/// Operation counts per generated function: `(name, naive, simplified, simplified and shared)`,
+/// where naive is the derivatives as the textbook rules produce them, without simplification
+/// or sharing. For reports.
+#[cfg(test)]
+pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, OpCounts, OpCounts)> {
+    let mut errors = Errors::new();
+    let raw = analyse(
+        item,
+        zeitner_symbolic::Graph::without_simplification(),
+        &mut errors,
+    );
+    let simplified = analyse(item, zeitner_symbolic::Graph::new(), &mut errors);
+    let (Some((raw, ..)), Some((simplified, ..))) = (raw, simplified) else {
+        return Vec::new();
+    };
+    raw.functions
+        .iter()
+        .zip(&simplified.functions)
+        .map(|(r, s)| (s.method, r.unshared, s.unshared, s.program.op_counts()))
+        .collect()
 }
 
 fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call]) -> TokenStream {

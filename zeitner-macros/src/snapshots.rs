@@ -108,6 +108,53 @@ fn chain_scene(n: usize) -> String {
     )
 }
 
+/// Operation counts of every generated function of every example scene, naive (textbook
+/// derivatives, no simplification, no sharing) → simplified → simplified and shared:
+/// `cargo test --release -p zeitner-macros -- --ignored --nocapture operation_counts`.
+#[test]
+#[ignore = "a measurement, not a check"]
+fn operation_counts_report() {
+    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes");
+    let mut paths: Vec<_> = std::fs::read_dir(&scenes)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    paths.sort();
+    println!("| scene | function | naive | simplified | simplified + shared | of which transcendental (naive → shared) |");
+    println!("|---|---|---|---|---|---|");
+    for path in paths {
+        let source = std::fs::read_to_string(&path).unwrap();
+        let Ok(file) = syn::parse_file(&source) else {
+            continue;
+        };
+        for item in file.items {
+            let syn::Item::Impl(mut item_impl) = item else {
+                continue;
+            };
+            if !item_impl
+                .attrs
+                .iter()
+                .any(|a| a.path().is_ident("constrained_system"))
+            {
+                continue;
+            }
+            item_impl.attrs.clear();
+            let scene = path.file_stem().unwrap().to_string_lossy().to_string();
+            for (name, naive, simplified, shared) in crate::expand::op_report(&item_impl) {
+                println!(
+                    "| {scene} | {name} | {} | {} | {} | {} → {} |",
+                    naive.total(),
+                    simplified.total(),
+                    shared.total(),
+                    naive.transcendental,
+                    shared.transcendental
+                );
+            }
+        }
+    }
+}
+
 /// Macro time and generated code size for Andrews' mechanism and chains of pendulums:
 /// `cargo test --release -p zeitner-macros -- --ignored --nocapture scaling`.
 #[test]

@@ -2,6 +2,7 @@
 //! multipliers `p` held fixed, and, when asked, the exact sensitivity of the step end to `p`.
 
 use crate::error::StepError;
+#[cfg(feature = "implicit")]
 use crate::linalg::Lu;
 use crate::model::Model;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
@@ -117,6 +118,8 @@ pub(crate) fn explicit_step<S, const N: usize, const Z: usize, const ST: usize>(
 where
     S: ConstrainedSystem<N, Z>,
 {
+    // Without the feature the sensitivity code is compiled out, not just skipped.
+    let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
     let mut dkq = [Matrix::<N, Z>::zeros(); ST];
@@ -175,6 +178,7 @@ where
     Ok(end)
 }
 
+#[cfg(feature = "implicit")]
 /// Alexander's L-stable, stiffly accurate 2-stage SDIRK (order 2), `γ = 1 - 1/√2`.
 /// Stage equations are solved by Newton in the stage velocities with the iteration matrix
 /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q` from the step start.

@@ -10,6 +10,8 @@ pub enum InnerMethod {
     /// Dormand–Prince 5(4): order 5 with an embedded order-4 error estimate for adaptive steps.
     DormandPrince54,
     /// Alexander's 2-stage SDIRK: order 2, L-stable, for stiff forces. Uses `∂F/∂q`, `∂F/∂q'`.
+    /// Needs the `implicit` feature.
+    #[cfg(feature = "implicit")]
     Sdirk2,
 }
 
@@ -20,7 +22,9 @@ pub enum Sensitivity {
     /// frozen at the step start. Cheap per sweep, converges linearly.
     Paper,
     /// The exact derivative of the inner method's step map, propagated through its stages.
-    /// Costs Jacobians per stage, converges quadratically.
+    /// Costs Jacobians per stage, converges quadratically. Needs the `exact-sensitivity`
+    /// feature.
+    #[cfg(feature = "exact-sensitivity")]
     Exact,
 }
 
@@ -75,7 +79,10 @@ impl Default for Options {
                 rtol: 1e-8,
                 atol: 1e-10,
             },
+            #[cfg(feature = "exact-sensitivity")]
             sensitivity: Sensitivity::Exact,
+            #[cfg(not(feature = "exact-sensitivity"))]
+            sensitivity: Sensitivity::Paper,
             constraint_tolerance: 1e-10,
             max_newton_iterations: 12,
             velocity_projection: VelocityProjection::Output,

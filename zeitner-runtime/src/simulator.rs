@@ -2,11 +2,13 @@
 //! constraints hold at the step end.
 
 use crate::error::{InvalidOption, Row, StepError};
-use crate::inner::{explicit_step, sdirk2_step, Start, StepEnd, DOPRI5, RK4};
+#[cfg(feature = "implicit")]
+use crate::inner::sdirk2_step;
+use crate::inner::{explicit_step, Start, StepEnd, DOPRI5, RK4};
 use crate::linalg::{keep_leading_rows, max_abs, solve_general, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::{Evaluations, Model};
-use crate::options::{InnerMethod, Options, Sensitivity, StepControl, VelocityProjection};
+use crate::options::{InnerMethod, Options, StepControl, VelocityProjection};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
@@ -40,6 +42,7 @@ pub struct StepReport<const N: usize, const Z: usize> {
     pub newton_iterations: u32,
 }
 
+#[cfg(feature = "dense-output")]
 impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// Dense output at `t` within the step: cubic Hermite in `q` (from `q'`) and in `q'` (from
     /// `q''`), linear in `q''` and `λ`. Outside the step it extrapolates.
@@ -284,7 +287,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// One try of a step of size `h` from the current state.
     fn attempt(&mut self, h: f64) -> Result<Attempt<N, Z>, StepError> {
         let options = self.options;
-        let exact = options.sensitivity == Sensitivity::Exact;
+        #[cfg(feature = "exact-sensitivity")]
+        let exact = options.sensitivity == crate::options::Sensitivity::Exact;
+        #[cfg(not(feature = "exact-sensitivity"))]
+        let exact = false;
         let start = Start {
             t: self.t,
             q: self.q,
@@ -424,6 +430,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             InnerMethod::DormandPrince54 => {
                 explicit_step(&mut self.model, &DOPRI5, start, h, p, exact)
             }
+            #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => sdirk2_step(&mut self.model, start, h, p, exact),
         }
     }

@@ -204,6 +204,8 @@ pub enum Cond {
 /// The arena of nodes and conditions.
 #[derive(Default, Debug, Clone)]
 pub struct Graph {
+    /// Build nodes as asked, without the simplification rules: for measuring what the rules save.
+    raw: bool,
     nodes: Vec<Node>,
     index: HashMap<Node, Id>,
     conds: Vec<Cond>,
@@ -213,6 +215,14 @@ pub struct Graph {
 impl Graph {
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// A graph whose constructors apply no simplification rules (equal nodes are still shared).
+    pub fn without_simplification() -> Self {
+        Graph {
+            raw: true,
+            ..Self::default()
+        }
     }
 
     pub fn node(&self, id: Id) -> &Node {
@@ -295,6 +305,9 @@ impl Graph {
     }
 
     pub fn add(&mut self, a: Id, b: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Add(a, b));
+        }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
             if let Some(id) = self.folded(x + y) {
                 return id;
@@ -322,6 +335,9 @@ impl Graph {
     }
 
     pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Sub(a, b));
+        }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
             if let Some(id) = self.folded(x - y) {
                 return id;
@@ -343,6 +359,9 @@ impl Graph {
     }
 
     pub fn neg(&mut self, a: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Neg(a));
+        }
         if let Some(x) = self.constant(a) {
             return self.num(-x);
         }
@@ -354,6 +373,9 @@ impl Graph {
     }
 
     pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Mul(a, b));
+        }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
             if let Some(id) = self.folded(x * y) {
                 return id;
@@ -396,6 +418,9 @@ impl Graph {
     }
 
     pub fn div(&mut self, a: Id, b: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Div(a, b));
+        }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
             if let Some(id) = self.folded(x / y) {
                 return id;
@@ -415,6 +440,9 @@ impl Graph {
     }
 
     pub fn powi(&mut self, a: Id, n: i32) -> Id {
+        if self.raw {
+            return self.intern(Node::Powi(a, n));
+        }
         if let Some(x) = self.constant(a) {
             if let Some(id) = self.folded(x.powi(n)) {
                 return id;
@@ -434,6 +462,9 @@ impl Graph {
     }
 
     pub fn unary(&mut self, f: Unary, a: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Unary(f, a));
+        }
         if let Some(x) = self.constant(a) {
             if let Some(id) = self.folded(f.apply(x)) {
                 return id;
@@ -443,6 +474,9 @@ impl Graph {
     }
 
     pub fn binary(&mut self, f: Binary, a: Id, b: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Binary(f, a, b));
+        }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
             if let Some(id) = self.folded(f.apply(x, y)) {
                 return id;
@@ -463,6 +497,9 @@ impl Graph {
     }
 
     pub fn select(&mut self, cond: CondId, then: Id, otherwise: Id) -> Id {
+        if self.raw {
+            return self.intern(Node::Select(cond, then, otherwise));
+        }
         if then == otherwise {
             return then;
         }
