@@ -1,9 +1,3 @@
-use zeitner::constrained_system;
-pub struct Pendulum {
-    pub m: f64,
-    pub length: f64,
-    pub g: f64,
-}
 #[allow(dead_code)]
 impl Pendulum {
     fn mass(&self) -> [f64; 2] {

@@ -263,6 +263,9 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     row
 }
 
+/// Runs one configuration: `(method, setting, options, repeats)`.
+type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
+
 /// A scene: how to run one configuration of it.
 struct Scene {
     name: &'static str,
@@ -270,7 +273,7 @@ struct Scene {
     t_end: f64,
     /// `ε` in the constraints' units, the same for every setting.
     constraint_tolerance: f64,
-    run: Box<dyn Fn(&str, &str, Options, usize) -> Row>,
+    run: Runner,
 }
 
 fn pendulum_scene() -> Scene {
@@ -382,7 +385,7 @@ fn andrews_scene() -> Result<Scene, String> {
             1e-5,
         ),
     ];
-    if agreement.iter().any(|(error, limit)| !(error < limit)) {
+    if !agreement.iter().all(|(error, limit)| error < limit) {
         return Err(format!(
             "Andrews reference disagrees with the published values: {agreement:?}"
         ));

@@ -28,7 +28,8 @@ fn expand_file(source: &str) -> String {
                 let expanded: syn::File = syn::parse2(expanded).expect("expansion parses");
                 items.extend(expanded.items);
             }
-            other => items.push(other),
+            // Only what the macro emits: the rest of the scene file is not its business.
+            _ => {}
         }
     }
     prettyplease::unparse(&syn::File {
