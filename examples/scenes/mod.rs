@@ -6,3 +6,4 @@ pub mod andrews;
 pub mod pendulum;
 pub mod reference;
 pub mod steam_generator;
+pub mod stiff;

@@ -22,6 +22,8 @@ pub struct SteamGenerator {
     pub p0: f64,
     /// Rise time of the load, s.
     pub rise: f64,
+    /// The load is switched off from this time on, s (infinite: never).
+    pub off: f64,
 }
 
 impl SteamGenerator {
@@ -37,12 +39,17 @@ impl SteamGenerator {
             d: 2.0e6,
             p0: 1.0e6,
             rise: 0.01,
+            off: f64::INFINITY,
         }
     }
 
-    /// The horizontal load P(t): a ramp to `p0` over the rise time.
+    /// The horizontal load P(t): a ramp to `p0` over the rise time, zero from `off` on.
     pub fn load(&self, t: f64) -> f64 {
-        self.p0 * (t / self.rise).min(1.0)
+        if t < self.off {
+            self.p0 * (t / self.rise).min(1.0)
+        } else {
+            0.0
+        }
     }
 }
 

@@ -9,6 +9,7 @@ mod hand_written;
 mod measure;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
+mod stability;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -41,6 +42,46 @@ struct Cli {
 enum Command {
     /// Runs every scene × method × setting and writes CSVs, plots and the Markdown summary.
     WorkPrecision(Args),
+    /// Runs the stiff and extreme scenes across methods and steps and writes the stability report.
+    Stability(StabilityArgs),
+}
+
+#[derive(clap::Args)]
+struct StabilityArgs {
+    /// Steps of the long runs.
+    #[arg(long, default_value_t = 1_000_000)]
+    long_steps: u64,
+    /// CSV of every run.
+    #[arg(long, default_value = "target/zeitner/stability.csv")]
+    csv: PathBuf,
+    /// Markdown report.
+    #[arg(long, default_value = "docs/stability.md")]
+    report: PathBuf,
+}
+
+fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error>> {
+    let progress = ProgressBar::new_spinner();
+    let clock = std::time::Instant::now();
+    let cases = stability::all_cases(args.long_steps, |scene| {
+        progress.set_message(format!("{scene} [{:.0} s]", clock.elapsed().as_secs_f64()));
+        progress.tick();
+    });
+    progress.finish_and_clear();
+    if let Some(parent) = args.csv.parent() {
+        std::fs::create_dir_all(parent)?;
+    }
+    std::fs::write(&args.csv, stability::csv(&cases))?;
+    std::fs::write(&args.report, stability::markdown(&cases, args.long_steps))?;
+    let stable = cases.iter().filter(|c| c.outcome.stable()).count();
+    println!(
+        "{} runs, {stable} stable, {} stopped with a typed error; wrote {} and {} in {:.1} s",
+        cases.len(),
+        cases.iter().filter(|c| c.outcome.failure.is_some()).count(),
+        args.csv.display(),
+        args.report.display(),
+        clock.elapsed().as_secs_f64()
+    );
+    Ok(())
 }
 
 #[derive(clap::Args)]
@@ -435,7 +476,10 @@ fn csv_line(row: &Row) -> String {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let Command::WorkPrecision(args) = Cli::parse().command;
+    let args = match Cli::parse().command {
+        Command::WorkPrecision(args) => args,
+        Command::Stability(args) => return stability_report(args),
+    };
     let wanted = |name: &str| args.scenes.is_empty() || args.scenes.iter().any(|s| s == name);
     let mut scenes = Vec::new();
     if wanted("pendulum") {

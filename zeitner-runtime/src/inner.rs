@@ -237,9 +237,9 @@ where
             v -= delta;
             let norm = delta.amax();
             let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
-            if norm <= 4.0 * f64::EPSILON * scale
-                || (norm <= 1e-12 * scale && norm >= 0.5 * last_norm)
-            {
+            // Converged; or stalled at the rounding floor, which stiff forces raise well above
+            // the velocities' own precision (k·x is rounded before it is divided back down).
+            if norm <= 1e-12 * scale || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm) {
                 converged = true;
                 break;
             }
