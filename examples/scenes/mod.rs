@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod andrews;
+pub mod chain;
 pub mod pendulum;
 pub mod reference;
 pub mod steam_generator;

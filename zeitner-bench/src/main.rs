@@ -574,7 +574,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row.failure.as_deref().unwrap_or("")
         );
     }
-    let summary = summary_markdown(&scenes, &rows, repeats);
+    let scaling = chain_scaling(repeats, &args.output_dir)?;
+    let mut summary = summary_markdown(&scenes, &rows, repeats);
+    summary.push_str(&scaling);
     print!("{summary}");
     if !args.quick {
         let figures = args
@@ -583,10 +585,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .unwrap_or(std::path::Path::new("."))
             .join("figures");
         std::fs::create_dir_all(&figures)?;
-        for scene in &scenes {
+        for name in scenes.iter().map(|s| s.name).chain(["chain_scaling"]) {
             std::fs::copy(
-                args.output_dir.join(format!("{}.png", scene.name)),
-                figures.join(format!("work_precision_{}.png", scene.name)),
+                args.output_dir.join(format!("{name}.png")),
+                figures.join(format!("work_precision_{name}.png")),
             )?;
         }
         std::fs::write(&args.summary, summary)?;
@@ -683,4 +685,148 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
         }
     }
     out
+}
+
+/// Time per step against the number of coordinates, for chains of 2 to 16 pendulums released
+/// horizontally: 1 s of fixed 1 ms steps. Writes `chain_scaling.{csv,svg,png}` and returns the
+/// Markdown section.
+fn chain_scaling(
+    repeats: usize,
+    output_dir: &std::path::Path,
+) -> Result<String, Box<dyn std::error::Error>> {
+    use scenes::chain::{Chain16, Chain2, Chain4, Chain8};
+
+    fn time_per_step<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+        scene: &S,
+        options: Options,
+        repeats: usize,
+    ) -> Result<(f64, u64), String> {
+        let q0 = Vector::<N>::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 });
+        let mut times = Vec::new();
+        let mut steps = 0;
+        for _ in 0..=repeats.max(1) {
+            let mut sim = Simulator::new(scene, q0, Vector::zeros(), 0.0, options)
+                .map_err(|e| e.to_string())?;
+            let before = cpu_seconds();
+            sim.advance_to(1.0, |_| {}).map_err(|e| e.to_string())?;
+            times.push(cpu_seconds() - before);
+            steps = sim.statistics().steps;
+        }
+        // The first run is the warm-up.
+        let mut timed = times.split_off(1);
+        timed.sort_by(f64::total_cmp);
+        Ok((timed[timed.len() / 2] / steps as f64, steps))
+    }
+
+    let methods = [
+        (
+            "zeitner-constant-lambda-rk4-exactQ",
+            Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                step: StepControl::Fixed { step: 1e-3 },
+                max_newton_iterations: 30,
+                ..Options::default()
+            },
+        ),
+        (
+            "zeitner-constant-lambda-rk4-paperQ-raw",
+            Options {
+                max_newton_iterations: 30,
+                ..Options::paper(1e-3)
+            },
+        ),
+    ];
+    let mut csv = String::from("coordinates,constraints,method,steps,seconds_per_step\n");
+    let mut series = Vec::new();
+    let mut table = String::from(
+        "## Scaling: chains of pendulums\n\n![time per step against coordinates](figures/work_precision_chain_scaling.png)\n\n\
+         1 s of 1 ms steps from the horizontal; CPU time per step, median of the timed runs.\n\n\
+         | coordinates | constraints | method | time per step |\n|---|---|---|---|\n",
+    );
+    for (name, options) in methods {
+        let results = [
+            (
+                4,
+                time_per_step(
+                    &Chain2 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                8,
+                time_per_step(
+                    &Chain4 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                16,
+                time_per_step(
+                    &Chain8 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                32,
+                time_per_step(
+                    &Chain16 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+        ];
+        let mut points = Vec::new();
+        for (coordinates, result) in results {
+            match result {
+                Ok((per_step, steps)) => {
+                    csv.push_str(&format!(
+                        "{coordinates},{},{name},{steps},{per_step:e}\n",
+                        coordinates / 2
+                    ));
+                    table.push_str(&format!(
+                        "| {coordinates} | {} | `{name}` | {:.2} µs |\n",
+                        coordinates / 2,
+                        per_step * 1e6
+                    ));
+                    points.push((coordinates as f64, per_step));
+                }
+                Err(error) => table.push_str(&format!(
+                    "| {coordinates} | {} | `{name}` | failed: {error} |\n",
+                    coordinates / 2
+                )),
+            }
+        }
+        series.push((name, points));
+    }
+    std::fs::write(output_dir.join("chain_scaling.csv"), csv)?;
+    figure::write_log_log(
+        &output_dir.join("chain_scaling"),
+        &figure::Panel {
+            title: "Chains of pendulums: time per step",
+            x_label: "coordinates",
+            y_label: "CPU time per step [s]",
+            series,
+        },
+    )?;
+    table.push('\n');
+    Ok(table)
 }

@@ -87,6 +87,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     options: Options,
     /// The integration state; `v` is raw unless velocities are projected into the state.
     t: f64,
+    /// What the rounding of `t` has lost so far (Neumaier summation).
+    t_carry: f64,
     q: Vector<N>,
     v: Vector<N>,
     /// The multipliers of the last step, the next step's starting guess.
@@ -141,6 +143,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             model,
             options,
             t: t0,
+            t_carry: 0.0,
             q,
             v,
             p: point.lambda,
@@ -189,8 +192,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut h = self.step_size;
         loop {
             let remaining = t_limit - self.t;
-            // Land exactly on the limit rather than leave a sliver of a step.
-            let last_step = h >= remaining * (1.0 - 1e-9);
+            // Land exactly on the limit rather than leave a sliver of a step: a step within
+            // one part in a million of the remainder becomes the remainder.
+            let last_step = h * (1.0 + 1e-6) >= remaining;
             let h_try = if last_step { remaining } else { h };
             if !(self.t + h_try > self.t) {
                 // The step no longer moves the time: report it rather than loop.
@@ -207,7 +211,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                     iterations,
                     error_norm,
                 } => {
-                    let t_end = if last_step { t_limit } else { self.t + h_try };
+                    // Compensated summation keeps long fixed-step runs on their grid.
+                    let (t_end, carry) = if last_step {
+                        (t_limit, 0.0)
+                    } else {
+                        let increment = h_try + self.t_carry;
+                        let t = self.t + increment;
+                        (t, increment - (t - self.t))
+                    };
+                    self.t_carry = carry;
                     self.accept(end, point, p, t_end, iterations)?;
                     self.step_size =
                         self.next_step_size(h_try, h, error_norm, iterations, last_step);
