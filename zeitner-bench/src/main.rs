@@ -7,6 +7,7 @@
 mod figure;
 mod hand_written;
 mod measure;
+mod peers;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
 mod stability;
@@ -98,6 +99,10 @@ struct Args {
     /// Two settings per method and one repeat: a smoke run.
     #[arg(long)]
     quick: bool,
+    /// Also run the peers (CasADi's IDAS), installing them into a virtual environment under the
+    /// output folder on first use.
+    #[arg(long)]
+    peers: bool,
     /// Folder for the CSVs and plots.
     #[arg(long, default_value = "target/zeitner/work_precision")]
     output_dir: PathBuf,
@@ -119,7 +124,8 @@ struct Row {
     steps: u64,
     newton_iterations: u64,
     cpu_seconds: f64,
-    allocations: u64,
+    /// Heap allocations during the integration; unknown for peers.
+    allocations: Option<u64>,
     failure: Option<String>,
 }
 
@@ -259,7 +265,7 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         steps: 0,
         newton_iterations: 0,
         cpu_seconds: f64::NAN,
-        allocations: 0,
+        allocations: Some(0),
         failure: None,
     };
     let run = |max_g: &mut f64| -> Result<(Simulator<'_, S, N, Z>, f64, u64), String> {
@@ -296,7 +302,7 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         let mut ignored = 0.0;
         if let Ok((_, cpu, allocations)) = run(&mut ignored) {
             times.push(cpu);
-            row.allocations = row.allocations.max(allocations);
+            row.allocations = row.allocations.max(Some(allocations));
         }
     }
     times.sort_by(f64::total_cmp);
@@ -314,6 +320,8 @@ struct Scene {
     t_end: f64,
     /// `ε` in the constraints' units, the same for every setting.
     constraint_tolerance: f64,
+    /// The reference end state, flattened: q, then v, then λ; and the sizes N, Z.
+    reference: (Vec<f64>, usize, usize),
     run: Runner,
 }
 
@@ -330,6 +338,11 @@ fn pendulum_scene() -> Scene {
         title: "Pendulum, Cartesian, released horizontally, 10 s",
         t_end,
         constraint_tolerance: 1e-12,
+        reference: (
+            flatten(&reference),
+            reference.q.len(),
+            reference.lambda.len(),
+        ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
             measure(
@@ -356,6 +369,11 @@ fn steam_generator_scene() -> Scene {
         title: "The paper's steam generator, 2 s",
         t_end,
         constraint_tolerance: 1e-10,
+        reference: (
+            flatten(&reference),
+            reference.q.len(),
+            reference.lambda.len(),
+        ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::zeros(), Vector::zeros());
             // Stop at the end of the load's ramp, where its derivative jumps, as a user would.
@@ -441,6 +459,11 @@ fn andrews_scene() -> Result<Scene, String> {
         title: "Andrews' squeezing mechanism, 0.03 s",
         t_end,
         constraint_tolerance: 1e-12,
+        reference: (
+            flatten(&reference),
+            reference.q.len(),
+            reference.lambda.len(),
+        ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::from(Andrews::Q0), Vector::zeros());
             measure(
@@ -458,6 +481,76 @@ fn andrews_scene() -> Result<Scene, String> {
     })
 }
 
+fn flatten<const N: usize, const Z: usize>(state: &State<N, Z>) -> Vec<f64> {
+    state
+        .q
+        .iter()
+        .chain(&state.v)
+        .chain(&state.lambda)
+        .copied()
+        .collect()
+}
+
+/// The peers' rows for every scene they model; a peer that is unavailable is said so once.
+fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
+    let python = match peers::python(&args.output_dir) {
+        Ok(python) => python,
+        Err(reason) => {
+            println!("peers unavailable: {reason}");
+            return Vec::new();
+        }
+    };
+    let rtols: &[f64] = if args.quick {
+        &[1e-5, 1e-8]
+    } else {
+        &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
+    };
+    let mut rows = Vec::new();
+    for peer in &peers::PEERS {
+        for scene in scenes.iter().filter(|s| peer.scenes.contains(&s.name)) {
+            let (reference, n, z) = &scene.reference;
+            for run in peers::run(
+                &python,
+                peer,
+                scene.name,
+                scene.t_end,
+                rtols,
+                reference.len(),
+            ) {
+                let mut row = Row {
+                    scene: scene.name,
+                    method: peer.name.to_string(),
+                    setting: run.setting,
+                    error_q: f64::NAN,
+                    error_v: f64::NAN,
+                    error_lambda: f64::NAN,
+                    max_g: f64::NAN,
+                    steps: 0,
+                    newton_iterations: 0,
+                    cpu_seconds: f64::NAN,
+                    allocations: None,
+                    failure: None,
+                };
+                match run.outcome {
+                    Ok(end) => {
+                        let (q, rest) = end.values.split_at(*n);
+                        let (v, lambda) = rest.split_at(*n);
+                        row.error_q = worst_relative(q, &reference[..*n]);
+                        row.error_v = worst_relative(v, &reference[*n..2 * n]);
+                        row.error_lambda = worst_relative(lambda, &reference[2 * n..2 * n + z]);
+                        row.max_g = end.max_g;
+                        row.steps = end.steps;
+                        row.cpu_seconds = end.cpu_seconds;
+                    }
+                    Err(failure) => row.failure = Some(failure),
+                }
+                rows.push(row);
+            }
+        }
+    }
+    rows
+}
+
 fn csv_line(row: &Row) -> String {
     format!(
         "{},{},{},{:e},{:e},{:e},{:e},{},{},{:e},{}",
@@ -471,7 +564,7 @@ fn csv_line(row: &Row) -> String {
         row.steps,
         row.newton_iterations,
         row.cpu_seconds,
-        row.allocations
+        row.allocations.map_or(String::new(), |a| a.to_string())
     )
 }
 
@@ -532,8 +625,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         progress.inc(1);
     }
     progress.finish_and_clear();
-
     std::fs::create_dir_all(&args.output_dir)?;
+    if args.peers {
+        rows.extend(peer_rows(&scenes, &args));
+    }
+
     for scene in &scenes {
         let scene_rows: Vec<&Row> = rows.iter().filter(|r| r.scene == scene.name).collect();
         let mut csv = format!("{HEADER}\n");
@@ -602,6 +698,38 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "# Performance: error against run time\n");
+    let fastest = |scene: &str, target: f64, ours: bool| -> Option<&Row> {
+        rows.iter()
+            .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
+            .filter(|r| {
+                r.method.starts_with("zeitner-") == ours && (ours || r.method.starts_with("peer-"))
+            })
+            .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
+    };
+    let mut headline = String::from(
+        "| scene | error ≤ | our fastest | best peer | peer time / ours |\n|---|---|---|---|---|\n",
+    );
+    for scene in scenes {
+        for target in [1e-4, 1e-6, 1e-8] {
+            let ours = fastest(scene.name, target, true);
+            let peer = fastest(scene.name, target, false);
+            let describe = |r: Option<&Row>| {
+                r.map_or("not reached".to_string(), |r| {
+                    format!("{:.3} ms `{}` {}", r.cpu_seconds * 1e3, r.method, r.setting)
+                })
+            };
+            let ratio = match (ours, peer) {
+                (Some(o), Some(p)) => format!("{:.1}", p.cpu_seconds / o.cpu_seconds),
+                _ => "–".to_string(),
+            };
+            headline.push_str(&format!(
+                "| {} | {target:.0e} | {} | {} | {ratio} |\n",
+                scene.name,
+                describe(ours),
+                describe(peer)
+            ));
+        }
+    }
     let _ = writeln!(
         out,
         "Generated by `cargo run --release -p zeitner-bench -- work-precision` on this project's 2-core \
@@ -610,8 +738,10 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          (components below 1e-6 of the largest are measured against that floor). References: the \
          reduced-coordinate solutions of the pendulum and the steam generator; for Andrews our tightest \
          run (rtol 1e-13), checked against the published values within their stated reliability. \
-         Peers are not in this run yet.\n"
+         Peers: CasADi 3.8.2's IDAS on the index-1 formulation (its SX virtual machine, no C code \
+         generation; `--peers`); a peer failing or not reaching a target is a result.\n"
     );
+    let _ = writeln!(out, "{headline}");
     for scene in scenes {
         let scene_rows: Vec<&Row> = rows.iter().filter(|r| r.scene == scene.name).collect();
         let _ = writeln!(out, "## {}\n", scene.title);
@@ -636,23 +766,46 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
                         .filter(|r| r.method == name && r.failure.is_none() && r.error() <= target)
                         .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
                         .map_or("not reached".to_string(), |r| {
-                            format!(
-                                "{:.3} ms ({}, {} steps, {:.1} sweeps/step)",
-                                r.cpu_seconds * 1e3,
-                                r.setting,
-                                r.steps,
-                                r.newton_iterations as f64 / r.steps.max(1) as f64
-                            )
+                            if r.method.starts_with("peer-") {
+                                format!(
+                                    "{:.3} ms ({}, {} steps)",
+                                    r.cpu_seconds * 1e3,
+                                    r.setting,
+                                    r.steps
+                                )
+                            } else {
+                                format!(
+                                    "{:.3} ms ({}, {} steps, {:.1} sweeps/step)",
+                                    r.cpu_seconds * 1e3,
+                                    r.setting,
+                                    r.steps,
+                                    r.newton_iterations as f64 / r.steps.max(1) as f64
+                                )
+                            }
                         })
                 })
                 .collect();
             let _ = writeln!(out, "| `{name}` | {} |", cells.join(" | "));
         }
-        let allocations: u64 = scene_rows.iter().map(|r| r.allocations).max().unwrap_or(0);
+        let allocations: u64 = scene_rows
+            .iter()
+            .filter_map(|r| r.allocations)
+            .max()
+            .unwrap_or(0);
         let _ = writeln!(
             out,
-            "\nMost heap allocations in one timed integration: {allocations}.\n"
+            "\nMost heap allocations in one timed integration of ours: {allocations}.\n"
         );
+        for row in scene_rows.iter().filter(|r| r.failure.is_some()) {
+            let _ = writeln!(
+                out,
+                "- `{}` {} failed: {}",
+                row.method,
+                row.setting,
+                row.failure.as_deref().unwrap_or("")
+            );
+        }
+        let _ = writeln!(out);
         if scene.name == "steam_generator" {
             let pairs: Vec<f64> = scene_rows
                 .iter()

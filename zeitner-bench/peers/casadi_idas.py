@@ -1,0 +1,143 @@
+"""Peer: CasADi's IDAS (SUNDIALS, variable order BDF up to 5) on the index-1 formulation.
+
+Differential states x = (q, v), algebraic z = lambda:
+    q' = v,  v' = M^-1 (F - G^T lambda),  0 = G v' + b  (the acceleration-level constraint).
+The position constraints are not enforced (index-1 drift); max_g reports how far they drift.
+Functions are CasADi SX expressions run by its virtual machine (no C code generation).
+
+Usage: python casadi_idas.py SCENE T_END RTOL [RTOL ...]
+Prints one line per tolerance:
+    ROW,<setting>,<steps>,<cpu_seconds>,<max_g>,<q...>,<v...>,<lambda...>
+or  FAIL,<setting>,<message>
+"""
+import math
+import sys
+import time
+
+import casadi as ca
+
+
+def pendulum():
+    m, L, g = 1.0, 1.0, 9.81
+    q = ca.SX.sym("q", 2)
+    v = ca.SX.sym("v", 2)
+    t = ca.SX.sym("t")
+    M = ca.diag(ca.SX([m, m]))
+    F = ca.vertcat(0, -m * g)
+    gq = ca.vertcat(q[0] ** 2 + q[1] ** 2 - L * L)
+    return q, v, t, M, F, gq, [1.0, 0.0], [0.0, 0.0]
+
+
+def steam_generator():
+    m, J, grav, h1, h2, h3, d, p0, rise = 4.0e5, 1.5e7, 9.81, 4.0, 6.0, 8.0, 2.0e6, 1.0e6, 0.01
+    q = ca.SX.sym("q", 3)
+    v = ca.SX.sym("v", 3)
+    t = ca.SX.sym("t")
+    M = ca.diag(ca.SX([m, m, J]))
+    P = p0 * ca.fmin(t / rise, 1.0)
+    F = ca.vertcat(P - d * v[0], -m * grav, P * h1)
+    gq = ca.vertcat(q[0] - h3 * q[2], q[0] ** 2 + (q[1] - h2) ** 2 - h2 * h2)
+    return q, v, t, M, F, gq, [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]
+
+
+def andrews():
+    m1, m2, m3, m4, m5, m6, m7 = 0.04325, 0.00365, 0.02373, 0.00706, 0.07050, 0.00706, 0.05498
+    i1, i2, i3, i4, i5, i6, i7 = 2.194e-6, 4.410e-7, 5.255e-6, 5.667e-7, 1.169e-5, 5.667e-7, 1.912e-5
+    xa, ya, xb, yb, xc, yc = -0.06934, -0.00227, -0.03635, 0.03273, 0.014, 0.072
+    c0, l0, mom = 4530.0, 0.07785, 0.033
+    d, da, e, ea, rr, ra, ss = 0.028, 0.0115, 0.02, 0.01421, 0.007, 0.00092, 0.035
+    sa, sb, sc, sd, ta, tb, u = 0.01874, 0.01043, 0.018, 0.02, 0.02308, 0.00916, 0.04
+    ua, ub, zf, zt, fa = 0.01228, 0.00449, 0.02, 0.04, 0.01421
+    q = ca.SX.sym("q", 7)
+    v = ca.SX.sym("v", 7)
+    t = ca.SX.sym("t")
+    be, th, ga, ph, de, om, ep = [q[i] for i in range(7)]
+    bep, thp, gap, php, dep, omp, epp = [v[i] for i in range(7)]
+    ee, zz = e - ea, zf - fa
+    M = ca.SX.zeros(7, 7)
+    M[0, 0] = m1 * ra**2 + m2 * (rr**2 - 2 * da * rr * ca.cos(th) + da**2) + i1 + i2
+    M[0, 1] = M[1, 0] = m2 * (da**2 - da * rr * ca.cos(th)) + i2
+    M[1, 1] = m2 * da**2 + i2
+    M[2, 2] = m3 * (sa**2 + sb**2) + i3
+    M[3, 3] = m4 * ee**2 + i4
+    M[3, 4] = M[4, 3] = m4 * (ee**2 + zt * ee * ca.sin(ph)) + i4
+    M[4, 4] = m4 * (zt**2 + 2 * zt * ee * ca.sin(ph) + ee**2) + m5 * (ta**2 + tb**2) + i4 + i5
+    M[5, 5] = m6 * zz**2 + i6
+    M[5, 6] = M[6, 5] = m6 * (zz**2 - u * zz * ca.sin(om)) + i6
+    M[6, 6] = m6 * (zz**2 - 2 * u * zz * ca.sin(om) + u**2) + m7 * (ua**2 + ub**2) + i6 + i7
+    xd = sd * ca.cos(ga) + sc * ca.sin(ga) + xb
+    yd = sd * ca.sin(ga) - sc * ca.cos(ga) + yb
+    ls = ca.sqrt((xd - xc) ** 2 + (yd - yc) ** 2)
+    fs = -c0 * (ls - l0) / ls
+    fx, fy = fs * (xd - xc), fs * (yd - yc)
+    F = ca.vertcat(
+        mom - m2 * da * rr * thp * (thp + 2 * bep) * ca.sin(th),
+        m2 * da * rr * bep**2 * ca.sin(th),
+        fx * (sc * ca.cos(ga) - sd * ca.sin(ga)) + fy * (sd * ca.cos(ga) + sc * ca.sin(ga)),
+        m4 * zt * ee * dep**2 * ca.cos(ph),
+        -m4 * zt * ee * php * (php + 2 * dep) * ca.cos(ph),
+        -m6 * u * zz * epp**2 * ca.cos(om),
+        m6 * u * zz * omp * (omp + 2 * epp) * ca.cos(om),
+    )
+    x = rr * ca.cos(be) - d * ca.cos(be + th)
+    y = rr * ca.sin(be) - d * ca.sin(be + th)
+    gq = ca.vertcat(
+        x - ss * ca.sin(ga) - xb,
+        y + ss * ca.cos(ga) - yb,
+        x - e * ca.sin(ph + de) - zt * ca.cos(de) - xa,
+        y + e * ca.cos(ph + de) - zt * ca.sin(de) - ya,
+        x - zf * ca.cos(om + ep) - u * ca.sin(ep) - xa,
+        y - zf * ca.sin(om + ep) + u * ca.cos(ep) - ya,
+    )
+    q0 = [-0.0617138900142764496358948458001, 0.0, 0.455279819163070380255912382449,
+          0.222668390165885884674473185609, 0.487364979543842550225598953530,
+          -0.222668390165885884674473185609, 1.23054744454982119249735015568]
+    return q, v, t, M, F, gq, q0, [0.0] * 7
+
+
+SCENES = {"pendulum": pendulum, "steam_generator": steam_generator, "andrews": andrews}
+
+
+def main():
+    scene, t_end, rtols = sys.argv[1], float(sys.argv[2]), [float(r) for r in sys.argv[3:]]
+    q, v, t, M, F, gq, q0, v0 = SCENES[scene]()
+    n, z = q.shape[0], gq.shape[0]
+    lam = ca.SX.sym("lam", z)
+    G = ca.jacobian(gq, q)
+    b = ca.jacobian(ca.mtimes(G, v), q) @ v  # the constraints here do not depend on t
+    acc = ca.solve(M, F - G.T @ lam)
+    x = ca.vertcat(q, v)
+    dae = {"x": x, "z": lam, "t": t, "ode": ca.vertcat(v, acc), "alg": G @ acc + b}
+    # Consistent initial multipliers from the acceleration-level system.
+    lam0_fun = ca.Function("lam0", [q, v, t], [ca.solve(G @ ca.solve(M, G.T), G @ ca.solve(M, F) + b)])
+    lam0 = lam0_fun(q0, v0, 0.0)
+    g_fun = ca.Function("g", [q], [gq])
+    grid = [t_end * k / 100.0 for k in range(1, 101)]
+    for rtol in rtols:
+        setting = f"rtol={rtol:.0e}"
+        try:
+            opts = {"abstol": rtol * 1e-2, "reltol": rtol, "max_num_steps": 10**7, "calc_ic": True, "suppress_algebraic": True}
+            integrator = ca.integrator("F", "idas", dae, 0.0, grid, opts)
+            args = {"x0": ca.vertcat(*q0, *v0), "z0": lam0}
+            result = integrator(**args)  # warm-up
+            times = []
+            for _ in range(5):
+                start = time.process_time()
+                result = integrator(**args)
+                times.append(time.process_time() - start)
+            times.sort()
+            xf = result["xf"].full()
+            zf = result["zf"].full()
+            max_g = max(float(ca.mmax(ca.fabs(g_fun(xf[:n, k])))) for k in range(xf.shape[1]))
+            stats = integrator.stats()
+            steps = stats.get("nsteps", stats.get("n_steps", 0))
+            qe, ve, le = xf[:n, -1], xf[n:, -1], zf[:, -1]
+            values = ",".join(f"{float(x):.17e}" for x in [*qe, *ve, *le])
+            print(f"ROW,{setting},{int(steps)},{times[len(times) // 2]:.6e},{max_g:.6e},{values}", flush=True)
+        except Exception as error:  # a peer that cannot reach an accuracy is a result
+            message = str(error).replace("\n", " ").replace(",", ";")[:200]
+            print(f"FAIL,{setting},{message}", flush=True)
+
+
+if __name__ == "__main__":
+    main()

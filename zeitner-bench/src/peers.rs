@@ -1,0 +1,126 @@
+//! Peers run side by side with Zeitner: scripts in `zeitner-bench/peers/` that integrate the same
+//! scenes and print their end states; errors are measured here, against the same references.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// One peer result: a tolerance setting and the end state it reached, or why it failed.
+pub struct PeerRun {
+    pub setting: String,
+    pub outcome: Result<PeerEnd, String>,
+}
+
+pub struct PeerEnd {
+    pub steps: u64,
+    pub cpu_seconds: f64,
+    pub max_g: f64,
+    /// q, then v, then λ.
+    pub values: Vec<f64>,
+}
+
+/// A peer: its name in the CSV and its script.
+pub struct Peer {
+    pub name: &'static str,
+    pub script: &'static str,
+    /// The scenes it models.
+    pub scenes: &'static [&'static str],
+}
+
+pub const PEERS: [Peer; 1] = [Peer {
+    name: "peer-casadi-idas",
+    script: "casadi_idas.py",
+    scenes: &["pendulum", "steam_generator", "andrews"],
+}];
+
+/// A Python with the peers installed, in a virtual environment under `dir`; created on first
+/// use. `Err` says why the peers are unavailable.
+pub fn python(dir: &Path) -> Result<PathBuf, String> {
+    let venv = dir.join("peers-venv");
+    let python = venv.join("bin/python");
+    let ready = |python: &Path| {
+        Command::new(python)
+            .args(["-c", "import casadi"])
+            .output()
+            .map(|o| o.status.success())
+            .unwrap_or(false)
+    };
+    if ready(&python) {
+        return Ok(python);
+    }
+    eprintln!("installing the peers (casadi) into {} …", venv.display());
+    let created = Command::new("python3")
+        .args(["-m", "venv"])
+        .arg(&venv)
+        .status();
+    if !matches!(created, Ok(s) if s.success()) {
+        return Err("python3 -m venv failed (is Python 3 with venv installed?)".into());
+    }
+    let installed = Command::new(&python)
+        .args(["-m", "pip", "install", "--quiet", "casadi==3.8.2"])
+        .status();
+    if !matches!(installed, Ok(s) if s.success()) {
+        return Err("pip install casadi failed (is PyPI reachable?)".into());
+    }
+    if ready(&python) {
+        Ok(python)
+    } else {
+        Err("casadi does not import after installation".into())
+    }
+}
+
+/// Runs `peer` on `scene` for each relative tolerance.
+pub fn run(
+    python: &Path,
+    peer: &Peer,
+    scene: &str,
+    t_end: f64,
+    rtols: &[f64],
+    values: usize,
+) -> Vec<PeerRun> {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("peers")
+        .join(peer.script);
+    let output = Command::new(python)
+        .arg(&script)
+        .arg(scene)
+        .arg(t_end.to_string())
+        .args(rtols.iter().map(|r| format!("{r:e}")))
+        .output();
+    let output = match output {
+        Ok(output) => output,
+        Err(error) => {
+            return vec![PeerRun {
+                setting: "all".into(),
+                outcome: Err(format!("could not run {}: {error}", peer.script)),
+            }]
+        }
+    };
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| {
+            let fields: Vec<&str> = line.split(',').collect();
+            match fields.as_slice() {
+                ["FAIL", setting, message @ ..] => Some(PeerRun {
+                    setting: setting.to_string(),
+                    outcome: Err(message.join(",")),
+                }),
+                ["ROW", setting, steps, cpu, max_g, rest @ ..] if rest.len() == values => {
+                    let parsed: Option<Vec<f64>> = rest.iter().map(|x| x.parse().ok()).collect();
+                    let end = (|| {
+                        Some(PeerEnd {
+                            steps: steps.parse().ok()?,
+                            cpu_seconds: cpu.parse().ok()?,
+                            max_g: max_g.parse().ok()?,
+                            values: parsed?,
+                        })
+                    })();
+                    Some(PeerRun {
+                        setting: setting.to_string(),
+                        outcome: end.ok_or_else(|| format!("unreadable output: {line}")),
+                    })
+                }
+                _ => None,
+            }
+        })
+        .collect()
+}
