@@ -101,6 +101,7 @@ fn options(args: &Args) -> Result<Options, String> {
         constraint_tolerance: args.constraint_tolerance,
         max_newton_iterations: 20,
         velocity_projection: VelocityProjection::Output,
+        ..Options::default()
     })
 }
 

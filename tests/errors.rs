@@ -287,6 +287,7 @@ fn options() -> impl Strategy<Value = Options> {
                     constraint_tolerance: tolerance,
                     max_newton_iterations: iterations,
                     velocity_projection,
+                    ..Options::default()
                 }
             },
         )

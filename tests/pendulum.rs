@@ -85,6 +85,7 @@ fn errors(method: InnerMethod, sensitivity: Sensitivity, n: u32) -> [f64; 5] {
         constraint_tolerance: 1e-14,
         max_newton_iterations: 30,
         velocity_projection: projection,
+        ..Options::default()
     };
     let (q, v, lambda) = reference(1.0);
     let mut raw = start(fixed(VelocityProjection::Off));

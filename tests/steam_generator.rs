@@ -24,6 +24,7 @@ fn tight() -> Options {
         constraint_tolerance: 1e-13,
         max_newton_iterations: 12,
         velocity_projection: VelocityProjection::Output,
+        ..Options::default()
     }
 }
 

@@ -189,6 +189,7 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
                     constraint_tolerance: tolerance,
                     max_newton_iterations: 30,
                     velocity_projection,
+                    ..Options::default()
                 };
                 (format!("rtol={rtol:.0e}"), options)
             })

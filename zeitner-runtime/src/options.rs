@@ -66,6 +66,12 @@ pub struct Options {
     pub constraint_tolerance: f64,
     pub max_newton_iterations: u32,
     pub velocity_projection: VelocityProjection,
+    /// Start Newton from the multipliers extrapolated from the last two steps, instead of the
+    /// last step's (the paper's choice).
+    pub extrapolate_multipliers: bool,
+    /// With the exact sensitivity: accept the end state corrected linearly by `Q Δp` when it
+    /// meets the tolerance, instead of integrating the step again.
+    pub accept_linearised_update: bool,
 }
 
 impl Default for Options {
@@ -86,6 +92,8 @@ impl Default for Options {
             constraint_tolerance: 1e-10,
             max_newton_iterations: 12,
             velocity_projection: VelocityProjection::Output,
+            extrapolate_multipliers: true,
+            accept_linearised_update: true,
         }
     }
 }
@@ -99,6 +107,8 @@ impl Options {
             step: StepControl::Fixed { step },
             sensitivity: Sensitivity::Paper,
             velocity_projection: VelocityProjection::Off,
+            extrapolate_multipliers: false,
+            accept_linearised_update: false,
             ..Options::default()
         }
     }

@@ -93,6 +93,9 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     v: Vector<N>,
     /// The multipliers of the last step, the next step's starting guess.
     p: Vector<Z>,
+    /// The multipliers and size of the step before, for extrapolating `p`.
+    previous_multipliers: Option<(Vector<Z>, f64)>,
+    last_step_size: f64,
     /// The multipliers from the acceleration-level system at the current time.
     consistent_lambda: Vector<Z>,
     last: StepReport<N, Z>,
@@ -147,6 +150,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             q,
             v,
             p: point.lambda,
+            previous_multipliers: None,
+            last_step_size: 0.0,
             consistent_lambda: point.lambda,
             last: report,
             step_size,
@@ -320,6 +325,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             -factor.solve(&g.transpose())
         };
         let mut p = self.p;
+        if options.extrapolate_multipliers {
+            // p is a mean of λ over its step: extrapolate linearly between step midpoints.
+            if let Some((previous, previous_h)) = self.previous_multipliers {
+                let span = 0.5 * (previous_h + self.last_step_size);
+                if span > 0.0 {
+                    p += (self.p - previous) * (0.5 * (self.last_step_size + h) / span);
+                }
+            }
+        }
         let mut worst = (f64::INFINITY, 0usize);
         for iteration in 1..=options.max_newton_iterations {
             self.statistics.newton_iterations += 1;
@@ -344,23 +358,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let g = self.model.residual(&end.q, &end.v, t_end)?;
             worst = max_abs(&g);
             if worst.0 <= options.constraint_tolerance {
-                let point = self.end_point(&end, t_end)?;
-                let frozen = self.freezing_error(&start, &end, &point, h)?;
-                let error_norm = self.error_norm(&start, &end, &frozen);
-                if error_norm > 1.0 {
-                    let shrink = (0.9 * libm::pow(error_norm, -0.2)).clamp(0.2, 0.9);
-                    return Ok(Attempt::Rejected {
-                        shrink,
-                        cause: StepError::StepSizeTooSmall { t: self.t, step: h },
-                    });
-                }
-                return Ok(Attempt::Accepted {
-                    end,
-                    point,
-                    p,
-                    iterations: iteration,
-                    error_norm,
-                });
+                return self.conclude(&start, end, p, iteration, h);
             }
             let (dg_dq, dg_dv) = self.model.linearisation(&end.q, &end.v, t_end)?;
             let (dq_dp, dv_dp) = if exact {
@@ -389,10 +387,55 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 });
             };
             p += delta;
+            // The exact sensitivity predicts the end state for the corrected multipliers to
+            // second order in Δp; when that state already meets the tolerance, it is accepted
+            // without integrating the step again.
+            if exact && options.accept_linearised_update {
+                let updated = StepEnd {
+                    q: end.q + dq_dp * delta,
+                    v: end.v + dv_dp * delta,
+                    ..end
+                };
+                if check_state(&updated.q, &updated.v, t_end).is_ok() {
+                    let g = self.model.residual(&updated.q, &updated.v, t_end)?;
+                    if max_abs(&g).0 <= options.constraint_tolerance {
+                        return self.conclude(&start, updated, p, iteration, h);
+                    }
+                }
+            }
         }
         Ok(Attempt::Rejected {
             shrink: 0.25,
             cause: self.newton_failure(h, options.max_newton_iterations, worst),
+        })
+    }
+
+    /// A step whose constraints hold: accept it, or reject it on the error estimate.
+    fn conclude(
+        &mut self,
+        start: &Start<N, Z>,
+        end: StepEnd<N, Z>,
+        p: Vector<Z>,
+        iterations: u32,
+        h: f64,
+    ) -> Result<Attempt<N, Z>, StepError> {
+        let t_end = start.t + h;
+        let point = self.end_point(&end, t_end)?;
+        let frozen = self.freezing_error(start, &end, &point, h)?;
+        let error_norm = self.error_norm(start, &end, &frozen);
+        if error_norm > 1.0 {
+            let shrink = (0.9 * libm::pow(error_norm, -0.2)).clamp(0.2, 0.9);
+            return Ok(Attempt::Rejected {
+                shrink,
+                cause: StepError::StepSizeTooSmall { t: self.t, step: h },
+            });
+        }
+        Ok(Attempt::Accepted {
+            end,
+            point,
+            p,
+            iterations,
+            error_norm,
         })
     }
 
@@ -519,6 +562,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         } else {
             end.v
         };
+        let h = t_end - self.last.end.t;
+        self.previous_multipliers =
+            (self.last_step_size > 0.0).then_some((self.p, self.last_step_size));
+        self.last_step_size = h;
         self.p = p;
         self.last = report;
         self.statistics.steps += 1;
