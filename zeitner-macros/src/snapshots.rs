@@ -58,6 +58,10 @@ fn expansions_match_snapshots() {
         let Some(stem) = name.strip_suffix(".rs") else {
             continue;
         };
+        // The chains only repeat one pattern at four sizes; `scaling_report` measures them.
+        if stem == "chain" {
+            continue;
+        }
         let source = std::fs::read_to_string(&path).unwrap();
         if !source.lines().any(|l| l.trim() == "#[constrained_system]") {
             continue;
