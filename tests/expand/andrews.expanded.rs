@@ -114,6 +114,7 @@ impl Andrews {
 impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
     const POSITION_CONSTRAINTS: usize = 6;
     const MASS_IS_CONSTANT: bool = false;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = true;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 7,
         position_constraints: 6,

@@ -20,6 +20,7 @@ impl Pendulum {
 impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
     const POSITION_CONSTRAINTS: usize = 1;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 2,
         position_constraints: 1,

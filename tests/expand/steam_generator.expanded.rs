@@ -32,6 +32,7 @@ impl SteamGenerator {
 impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
     const POSITION_CONSTRAINTS: usize = 2;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = true;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 3,
         position_constraints: 2,

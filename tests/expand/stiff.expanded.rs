@@ -22,6 +22,7 @@ impl SpringPendulum {
 impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
     const POSITION_CONSTRAINTS: usize = 1;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = true;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 4,
         position_constraints: 1,
@@ -418,6 +419,7 @@ impl DoublePendulum {
 impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
     const POSITION_CONSTRAINTS: usize = 2;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 4,
         position_constraints: 2,
@@ -806,6 +808,7 @@ impl SliderCrank {
 impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
     const POSITION_CONSTRAINTS: usize = 2;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 3,
         position_constraints: 2,
@@ -1181,6 +1184,7 @@ impl RedundantFourBar {
 impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
     const POSITION_CONSTRAINTS: usize = 4;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 4,
         position_constraints: 4,
@@ -1608,6 +1612,7 @@ impl CoupledMassPendulum {
 impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
     const POSITION_CONSTRAINTS: usize = 1;
     const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
     const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
         coordinates: 2,
         position_constraints: 1,

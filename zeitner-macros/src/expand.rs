@@ -135,11 +135,13 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let k = Literal::usize_unsuffixed(scene.sizes.k);
     let mass_is_constant = scene.mass_is_constant;
     let time_dependent = scene.time_dependent;
+    let dynamics_depend_on_velocity = scene.dynamics_depend_on_velocity;
     quote! {
         #[allow(unused_variables, unused_mut, clippy::all)]
         impl #rt::ConstrainedSystem<#n, #z> for #self_ty {
             const POSITION_CONSTRAINTS: usize = #r;
             const MASS_IS_CONSTANT: bool = #mass_is_constant;
+            const DYNAMICS_DEPEND_ON_VELOCITY: bool = #dynamics_depend_on_velocity;
             const SUMMARY: #rt::SceneSummary = #rt::SceneSummary {
                 coordinates: #n,
                 position_constraints: #r,

@@ -34,6 +34,8 @@ pub struct Scene {
     pub full_mass: bool,
     pub mass_is_constant: bool,
     pub time_dependent: bool,
+    /// Whether `∂F/∂q'` or `∂(Gᵀλ)/∂q'` has an entry that is not structurally zero.
+    pub dynamics_depend_on_velocity: bool,
     pub functions: Vec<Generated>,
 }
 
@@ -333,6 +335,12 @@ pub fn build(
         return None;
     }
     let graph: &Graph = derive.graph;
+    let dynamics_depend_on_velocity = functions
+        .iter()
+        .filter(|(method, _)| matches!(*method, "force_jacobians" | "constraint_force_jacobians"))
+        .flat_map(|(_, blocks)| blocks.iter().filter(|b| b.name == "dv"))
+        .flat_map(|b| b.entries.iter())
+        .any(|e| !graph.is_zero(e.2));
     let functions = functions
         .into_iter()
         .map(|(method, blocks)| {
@@ -356,6 +364,7 @@ pub fn build(
         full_mass,
         mass_is_constant,
         time_dependent,
+        dynamics_depend_on_velocity,
         functions,
     })
 }

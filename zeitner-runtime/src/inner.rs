@@ -147,7 +147,10 @@ where
         if sensitivity {
             let jac = model.acceleration_jacobians(&q, &v, t, p, &acceleration)?;
             dkq[i] = dv;
-            dkv[i] = jac.dq * dq + jac.dv * dv + jac.dp;
+            dkv[i] = jac.dq * dq + jac.dp;
+            if S::DYNAMICS_DEPEND_ON_VELOCITY {
+                dkv[i] += jac.dv * dv;
+            }
         }
     }
     let mut end = StepEnd {

@@ -208,11 +208,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
                 ModelFunction::MassJacobianProduct,
             )?;
         }
-        let dv = finite(force_dv, t, ModelFunction::ForceJacobians)?
-            - finite(reaction_dv, t, ModelFunction::ConstraintForceJacobians)?;
+        let dv = if S::DYNAMICS_DEPEND_ON_VELOCITY {
+            let dv = finite(force_dv, t, ModelFunction::ForceJacobians)?
+                - finite(reaction_dv, t, ModelFunction::ConstraintForceJacobians)?;
+            at.factor.solve(&dv)
+        } else {
+            Matrix::zeros()
+        };
         Ok(AccelerationJacobians {
             dq: at.factor.solve(&dq),
-            dv: at.factor.solve(&dv),
+            dv,
             dp: -at.factor.solve(&at.jacobian.transpose()),
         })
     }

@@ -21,6 +21,9 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     const POSITION_CONSTRAINTS: usize;
     /// Whether `M` depends on neither `q` nor `t`, so that it is factorised once.
     const MASS_IS_CONSTANT: bool;
+    /// Whether `∂F/∂q'` or `∂(Gᵀλ)/∂q'` can be nonzero; when not, the runtime skips every
+    /// product with them.
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = true;
     /// What the generated code carries: blocks, nonzeros, operation counts.
     const SUMMARY: SceneSummary;
     /// The mass matrix's storage: [`crate::DiagonalMass`] or [`crate::FullMass`].
