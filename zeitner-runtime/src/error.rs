@@ -112,6 +112,9 @@ pub enum InvalidOption {
     EndTime,
     /// Adaptive steps need an error estimate: only `DormandPrince54` has one.
     AdaptiveNeedsErrorEstimate,
+    /// Multipliers varying over the step work with the explicit inner methods only, and with
+    /// position-level constraints only.
+    PolynomialMultipliersNeedExplicitMethod,
 }
 
 /// Why a step, or the consistent start, failed.

@@ -1,5 +1,6 @@
-//! Inner one-step methods: integrate `q' = v`, `M v' = F - Gᵀp` over one step with the
-//! multipliers `p` held fixed, and, when asked, the exact sensitivity of the step end to `p`.
+//! Inner one-step methods: integrate `q' = v`, `M v' = F - Gᵀλ(t)` over one step with the
+//! multipliers given over the step — held fixed at `p` (Zeitner's step) or a polynomial in time —
+//! and, when asked, the exact sensitivity of the step end to their coefficients.
 
 use crate::error::StepError;
 #[cfg(feature = "implicit")]
@@ -7,13 +8,51 @@ use crate::linalg::Lu;
 use crate::model::Model;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
-/// The step end, its sensitivity to the multipliers and the local error estimate.
-pub(crate) struct StepEnd<const N: usize, const Z: usize> {
+/// The multipliers over a step, `λ(s) = base + Σ_k c_k s^(first_power + k)` with
+/// `s = (t - t₁)/τ`: a constant `p` is `base = 0`, `c_0 = p`, `first_power = 0`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Multipliers<const Z: usize, const K: usize> {
+    pub base: Vector<Z>,
+    pub coefficients: [Vector<Z>; K],
+    pub first_power: i32,
+}
+
+impl<const Z: usize> Multipliers<Z, 1> {
+    pub fn constant(p: Vector<Z>) -> Self {
+        Multipliers {
+            base: Vector::zeros(),
+            coefficients: [p],
+            first_power: 0,
+        }
+    }
+}
+
+impl<const Z: usize, const K: usize> Multipliers<Z, K> {
+    /// `∂λ/∂c_k` at `s`.
+    pub fn weight(&self, k: usize, s: f64) -> f64 {
+        let mut w = 1.0;
+        for _ in 0..self.first_power + k as i32 {
+            w *= s;
+        }
+        w
+    }
+
+    pub fn at(&self, s: f64) -> Vector<Z> {
+        let mut lambda = self.base;
+        for (k, c) in self.coefficients.iter().enumerate() {
+            lambda += self.weight(k, s) * c;
+        }
+        lambda
+    }
+}
+
+/// The step end, its sensitivity to the multipliers' coefficients and the local error estimate.
+pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize = 1> {
     pub q: Vector<N>,
     pub v: Vector<N>,
-    /// `∂q(t+τ)/∂p`, `∂q'(t+τ)/∂p`: zero unless requested.
-    pub dq_dp: Matrix<N, Z>,
-    pub dv_dp: Matrix<N, Z>,
+    /// `∂q(t+τ)/∂c_k`, `∂q'(t+τ)/∂c_k`: zero unless requested.
+    pub dq_dp: [Matrix<N, Z>; K],
+    pub dv_dp: [Matrix<N, Z>; K],
     /// Embedded error estimate of `q` and `q'`, for methods that have one.
     pub error: Option<(Vector<N>, Vector<N>)>,
 }
@@ -96,25 +135,27 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
 };
 
 /// Start of an (sub)step: state and its sensitivity so far.
-pub(crate) struct Start<const N: usize, const Z: usize> {
+pub(crate) struct Start<const N: usize, const Z: usize, const K: usize = 1> {
     pub t: f64,
     pub q: Vector<N>,
     pub v: Vector<N>,
-    pub dq_dp: Matrix<N, Z>,
-    pub dv_dp: Matrix<N, Z>,
+    pub dq_dp: [Matrix<N, Z>; K],
+    pub dv_dp: [Matrix<N, Z>; K],
 }
 
 /// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
 /// `sensitivity` is set (the derivative of the discrete step map, so Newton converges
-/// quadratically).
-pub(crate) fn explicit_step<S, const N: usize, const Z: usize, const ST: usize>(
+/// quadratically). `s0` is where the (sub)step starts in the step's `s`, `span` its share.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn explicit_step<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     tableau: &Tableau<ST>,
-    start: &Start<N, Z>,
+    start: &Start<N, Z, K>,
     h: f64,
-    p: &Vector<Z>,
+    multipliers: &Multipliers<Z, K>,
+    (s0, span): (f64, f64),
     sensitivity: bool,
-) -> Result<StepEnd<N, Z>, StepError>
+) -> Result<StepEnd<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
@@ -122,8 +163,8 @@ where
     let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
-    let mut dkq = [Matrix::<N, Z>::zeros(); ST];
-    let mut dkv = [Matrix::<N, Z>::zeros(); ST];
+    let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
+    let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
     for i in 0..ST {
         let mut q = start.q;
         let mut v = start.v;
@@ -135,21 +176,27 @@ where
                 q += w * kq[j];
                 v += w * kv[j];
                 if sensitivity {
-                    dq += w * dkq[j];
-                    dv += w * dkv[j];
+                    for k in 0..K {
+                        dq[k] += w * dkq[j][k];
+                        dv[k] += w * dkv[j][k];
+                    }
                 }
             }
         }
         let t = start.t + tableau.c[i] * h;
-        let acceleration = model.acceleration(&q, &v, t, p)?;
+        let s = s0 + tableau.c[i] * span;
+        let lambda = multipliers.at(s);
+        let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
         if sensitivity {
-            let jac = model.acceleration_jacobians(&q, &v, t, p, &acceleration)?;
-            dkq[i] = dv;
-            dkv[i] = jac.dq * dq + jac.dp;
-            if S::DYNAMICS_DEPEND_ON_VELOCITY {
-                dkv[i] += jac.dv * dv;
+            let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
+            for k in 0..K {
+                dkq[i][k] = dv[k];
+                dkv[i][k] = jac.dq * dq[k] + multipliers.weight(k, s) * jac.dp;
+                if S::DYNAMICS_DEPEND_ON_VELOCITY {
+                    dkv[i][k] += jac.dv * dv[k];
+                }
             }
         }
     }
@@ -165,8 +212,10 @@ where
         end.q += w * kq[i];
         end.v += w * kv[i];
         if sensitivity {
-            end.dq_dp += w * dkq[i];
-            end.dv_dp += w * dkv[i];
+            for k in 0..K {
+                end.dq_dp[k] += w * dkq[i][k];
+                end.dv_dp[k] += w * dkv[i][k];
+            }
         }
     }
     if let Some(e) = tableau.e {
@@ -212,12 +261,12 @@ where
     let mut stage_dv = [Matrix::<N, Z>::zeros(); 2];
     let mut stage_da = [Matrix::<N, Z>::zeros(); 2];
     let mut end_q = start.q;
-    let mut end_dq = start.dq_dp;
+    let mut end_dq = start.dq_dp[0];
     for i in 0..2 {
         let mut q_known = start.q;
         let mut v_known = start.v;
-        let mut dq_known = start.dq_dp;
-        let mut dv_known = start.dv_dp;
+        let mut dq_known = start.dq_dp[0];
+        let mut dv_known = start.dv_dp[0];
         for j in 0..i {
             q_known += (h * A[i][j]) * stage_v[j];
             v_known += (h * A[i][j]) * stage_a[j];
@@ -274,8 +323,8 @@ where
     Ok(StepEnd {
         q: end_q,
         v: stage_v[1],
-        dq_dp: end_dq,
-        dv_dp: stage_dv[1],
+        dq_dp: [end_dq],
+        dv_dp: [stage_dv[1]],
         error: None,
     })
 }

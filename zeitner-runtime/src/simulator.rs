@@ -4,7 +4,7 @@
 use crate::error::{InvalidOption, Row, StepError};
 #[cfg(feature = "implicit")]
 use crate::inner::sdirk2_step;
-use crate::inner::{explicit_step, Start, StepEnd, DOPRI5, RK4};
+use crate::inner::{explicit_step, Multipliers, Start, StepEnd, DOPRI5, RK4};
 use crate::linalg::{keep_leading_rows, max_abs, solve_general, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::{Evaluations, Model};
@@ -312,8 +312,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             t: self.t,
             q: self.q,
             v: self.v,
-            dq_dp: Matrix::zeros(),
-            dv_dp: Matrix::zeros(),
+            dq_dp: [Matrix::zeros()],
+            dv_dp: [Matrix::zeros()],
         };
         let t_end = self.t + h;
         // The paper's estimate: M⁻¹Gᵀ frozen at the step start.
@@ -362,7 +362,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
             let (dg_dq, dg_dv) = self.model.linearisation(&end.q, &end.v, t_end)?;
             let (dq_dp, dv_dp) = if exact {
-                (end.dq_dp, end.dv_dp)
+                (end.dq_dp[0], end.dv_dp[0])
             } else {
                 ((0.5 * h * h) * frozen_b, h * frozen_b)
             };
@@ -459,34 +459,68 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         p: &Vector<Z>,
         exact: bool,
     ) -> Result<StepEnd<N, Z>, StepError> {
+        #[cfg(feature = "implicit")]
+        if self.options.method == InnerMethod::Sdirk2 {
+            return sdirk2_step(&mut self.model, start, h, p, exact);
+        }
+        self.integrate_explicit(start, h, &Multipliers::constant(*p), exact)
+    }
+
+    /// The explicit inner methods, for multipliers of any form over the step.
+    fn integrate_explicit<const K: usize>(
+        &mut self,
+        start: &Start<N, Z, K>,
+        h: f64,
+        multipliers: &Multipliers<Z, K>,
+        exact: bool,
+    ) -> Result<StepEnd<N, Z, K>, StepError> {
         match self.options.method {
             InnerMethod::Rk4 { substeps } => {
-                let hs = h / f64::from(substeps);
-                let mut at = Start {
-                    t: start.t,
-                    q: start.q,
-                    v: start.v,
-                    dq_dp: start.dq_dp,
-                    dv_dp: start.dv_dp,
-                };
-                let mut end = explicit_step(&mut self.model, &RK4, &at, hs, p, exact)?;
+                let share = 1.0 / f64::from(substeps);
+                let hs = h * share;
+                let mut end = explicit_step(
+                    &mut self.model,
+                    &RK4,
+                    start,
+                    hs,
+                    multipliers,
+                    (0.0, share),
+                    exact,
+                )?;
                 for k in 1..substeps {
-                    at = Start {
+                    let at = Start {
                         t: start.t + f64::from(k) * hs,
                         q: end.q,
                         v: end.v,
                         dq_dp: end.dq_dp,
                         dv_dp: end.dv_dp,
                     };
-                    end = explicit_step(&mut self.model, &RK4, &at, hs, p, exact)?;
+                    let s0 = f64::from(k) * share;
+                    end = explicit_step(
+                        &mut self.model,
+                        &RK4,
+                        &at,
+                        hs,
+                        multipliers,
+                        (s0, share),
+                        exact,
+                    )?;
                 }
                 Ok(end)
             }
-            InnerMethod::DormandPrince54 => {
-                explicit_step(&mut self.model, &DOPRI5, start, h, p, exact)
-            }
+            InnerMethod::DormandPrince54 => explicit_step(
+                &mut self.model,
+                &DOPRI5,
+                start,
+                h,
+                multipliers,
+                (0.0, 1.0),
+                exact,
+            ),
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => sdirk2_step(&mut self.model, start, h, p, exact),
+            InnerMethod::Sdirk2 => Err(StepError::InvalidOption(
+                InvalidOption::PolynomialMultipliersNeedExplicitMethod,
+            )),
         }
     }
 
