@@ -22,8 +22,8 @@ use scenes::pendulum::Pendulum;
 use scenes::reference::{self, State};
 use scenes::steam_generator::SteamGenerator;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector,
-    VelocityProjection,
+    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
+    Vector, VelocityProjection,
 };
 
 use crate::hand_written::HandWritten;
@@ -171,7 +171,7 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
             })
             .collect()
     };
-    let adaptive = |sensitivity, velocity_projection| -> Vec<(String, Options)> {
+    let adaptive = |sensitivity, velocity_projection, multipliers| -> Vec<(String, Options)> {
         rtols
             .iter()
             .map(|&rtol| {
@@ -184,6 +184,7 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
                 };
                 let options = Options {
                     method: InnerMethod::DormandPrince54,
+                    multipliers,
                     step,
                     sensitivity,
                     constraint_tolerance: tolerance,
@@ -210,15 +211,35 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
         },
         Method {
             name: "zeitner-constant-lambda-dopri5-exactQ",
-            settings: adaptive(Sensitivity::Exact, VelocityProjection::Output),
+            settings: adaptive(
+                Sensitivity::Exact,
+                VelocityProjection::Output,
+                MultiplierModel::Constant,
+            ),
         },
         Method {
             name: "zeitner-constant-lambda-dopri5-paperQ",
-            settings: adaptive(Sensitivity::Paper, VelocityProjection::Output),
+            settings: adaptive(
+                Sensitivity::Paper,
+                VelocityProjection::Output,
+                MultiplierModel::Constant,
+            ),
         },
         Method {
             name: "zeitner-constant-lambda-dopri5-exactQ-velocity-state",
-            settings: adaptive(Sensitivity::Exact, VelocityProjection::State),
+            settings: adaptive(
+                Sensitivity::Exact,
+                VelocityProjection::State,
+                MultiplierModel::Constant,
+            ),
+        },
+        Method {
+            name: "zeitner-quadratic-lambda-dopri5-exactQ",
+            settings: adaptive(
+                Sensitivity::Exact,
+                VelocityProjection::Output,
+                MultiplierModel::Quadratic,
+            ),
         },
         Method {
             name: "zeitner-constant-lambda-sdirk2-exactQ",

@@ -29,7 +29,9 @@ pub mod system;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
-pub use options::{InnerMethod, Options, Sensitivity, StepControl, VelocityProjection};
+pub use options::{
+    InnerMethod, MultiplierModel, Options, Sensitivity, StepControl, VelocityProjection,
+};
 pub use simulator::{Point, Simulator, Statistics, StepReport};
 pub use system::{
     BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,

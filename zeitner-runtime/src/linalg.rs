@@ -158,3 +158,20 @@ pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
         }
     })
 }
+
+/// Solves `[[A, B], [C, D]] [x; y] = [r; s]` for `Z`×`Z` blocks by the Schur complement of `A`;
+/// `None` when `A` or the complement is singular.
+pub fn solve_block_2x2<const Z: usize>(
+    blocks: &[[Matrix<Z, Z>; 2]; 2],
+    r: &Vector<Z>,
+    s: &Vector<Z>,
+) -> Option<[Vector<Z>; 2]> {
+    let [[a, b], [c, d]] = blocks;
+    let a_lu = Lu::new(*a)?;
+    let a_inv_b = a_lu.solve(b);
+    let a_inv_r = a_lu.solve(r);
+    let schur = d - c * a_inv_b;
+    let y = Lu::new(schur)?.solve(&(s - c * a_inv_r));
+    let x = a_inv_r - a_inv_b * y;
+    (x.iter().chain(y.iter()).all(|v| v.is_finite())).then_some([x, y])
+}

@@ -168,6 +168,21 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         )
     }
 
+    /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
+    pub fn constraint_force_jacobians(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+    ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
+        let (dq, dv) = self.system.constraint_force_jacobians(q, v, t, lambda);
+        Ok((
+            finite(dq, t, ModelFunction::ConstraintForceJacobians)?,
+            finite(dv, t, ModelFunction::ConstraintForceJacobians)?,
+        ))
+    }
+
     /// `a = M⁻¹(F - Gᵀp)` with `p` fixed.
     pub fn acceleration(
         &mut self,

@@ -40,6 +40,17 @@ pub enum VelocityProjection {
     State,
 }
 
+/// How the multipliers vary over a step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MultiplierModel {
+    /// Held constant at `p` (Zeitner's method); Newton enforces the position-level constraints.
+    Constant,
+    /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces the
+    /// position- and velocity-level constraints at the step end. Explicit inner methods and
+    /// position-level constraints only.
+    Quadratic,
+}
+
 /// How the step size is chosen.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepControl {
@@ -60,6 +71,7 @@ pub enum StepControl {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
     pub method: InnerMethod,
+    pub multipliers: MultiplierModel,
     pub step: StepControl,
     pub sensitivity: Sensitivity,
     /// `ε`: a step is accepted when every `|g_j(t+τ)| ≤ ε`, in the constraint's own units.
@@ -78,6 +90,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             method: InnerMethod::DormandPrince54,
+            multipliers: MultiplierModel::Constant,
             step: StepControl::Adaptive {
                 initial_step: 1e-3,
                 min_step: 1e-12,

@@ -5,10 +5,10 @@ use crate::error::{InvalidOption, Row, StepError};
 #[cfg(feature = "implicit")]
 use crate::inner::sdirk2_step;
 use crate::inner::{explicit_step, Multipliers, Start, StepEnd, DOPRI5, RK4};
-use crate::linalg::{keep_leading_rows, max_abs, solve_general, solve_spd};
+use crate::linalg::{keep_leading_rows, max_abs, solve_block_2x2, solve_general, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::{Evaluations, Model};
-use crate::options::{InnerMethod, Options, StepControl, VelocityProjection};
+use crate::options::{InnerMethod, MultiplierModel, Options, StepControl, VelocityProjection};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
@@ -95,6 +95,10 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     p: Vector<Z>,
     /// The multipliers and size of the step before, for extrapolating `p`.
     previous_multipliers: Option<(Vector<Z>, f64)>,
+    /// The coefficients `(a, b)` of the last accepted quadratic multipliers and its step size;
+    /// `pending_polynomial` holds those of the attempt being concluded.
+    last_polynomial: Option<([Vector<Z>; 2], f64)>,
+    pending_polynomial: Option<([Vector<Z>; 2], f64)>,
     last_step_size: f64,
     /// The multipliers from the acceleration-level system at the current time.
     consistent_lambda: Vector<Z>,
@@ -151,6 +155,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             v,
             p: point.lambda,
             previous_multipliers: None,
+            last_polynomial: None,
+            pending_polynomial: None,
             last_step_size: 0.0,
             consistent_lambda: point.lambda,
             last: report,
@@ -303,6 +309,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// One try of a step of size `h` from the current state.
     fn attempt(&mut self, h: f64) -> Result<Attempt<N, Z>, StepError> {
+        if self.options.multipliers == MultiplierModel::Quadratic {
+            return self.attempt_quadratic(h);
+        }
         let options = self.options;
         #[cfg(feature = "exact-sensitivity")]
         let exact = options.sensitivity == crate::options::Sensitivity::Exact;
@@ -358,7 +367,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let g = self.model.residual(&end.q, &end.v, t_end)?;
             worst = max_abs(&g);
             if worst.0 <= options.constraint_tolerance {
-                return self.conclude(&start, end, p, iteration, h);
+                return self.conclude(&start, end, p, iteration, h, true);
             }
             let (dg_dq, dg_dv) = self.model.linearisation(&end.q, &end.v, t_end)?;
             let (dq_dp, dv_dp) = if exact {
@@ -399,7 +408,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 if check_state(&updated.q, &updated.v, t_end).is_ok() {
                     let g = self.model.residual(&updated.q, &updated.v, t_end)?;
                     if max_abs(&g).0 <= options.constraint_tolerance {
-                        return self.conclude(&start, updated, p, iteration, h);
+                        return self.conclude(&start, updated, p, iteration, h, true);
                     }
                 }
             }
@@ -410,6 +419,159 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         })
     }
 
+    /// A step with multipliers quadratic in time, anchored at the consistent `λ(t₁)`:
+    /// `λ = λ(t₁) + a s + b s²`, `s = (t - t₁)/τ`, with Newton on `(a, b)` until both the
+    /// position- and the velocity-level constraints hold at the step end.
+    fn attempt_quadratic(&mut self, h: f64) -> Result<Attempt<N, Z>, StepError> {
+        let options = self.options;
+        let r = S::POSITION_CONSTRAINTS;
+        if r != Z || !cfg!(feature = "exact-sensitivity") {
+            return Err(StepError::InvalidOption(
+                InvalidOption::PolynomialMultipliersNeedExplicitMethod,
+            ));
+        }
+        let t_end = self.t + h;
+        let start = Start {
+            t: self.t,
+            q: self.q,
+            v: self.v,
+            dq_dp: [Matrix::zeros(); 2],
+            dv_dp: [Matrix::zeros(); 2],
+        };
+        // Continue the last step's polynomial into this one.
+        let mut coefficients = match self.last_polynomial {
+            Some(([a, b], previous_h)) if previous_h > 0.0 => {
+                let ratio = h / previous_h;
+                [(a + 2.0 * b) * ratio, b * (ratio * ratio)]
+            }
+            _ => [Vector::zeros(); 2],
+        };
+        let base = self.consistent_lambda;
+        let velocity_tolerance = options.constraint_tolerance / h.min(1.0);
+        let mut worst = (f64::INFINITY, 0usize);
+        for iteration in 1..=options.max_newton_iterations {
+            self.statistics.newton_iterations += 1;
+            let multipliers = Multipliers {
+                base,
+                coefficients,
+                first_power: 1,
+            };
+            let end = match self.integrate_explicit(&start, h, &multipliers, true) {
+                Ok(end) => end,
+                Err(error @ StepError::NonFinite { .. }) => {
+                    return Ok(Attempt::Rejected {
+                        shrink: 0.25,
+                        cause: error,
+                    })
+                }
+                Err(error) => return Err(error),
+            };
+            if let Err(error) = check_state(&end.q, &end.v, t_end) {
+                return Ok(Attempt::Rejected {
+                    shrink: 0.25,
+                    cause: error,
+                });
+            }
+            let g = self.model.residual(&end.q, &end.v, t_end)?;
+            let w = self.model.rate(&end.q, &end.v, t_end)?;
+            worst = max_abs(&g);
+            if worst.0 <= options.constraint_tolerance && max_abs(&w).0 <= velocity_tolerance {
+                return self.conclude_quadratic(&start, end, multipliers, iteration, h);
+            }
+            // Linearise g and w at the step end: ∂g/∂q = G; ∂w/∂q has rows (H_j q')ᵀ, the
+            // Hessian H_j of g_j from the constraint-force Jacobian along e_j (∂g_t/∂q is left
+            // out: Newton then converges linearly for time-dependent constraints).
+            let jacobian = self.model.jacobian(&end.q, &end.v, t_end)?;
+            let mut rate_jacobian = Matrix::<Z, N>::zeros();
+            for j in 0..Z {
+                let mut unit = Vector::<Z>::zeros();
+                unit[j] = 1.0;
+                let (hessian, _) = self.system_constraint_hessian(&end.q, &end.v, t_end, &unit)?;
+                rate_jacobian.set_row(j, &(hessian * end.v).transpose());
+            }
+            let blocks: [[Matrix<Z, Z>; 2]; 2] = core::array::from_fn(|row| {
+                core::array::from_fn(|k| {
+                    if row == 0 {
+                        jacobian * end.dq_dp[k]
+                    } else {
+                        rate_jacobian * end.dq_dp[k] + jacobian * end.dv_dp[k]
+                    }
+                })
+            });
+            let Some(delta) = solve_block_2x2(&blocks, &(-g), &(-w)) else {
+                return Ok(Attempt::Rejected {
+                    shrink: 0.25,
+                    cause: self.newton_failure(h, iteration, worst),
+                });
+            };
+            coefficients[0] += delta[0];
+            coefficients[1] += delta[1];
+            if options.accept_linearised_update {
+                let mut q = end.q;
+                let mut v = end.v;
+                for k in 0..2 {
+                    q += end.dq_dp[k] * delta[k];
+                    v += end.dv_dp[k] * delta[k];
+                }
+                if check_state(&q, &v, t_end).is_ok() {
+                    let g = self.model.residual(&q, &v, t_end)?;
+                    let w = self.model.rate(&q, &v, t_end)?;
+                    if max_abs(&g).0 <= options.constraint_tolerance
+                        && max_abs(&w).0 <= velocity_tolerance
+                    {
+                        let updated = StepEnd { q, v, ..end };
+                        let multipliers = Multipliers {
+                            base,
+                            coefficients,
+                            first_power: 1,
+                        };
+                        return self.conclude_quadratic(&start, updated, multipliers, iteration, h);
+                    }
+                }
+            }
+        }
+        Ok(Attempt::Rejected {
+            shrink: 0.25,
+            cause: self.newton_failure(h, options.max_newton_iterations, worst),
+        })
+    }
+
+    fn system_constraint_hessian(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        direction: &Vector<Z>,
+    ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
+        self.model.constraint_force_jacobians(q, v, t, direction)
+    }
+
+    fn conclude_quadratic(
+        &mut self,
+        start: &Start<N, Z, 2>,
+        end: StepEnd<N, Z, 2>,
+        multipliers: Multipliers<Z, 2>,
+        iterations: u32,
+        h: f64,
+    ) -> Result<Attempt<N, Z>, StepError> {
+        self.pending_polynomial = Some((multipliers.coefficients, h));
+        let start = Start {
+            t: start.t,
+            q: start.q,
+            v: start.v,
+            dq_dp: [Matrix::zeros()],
+            dv_dp: [Matrix::zeros()],
+        };
+        let end = StepEnd {
+            q: end.q,
+            v: end.v,
+            dq_dp: [Matrix::zeros()],
+            dv_dp: [Matrix::zeros()],
+            error: end.error,
+        };
+        self.conclude(&start, end, multipliers.at(1.0), iterations, h, false)
+    }
+
     /// A step whose constraints hold: accept it, or reject it on the error estimate.
     fn conclude(
         &mut self,
@@ -418,10 +580,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         p: Vector<Z>,
         iterations: u32,
         h: f64,
+        constant_multipliers: bool,
     ) -> Result<Attempt<N, Z>, StepError> {
         let t_end = start.t + h;
         let point = self.end_point(&end, t_end)?;
-        let frozen = self.freezing_error(start, &end, &point, h)?;
+        let frozen = if constant_multipliers {
+            self.freezing_error(start, &end, &point, h)?
+        } else {
+            Vector::zeros()
+        };
         let error_norm = self.error_norm(start, &end, &frozen);
         if error_norm > 1.0 {
             let shrink = (0.9 * libm::pow(error_norm, -0.2)).clamp(0.2, 0.9);
@@ -597,6 +764,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             end.v
         };
         let h = t_end - self.last.end.t;
+        self.last_polynomial = self.pending_polynomial.take();
         self.previous_multipliers =
             (self.last_step_size > 0.0).then_some((self.p, self.last_step_size));
         self.last_step_size = h;
