@@ -507,12 +507,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             coefficients[0] += delta[0];
             coefficients[1] += delta[1];
             if options.accept_linearised_update {
-                let mut q = end.q;
-                let mut v = end.v;
-                for k in 0..2 {
-                    q += end.dq_dp[k] * delta[k];
-                    v += end.dv_dp[k] * delta[k];
-                }
+                let q = end.q + end.dq_dp[0] * delta[0] + end.dq_dp[1] * delta[1];
+                let v = end.v + end.dv_dp[0] * delta[0] + end.dv_dp[1] * delta[1];
                 if check_state(&q, &v, t_end).is_ok() {
                     let g = self.model.residual(&q, &v, t_end)?;
                     let w = self.model.rate(&q, &v, t_end)?;
