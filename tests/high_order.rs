@@ -136,3 +136,49 @@ fn andrews_within_the_published_reliability() {
         "q {eq:e}, q' {ev:e}, λ {el:e}"
     );
 }
+
+/// Dense output between steps against the reference: the quintic Hermite keeps the method's
+/// order in q and q', and `Simulator::sample` recomputes λ to the same accuracy.
+#[test]
+fn dense_output_keeps_the_order_between_steps() {
+    let scene = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let errors = |h: f64| {
+        let options = quadratic(StepControl::Fixed { step: h }, 1e-14);
+        let mut sim = Simulator::new(
+            &scene,
+            Vector::<2>::new(1.0, 0.0),
+            Vector::zeros(),
+            0.0,
+            options,
+        )
+        .unwrap();
+        let mut worst = [0.0f64; 3];
+        while sim.time() < 0.5 {
+            sim.step_until(0.5).unwrap();
+            let (t0, t1) = (sim.last().start.t, sim.last().end.t);
+            let t = t0 + 0.37 * (t1 - t0);
+            let point = sim.sample(t).unwrap();
+            let reference = pendulum_released_horizontally(&scene, t);
+            // Scaled absolute errors: near the release the velocity itself is near zero.
+            let scales = [
+                scene.length,
+                (scene.g * scene.length).sqrt(),
+                scene.m * scene.g / scene.length,
+            ];
+            worst[0] = worst[0].max((point.q - Vector::<2>::from(reference.q)).amax() / scales[0]);
+            worst[1] = worst[1].max((point.v - Vector::<2>::from(reference.v)).amax() / scales[1]);
+            worst[2] = worst[2].max((point.lambda[0] - reference.lambda[0]).abs() / scales[2]);
+        }
+        worst
+    };
+    let (coarse, fine) = (errors(0.02), errors(0.01));
+    eprintln!(
+        "dense output errors at h = 0.01: q {:.1e}, q' {:.1e}, λ {:.1e}",
+        fine[0], fine[1], fine[2]
+    );
+    assert_order("dense output", coarse, fine, 2.0, 5.0);
+}

@@ -44,8 +44,10 @@ pub struct StepReport<const N: usize, const Z: usize> {
 
 #[cfg(feature = "dense-output")]
 impl<const N: usize, const Z: usize> StepReport<N, Z> {
-    /// Dense output at `t` within the step: cubic Hermite in `q` (from `q'`) and in `q'` (from
-    /// `q''`), linear in `q''` and `λ`. Outside the step it extrapolates.
+    /// Dense output at `t` within the step: quintic Hermite in `q` from `q`, `q'`, `q''` at both
+    /// ends and its derivative for `q'` (local errors `O(τ⁶)` and `O(τ⁵)`), linear in `q''` and
+    /// `λ`. For multipliers as accurate as the positions, use [`Simulator::sample`]. Outside the
+    /// step it extrapolates.
     pub fn sample(&self, t: f64) -> Point<N, Z> {
         let (a, b) = (&self.start, &self.end);
         let h = b.t - a.t;
@@ -53,15 +55,36 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
             return *b;
         }
         let s = (t - a.t) / h;
-        let (s2, s3) = (s * s, s * s * s);
-        let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
-        let h10 = s3 - 2.0 * s2 + s;
-        let h01 = -2.0 * s3 + 3.0 * s2;
-        let h11 = s3 - s2;
+        let (s2, s3, s4, s5) = (s * s, s * s * s, s * s * s * s, s * s * s * s * s);
+        // Quintic Hermite basis: values, first and second derivatives at s = 0 and s = 1.
+        let value = [
+            1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
+            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
+            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
+            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
+            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
+            0.5 * s3 - s4 + 0.5 * s5,
+        ];
+        let slope = [
+            -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
+            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
+            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
+            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
+            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
+            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
+        ];
+        let combine = |w: &[f64; 6]| {
+            w[0] * a.q
+                + (w[1] * h) * a.v
+                + (w[2] * h * h) * a.a
+                + w[3] * b.q
+                + (w[4] * h) * b.v
+                + (w[5] * h * h) * b.a
+        };
         Point {
             t,
-            q: h00 * a.q + (h10 * h) * a.v + h01 * b.q + (h11 * h) * b.v,
-            v: h00 * a.v + (h10 * h) * a.a + h01 * b.v + (h11 * h) * b.a,
+            q: combine(&value),
+            v: combine(&slope) / h,
             a: a.a + s * (b.a - a.a),
             lambda: a.lambda + s * (b.lambda - a.lambda),
         }
@@ -163,6 +186,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             step_size,
             statistics: Statistics::default(),
         })
+    }
+
+    /// Dense output within the last step with the multipliers and accelerations recomputed
+    /// from the acceleration-level system at the interpolated state, so that they are as
+    /// accurate as the positions and velocities.
+    #[cfg(feature = "dense-output")]
+    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+        let point = self.last.sample(t);
+        consistent_point(&mut self.model, t, point.q, point.v)
     }
 
     /// The last accepted step (at the start: the consistent initial point).
