@@ -18,19 +18,40 @@ pub struct PeerEnd {
     pub values: Vec<f64>,
 }
 
-/// A peer: its name in the CSV and its script.
+/// A peer: its name in the CSV, its script and the arguments before the scene.
 pub struct Peer {
     pub name: &'static str,
     pub script: &'static str,
+    pub leading_args: &'static [&'static str],
     /// The scenes it models.
     pub scenes: &'static [&'static str],
+    /// Fixed-step peers take step counts; adaptive ones relative tolerances.
+    pub fixed_steps: bool,
 }
 
-pub const PEERS: [Peer; 1] = [Peer {
-    name: "peer-casadi-idas",
-    script: "casadi_idas.py",
-    scenes: &["pendulum", "steam_generator", "andrews"],
-}];
+pub const PEERS: [Peer; 3] = [
+    Peer {
+        name: "peer-casadi-idas",
+        script: "casadi_idas.py",
+        leading_args: &[],
+        scenes: &["pendulum", "steam_generator", "andrews"],
+        fixed_steps: false,
+    },
+    Peer {
+        name: "peer-exudyn-ga",
+        script: "exudyn_ga.py",
+        leading_args: &["ga"],
+        scenes: &["pendulum", "steam_generator"],
+        fixed_steps: true,
+    },
+    Peer {
+        name: "peer-exudyn-trapezoidal",
+        script: "exudyn_ga.py",
+        leading_args: &["trapezoidal"],
+        scenes: &["pendulum", "steam_generator"],
+        fixed_steps: true,
+    },
+];
 
 /// A Python with the peers installed, in a virtual environment under `dir`; created on first
 /// use. `Err` says why the peers are unavailable.
@@ -39,7 +60,7 @@ pub fn python(dir: &Path) -> Result<PathBuf, String> {
     let python = venv.join("bin/python");
     let ready = |python: &Path| {
         Command::new(python)
-            .args(["-c", "import casadi"])
+            .args(["-c", "import casadi, exudyn"])
             .output()
             .map(|o| o.status.success())
             .unwrap_or(false)
@@ -47,7 +68,10 @@ pub fn python(dir: &Path) -> Result<PathBuf, String> {
     if ready(&python) {
         return Ok(python);
     }
-    eprintln!("installing the peers (casadi) into {} …", venv.display());
+    eprintln!(
+        "installing the peers (casadi, exudyn) into {} …",
+        venv.display()
+    );
     let created = Command::new("python3")
         .args(["-m", "venv"])
         .arg(&venv)
@@ -56,25 +80,32 @@ pub fn python(dir: &Path) -> Result<PathBuf, String> {
         return Err("python3 -m venv failed (is Python 3 with venv installed?)".into());
     }
     let installed = Command::new(&python)
-        .args(["-m", "pip", "install", "--quiet", "casadi==3.8.2"])
+        .args([
+            "-m",
+            "pip",
+            "install",
+            "--quiet",
+            "casadi==3.8.2",
+            "exudyn==1.13.6",
+        ])
         .status();
     if !matches!(installed, Ok(s) if s.success()) {
-        return Err("pip install casadi failed (is PyPI reachable?)".into());
+        return Err("pip install casadi exudyn failed (is PyPI reachable?)".into());
     }
     if ready(&python) {
         Ok(python)
     } else {
-        Err("casadi does not import after installation".into())
+        Err("casadi or exudyn does not import after installation".into())
     }
 }
 
-/// Runs `peer` on `scene` for each relative tolerance.
+/// Runs `peer` on `scene` for each setting (a relative tolerance or a step count).
 pub fn run(
     python: &Path,
     peer: &Peer,
     scene: &str,
     t_end: f64,
-    rtols: &[f64],
+    settings: &[f64],
     values: usize,
 ) -> Vec<PeerRun> {
     let script = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -82,9 +113,10 @@ pub fn run(
         .join(peer.script);
     let output = Command::new(python)
         .arg(&script)
+        .args(peer.leading_args)
         .arg(scene)
         .arg(t_end.to_string())
-        .args(rtols.iter().map(|r| format!("{r:e}")))
+        .args(settings.iter().map(|r| format!("{r:e}")))
         .output();
     let output = match output {
         Ok(output) => output,
