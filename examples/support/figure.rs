@@ -191,6 +191,10 @@ where
         RGBColor(140, 86, 75),
         RGBColor(227, 119, 194),
         RGBColor(23, 190, 207),
+        RGBColor(188, 189, 34),
+        RGBColor(127, 127, 127),
+        RGBColor(0, 0, 0),
+        RGBColor(120, 60, 160),
     ];
     for (k, (name, points)) in series.iter().enumerate() {
         let color = palette[k % palette.len()];
@@ -203,7 +207,11 @@ where
             .legend(move |(x, y)| {
                 PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
             });
-        chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+        // Peers are drawn with hollow markers, our methods with filled ones.
+        let filled = !name.starts_with("peer-");
+        chart.draw_series(points.iter().map(|&p| {
+            Circle::new(p, 4, if filled { color.filled() } else { color.stroke_width(2) })
+        }))?;
     }
     chart
         .configure_series_labels()
