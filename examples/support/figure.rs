@@ -210,7 +210,15 @@ where
         // Peers are drawn with hollow markers, our methods with filled ones.
         let filled = !name.starts_with("peer-");
         chart.draw_series(points.iter().map(|&p| {
-            Circle::new(p, 4, if filled { color.filled() } else { color.stroke_width(2) })
+            Circle::new(
+                p,
+                4,
+                if filled {
+                    color.filled()
+                } else {
+                    color.stroke_width(2)
+                },
+            )
         }))?;
     }
     chart

@@ -3,6 +3,8 @@
 //!
 //! `cargo run --release -p zeitner-bench -- work-precision` (`--quick` for a smoke run).
 
+#[cfg(feature = "diffsol")]
+mod diffsol_peer;
 #[path = "../../examples/support/figure.rs"]
 mod figure;
 mod hand_written;
@@ -334,6 +336,24 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 
 /// Runs one configuration: `(method, setting, options, repeats)`.
 type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
+/// Runs the in-process peer (diffsol) for these relative tolerances; nothing without the feature.
+type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<peers::PeerRun>>;
+
+fn diffsol_runner<S: ConstrainedSystem<N, Z> + 'static, const N: usize, const Z: usize>(
+    scene: S,
+    start: (Vector<N>, Vector<N>),
+    t_end: f64,
+) -> PeerRunner {
+    #[cfg(feature = "diffsol")]
+    {
+        Box::new(move |rtols: &[f64]| diffsol_peer::run(&scene, start, t_end, rtols))
+    }
+    #[cfg(not(feature = "diffsol"))]
+    {
+        let _ = (scene, start, t_end);
+        Box::new(|_: &[f64]| Vec::new())
+    }
+}
 
 /// A scene: how to run one configuration of it.
 struct Scene {
@@ -345,6 +365,7 @@ struct Scene {
     /// The reference end state, flattened: q, then v, then λ; and the sizes N, Z.
     reference: (Vec<f64>, usize, usize),
     run: Runner,
+    run_diffsol: PeerRunner,
 }
 
 fn pendulum_scene() -> Scene {
@@ -364,6 +385,15 @@ fn pendulum_scene() -> Scene {
             flatten(&reference),
             reference.q.len(),
             reference.lambda.len(),
+        ),
+        run_diffsol: diffsol_runner(
+            Pendulum {
+                m: 1.0,
+                length: 1.0,
+                g: 9.81,
+            },
+            (Vector::<2>::new(1.0, 0.0), Vector::zeros()),
+            t_end,
         ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
@@ -395,6 +425,11 @@ fn steam_generator_scene() -> Scene {
             flatten(&reference),
             reference.q.len(),
             reference.lambda.len(),
+        ),
+        run_diffsol: diffsol_runner(
+            SteamGenerator::paper(),
+            (Vector::<3>::zeros(), Vector::zeros()),
+            t_end,
         ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::zeros(), Vector::zeros());
@@ -486,6 +521,11 @@ fn andrews_scene() -> Result<Scene, String> {
             reference.q.len(),
             reference.lambda.len(),
         ),
+        run_diffsol: diffsol_runner(
+            Andrews::published(),
+            (Vector::from(Andrews::Q0), Vector::zeros()),
+            t_end,
+        ),
         run: Box::new(move |method, setting, options, repeats| {
             let start = (Vector::from(Andrews::Q0), Vector::zeros());
             measure(
@@ -515,13 +555,6 @@ fn flatten<const N: usize, const Z: usize>(state: &State<N, Z>) -> Vec<f64> {
 
 /// The peers' rows for every scene they model; a peer that is unavailable is said so once.
 fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
-    let python = match peers::python(&args.output_dir) {
-        Ok(python) => python,
-        Err(reason) => {
-            println!("peers unavailable: {reason}");
-            return Vec::new();
-        }
-    };
     let rtols: &[f64] = if args.quick {
         &[1e-5, 1e-8]
     } else {
@@ -534,57 +567,77 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
         &[1e-2, 3e-3, 1e-3, 3e-4, 1e-4]
     };
     let mut rows = Vec::new();
-    for peer in &peers::PEERS {
-        for scene in scenes.iter().filter(|s| peer.scenes.contains(&s.name)) {
-            let (reference, n, z) = &scene.reference;
-            let settings: Vec<f64> = if peer.fixed_steps {
-                step_sizes
-                    .iter()
-                    .map(|h| (scene.t_end / h).round())
-                    .collect()
-            } else {
-                rtols.to_vec()
-            };
-            for run in peers::run(
-                &python,
-                peer,
-                scene.name,
-                scene.t_end,
-                &settings,
-                reference.len(),
-            ) {
-                let mut row = Row {
-                    scene: scene.name,
-                    method: peer.name.to_string(),
-                    setting: run.setting,
-                    error_q: f64::NAN,
-                    error_v: f64::NAN,
-                    error_lambda: f64::NAN,
-                    max_g: f64::NAN,
-                    steps: 0,
-                    newton_iterations: 0,
-                    cpu_seconds: f64::NAN,
-                    allocations: None,
-                    failure: None,
-                };
-                match run.outcome {
-                    Ok(end) => {
-                        let (q, rest) = end.values.split_at(*n);
-                        let (v, lambda) = rest.split_at(*n);
-                        row.error_q = worst_relative(q, &reference[..*n]);
-                        row.error_v = worst_relative(v, &reference[*n..2 * n]);
-                        row.error_lambda = worst_relative(lambda, &reference[2 * n..2 * n + z]);
-                        row.max_g = end.max_g;
-                        row.steps = end.steps;
-                        row.cpu_seconds = end.cpu_seconds;
-                    }
-                    Err(failure) => row.failure = Some(failure),
+    match peers::python(&args.output_dir) {
+        Ok(python) => {
+            for peer in &peers::PEERS {
+                for scene in scenes.iter().filter(|s| peer.scenes.contains(&s.name)) {
+                    let settings: Vec<f64> = if peer.fixed_steps {
+                        step_sizes
+                            .iter()
+                            .map(|h| (scene.t_end / h).round())
+                            .collect()
+                    } else {
+                        rtols.to_vec()
+                    };
+                    let runs = peers::run(
+                        &python,
+                        peer,
+                        scene.name,
+                        scene.t_end,
+                        &settings,
+                        scene.reference.0.len(),
+                    );
+                    rows.extend(runs.into_iter().map(|run| peer_row(scene, peer.name, run)));
                 }
-                rows.push(row);
             }
         }
+        Err(reason) => println!("Python peers unavailable: {reason}"),
+    }
+    if cfg!(feature = "diffsol") {
+        for scene in scenes {
+            rows.extend(
+                (scene.run_diffsol)(rtols)
+                    .into_iter()
+                    .map(|run| peer_row(scene, "peer-diffsol-bdf", run)),
+            );
+        }
+    } else {
+        println!("peer-diffsol-bdf not built: add --features diffsol");
     }
     rows
+}
+
+/// A peer's run as a row, its errors measured against the scene's reference.
+fn peer_row(scene: &Scene, method: &str, run: peers::PeerRun) -> Row {
+    let (reference, n, z) = (&scene.reference.0, scene.reference.1, scene.reference.2);
+    let mut row = Row {
+        scene: scene.name,
+        method: method.to_string(),
+        setting: run.setting,
+        error_q: f64::NAN,
+        error_v: f64::NAN,
+        error_lambda: f64::NAN,
+        max_g: f64::NAN,
+        steps: 0,
+        newton_iterations: 0,
+        cpu_seconds: f64::NAN,
+        allocations: None,
+        failure: None,
+    };
+    match run.outcome {
+        Ok(end) => {
+            let (q, rest) = end.values.split_at(n);
+            let (v, lambda) = rest.split_at(n);
+            row.error_q = worst_relative(q, &reference[..n]);
+            row.error_v = worst_relative(v, &reference[n..2 * n]);
+            row.error_lambda = worst_relative(lambda, &reference[2 * n..2 * n + z]);
+            row.max_g = end.max_g;
+            row.steps = end.steps;
+            row.cpu_seconds = end.cpu_seconds;
+        }
+        Err(failure) => row.failure = Some(failure),
+    }
+    row
 }
 
 fn csv_line(row: &Row) -> String {
@@ -777,8 +830,10 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          Peers (`--peers`): CasADi 3.8.2's IDAS on the index-1 formulation (its SX virtual machine, no \
          C code generation); Exudyn 1.13.6's generalised-α (index 3) and trapezoidal (index 2) \
          solvers with fixed steps, built from its native objects (the steam generator's load through \
-         Python user functions; Andrews not modelled). A peer failing or not reaching a target is \
-         a result.\n"
+         Python user functions; Andrews not modelled); with `--features diffsol`, diffsol 0.18's \
+         BDF on the same index-1 formulation in process, calling the scenes' generated functions, \
+         with finite-difference Jacobian-vector products. A peer failing or not reaching a target \
+         is a result.\n"
     );
     let _ = writeln!(out, "{headline}");
     for scene in scenes {
