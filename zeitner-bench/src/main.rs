@@ -381,11 +381,7 @@ fn pendulum_scene() -> Scene {
         title: "Pendulum, Cartesian, released horizontally, 10 s",
         t_end,
         constraint_tolerance: 1e-12,
-        reference: (
-            flatten(&reference),
-            reference.q.len(),
-            reference.lambda.len(),
-        ),
+        reference: flattened(&reference),
         run_diffsol: diffsol_runner(
             Pendulum {
                 m: 1.0,
@@ -421,11 +417,7 @@ fn steam_generator_scene() -> Scene {
         title: "The paper's steam generator, 2 s",
         t_end,
         constraint_tolerance: 1e-10,
-        reference: (
-            flatten(&reference),
-            reference.q.len(),
-            reference.lambda.len(),
-        ),
+        reference: flattened(&reference),
         run_diffsol: diffsol_runner(
             SteamGenerator::paper(),
             (Vector::<3>::zeros(), Vector::zeros()),
@@ -516,11 +508,7 @@ fn andrews_scene() -> Result<Scene, String> {
         title: "Andrews' squeezing mechanism, 0.03 s",
         t_end,
         constraint_tolerance: 1e-12,
-        reference: (
-            flatten(&reference),
-            reference.q.len(),
-            reference.lambda.len(),
-        ),
+        reference: flattened(&reference),
         run_diffsol: diffsol_runner(
             Andrews::published(),
             (Vector::from(Andrews::Q0), Vector::zeros()),
@@ -543,14 +531,19 @@ fn andrews_scene() -> Result<Scene, String> {
     })
 }
 
-fn flatten<const N: usize, const Z: usize>(state: &State<N, Z>) -> Vec<f64> {
-    state
-        .q
-        .iter()
-        .chain(&state.v)
-        .chain(&state.lambda)
-        .copied()
-        .collect()
+/// A reference state as (q, then v, then λ; N; Z).
+fn flattened<const N: usize, const Z: usize>(state: &State<N, Z>) -> (Vec<f64>, usize, usize) {
+    (
+        state
+            .q
+            .iter()
+            .chain(&state.v)
+            .chain(&state.lambda)
+            .copied()
+            .collect(),
+        N,
+        Z,
+    )
 }
 
 /// The peers' rows for every scene they model; a peer that is unavailable is said so once.

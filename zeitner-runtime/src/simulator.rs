@@ -378,24 +378,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut worst = (f64::INFINITY, 0usize);
         for iteration in 1..=options.max_newton_iterations {
             self.statistics.newton_iterations += 1;
-            let end = match self.integrate(&start, h, &p, exact) {
+            let end = match trial(self.integrate(&start, h, &p, exact), t_end)? {
                 Ok(end) => end,
-                Err(
-                    error @ (StepError::NonFinite { .. } | StepError::StageDidNotConverge { .. }),
-                ) => {
-                    return Ok(Attempt::Rejected {
-                        shrink: 0.25,
-                        cause: error,
-                    });
-                }
-                Err(error) => return Err(error),
+                Err(rejected) => return Ok(rejected),
             };
-            if let Err(error) = check_state(&end.q, &end.v, t_end) {
-                return Ok(Attempt::Rejected {
-                    shrink: 0.25,
-                    cause: error,
-                });
-            }
             let g = self.model.residual(&end.q, &end.v, t_end)?;
             worst = max_abs(&g);
             if worst.0 <= options.constraint_tolerance {
@@ -488,22 +474,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 coefficients,
                 first_power: 1,
             };
-            let end = match self.integrate_explicit(&start, h, &multipliers, true) {
+            let end = match trial(
+                self.integrate_explicit(&start, h, &multipliers, true),
+                t_end,
+            )? {
                 Ok(end) => end,
-                Err(error @ StepError::NonFinite { .. }) => {
-                    return Ok(Attempt::Rejected {
-                        shrink: 0.25,
-                        cause: error,
-                    })
-                }
-                Err(error) => return Err(error),
+                Err(rejected) => return Ok(rejected),
             };
-            if let Err(error) = check_state(&end.q, &end.v, t_end) {
-                return Ok(Attempt::Rejected {
-                    shrink: 0.25,
-                    cause: error,
-                });
-            }
             let g = self.model.residual(&end.q, &end.v, t_end)?;
             let w = self.model.rate(&end.q, &end.v, t_end)?;
             worst = max_abs(&g);
@@ -802,6 +779,31 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.statistics.max_newton_iterations =
             self.statistics.max_newton_iterations.max(iterations);
         Ok(())
+    }
+}
+
+/// A trial integration: errors that a smaller step may cure (a non-finite or diverging
+/// trajectory, stage equations that did not converge) become a rejection.
+#[allow(clippy::type_complexity)]
+fn trial<const N: usize, const Z: usize, const K: usize>(
+    result: Result<StepEnd<N, Z, K>, StepError>,
+    t_end: f64,
+) -> Result<Result<StepEnd<N, Z, K>, Attempt<N, Z>>, StepError> {
+    let rejected = |cause| {
+        Ok(Err(Attempt::Rejected {
+            shrink: 0.25,
+            cause,
+        }))
+    };
+    match result {
+        Ok(end) => match check_state(&end.q, &end.v, t_end) {
+            Ok(()) => Ok(Ok(end)),
+            Err(cause) => rejected(cause),
+        },
+        Err(cause @ (StepError::NonFinite { .. } | StepError::StageDidNotConverge { .. })) => {
+            rejected(cause)
+        }
+        Err(error) => Err(error),
     }
 }
 
