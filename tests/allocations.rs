@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use common::andrews::Andrews;
 use common::steam_generator::SteamGenerator;
-use zeitner::{InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector};
+use zeitner::{InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector};
 
 struct Counting;
 
@@ -68,6 +68,11 @@ fn ten_thousand_steps_allocate_nothing() {
         },
         Options {
             method: InnerMethod::Sdirk2,
+            step: StepControl::Fixed { step: 1e-4 },
+            ..Options::default()
+        },
+        Options {
+            multipliers: MultiplierModel::Quadratic,
             step: StepControl::Fixed { step: 1e-4 },
             ..Options::default()
         },

@@ -5,8 +5,8 @@ mod common;
 use common::pendulum::Pendulum;
 use proptest::prelude::*;
 use zeitner::{
-    constrained_system, InnerMethod, InvalidOption, ModelFunction, Options, Sensitivity, Simulator,
-    StepControl, StepError, Vector, VelocityProjection,
+    constrained_system, InnerMethod, InvalidOption, ModelFunction, MultiplierModel, Options,
+    Sensitivity, Simulator, StepControl, StepError, Vector, VelocityProjection,
 };
 
 fn released() -> (Vector<2>, Vector<2>) {
@@ -59,6 +59,14 @@ fn absurd_options_are_refused() {
                 ..Options::default()
             },
             InvalidOption::AdaptiveNeedsErrorEstimate,
+        ),
+        (
+            Options {
+                method: InnerMethod::Sdirk2,
+                multipliers: MultiplierModel::Quadratic,
+                ..Options::paper(1e-3)
+            },
+            InvalidOption::PolynomialMultipliersNeedExplicitMethod,
         ),
     ];
     for (options, expected) in cases {

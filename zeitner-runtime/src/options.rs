@@ -135,6 +135,17 @@ impl Options {
         if self.max_newton_iterations == 0 {
             return Err(StepError::InvalidOption(InvalidOption::IterationLimit));
         }
+        #[cfg(feature = "implicit")]
+        let implicit = self.method == InnerMethod::Sdirk2;
+        #[cfg(not(feature = "implicit"))]
+        let implicit = false;
+        if self.multipliers == MultiplierModel::Quadratic
+            && (implicit || !cfg!(feature = "exact-sensitivity"))
+        {
+            return Err(StepError::InvalidOption(
+                InvalidOption::PolynomialMultipliersNeedExplicitMethod,
+            ));
+        }
         if let InnerMethod::Rk4 { substeps: 0 } = self.method {
             return Err(StepError::InvalidOption(InvalidOption::IterationLimit));
         }

@@ -154,6 +154,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         options: Options,
     ) -> Result<Self, StepError> {
         options.validate()?;
+        if options.multipliers == MultiplierModel::Quadratic && S::POSITION_CONSTRAINTS != Z {
+            return Err(StepError::InvalidOption(
+                InvalidOption::PolynomialMultipliersNeedExplicitMethod,
+            ));
+        }
         if !t0.is_finite() {
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
