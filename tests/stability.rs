@@ -281,3 +281,31 @@ fn ten_thousand_steps_of_the_pendulum_keep_constraints_and_energy() {
         "|g| {max_g:e}, energy gain {gain:e}"
     );
 }
+
+#[test]
+fn a_bead_sliding_into_a_cusp_stops_naming_the_vanishing_gradient() {
+    use common::stiff::CuspBead;
+    let scene = CuspBead { m: 1.0, g: 9.81 };
+    for options in [
+        Options::paper(1e-3),
+        Options::default(),
+        fixed(InnerMethod::Sdirk2, 1e-3),
+    ] {
+        let mut sim = Simulator::new(
+            &scene,
+            Vector::<2>::new(1.0, 1.0),
+            Vector::zeros(),
+            0.0,
+            options,
+        )
+        .unwrap();
+        let error = sim.advance_to(2.0, |_| {}).err();
+        let Some(StepError::RankDeficientConstraints { t, dependent_rows }) = error else {
+            panic!("{options:?}: expected the vanishing gradient to be named, got {error:?}");
+        };
+        assert!(dependent_rows.contains(0));
+        // It reached the neighbourhood of the cusp, and kept its last accepted state.
+        assert!(t > 0.5 && sim.time() == t, "{t}");
+        assert!(sim.last().end.q.norm() < 1e-2);
+    }
+}

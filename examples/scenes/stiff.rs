@@ -168,3 +168,26 @@ impl CoupledMassPendulum {
         [x * x + y * y - 1.0]
     }
 }
+
+/// A bead under gravity on the semicubical parabola y² = x³, which has a cusp at the origin where
+/// the constraint gradient (-3x², 2y) vanishes. Started on the upper branch, it slides into the
+/// cusp.
+pub struct CuspBead {
+    pub m: f64,
+    pub g: f64,
+}
+
+#[constrained_system]
+impl CuspBead {
+    fn mass(&self) -> [f64; 2] {
+        [self.m, self.m]
+    }
+
+    fn force(&self) -> [f64; 2] {
+        [0.0, -self.m * self.g]
+    }
+
+    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+        [y * y - x * x * x]
+    }
+}

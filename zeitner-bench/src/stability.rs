@@ -9,7 +9,7 @@ use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference;
 use crate::scenes::steam_generator::SteamGenerator;
 use crate::scenes::stiff::{
-    CoupledMassPendulum, DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum,
+    CoupledMassPendulum, CuspBead, DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum,
 };
 
 /// One run of the report.
@@ -307,6 +307,21 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         &[1e-3, 1e-2],
         1e-10,
         Some((&energy, 0.5 * omega * omega)),
+    );
+
+    // A constraint gradient that vanishes: a bead sliding into the cusp of y² = x³.
+    let cusp = CuspBead { m: 1.0, g: 9.81 };
+    let cusp_energy = |q: &[f64], v: &[f64]| 0.5 * (v[0] * v[0] + v[1] * v[1]) + 9.81 * q[1];
+    push_all(
+        &mut cases,
+        "cusp",
+        "bead sliding into the cusp of y² = x³",
+        &cusp,
+        (Vector::<2>::new(1.0, 1.0), Vector::zeros()),
+        &[2.0],
+        &[1e-3],
+        1e-10,
+        Some((&cusp_energy, 9.81)),
     );
 
     // 5. Redundant constraints.

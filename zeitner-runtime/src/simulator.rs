@@ -125,6 +125,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     last_step_size: f64,
     /// The multipliers from the acceleration-level system at the current time.
     consistent_lambda: Vector<Z>,
+    /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
+    jacobian_row_scale: Vector<Z>,
     last: StepReport<N, Z>,
     step_size: f64,
     statistics: Statistics,
@@ -170,6 +172,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let v = project_velocities(&mut model, &q, v0, t0, tolerance, 20)?;
         let point = consistent_point(&mut model, t0, q, v)?;
         let report = end_report(&mut model, point, point, point.lambda, 0)?;
+        let start_jacobian = model.jacobian(&q, &v, t0)?;
+        let jacobian_row_scale = Vector::<Z>::from_fn(|j, _| start_jacobian.row(j).norm());
         let step_size = match options.step {
             StepControl::Fixed { step } => step,
             StepControl::Adaptive { initial_step, .. } => initial_step,
@@ -187,6 +191,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             pending_polynomial: None,
             last_step_size: 0.0,
             consistent_lambda: point.lambda,
+            jacobian_row_scale,
             last: report,
             step_size,
             statistics: Statistics::default(),
@@ -276,22 +281,42 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 Attempt::Rejected { shrink, cause } => {
                     self.statistics.rejected_steps += 1;
                     let StepControl::Adaptive { min_step, .. } = self.options.step else {
-                        return Err(cause);
+                        return Err(self.singular_configuration()?.unwrap_or(cause));
                     };
                     h = h_try * shrink;
                     // Written to also stop on a NaN step.
                     if !(h >= min_step && h > f64::EPSILON * self.t.abs()) {
-                        return Err(match cause {
+                        let cause = match cause {
                             StepError::NewtonDidNotConverge { .. }
                             | StepError::StageDidNotConverge { .. } => {
                                 StepError::StepSizeTooSmall { t: self.t, step: h }
                             }
                             other => other,
-                        });
+                        };
+                        return Err(self.singular_configuration()?.unwrap_or(cause));
                     }
                 }
             }
         }
+    }
+
+    /// When a step cannot be completed: whether some constraint gradients have all but vanished
+    /// (below 1e-3 of their size at the start), a singular configuration such as a cusp, which
+    /// explains the failure better than the failure itself.
+    fn singular_configuration(&mut self) -> Result<Option<StepError>, StepError> {
+        let g = self.model.jacobian(&self.q, &self.v, self.t)?;
+        let mut rows = crate::error::RowSet::new(S::POSITION_CONSTRAINTS);
+        for j in 0..Z {
+            if g.row(j).norm() < 1e-3 * self.jacobian_row_scale[j] {
+                rows.insert(j);
+            }
+        }
+        Ok(
+            (!rows.is_empty()).then_some(StepError::RankDeficientConstraints {
+                t: self.t,
+                dependent_rows: rows,
+            }),
+        )
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step.
