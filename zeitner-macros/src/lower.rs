@@ -101,11 +101,10 @@ pub struct Lowerer<'g> {
     pub errors: &'g mut Errors,
 }
 
-struct Scope<'a> {
+/// The names visible in one model function.
+struct Scope {
     role: Role,
     names: HashMap<String, Binding>,
-    /// Span of the function, for messages that concern it as a whole.
-    _function: &'a ModelFn<'a>,
 }
 
 impl Lowerer<'_> {
@@ -114,7 +113,6 @@ impl Lowerer<'_> {
         let mut scope = Scope {
             role: function.role,
             names: HashMap::new(),
-            _function: function,
         };
         self.bind_array(&mut scope, function.q.as_ref(), false);
         self.bind_array(&mut scope, function.v.as_ref(), true);
@@ -158,7 +156,7 @@ impl Lowerer<'_> {
         })
     }
 
-    fn bind_array(&mut self, scope: &mut Scope<'_>, arg: Option<&ArrayArg<'_>>, velocity: bool) {
+    fn bind_array(&mut self, scope: &mut Scope, arg: Option<&ArrayArg<'_>>, velocity: bool) {
         let Some(arg) = arg else { return };
         let ids: Vec<Id> = (0..arg.len.min(self.vars.n))
             .map(|i| {
@@ -183,7 +181,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn bind_name(&mut self, scope: &mut Scope<'_>, name: &syn::Ident, binding: Binding) {
+    fn bind_name(&mut self, scope: &mut Scope, name: &syn::Ident, binding: Binding) {
         if scope.names.insert(name.to_string(), binding).is_some() {
             self.errors.error_spanned_by(
                 name,
@@ -197,7 +195,7 @@ impl Lowerer<'_> {
         self.graph.depends_on_any(id, &|v| vars.is_state(v))
     }
 
-    fn lower(&mut self, scope: &Scope<'_>, expr: &Expr) -> Option<Id> {
+    fn lower(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
         match expr {
             Expr::Lit(lit) => match &lit.lit {
                 syn::Lit::Float(f) => f.base10_parse::<f64>().ok().map(|x| self.graph.num(x)),
@@ -304,7 +302,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn lower_path(&mut self, scope: &Scope<'_>, path: &syn::ExprPath) -> Option<Id> {
+    fn lower_path(&mut self, scope: &Scope, path: &syn::ExprPath) -> Option<Id> {
         if let Some(ident) = path.path.get_ident() {
             let name = ident.to_string();
             match scope.names.get(&name) {
@@ -340,7 +338,7 @@ impl Lowerer<'_> {
         Some(self.graph.var(var))
     }
 
-    fn lower_index(&mut self, scope: &Scope<'_>, index: &syn::ExprIndex) -> Option<Id> {
+    fn lower_index(&mut self, scope: &Scope, index: &syn::ExprIndex) -> Option<Id> {
         let name = match &*index.expr {
             Expr::Path(p) => p.path.get_ident().map(|i| i.to_string()),
             _ => None,
@@ -380,7 +378,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn lower_method_call(&mut self, scope: &Scope<'_>, call: &syn::ExprMethodCall) -> Option<Id> {
+    fn lower_method_call(&mut self, scope: &Scope, call: &syn::ExprMethodCall) -> Option<Id> {
         if call.turbofish.is_some() {
             self.errors
                 .error_spanned_by(&call.turbofish, "type arguments are not supported here");
@@ -402,7 +400,7 @@ impl Lowerer<'_> {
     }
 
     /// `f64::sin(x)` is the same as `x.sin()`.
-    fn lower_function_call(&mut self, scope: &Scope<'_>, call: &syn::ExprCall) -> Option<Id> {
+    fn lower_function_call(&mut self, scope: &Scope, call: &syn::ExprCall) -> Option<Id> {
         if let Expr::Path(path) = &*call.func {
             let segments: Vec<_> = path.path.segments.iter().collect();
             if segments.len() == 2 && segments[0].ident == "f64" && !call.args.is_empty() {
@@ -428,7 +426,7 @@ impl Lowerer<'_> {
 
     fn apply_method(
         &mut self,
-        scope: &Scope<'_>,
+        scope: &Scope,
         method_ident: &syn::Ident,
         method: &str,
         receiver: Option<Id>,
@@ -483,7 +481,7 @@ impl Lowerer<'_> {
         None
     }
 
-    fn lower_opaque_call(&mut self, scope: &Scope<'_>, call: &syn::ExprMethodCall) -> Option<Id> {
+    fn lower_opaque_call(&mut self, scope: &Scope, call: &syn::ExprMethodCall) -> Option<Id> {
         let mut args = Vec::new();
         let mut ok = true;
         for arg in &call.args {
@@ -534,7 +532,7 @@ impl Lowerer<'_> {
         Some(self.graph.call(index as u32, args))
     }
 
-    fn lower_if(&mut self, scope: &Scope<'_>, if_expr: &syn::ExprIf) -> Option<Id> {
+    fn lower_if(&mut self, scope: &Scope, if_expr: &syn::ExprIf) -> Option<Id> {
         let cond = self.lower_cond(scope, &if_expr.cond);
         let then = self.lower_block_value(scope, &if_expr.then_branch);
         let otherwise = match &if_expr.else_branch {
@@ -561,7 +559,7 @@ impl Lowerer<'_> {
         Some(self.graph.select(cond, then?, otherwise?))
     }
 
-    fn lower_block_value(&mut self, scope: &Scope<'_>, block: &syn::Block) -> Option<Id> {
+    fn lower_block_value(&mut self, scope: &Scope, block: &syn::Block) -> Option<Id> {
         match block.stmts.as_slice() {
             [syn::Stmt::Expr(expr, None)] => self.lower(scope, expr),
             _ => {
@@ -574,7 +572,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn lower_cond(&mut self, scope: &Scope<'_>, expr: &Expr) -> Option<CondId> {
+    fn lower_cond(&mut self, scope: &Scope, expr: &Expr) -> Option<CondId> {
         match expr {
             Expr::Paren(p) => self.lower_cond(scope, &p.expr),
             Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
