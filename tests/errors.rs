@@ -275,11 +275,25 @@ fn options() -> impl Strategy<Value = Options> {
         wild(),
         0u32..6,
         any::<bool>(),
+        prop_oneof![
+            Just(MultiplierModel::Constant),
+            Just(MultiplierModel::Quadratic)
+        ],
     )
         .prop_map(
-            |(method, sensitivity, velocity_projection, tolerance, step, iterations, adaptive)| {
+            |(
+                method,
+                sensitivity,
+                velocity_projection,
+                tolerance,
+                step,
+                iterations,
+                adaptive,
+                multipliers,
+            )| {
                 Options {
                     method,
+                    multipliers,
                     step: if adaptive {
                         StepControl::Adaptive {
                             initial_step: step,
