@@ -85,8 +85,15 @@ impl Differentiator {
                 if g.is_zero(da) {
                     return Ok(g.zero());
                 }
-                let factor = g.num(n as f64);
-                let power = g.powi(a, n - 1);
+                let factor = g.num(f64::from(n));
+                // x^(n-1), written x^n / x where n - 1 would overflow (found by fuzzing).
+                let power = match n.checked_sub(1) {
+                    Some(m) => g.powi(a, m),
+                    None => {
+                        let full = g.powi(a, n);
+                        g.div(full, a)
+                    }
+                };
                 let scaled = g.mul(factor, power);
                 g.mul(scaled, da)
             }

@@ -302,3 +302,14 @@ fn opaque_calls_of_the_variable_are_refused() {
     let derivative = Differentiator::new(0).derive(&mut g, call).unwrap();
     assert!(g.is_zero(derivative));
 }
+
+#[test]
+fn the_derivative_of_the_most_negative_power_does_not_overflow() {
+    let mut g = Graph::new();
+    let x = g.var(0);
+    let inner = g.powi(x, -65536);
+    let outer = g.powi(inner, 32768); // x^(i32::MIN)
+    let derivative = Differentiator::new(0).derive(&mut g, outer).unwrap();
+    let value = Evaluator::new(&g, |_| 1.0, |_, _: &[f64]| 0.0).eval(derivative);
+    assert_eq!(value, f64::from(i32::MIN));
+}
