@@ -525,7 +525,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             for j in 0..Z {
                 let mut unit = Vector::<Z>::zeros();
                 unit[j] = 1.0;
-                let (hessian, _) = self.system_constraint_hessian(&end.q, &end.v, t_end, &unit)?;
+                let (hessian, _) = self
+                    .model
+                    .constraint_force_jacobians(&end.q, &end.v, t_end, &unit)?;
                 rate_jacobian.set_row(j, &(hessian * end.v).transpose());
             }
             let blocks: [[Matrix<Z, Z>; 2]; 2] = core::array::from_fn(|row| {
@@ -569,16 +571,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             shrink: 0.25,
             cause: self.newton_failure(h, options.max_newton_iterations, worst),
         })
-    }
-
-    fn system_constraint_hessian(
-        &mut self,
-        q: &Vector<N>,
-        v: &Vector<N>,
-        t: f64,
-        direction: &Vector<Z>,
-    ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
-        self.model.constraint_force_jacobians(q, v, t, direction)
     }
 
     fn conclude_quadratic(
