@@ -122,7 +122,6 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     /// `pending_polynomial` holds those of the attempt being concluded.
     last_polynomial: Option<([Vector<Z>; 2], f64)>,
     pending_polynomial: Option<([Vector<Z>; 2], f64)>,
-    last_step_size: f64,
     /// The multipliers from the acceleration-level system at the current time.
     consistent_lambda: Vector<Z>,
     /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
@@ -189,7 +188,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             previous_multipliers: None,
             last_polynomial: None,
             pending_polynomial: None,
-            last_step_size: 0.0,
             consistent_lambda: point.lambda,
             jacobian_row_scale,
             last: report,
@@ -399,9 +397,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if options.extrapolate_multipliers {
             // p is a mean of λ over its step: extrapolate linearly between step midpoints.
             if let Some((previous, previous_h)) = self.previous_multipliers {
-                let span = 0.5 * (previous_h + self.last_step_size);
+                let last_h = self.last.end.t - self.last.start.t;
+                let span = 0.5 * (previous_h + last_h);
                 if span > 0.0 {
-                    p += (self.p - previous) * (0.5 * (self.last_step_size + h) / span);
+                    p += (self.p - previous) * (0.5 * (last_h + h) / span);
                 }
             }
         }
@@ -790,11 +789,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         } else {
             end.v
         };
-        let h = t_end - self.last.end.t;
+        // The step being replaced as `last` becomes the one before.
+        let last_h = self.last.end.t - self.last.start.t;
         self.last_polynomial = self.pending_polynomial.take();
-        self.previous_multipliers =
-            (self.last_step_size > 0.0).then_some((self.p, self.last_step_size));
-        self.last_step_size = h;
+        self.previous_multipliers = (last_h > 0.0).then_some((self.p, last_h));
         self.p = p;
         self.last = report;
         self.statistics.steps += 1;
