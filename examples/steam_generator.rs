@@ -18,7 +18,7 @@ use figure::{write_panels, Panel};
 use scenes::steam_generator::SteamGenerator;
 use zeitner::{
     ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
-    Vector, VelocityProjection,
+    StopReason, Vector, VelocityProjection,
 };
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -172,8 +172,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let progress = indicatif::ProgressBar::new(1000).with_message("integrating");
     // Stop at the kink of the load's ramp, then run to the end.
     for stop in [scene.rise.min(end_time), end_time] {
-        while sim.time() < stop {
-            let report = *sim.step_until(stop)?;
+        if stop <= sim.time() {
+            continue;
+        }
+        sim.set_stop_time(stop)?;
+        loop {
+            let reason = sim.step()?;
+            let report = *sim.last();
             newton.push(report.newton_iterations);
             max_g1 = max_g1.max(report.residual[0].abs());
             max_g2 = max_g2.max(report.residual[1].abs());
@@ -193,6 +198,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 next_output += 1;
             }
             progress.set_position((1000.0 * report.end.t / end_time) as u64);
+            if reason == StopReason::StopTimeReached {
+                break;
+            }
         }
     }
     progress.finish_and_clear();

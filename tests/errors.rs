@@ -19,6 +19,16 @@ const PENDULUM: Pendulum = Pendulum {
     g: 9.81,
 };
 
+fn adaptive(initial_step: f64, min_step: f64, max_step: f64, rtol: f64, atol: f64) -> StepControl {
+    StepControl::Adaptive {
+        initial_step,
+        min_step,
+        max_step,
+        rtol,
+        atol,
+    }
+}
+
 #[test]
 fn absurd_options_are_refused() {
     let (q, v) = released();
@@ -28,14 +38,14 @@ fn absurd_options_are_refused() {
                 constraint_tolerance: 0.0,
                 ..Options::default()
             },
-            InvalidOption::Tolerance,
+            InvalidOption::ConstraintTolerance,
         ),
         (
             Options {
                 constraint_tolerance: f64::NAN,
                 ..Options::default()
             },
-            InvalidOption::Tolerance,
+            InvalidOption::ConstraintTolerance,
         ),
         (Options::paper(-1e-3), InvalidOption::StepSize),
         (Options::paper(f64::INFINITY), InvalidOption::StepSize),
@@ -51,6 +61,22 @@ fn absurd_options_are_refused() {
                 method: InnerMethod::Rk4 { substeps: 0 },
                 ..Options::paper(1e-3)
             },
+            InvalidOption::Substeps,
+        ),
+        (
+            // One step would integrate four billion substeps.
+            Options {
+                method: InnerMethod::Rk4 { substeps: u32::MAX },
+                ..Options::paper(1e-3)
+            },
+            InvalidOption::Substeps,
+        ),
+        (
+            Options {
+                max_newton_iterations: u32::MAX,
+                constraint_tolerance: 1e-300,
+                ..Options::default()
+            },
             InvalidOption::IterationLimit,
         ),
         (
@@ -61,12 +87,20 @@ fn absurd_options_are_refused() {
             InvalidOption::AdaptiveNeedsErrorEstimate,
         ),
         (
+            // A coordinate that stays at zero would have no error scale: the step is never
+            // rejected and grows without bound.
             Options {
-                method: InnerMethod::Sdirk2,
-                multipliers: MultiplierModel::Quadratic,
-                ..Options::paper(1e-3)
+                step: adaptive(1e-3, 0.0, 1.0, 1e-10, 0.0),
+                ..Options::default()
             },
-            InvalidOption::PolynomialMultipliersNeedExplicitMethod,
+            InvalidOption::ErrorTolerances,
+        ),
+        (
+            Options {
+                step: adaptive(0.1, 0.0, 0.01, 1e-8, 1e-10),
+                ..Options::default()
+            },
+            InvalidOption::StepSize,
         ),
     ];
     for (options, expected) in cases {
@@ -218,7 +252,7 @@ fn a_failed_step_keeps_the_last_accepted_state_and_the_run_can_go_on() {
     };
     let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
     let before = *sim.last();
-    let error = sim.step_until(1.0).err();
+    let error = sim.step().err();
     assert!(
         matches!(error, Some(StepError::NewtonDidNotConverge { .. })),
         "{error:?}"
@@ -239,7 +273,7 @@ fn end_times_in_the_past_are_refused() {
         Err(StepError::InvalidOption(InvalidOption::EndTime))
     );
     assert_eq!(
-        sim.step_until(f64::NAN).err(),
+        sim.set_stop_time(f64::NAN).err(),
         Some(StepError::InvalidOption(InvalidOption::EndTime))
     );
 }
@@ -335,10 +369,13 @@ proptest! {
         let q = Vector::<2>::new(state[0], state[1]);
         let v = Vector::<2>::new(state[2], state[3]);
         if let Ok(mut sim) = Simulator::new(&scene, q, v, 0.0, options) {
+            if sim.set_stop_time(t_end).is_err() {
+                return Ok(());
+            }
             for _ in 0..3 {
-                match sim.step_until(t_end) {
-                    Ok(report) => {
-                        let end = report.end;
+                match sim.step() {
+                    Ok(_) => {
+                        let end = sim.last().end;
                         prop_assert!(end.q.iter().chain(end.v.iter()).chain(end.lambda.iter()).all(|x| x.is_finite()));
                         prop_assert!(end.t.is_finite());
                     }

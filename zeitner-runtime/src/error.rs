@@ -1,9 +1,13 @@
-//! Typed failures. After any of them the simulator still holds its last accepted state.
+//! Typed failures. After any of them the simulator still holds its last accepted state. Each
+//! `Display` is a sentence that says what happened and what to change.
 
 use core::fmt;
 
+use crate::options::MultiplierModel;
+
 /// The model function (or the state) in which a non-finite value appeared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ModelFunction {
     MassMatrix,
     AppliedForce,
@@ -15,50 +19,100 @@ pub enum ModelFunction {
     ForceJacobians,
     ConstraintForceJacobians,
     MassJacobianProduct,
-    /// The state handed to the simulator, or one the integration produced.
+    /// The state handed to the simulator, or one the integration produced (positions,
+    /// velocities, accelerations, multipliers or constraint forces).
     State,
 }
 
+impl fmt::Display for ModelFunction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ModelFunction::MassMatrix => "the mass matrix (`mass`)",
+            ModelFunction::AppliedForce => "the applied force (`force`)",
+            ModelFunction::ConstraintResidual => "the constraints",
+            ModelFunction::ConstraintJacobian => "the constraint Jacobian G",
+            ModelFunction::ConstraintPositionPartials => "∂g/∂q of the velocity constraints",
+            ModelFunction::ConstraintRate => "the velocity-level constraints",
+            ModelFunction::ConstraintAccelerationBias => "the acceleration-level constraint bias",
+            ModelFunction::ForceJacobians => "the force Jacobians ∂F/∂q, ∂F/∂q'",
+            ModelFunction::ConstraintForceJacobians => "the constraint-force Jacobians",
+            ModelFunction::MassJacobianProduct => "the mass matrix's derivative ∂(M a)/∂q",
+            ModelFunction::State => "the state",
+        })
+    }
+}
+
+/// Whether a constraint row is position-level (`g(q, t)`) or velocity-level (`g(q, q', t)`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ConstraintKind {
+    Position,
+    Velocity,
+}
+
+/// How many rows a [`RowSet`] names one by one; the rest are counted.
+const LISTED_ROWS: usize = 16;
+
 /// A set of constraint rows, shown as the user wrote them: `constraints[j]` for position rows,
-/// `velocity_constraints[j]` for velocity rows. Rows beyond 128 are not tracked.
+/// `velocity_constraints[j]` for velocity rows. The first 16 rows inserted are named; beyond
+/// them the set counts the rows and says how many more there are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct RowSet {
-    bits: u128,
+    listed: [u32; LISTED_ROWS],
+    count: usize,
     position_rows: usize,
 }
 
 impl RowSet {
     pub fn new(position_rows: usize) -> Self {
         RowSet {
-            bits: 0,
+            listed: [0; LISTED_ROWS],
+            count: 0,
             position_rows,
         }
     }
 
+    /// Adds a row (once; inserting a named row again changes nothing).
     pub fn insert(&mut self, row: usize) {
-        if row < 128 {
-            self.bits |= 1 << row;
+        if self.contains(row) {
+            return;
         }
+        if self.count < LISTED_ROWS {
+            self.listed[self.count] = row as u32;
+        }
+        self.count += 1;
     }
 
+    /// Whether `row` is among the named rows.
     pub fn contains(&self, row: usize) -> bool {
-        row < 128 && self.bits & (1 << row) != 0
+        self.iter().any(|r| r == row)
     }
 
     pub fn is_empty(&self) -> bool {
-        self.bits == 0
+        self.count == 0
     }
 
+    /// How many rows the set holds, named or not.
     pub fn len(&self) -> usize {
-        self.bits.count_ones() as usize
+        self.count
     }
 
+    /// Whether every row is named.
+    pub fn is_complete(&self) -> bool {
+        self.count <= LISTED_ROWS
+    }
+
+    /// The named rows, in the order they were inserted.
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        (0..128).filter(|&r| self.contains(r))
+        self.listed[..self.count.min(LISTED_ROWS)]
+            .iter()
+            .map(|&r| r as usize)
     }
 
-    pub(crate) fn position_rows(&self) -> usize {
-        self.position_rows
+    fn row(&self, index: usize) -> Row {
+        Row {
+            index,
+            position_rows: self.position_rows,
+        }
     }
 }
 
@@ -74,11 +128,8 @@ impl fmt::Display for Row {
         if self.index < self.position_rows {
             write!(f, "constraints[{}]", self.index)
         } else {
-            write!(
-                f,
-                "velocity_constraints[{}]",
-                self.index - self.position_rows
-            )
+            let index = self.index - self.position_rows;
+            write!(f, "velocity_constraints[{index}]")
         }
     }
 }
@@ -89,36 +140,97 @@ impl fmt::Display for RowSet {
             if k > 0 {
                 f.write_str(", ")?;
             }
-            Row {
-                index,
-                position_rows: self.position_rows(),
-            }
-            .fmt(f)?;
+            self.row(index).fmt(f)?;
+        }
+        if !self.is_complete() {
+            write!(f, " and {} more rows", self.count - LISTED_ROWS)?;
         }
         Ok(())
     }
 }
 
-/// Why options were refused.
+/// Why options or arguments were refused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum InvalidOption {
-    /// A tolerance that is not finite and positive.
-    Tolerance,
-    /// A step size that is not finite and positive, or a minimum above the maximum.
+    /// `constraint_tolerance` is not finite and positive.
+    ConstraintTolerance,
+    /// `rtol` or `atol` is not finite and positive.
+    ErrorTolerances,
+    /// A step size that is not finite and positive, or bounds out of order.
     StepSize,
-    /// Zero Newton iterations or zero substeps.
+    /// `max_newton_iterations` outside 1 to 1000.
     IterationLimit,
-    /// An end time before the current time, or not finite.
+    /// RK4 substeps outside 1 to 10 000.
+    Substeps,
+    /// A controller constant out of its range.
+    Controller,
+    /// A stop or end time that is not finite or not ahead of the current time.
     EndTime,
+    /// A sampling time that is not finite or not within the last step.
+    SampleTime,
+    /// Given initial multipliers that are not finite.
+    InitialMultipliers,
     /// Adaptive steps need an error estimate: only `DormandPrince54` has one.
     AdaptiveNeedsErrorEstimate,
-    /// Multipliers varying over the step work with the explicit inner methods only, and with
-    /// position-level constraints only.
-    PolynomialMultipliersNeedExplicitMethod,
+    /// The multiplier model cannot enforce constraints of this kind.
+    UnsupportedConstraints {
+        multipliers: MultiplierModel,
+        kind: ConstraintKind,
+    },
+}
+
+impl fmt::Display for InvalidOption {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            InvalidOption::ConstraintTolerance => f.write_str(
+                "`constraint_tolerance` must be finite and positive, in the constraints' units (default 1e-10)",
+            ),
+            InvalidOption::ErrorTolerances => f.write_str(
+                "`rtol` and `atol` of adaptive steps must be finite and positive (defaults 1e-8 and 1e-10): \
+                 with `atol = 0` a coordinate that stays at zero has no error scale",
+            ),
+            InvalidOption::StepSize => f.write_str(
+                "step sizes must be finite and positive, with `min_step <= initial_step <= max_step`",
+            ),
+            InvalidOption::IterationLimit => {
+                f.write_str("`max_newton_iterations` must be between 1 and 1000 (default 12)")
+            }
+            InvalidOption::Substeps => f.write_str("RK4 `substeps` must be between 1 and 10 000"),
+            InvalidOption::Controller => f.write_str(
+                "a `ControllerSettings` value is out of range: factors positive with min < 1 < max, \
+                 `safety` at most 1, `beta_times_order` in 0..=0.5, `landing_fraction` in 0..=0.5",
+            ),
+            InvalidOption::EndTime => {
+                f.write_str("the end or stop time must be finite and not before the current time")
+            }
+            InvalidOption::SampleTime => f.write_str(
+                "dense output is available only within the last accepted step: sample at a finite \
+                 time between `last().start.t` and `last().end.t`",
+            ),
+            InvalidOption::InitialMultipliers => {
+                f.write_str("the given initial multipliers must be finite")
+            }
+            InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
+                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, or \
+                 `StepControl::Fixed` with this method",
+            ),
+            InvalidOption::UnsupportedConstraints { multipliers, kind } => write!(
+                f,
+                "`MultiplierModel::{multipliers:?}` cannot enforce {} constraints: use \
+                 `MultiplierModel::Constant` for this scene",
+                match kind {
+                    ConstraintKind::Position => "position-level",
+                    ConstraintKind::Velocity => "velocity-level",
+                }
+            ),
+        }
+    }
 }
 
 /// Why a step, or the consistent start, failed.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum StepError {
     /// Newton on the multipliers did not bring `|g(t+τ)|` within tolerance.
     NewtonDidNotConverge {
@@ -136,47 +248,77 @@ pub enum StepError {
     NonFinite { t: f64, function: ModelFunction },
     /// The implicit inner method's stage equations did not converge.
     StageDidNotConverge { t: f64, step: f64 },
-    /// Adaptive stepping needed a step below the minimum.
+    /// Adaptive stepping needed a step below the minimum, or one that no longer moves the time.
     StepSizeTooSmall { t: f64, step: f64 },
-    /// The start could not be made consistent: this row stays violated.
+    /// The start is off the constraints and could not be projected, or the options refuse an
+    /// inconsistent start: this row stays violated.
     InconsistentStart { worst_row: Row, residual: f64 },
     /// Options or arguments were refused before anything was computed.
     InvalidOption(InvalidOption),
 }
 
-impl fmt::Display for StepError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            StepError::NewtonDidNotConverge { t, step, iterations, residual, worst_row } => write!(
-                f,
-                "Newton on the multipliers did not converge at t = {t} with step {step}: after {iterations} \
-                 iterations {worst_row} is still violated by {residual:e}"
-            ),
-            StepError::RankDeficientConstraints { t, dependent_rows } => write!(
-                f,
-                "the constraint Jacobian is rank-deficient at t = {t}: {dependent_rows} depend on the others \
-                 (redundant constraints or a singular configuration)"
-            ),
-            StepError::MassNotPositiveDefinite { t } => {
-                write!(f, "the mass matrix is not positive definite at t = {t}")
-            }
-            StepError::NonFinite { t, function } => {
-                write!(f, "non-finite value from {function:?} at t = {t}")
-            }
-            StepError::StageDidNotConverge { t, step } => {
-                write!(f, "the implicit stage equations did not converge at t = {t} with step {step}")
-            }
-            StepError::StepSizeTooSmall { t, step } => {
-                write!(f, "the step size fell to {step:e} at t = {t}, below the minimum")
-            }
-            StepError::InconsistentStart { worst_row, residual } => write!(
-                f,
-                "the initial state could not be made consistent: {worst_row} stays violated by {residual:e}"
-            ),
-            StepError::InvalidOption(option) => write!(f, "invalid option: {option:?}"),
+impl StepError {
+    pub(crate) fn non_finite_state(t: f64) -> Self {
+        StepError::NonFinite {
+            t,
+            function: ModelFunction::State,
         }
     }
 }
 
-#[cfg(feature = "std")]
-impl std::error::Error for StepError {}
+impl fmt::Display for StepError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            StepError::NewtonDidNotConverge {
+                t,
+                step,
+                iterations,
+                residual,
+                worst_row,
+            } => write!(
+                f,
+                "Newton on the multipliers did not converge at t = {t} with step {step:e}: after \
+                 {iterations} integrations {worst_row} is still violated by {residual:e}; use a \
+                 smaller or adaptive step, more `max_newton_iterations`, or a larger \
+                 `constraint_tolerance`"
+            ),
+            StepError::RankDeficientConstraints { t, dependent_rows } => write!(
+                f,
+                "the constraint Jacobian is rank-deficient at t = {t}: {dependent_rows} depend on \
+                 the others; remove redundant constraints, or avoid the singular configuration"
+            ),
+            StepError::MassNotPositiveDefinite { t } => write!(
+                f,
+                "the mass matrix is not positive definite at t = {t}: check that every mass and \
+                 inertia is positive"
+            ),
+            StepError::NonFinite { t, function } => write!(
+                f,
+                "{function} became NaN or infinite at t = {t}: check the model's parameters and \
+                 the state, or use a smaller step"
+            ),
+            StepError::StageDidNotConverge { t, step } => write!(
+                f,
+                "the implicit stage equations did not converge at t = {t} with step {step:e}: use \
+                 a smaller step"
+            ),
+            StepError::StepSizeTooSmall { t, step } => write!(
+                f,
+                "the step size fell to {step:e} at t = {t}, below `min_step` or below what moves \
+                 the time: loosen `rtol`/`atol`, or look for a singularity or discontinuity there"
+            ),
+            StepError::InconsistentStart {
+                worst_row,
+                residual,
+            } => write!(
+                f,
+                "the initial state violates {worst_row} by {residual:e}: it could not be projected \
+                 onto the constraints (or `StartPolicy::Refuse` forbids it); give a state on or \
+                 nearer the constraints"
+            ),
+            StepError::InvalidOption(option) => write!(f, "invalid option: {option}"),
+        }
+    }
+}
+
+impl core::error::Error for StepError {}

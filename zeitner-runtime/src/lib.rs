@@ -1,38 +1,55 @@
 //! The runtime of Zeitner: integrates constrained mechanical systems
 //! `M(q,t) q'' = F(q, q', t) - Gᵀλ`, `g(q, q', t) = 0` by W. Zeitner's method — the multipliers
-//! held constant over each step, corrected by Newton until the constraints hold at the step end.
+//! prescribed over each step (held constant, as in the paper, or quadratic in time) and
+//! corrected by Newton until the constraints hold at the step end.
 //!
 //! `no_std`, no heap: every size is a const generic of [`ConstrainedSystem`], which
-//! `#[constrained_system]` implements from plain Rust expressions.
+//! `#[constrained_system]` implements from plain Rust expressions. Vectors of any size are
+//! built from arrays or slices: `Vector::<7>::from([0.0; 7])`,
+//! `Vector::<7>::from_column_slice(&q)` (nalgebra's `new(..)` stops at six entries).
 //!
-//! Layers: [`system`] (the trait) → [`mass`] (factorisations) → `model` (checked, counted
-//! evaluations) → `inner` (one-step methods with frozen multipliers) → [`simulator`] (Newton on
-//! the multipliers, step control, dense output).
+//! The parts of a step, one job each:
+//! - [`system`]: the trait the macro implements; `model`: checked, counted evaluations;
+//! - [`consistency`]: states on the constraints and their multipliers (start, step ends,
+//!   dense output, [`Simulator::reinitialise`]);
+//! - `multipliers`: the multipliers over a step, their predictor, and the one Newton on their
+//!   coefficients for every multiplier model;
+//! - `method`: inner one-step methods with their own workspace (explicit tableaux as data);
+//! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller;
+//! - [`output`]: points, step reports, dense output, stop reasons, the observer's view;
+//! - [`simulator`]: puts them in order.
 
 #![no_std]
 // `!(x > y)` is how this crate rejects NaN along with the too-small values: on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-#[cfg(feature = "std")]
-extern crate std;
-
+pub mod consistency;
+pub mod control;
 pub mod error;
-mod inner;
 mod linalg;
 pub mod mass;
 pub mod math;
+mod method;
 mod model;
+mod multipliers;
 pub mod options;
+pub mod output;
 pub mod simulator;
 pub mod system;
+#[cfg(test)]
+mod testing;
 
-pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
+pub use consistency::StartReport;
+pub use control::ControllerSettings;
+pub use error::{ConstraintKind, InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
 pub use options::{
-    InnerMethod, MultiplierModel, Options, Sensitivity, StepControl, VelocityProjection,
+    InnerMethod, MultiplierModel, Options, Sensitivity, StartPolicy, StepControl,
+    VelocityProjection,
 };
-pub use simulator::{Point, Simulator, Statistics, StepReport};
+pub use output::{Observation, Point, StepReport, StopReason};
+pub use simulator::{Simulator, Statistics};
 pub use system::{
     BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,
     Vector,

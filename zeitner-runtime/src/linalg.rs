@@ -130,13 +130,6 @@ impl<const N: usize> Lu<N> {
     }
 }
 
-/// Solves the general `a x = b`; `None` when `a` is numerically singular or the result is not
-/// finite.
-pub fn solve_general<const Z: usize>(a: &Matrix<Z, Z>, b: &Vector<Z>) -> Option<Vector<Z>> {
-    let x = Lu::new(*a)?.solve(b);
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
 /// Replaces the rows and columns from `from` on by the identity, so that a system over all `Z`
 /// constraints acts on the first `from` only.
 pub fn keep_leading_rows<const Z: usize>(a: &mut Matrix<Z, Z>, rhs: &mut Vector<Z>, from: usize) {
@@ -159,19 +152,40 @@ pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
     })
 }
 
-/// Solves `[[A, B], [C, D]] [x; y] = [r; s]` for `Z`×`Z` blocks by the Schur complement of `A`;
-/// `None` when `A` or the complement is singular.
-pub fn solve_block_2x2<const Z: usize>(
-    blocks: &[[Matrix<Z, Z>; 2]; 2],
-    r: &Vector<Z>,
-    s: &Vector<Z>,
-) -> Option<[Vector<Z>; 2]> {
-    let [[a, b], [c, d]] = blocks;
-    let a_lu = Lu::new(*a)?;
-    let a_inv_b = a_lu.solve(b);
-    let a_inv_r = a_lu.solve(r);
-    let schur = d - c * a_inv_b;
-    let y = Lu::new(schur)?.solve(&(s - c * a_inv_r));
-    let x = a_inv_r - a_inv_b * y;
-    (x.iter().chain(y.iter()).all(|v| v.is_finite())).then_some([x, y])
+/// Solves the block system `Σ_k A[l][k] x_k = r_l` (`K`×`K` blocks of `Z`×`Z`) by block Gaussian
+/// elimination, each diagonal block by LU with partial pivoting; `None` when a pivot block is
+/// singular or the result is not finite. One block is a plain LU solve; two are the Schur
+/// complement of the first.
+pub fn solve_blocks<const Z: usize, const K: usize>(
+    blocks: &[[Matrix<Z, Z>; K]; K],
+    rhs: &[Vector<Z>; K],
+) -> Option<[Vector<Z>; K]> {
+    let mut a = *blocks;
+    let mut b = *rhs;
+    for p in 0..K {
+        // Normalise row p by its diagonal block, then eliminate it from the rows below.
+        let lu = Lu::new(a[p][p])?;
+        for j in p + 1..K {
+            a[p][j] = lu.solve(&a[p][j]);
+        }
+        b[p] = lu.solve(&b[p]);
+        for i in p + 1..K {
+            let factor = a[i][p];
+            for j in p + 1..K {
+                let update = factor * a[p][j];
+                a[i][j] -= update;
+            }
+            let update = factor * b[p];
+            b[i] -= update;
+        }
+    }
+    for p in (0..K).rev() {
+        for j in p + 1..K {
+            let update = a[p][j] * b[j];
+            b[p] -= update;
+        }
+    }
+    b.iter()
+        .all(|x| x.iter().all(|v| v.is_finite()))
+        .then_some(b)
 }

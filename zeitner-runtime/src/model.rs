@@ -5,14 +5,30 @@ use crate::error::{ModelFunction, StepError};
 use crate::mass::{MassFactor, MassMatrix};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
-/// Evaluation counts.
+/// How often each model function was called.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Evaluations {
+    /// `F(q, q', t)`.
     pub forces: u64,
+    /// `g(q, q', t)`.
     pub constraint_residuals: u64,
+    /// `G`.
     pub constraint_jacobians: u64,
-    /// Evaluations of `∂F/∂q, ∂F/∂q'` together with the constraint-force and mass derivatives.
-    pub dynamics_jacobians: u64,
+    /// `∂g/∂q` of velocity-level rows.
+    pub constraint_position_partials: u64,
+    /// `w`, the velocity-level form of the constraints.
+    pub constraint_rates: u64,
+    /// `b` in `G q'' + b = 0`.
+    pub acceleration_biases: u64,
+    /// `∂F/∂q, ∂F/∂q'`.
+    pub force_jacobians: u64,
+    /// `∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q'` for one `λ` (the Newton on quadratic multipliers asks for one per
+    /// constraint row).
+    pub constraint_force_jacobians: u64,
+    /// `∂(M a)/∂q` of a configuration-dependent mass.
+    pub mass_jacobian_products: u64,
+    /// Factorisations of `M`.
     pub mass_factorizations: u64,
 }
 
@@ -26,11 +42,26 @@ pub(crate) struct Acceleration<F, const N: usize, const Z: usize> {
     pub jacobian: Matrix<Z, N>,
 }
 
-/// `∂a/∂q`, `∂a/∂q'`, `∂a/∂p` of `a = M⁻¹(F - Gᵀp)`.
+/// `∂a/∂q`, `∂a/∂q'`, `∂a/∂λ` of `a = M⁻¹(F - Gᵀλ)`.
 pub(crate) struct AccelerationJacobians<const N: usize, const Z: usize> {
     pub dq: Matrix<N, N>,
     pub dv: Matrix<N, N>,
     pub dp: Matrix<N, Z>,
+}
+
+/// The directions in which the multipliers act at a point: `G`, `M⁻¹Gᵀ`, and the factor of `M`.
+/// Everything that projects, solves for multipliers or estimates their effect starts here.
+pub(crate) struct ConstraintDirections<F, const N: usize, const Z: usize> {
+    pub factor: F,
+    pub jacobian: Matrix<Z, N>,
+    pub m_inv_gt: Matrix<N, Z>,
+}
+
+impl<F, const N: usize, const Z: usize> ConstraintDirections<F, N, Z> {
+    /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite.
+    pub fn gram(&self) -> Matrix<Z, Z> {
+        self.jacobian * self.m_inv_gt
+    }
 }
 
 pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
@@ -95,11 +126,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     pub fn force(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<N>, StepError> {
         self.evaluations.forces += 1;
-        finite(
-            self.system.applied_force(q, v, t),
-            t,
-            ModelFunction::AppliedForce,
-        )
+        let force = self.system.applied_force(q, v, t);
+        finite(force, t, ModelFunction::AppliedForce)
     }
 
     pub fn residual(
@@ -109,11 +137,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
     ) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_residuals += 1;
-        finite(
-            self.system.constraint_residual(q, v, t),
-            t,
-            ModelFunction::ConstraintResidual,
-        )
+        let g = self.system.constraint_residual(q, v, t);
+        finite(g, t, ModelFunction::ConstraintResidual)
     }
 
     pub fn jacobian(
@@ -123,11 +148,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
     ) -> Result<Matrix<Z, N>, StepError> {
         self.evaluations.constraint_jacobians += 1;
-        finite(
-            self.system.constraint_jacobian(q, v, t),
-            t,
-            ModelFunction::ConstraintJacobian,
-        )
+        let g = self.system.constraint_jacobian(q, v, t);
+        finite(g, t, ModelFunction::ConstraintJacobian)
     }
 
     /// `(∂g/∂q, ∂g/∂q')` of all rows, for the Newton linearisation at the step end.
@@ -142,6 +164,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         if r == Z {
             return Ok((g, Matrix::zeros()));
         }
+        self.evaluations.constraint_position_partials += 1;
         let position = finite(
             self.system.constraint_position_partials(q, v, t),
             t,
@@ -153,19 +176,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     pub fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
-        finite(
-            self.system.constraint_rate(q, v, t),
-            t,
-            ModelFunction::ConstraintRate,
-        )
+        self.evaluations.constraint_rates += 1;
+        let w = self.system.constraint_rate(q, v, t);
+        finite(w, t, ModelFunction::ConstraintRate)
     }
 
     pub fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
-        finite(
-            self.system.constraint_acceleration_bias(q, v, t),
-            t,
-            ModelFunction::ConstraintAccelerationBias,
-        )
+        self.evaluations.acceleration_biases += 1;
+        let b = self.system.constraint_acceleration_bias(q, v, t);
+        finite(b, t, ModelFunction::ConstraintAccelerationBias)
     }
 
     /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
@@ -176,25 +195,41 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
         lambda: &Vector<Z>,
     ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
+        self.evaluations.constraint_force_jacobians += 1;
         let (dq, dv) = self.system.constraint_force_jacobians(q, v, t, lambda);
-        Ok((
-            finite(dq, t, ModelFunction::ConstraintForceJacobians)?,
-            finite(dv, t, ModelFunction::ConstraintForceJacobians)?,
-        ))
+        let function = ModelFunction::ConstraintForceJacobians;
+        Ok((finite(dq, t, function)?, finite(dv, t, function)?))
     }
 
-    /// `a = M⁻¹(F - Gᵀp)` with `p` fixed.
+    /// `G`, `M⁻¹Gᵀ` and the mass factor at a point.
+    pub fn directions(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> Result<ConstraintDirections<FactorOf<S, N, Z>, N, Z>, StepError> {
+        let factor = self.mass_factor(q, t)?;
+        let jacobian = self.jacobian(q, v, t)?;
+        let m_inv_gt = factor.solve(&jacobian.transpose());
+        Ok(ConstraintDirections {
+            factor,
+            jacobian,
+            m_inv_gt,
+        })
+    }
+
+    /// `a = M⁻¹(F - Gᵀλ)` with `λ` fixed.
     pub fn acceleration(
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
         t: f64,
-        p: &Vector<Z>,
+        lambda: &Vector<Z>,
     ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
         let factor = self.mass_factor(q, t)?;
         let force = self.force(q, v, t)?;
         let jacobian = self.jacobian(q, v, t)?;
-        let a = factor.solve(&(force - jacobian.tr_mul(p)));
+        let a = factor.solve(&(force - jacobian.tr_mul(lambda)));
         Ok(Acceleration {
             a: finite(a, t, ModelFunction::State)?,
             factor,
@@ -202,21 +237,21 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         })
     }
 
-    /// The derivatives of `a = M⁻¹(F - Gᵀp)` at a point whose acceleration is known.
+    /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known.
     pub fn acceleration_jacobians(
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
         t: f64,
-        p: &Vector<Z>,
+        lambda: &Vector<Z>,
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
     ) -> Result<AccelerationJacobians<N, Z>, StepError> {
-        self.evaluations.dynamics_jacobians += 1;
+        self.evaluations.force_jacobians += 1;
         let (force_dq, force_dv) = self.system.force_jacobians(q, v, t);
-        let (reaction_dq, reaction_dv) = self.system.constraint_force_jacobians(q, v, t, p);
-        let mut dq = finite(force_dq, t, ModelFunction::ForceJacobians)?
-            - finite(reaction_dq, t, ModelFunction::ConstraintForceJacobians)?;
+        let (reaction_dq, reaction_dv) = self.constraint_force_jacobians(q, v, t, lambda)?;
+        let mut dq = finite(force_dq, t, ModelFunction::ForceJacobians)? - reaction_dq;
         if !S::MASS_IS_CONSTANT {
+            self.evaluations.mass_jacobian_products += 1;
             dq -= finite(
                 self.system.mass_jacobian_product(q, t, &at.a),
                 t,
@@ -224,8 +259,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             )?;
         }
         let dv = if S::DYNAMICS_DEPEND_ON_VELOCITY {
-            let dv = finite(force_dv, t, ModelFunction::ForceJacobians)?
-                - finite(reaction_dv, t, ModelFunction::ConstraintForceJacobians)?;
+            let dv = finite(force_dv, t, ModelFunction::ForceJacobians)? - reaction_dv;
             at.factor.solve(&dv)
         } else {
             Matrix::zeros()

@@ -1,40 +1,50 @@
-//! Plain-data options, in the model's own units.
+//! Plain-data options, in the model's own units. Every field has a documented default
+//! ([`Options::default`]); [`Options::validate`] refuses what cannot work before anything runs.
 
-use crate::error::{InvalidOption, StepError};
+use crate::control::ControllerSettings;
+use crate::error::{ConstraintKind, InvalidOption, StepError};
 
-/// The one-step method that integrates `M q'' = F - Gᵀp` with the multipliers `p` held fixed.
+/// The one-step method that integrates `M q'' = F - Gᵀλ(t)` with the multipliers prescribed over
+/// the step.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum InnerMethod {
-    /// Classical Runge–Kutta, order 4, with `substeps` equal substeps per step.
+    /// Classical Runge–Kutta, order 4, with `substeps` equal substeps per step (1 to 10 000). No
+    /// error estimate: fixed steps only.
     Rk4 { substeps: u32 },
     /// Dormand–Prince 5(4): order 5 with an embedded order-4 error estimate for adaptive steps.
+    /// The default.
     DormandPrince54,
-    /// Alexander's 2-stage SDIRK: order 2, L-stable, for stiff forces. Uses `∂F/∂q`, `∂F/∂q'`.
-    /// Needs the `implicit` feature.
+    /// Alexander's 2-stage SDIRK: order 2, L-stable, stiffly accurate, for stiff forces; fixed
+    /// steps. Uses `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
     Sdirk2,
 }
 
 /// How the change of the step-end state under a change of the multipliers is obtained.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Sensitivity {
     /// The paper's estimate (eq. 7): `Δq = -τ²/2 M⁻¹Gᵀ Δp`, `Δq' = -τ M⁻¹Gᵀ Δp`, with `M⁻¹Gᵀ`
-    /// frozen at the step start. Cheap per sweep, converges linearly.
+    /// frozen at the step start (for a coefficient of `s^m`: `τ²/((m+1)(m+2))` and `τ/(m+1)`).
+    /// Cheap per sweep, converges linearly. The default without `exact-sensitivity`.
     Paper,
     /// The exact derivative of the inner method's step map, propagated through its stages.
     /// Costs Jacobians per stage, converges quadratically. Needs the `exact-sensitivity`
-    /// feature.
+    /// feature; the default with it.
     #[cfg(feature = "exact-sensitivity")]
     Exact,
 }
 
 /// What happens to the velocities at the step end.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum VelocityProjection {
-    /// Report the raw step-end velocities (the paper enforces positions only).
+    /// Report the raw step-end velocities and the step's multipliers (the paper).
     Off,
-    /// Project onto the velocity-level constraint for the report only; the integration goes on
-    /// from the raw velocities. Reported velocities and multipliers gain accuracy.
+    /// Project onto the velocity-level constraint for the report only, and report the
+    /// multipliers of the acceleration-level system; the integration goes on from the raw
+    /// velocities. The default.
     Output,
     /// Project and continue from the projected velocities, as RATTLE does for SHAKE.
     State,
@@ -42,22 +52,37 @@ pub enum VelocityProjection {
 
 /// How the multipliers vary over a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum MultiplierModel {
-    /// Held constant at `p` (Zeitner's method); Newton enforces the position-level constraints.
+    /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end. The
+    /// default.
     Constant,
     /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces the
-    /// position- and velocity-level constraints at the step end. Explicit inner methods and
-    /// position-level constraints only.
+    /// position- and velocity-level constraints at the step end (order 5 with Dormand–Prince).
+    /// Position-level constraints only.
     Quadratic,
 }
 
-/// How the step size is chosen.
+impl MultiplierModel {
+    /// Whether this model can enforce constraints of `kind`.
+    pub fn supports(self, kind: ConstraintKind) -> bool {
+        match self {
+            MultiplierModel::Constant => true,
+            MultiplierModel::Quadratic => kind == ConstraintKind::Position,
+        }
+    }
+}
+
+/// How the step size is chosen. Times in the model's time unit.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepControl {
-    /// Every step has this size (the last one is shortened to land on the end time).
+    /// Every step has this size (the last one is shortened to land on the stop time).
     Fixed { step: f64 },
     /// Steps chosen from the inner method's error estimate (`DormandPrince54` only) and from the
-    /// Newton iteration count.
+    /// Newton iteration count, always within `min_step..=max_step`. The error of `q` and `q'` is
+    /// measured component by component against `atol + rtol·|x|` in a root mean square;
+    /// `atol` must be positive (a coordinate that stays at zero has no relative scale).
+    /// Default: `initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞, `rtol` 1e-8, `atol` 1e-10.
     Adaptive {
         initial_step: f64,
         min_step: f64,
@@ -67,23 +92,48 @@ pub enum StepControl {
     },
 }
 
+/// Whether a start that violates the constraints is moved onto them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum StartPolicy {
+    /// Project positions and velocities onto the constraints in the mass metric; the start
+    /// report says how far each coordinate moved. The default.
+    Project,
+    /// Refuse a start whose `|g|` or `|w|` exceeds the constraint tolerance with
+    /// [`StepError::InconsistentStart`] naming the row.
+    Refuse,
+}
+
 /// Everything that steers the integration.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
+    /// The inner method. Default [`InnerMethod::DormandPrince54`].
     pub method: InnerMethod,
+    /// How the multipliers vary over a step. Default [`MultiplierModel::Constant`].
     pub multipliers: MultiplierModel,
+    /// Step sizes. Default adaptive, see [`StepControl::Adaptive`].
     pub step: StepControl,
+    /// How Newton obtains `∂(q, q')/∂p`. Default [`Sensitivity::Exact`] (with the
+    /// `exact-sensitivity` feature, else `Paper`).
     pub sensitivity: Sensitivity,
-    /// `ε`: a step is accepted when every `|g_j(t+τ)| ≤ ε`, in the constraint's own units.
+    /// `ε`: a step is accepted when every `|g_j(t+τ)| ≤ ε`, in each constraint's own units (m
+    /// for a distance, m² for a squared one). Default 1e-10.
     pub constraint_tolerance: f64,
+    /// Integrations per step (Newton sweeps on the multipliers) before the step fails: a typed
+    /// error with fixed steps, a smaller step when adaptive. 1 to 1000; default 12.
     pub max_newton_iterations: u32,
+    /// Velocities at the step end. Default [`VelocityProjection::Output`].
     pub velocity_projection: VelocityProjection,
-    /// Start Newton from the multipliers extrapolated from the last two steps, instead of the
-    /// last step's (the paper's choice).
+    /// Start Newton from multipliers extrapolated from the last two steps instead of the last
+    /// step's (the paper's choice). Default on.
     pub extrapolate_multipliers: bool,
     /// With the exact sensitivity: accept the end state corrected linearly by `Q Δp` when it
-    /// meets the tolerance, instead of integrating the step again.
+    /// meets the tolerance, instead of integrating the step again. Default on.
     pub accept_linearised_update: bool,
+    /// A start off the constraints: projected or refused. Default [`StartPolicy::Project`].
+    pub start: StartPolicy,
+    /// The step-size controller's constants. Default [`ControllerSettings::default`].
+    pub controller: ControllerSettings,
 }
 
 impl Default for Options {
@@ -107,13 +157,20 @@ impl Default for Options {
             velocity_projection: VelocityProjection::Output,
             extrapolate_multipliers: true,
             accept_linearised_update: true,
+            start: StartPolicy::Project,
+            controller: ControllerSettings::default(),
         }
     }
 }
 
+/// The most Newton integrations per step, and of RK4 substeps, that options may ask for: beyond
+/// them one step could run for minutes.
+pub const MAX_NEWTON_ITERATIONS: u32 = 1000;
+pub const MAX_SUBSTEPS: u32 = 10_000;
+
 impl Options {
     /// The paper's method as published: RK4 inner step with fixed `step`, the paper's sensitivity
-    /// estimate, positions enforced, raw velocities.
+    /// estimate, positions enforced, raw velocities and multipliers.
     pub fn paper(step: f64) -> Self {
         Options {
             method: InnerMethod::Rk4 { substeps: 1 },
@@ -126,33 +183,35 @@ impl Options {
         }
     }
 
+    /// Whether the exact sensitivity is asked for (and compiled in).
+    pub(crate) fn exact(&self) -> bool {
+        #[cfg(feature = "exact-sensitivity")]
+        return self.sensitivity == Sensitivity::Exact;
+        #[cfg(not(feature = "exact-sensitivity"))]
+        return false;
+    }
+
     /// Refuses options that cannot work, before anything is computed.
     pub fn validate(&self) -> Result<(), StepError> {
+        let refuse = |option| Err(StepError::InvalidOption(option));
         let positive = |x: f64| x.is_finite() && x > 0.0;
         if !positive(self.constraint_tolerance) {
-            return Err(StepError::InvalidOption(InvalidOption::Tolerance));
+            return refuse(InvalidOption::ConstraintTolerance);
         }
-        if self.max_newton_iterations == 0 {
-            return Err(StepError::InvalidOption(InvalidOption::IterationLimit));
+        if !(1..=MAX_NEWTON_ITERATIONS).contains(&self.max_newton_iterations) {
+            return refuse(InvalidOption::IterationLimit);
         }
-        #[cfg(feature = "implicit")]
-        let implicit = self.method == InnerMethod::Sdirk2;
-        #[cfg(not(feature = "implicit"))]
-        let implicit = false;
-        if self.multipliers == MultiplierModel::Quadratic
-            && (implicit || !cfg!(feature = "exact-sensitivity"))
-        {
-            return Err(StepError::InvalidOption(
-                InvalidOption::PolynomialMultipliersNeedExplicitMethod,
-            ));
+        if let InnerMethod::Rk4 { substeps } = self.method {
+            if !(1..=MAX_SUBSTEPS).contains(&substeps) {
+                return refuse(InvalidOption::Substeps);
+            }
         }
-        if let InnerMethod::Rk4 { substeps: 0 } = self.method {
-            return Err(StepError::InvalidOption(InvalidOption::IterationLimit));
+        if !self.controller.is_valid() {
+            return refuse(InvalidOption::Controller);
         }
         match self.step {
-            StepControl::Fixed { step } if !positive(step) => {
-                Err(StepError::InvalidOption(InvalidOption::StepSize))
-            }
+            StepControl::Fixed { step } if !positive(step) => refuse(InvalidOption::StepSize),
+            StepControl::Fixed { .. } => Ok(()),
             StepControl::Adaptive {
                 initial_step,
                 min_step,
@@ -161,24 +220,41 @@ impl Options {
                 atol,
             } => {
                 if !positive(initial_step)
-                    || !(min_step >= 0.0)
+                    || !(min_step >= 0.0 && min_step.is_finite())
                     || !(max_step > 0.0)
-                    || min_step > max_step
                     || min_step > initial_step
+                    || initial_step > max_step
                 {
-                    return Err(StepError::InvalidOption(InvalidOption::StepSize));
+                    return refuse(InvalidOption::StepSize);
                 }
-                if !(positive(rtol) && atol.is_finite() && atol >= 0.0) {
-                    return Err(StepError::InvalidOption(InvalidOption::Tolerance));
+                if !(positive(rtol) && positive(atol)) {
+                    return refuse(InvalidOption::ErrorTolerances);
                 }
                 if self.method != InnerMethod::DormandPrince54 {
-                    return Err(StepError::InvalidOption(
-                        InvalidOption::AdaptiveNeedsErrorEstimate,
-                    ));
+                    return refuse(InvalidOption::AdaptiveNeedsErrorEstimate);
                 }
                 Ok(())
             }
-            _ => Ok(()),
         }
+    }
+
+    /// [`Options::validate`], and whether the multiplier model supports the system's constraints.
+    pub(crate) fn validate_for(&self, position_rows: usize, rows: usize) -> Result<(), StepError> {
+        self.validate()?;
+        let kinds = [
+            (ConstraintKind::Position, position_rows > 0),
+            (ConstraintKind::Velocity, rows > position_rows),
+        ];
+        for (kind, present) in kinds {
+            if present && !self.multipliers.supports(kind) {
+                return Err(StepError::InvalidOption(
+                    InvalidOption::UnsupportedConstraints {
+                        multipliers: self.multipliers,
+                        kind,
+                    },
+                ));
+            }
+        }
+        Ok(())
     }
 }

@@ -1,0 +1,192 @@
+//! Consistency: states on the constraints, and the multipliers that belong to them. Used at the
+//! start, at every step end (for the reported velocities and multipliers), for dense output and
+//! when the state is re-initialised.
+
+use crate::error::{Row, StepError};
+use crate::linalg::{keep_leading_rows, max_abs, solve_spd};
+use crate::mass::MassFactor;
+use crate::model::Model;
+use crate::options::StartPolicy;
+use crate::output::Point;
+use crate::system::{ConstrainedSystem, Vector};
+
+/// Gauss–Newton sweeps when projecting a start onto the position-level constraints.
+const POSITION_SWEEPS: u32 = 50;
+/// Newton sweeps when projecting a start onto the velocity-level constraints.
+const VELOCITY_SWEEPS: u32 = 20;
+
+/// How a start (or a re-initialised state) was made consistent.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StartReport<const N: usize, const Z: usize> {
+    /// The consistent positions minus the given ones.
+    pub position_change: Vector<N>,
+    /// The consistent velocities minus the given ones.
+    pub velocity_change: Vector<N>,
+    /// The multipliers the run starts from: the given ones, or those of the acceleration-level
+    /// system.
+    pub multipliers: Vector<Z>,
+    /// Whether the multipliers were given rather than computed.
+    pub multipliers_given: bool,
+}
+
+/// The consistent point nearest to `(q, v)` in the mass metric, or the refusal that `policy`
+/// asks for when `(q, v)` violates the constraints by more than `tolerance`.
+pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q0, v0, t0): (Vector<N>, Vector<N>, f64),
+    tolerance: f64,
+    policy: StartPolicy,
+) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
+    if !q0.iter().chain(v0.iter()).all(|x| x.is_finite()) {
+        return Err(StepError::non_finite_state(t0));
+    }
+    if policy == StartPolicy::Refuse {
+        refuse_inconsistent(model, &q0, &v0, t0, tolerance)?;
+    }
+    let q = project_positions(model, q0, &v0, t0, tolerance)?;
+    let v = project_velocities(model, &q, v0, t0, tolerance, VELOCITY_SWEEPS)?;
+    let point = consistent_point(model, t0, q, v)?;
+    let report = StartReport {
+        position_change: q - q0,
+        velocity_change: v - v0,
+        multipliers: point.lambda,
+        multipliers_given: false,
+    };
+    Ok((point, report))
+}
+
+fn refuse_inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    q: &Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+    tolerance: f64,
+) -> Result<(), StepError> {
+    let g = model.residual(q, v, t)?;
+    let w = model.rate(q, v, t)?;
+    for (values, limit) in [(g, tolerance), (w, tolerance)] {
+        let (residual, index) = max_abs(&values);
+        if !(residual <= limit) {
+            return Err(StepError::InconsistentStart {
+                worst_row: Row {
+                    index,
+                    position_rows: S::POSITION_CONSTRAINTS,
+                },
+                residual,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric.
+pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    mut q: Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+    tolerance: f64,
+) -> Result<Vector<N>, StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    let mut sweeps = 0;
+    loop {
+        let mut g = model.residual(&q, v, t)?;
+        g.rows_mut(r, Z - r).fill(0.0);
+        let (worst, row) = max_abs(&g);
+        if worst <= tolerance {
+            return Ok(q);
+        }
+        let inconsistent = StepError::InconsistentStart {
+            worst_row: Row {
+                index: row,
+                position_rows: r,
+            },
+            residual: worst,
+        };
+        if sweeps == POSITION_SWEEPS {
+            return Err(inconsistent);
+        }
+        sweeps += 1;
+        let directions = model.directions(&q, v, t)?;
+        let mut gram = directions.gram();
+        keep_leading_rows(&mut gram, &mut g, r);
+        let mu = solve_spd(&gram, &g, r).map_err(|rows| StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        })?;
+        q -= directions.m_inv_gt * mu;
+        if !q.iter().all(|x| x.is_finite()) {
+            return Err(inconsistent);
+        }
+    }
+}
+
+/// Newton onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the mass
+/// metric; `sweeps` = 1 is a single projection (exact when `w` is linear in `q'`).
+pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    q: &Vector<N>,
+    mut v: Vector<N>,
+    t: f64,
+    tolerance: f64,
+    sweeps: u32,
+) -> Result<Vector<N>, StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    for _ in 0..sweeps {
+        let w = model.rate(q, &v, t)?;
+        let directions = model.directions(q, &v, t)?;
+        let mu = solve_spd(&directions.gram(), &w, r).map_err(|rows| {
+            StepError::RankDeficientConstraints {
+                t,
+                dependent_rows: rows,
+            }
+        })?;
+        v -= directions.m_inv_gt * mu;
+        if sweeps > 1 && max_abs(&model.rate(q, &v, t)?).0 <= tolerance * 1e-3 {
+            break;
+        }
+    }
+    if !v.iter().all(|x| x.is_finite()) {
+        return Err(StepError::non_finite_state(t));
+    }
+    Ok(v)
+}
+
+/// Multipliers and accelerations from the acceleration-level system
+/// `G M⁻¹ Gᵀ λ = G M⁻¹ F + b` at a state.
+pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+) -> Result<Point<N, Z>, StepError> {
+    let directions = model.directions(&q, &v, t)?;
+    let force = model.force(&q, &v, t)?;
+    let m_inv_f = directions.factor.solve(&force);
+    let bias = model.bias(&q, &v, t)?;
+    let rhs = directions.jacobian * m_inv_f + bias;
+    let lambda = solve_spd(&directions.gram(), &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+        StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        }
+    })?;
+    let a = m_inv_f - directions.m_inv_gt * lambda;
+    if !a.iter().chain(lambda.iter()).all(|x| x.is_finite()) {
+        return Err(StepError::non_finite_state(t));
+    }
+    Ok(Point { t, q, v, a, lambda })
+}
+
+/// The consistent point at a step end: velocities projected once onto the velocity-level
+/// constraint (exact for constraints linear in `q'`), then multipliers and accelerations.
+pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+    tolerance: f64,
+) -> Result<Point<N, Z>, StepError> {
+    let v = project_velocities(model, &q, v, t, tolerance, 1)?;
+    consistent_point(model, t, q, v)
+}

@@ -1,0 +1,169 @@
+//! Step control: the error norm, the frozen-multiplier error estimate, and the PI controller
+//! that turns them into the next step size. Every constant is a field of
+//! [`ControllerSettings`].
+
+use crate::mass::MassFactor;
+use crate::model::Model;
+use crate::options::StepControl;
+use crate::system::{ConstrainedSystem, Vector};
+
+/// The step-size controller's constants: plain data with documented defaults.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ControllerSettings {
+    /// Safety factor on every proposed step. Default 0.9.
+    pub safety: f64,
+    /// The smallest factor from one step to the next. Default 0.2.
+    pub min_factor: f64,
+    /// The largest factor from one step to the next. Default 5.
+    pub max_factor: f64,
+    /// The largest factor after a rejected step (so that a rejection always shrinks). Default 0.9.
+    pub max_factor_after_rejection: f64,
+    /// `β·k` of the PI controller `h₊ = h · safety · e⁻ᵅ · e₋ᵝ` with `β = beta_times_order / k`,
+    /// `α = 1/k - 0.75 β` and `k` one more than the lower order of the error estimate
+    /// (Hairer & Wanner's stabilised control; 0.2 gives their DOPRI5 default `β = 0.04`);
+    /// 0 is the plain I-controller. Default 0.2.
+    pub beta_times_order: f64,
+    /// The factor a step shrinks by when Newton on the multipliers fails or the trajectory
+    /// becomes non-finite. Default 0.25.
+    pub newton_failure_factor: f64,
+    /// From this many Newton integrations per step on, the step does not grow: the multipliers
+    /// change fast. Default 5.
+    pub slow_newton_iterations: u32,
+    /// A planned step within this fraction of the distance to the stop time lands on it,
+    /// instead of leaving a sliver of a step. Default 1e-6.
+    pub landing_fraction: f64,
+}
+
+impl Default for ControllerSettings {
+    fn default() -> Self {
+        ControllerSettings {
+            safety: 0.9,
+            min_factor: 0.2,
+            max_factor: 5.0,
+            max_factor_after_rejection: 0.9,
+            beta_times_order: 0.2,
+            newton_failure_factor: 0.25,
+            slow_newton_iterations: 5,
+            landing_fraction: 1e-6,
+        }
+    }
+}
+
+impl ControllerSettings {
+    pub(crate) fn is_valid(&self) -> bool {
+        let factor = |x: f64| x.is_finite() && x > 0.0;
+        factor(self.safety)
+            && self.safety <= 1.0
+            && factor(self.min_factor)
+            && self.min_factor < 1.0
+            && factor(self.max_factor)
+            && self.max_factor > 1.0
+            && factor(self.max_factor_after_rejection)
+            && self.max_factor_after_rejection < 1.0
+            && self.beta_times_order.is_finite()
+            && (0.0..=0.5).contains(&self.beta_times_order)
+            && factor(self.newton_failure_factor)
+            && self.newton_failure_factor < 1.0
+            && self.landing_fraction.is_finite()
+            && (0.0..=0.5).contains(&self.landing_fraction)
+    }
+}
+
+/// The controller's memory: the error norm of the last accepted step.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Controller {
+    previous_error: f64,
+}
+
+/// Hairer & Wanner's start value of the previous error (`facold`).
+const FIRST_PREVIOUS_ERROR: f64 = 1e-4;
+
+impl Controller {
+    pub fn new() -> Self {
+        Controller {
+            previous_error: FIRST_PREVIOUS_ERROR,
+        }
+    }
+
+    /// The factor for the next step after a step accepted with `error` (≤ 1), for an estimate
+    /// of order `k - 1` (so the error behaves like `h^k`).
+    pub fn accepted(&mut self, settings: &ControllerSettings, error: f64, k: u32) -> f64 {
+        let k = f64::from(k.max(1));
+        let beta = settings.beta_times_order / k;
+        let alpha = 1.0 / k - 0.75 * beta;
+        let error = error.max(1e-10);
+        let factor =
+            settings.safety * libm::pow(error, -alpha) * libm::pow(self.previous_error, beta);
+        // Hairer & Wanner keep at least 1e-4, so that one very accurate step does not hold back
+        // the next one's growth.
+        self.previous_error = error.max(FIRST_PREVIOUS_ERROR);
+        factor.clamp(settings.min_factor, settings.max_factor)
+    }
+
+    /// The factor for the retry after a step rejected with `error` > 1 (or NaN).
+    pub fn rejected(settings: &ControllerSettings, error: f64, k: u32) -> f64 {
+        let factor = settings.safety * libm::pow(error, -1.0 / f64::from(k.max(1)));
+        if factor.is_finite() {
+            factor.clamp(settings.min_factor, settings.max_factor_after_rejection)
+        } else {
+            settings.min_factor
+        }
+    }
+}
+
+/// The step sizes `step` allows, as `(min, max)`.
+pub(crate) fn bounds(step: StepControl) -> (f64, f64) {
+    match step {
+        StepControl::Fixed { step } => (step, step),
+        StepControl::Adaptive {
+            min_step, max_step, ..
+        } => (min_step, max_step),
+    }
+}
+
+/// Weighted RMS norm of the error estimate (the embedded one plus `frozen`) over `q` and `q'`,
+/// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
+/// estimate, infinite when the estimate is not finite (so that the step is rejected).
+pub(crate) fn error_norm<const N: usize>(
+    step: StepControl,
+    start: (&Vector<N>, &Vector<N>),
+    end: (&Vector<N>, &Vector<N>),
+    estimate: Option<(Vector<N>, Vector<N>)>,
+    frozen: &Vector<N>,
+) -> f64 {
+    let (StepControl::Adaptive { rtol, atol, .. }, Some((eq, ev))) = (step, estimate) else {
+        return 0.0;
+    };
+    let mut sum = 0.0;
+    for i in 0..N {
+        let sq = atol + rtol * start.0[i].abs().max(end.0[i].abs());
+        let sv = atol + rtol * start.1[i].abs().max(end.1[i].abs());
+        let xq = (eq[i].abs() + frozen[i].abs()) / sq;
+        let xv = ev[i] / sv;
+        sum += xq * xq + xv * xv;
+    }
+    let norm = libm::sqrt(sum / (2 * N).max(1) as f64);
+    if norm.is_finite() {
+        norm
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Position error from holding the multipliers fixed while `G` turns: to leading order
+/// `τ²/36 M⁻¹ (G(t₂) - G(t₁))ᵀ (λ(t₂) - λ(t₁))`. The embedded estimate of the inner method cannot
+/// see it, since it integrates the frozen-multiplier equations.
+pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    start: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
+    end: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
+) -> Result<Vector<N>, crate::error::StepError> {
+    let (t1, q1, v1, lambda1) = start;
+    let (t2, q2, v2, lambda2) = end;
+    let h = t2 - t1;
+    let g1 = model.jacobian(q1, v1, t1)?;
+    let g2 = model.jacobian(q2, v2, t2)?;
+    let factor = model.mass_factor(q2, t2)?;
+    let turn = (g2 - g1).tr_mul(&(lambda2 - lambda1));
+    Ok((h * h / 36.0) * factor.solve(&turn))
+}

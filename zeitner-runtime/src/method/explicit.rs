@@ -1,0 +1,237 @@
+//! Explicit Runge–Kutta methods as data: a tableau and one stage engine for all of them.
+
+use super::{Method, Start, StepEnd};
+use crate::error::StepError;
+use crate::model::Model;
+use crate::multipliers::Multipliers;
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+/// An explicit Runge–Kutta tableau with `S` stages.
+pub(crate) struct Tableau<const S: usize> {
+    pub a: [[f64; S]; S],
+    pub b: [f64; S],
+    pub c: [f64; S],
+    /// `b - b̂` of the embedded method, if any.
+    pub e: Option<[f64; S]>,
+    pub order: u32,
+    pub embedded_order: Option<u32>,
+}
+
+/// The classical Runge–Kutta method, order 4.
+pub(crate) const RK4: Tableau<4> = Tableau {
+    a: [
+        [0.0; 4],
+        [0.5, 0.0, 0.0, 0.0],
+        [0.0, 0.5, 0.0, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+    ],
+    b: [1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
+    c: [0.0, 0.5, 0.5, 1.0],
+    e: None,
+    order: 4,
+    embedded_order: None,
+};
+
+/// The 5(4) pair of Dormand & Prince (1980), coefficients as in Hairer, Nørsett & Wanner,
+/// *Solving ODEs I*, Table II.5.2.
+pub(crate) const DOPRI5: Tableau<7> = Tableau {
+    a: [
+        [0.0; 7],
+        [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0, 0.0],
+        [
+            19372.0 / 6561.0,
+            -25360.0 / 2187.0,
+            64448.0 / 6561.0,
+            -212.0 / 729.0,
+            0.0,
+            0.0,
+            0.0,
+        ],
+        [
+            9017.0 / 3168.0,
+            -355.0 / 33.0,
+            46732.0 / 5247.0,
+            49.0 / 176.0,
+            -5103.0 / 18656.0,
+            0.0,
+            0.0,
+        ],
+        [
+            35.0 / 384.0,
+            0.0,
+            500.0 / 1113.0,
+            125.0 / 192.0,
+            -2187.0 / 6784.0,
+            11.0 / 84.0,
+            0.0,
+        ],
+    ],
+    b: [
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+        0.0,
+    ],
+    c: [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0],
+    e: Some([
+        35.0 / 384.0 - 5179.0 / 57600.0,
+        0.0,
+        500.0 / 1113.0 - 7571.0 / 16695.0,
+        125.0 / 192.0 - 393.0 / 640.0,
+        -2187.0 / 6784.0 + 92097.0 / 339200.0,
+        11.0 / 84.0 - 187.0 / 2100.0,
+        -1.0 / 40.0,
+    ]),
+    order: 5,
+    embedded_order: Some(4),
+};
+
+/// An explicit method: its tableau, taken `substeps` times per step.
+pub(crate) struct Explicit<const ST: usize> {
+    tableau: &'static Tableau<ST>,
+    substeps: u32,
+}
+
+impl<const ST: usize> Explicit<ST> {
+    pub fn new(tableau: &'static Tableau<ST>, substeps: u32) -> Self {
+        Explicit {
+            tableau,
+            substeps: substeps.max(1),
+        }
+    }
+}
+
+impl<const N: usize, const Z: usize, const ST: usize> Method<N, Z> for Explicit<ST> {
+    fn order(&self) -> u32 {
+        self.tableau.order
+    }
+
+    fn embedded_order(&self) -> Option<u32> {
+        // Substeps would need the estimates of all substeps combined; none has more than one.
+        self.tableau.embedded_order.filter(|_| self.substeps == 1)
+    }
+
+    fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        start: &Start<N, Z, K>,
+        h: f64,
+        multipliers: &Multipliers<Z, K>,
+        sensitivity: bool,
+    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        let share = 1.0 / f64::from(self.substeps);
+        let hs = h * share;
+        let mut end = stages(
+            model,
+            self.tableau,
+            start,
+            hs,
+            multipliers,
+            (0.0, share),
+            sensitivity,
+        )?;
+        for k in 1..self.substeps {
+            let at = Start {
+                t: start.t + f64::from(k) * hs,
+                q: end.q,
+                v: end.v,
+                dq_dc: end.dq_dc,
+                dv_dc: end.dv_dc,
+            };
+            let s0 = f64::from(k) * share;
+            end = stages(
+                model,
+                self.tableau,
+                &at,
+                hs,
+                multipliers,
+                (s0, share),
+                sensitivity,
+            )?;
+        }
+        Ok(end)
+    }
+}
+
+/// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
+/// `sensitivity` is set (the derivative of the discrete step map, so that Newton converges
+/// quadratically). `s0` is where the (sub)step starts in the step's `s`, `span` its share.
+fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    tableau: &Tableau<ST>,
+    start: &Start<N, Z, K>,
+    h: f64,
+    multipliers: &Multipliers<Z, K>,
+    (s0, span): (f64, f64),
+    sensitivity: bool,
+) -> Result<StepEnd<N, Z, K>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    // Without the feature the sensitivity code is compiled out, not just skipped.
+    let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
+    let mut kq = [Vector::<N>::zeros(); ST];
+    let mut kv = [Vector::<N>::zeros(); ST];
+    let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
+    let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
+    for i in 0..ST {
+        let (mut q, mut v) = (start.q, start.v);
+        let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
+        for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
+            let w = h * tableau.a[i][j];
+            q += w * kq[j];
+            v += w * kv[j];
+            for k in (0..K).filter(|_| sensitivity) {
+                dq[k] += w * dkq[j][k];
+                dv[k] += w * dkv[j][k];
+            }
+        }
+        let t = start.t + tableau.c[i] * h;
+        let s = s0 + tableau.c[i] * span;
+        let lambda = multipliers.at(s);
+        let acceleration = model.acceleration(&q, &v, t, &lambda)?;
+        kq[i] = v;
+        kv[i] = acceleration.a;
+        if sensitivity {
+            let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
+            for k in 0..K {
+                dkq[i][k] = dv[k];
+                dkv[i][k] = jac.dq * dq[k] + multipliers.weight(k, s) * jac.dp;
+                if S::DYNAMICS_DEPEND_ON_VELOCITY {
+                    dkv[i][k] += jac.dv * dv[k];
+                }
+            }
+        }
+    }
+    let mut end = StepEnd {
+        q: start.q,
+        v: start.v,
+        dq_dc: start.dq_dc,
+        dv_dc: start.dv_dc,
+        error: None,
+    };
+    for i in 0..ST {
+        let w = h * tableau.b[i];
+        end.q += w * kq[i];
+        end.v += w * kv[i];
+        for k in (0..K).filter(|_| sensitivity) {
+            end.dq_dc[k] += w * dkq[i][k];
+            end.dv_dc[k] += w * dkv[i][k];
+        }
+    }
+    if let Some(e) = tableau.e {
+        let mut eq = Vector::<N>::zeros();
+        let mut ev = Vector::<N>::zeros();
+        for i in 0..ST {
+            eq += (h * e[i]) * kq[i];
+            ev += (h * e[i]) * kv[i];
+        }
+        end.error = Some((eq, ev));
+    }
+    Ok(end)
+}

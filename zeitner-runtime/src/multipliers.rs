@@ -1,0 +1,369 @@
+//! The multipliers over a step, their prediction from the steps before, and the one Newton on
+//! their coefficients that serves every multiplier model: it integrates with the multipliers
+//! prescribed, linearises the end conditions and corrects the coefficients until they hold.
+
+use crate::error::{Row, RowSet, StepError};
+use crate::linalg::{dependent_rows, max_abs, solve_blocks};
+use crate::method::{Method, Start, StepEnd};
+use crate::model::Model;
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+/// The multipliers over a step, `λ(s) = base + Σ_k c_k s^(first_power + k)` with
+/// `s = (t - t₁)/τ`: a constant `p` is `base = 0`, `c_0 = p`, `first_power = 0`; the quadratic
+/// model is `base = λ(t₁)`, `first_power = 1`, `K = 2`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Multipliers<const Z: usize, const K: usize> {
+    pub base: Vector<Z>,
+    pub coefficients: [Vector<Z>; K],
+    pub first_power: i32,
+}
+
+/// The highest power of `s` a multiplier model may use.
+pub(crate) const MAX_DEGREE: usize = 2;
+
+impl<const Z: usize, const K: usize> Multipliers<Z, K> {
+    /// `∂λ/∂c_k` at `s`.
+    pub fn weight(&self, k: usize, s: f64) -> f64 {
+        let mut w = 1.0;
+        for _ in 0..self.first_power + k as i32 {
+            w *= s;
+        }
+        w
+    }
+
+    pub fn at(&self, s: f64) -> Vector<Z> {
+        let mut lambda = self.base;
+        for (k, c) in self.coefficients.iter().enumerate() {
+            lambda += self.weight(k, s) * c;
+        }
+        lambda
+    }
+
+    /// The same multipliers as plain coefficients of `1, s, s²`, with the step size.
+    pub fn polynomial(&self, h: f64) -> StepPolynomial<Z> {
+        let mut c = [self.base, Vector::zeros(), Vector::zeros()];
+        for (k, coefficient) in self.coefficients.iter().enumerate() {
+            c[self.first_power as usize + k] += coefficient;
+        }
+        StepPolynomial { c, h }
+    }
+}
+
+/// The multipliers of an accepted step: `λ(s) = c₀ + c₁ s + c₂ s²` over a step of size `h`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct StepPolynomial<const Z: usize> {
+    pub c: [Vector<Z>; MAX_DEGREE + 1],
+    pub h: f64,
+}
+
+impl<const Z: usize> StepPolynomial<Z> {
+    /// `λ` at the step end.
+    pub fn at_end(&self) -> Vector<Z> {
+        self.c[0] + self.c[1] + self.c[2]
+    }
+
+    /// The mean of `λ` over the step.
+    fn mean(&self) -> Vector<Z> {
+        self.c[0] + self.c[1] / 2.0 + self.c[2] / 3.0
+    }
+}
+
+/// The first guess of the next step's multipliers, from the last two accepted steps. Reset when
+/// the trajectory is re-initialised.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Predictor<const Z: usize> {
+    last: Option<StepPolynomial<Z>>,
+    before: Option<StepPolynomial<Z>>,
+}
+
+impl<const Z: usize> Predictor<Z> {
+    pub fn record(&mut self, step: StepPolynomial<Z>) {
+        self.before = self.last.replace(step);
+    }
+
+    pub fn reset(&mut self) {
+        *self = Predictor {
+            last: None,
+            before: None,
+        };
+    }
+
+    /// Constant multipliers for a step of size `h`: the last step's mean, extrapolated linearly
+    /// between the two last steps' midpoints when `extrapolate` (a mean of `λ` over a step is
+    /// `λ` at its midpoint to second order); `start` when there is no step yet.
+    pub fn constant(&self, h: f64, extrapolate: bool, start: Vector<Z>) -> Vector<Z> {
+        let Some(last) = self.last else {
+            return start;
+        };
+        match self.before.filter(|_| extrapolate) {
+            Some(before) if before.h + last.h > 0.0 => {
+                let span = 0.5 * (before.h + last.h);
+                last.mean() + (last.mean() - before.mean()) * (0.5 * (last.h + h) / span)
+            }
+            _ => last.mean(),
+        }
+    }
+
+    /// The coefficients of `s`, `s²`, … for multipliers anchored at the step start: the last
+    /// step's polynomial continued into the next step of size `h`.
+    pub fn continued<const K: usize>(&self, h: f64) -> [Vector<Z>; K] {
+        let mut coefficients = [Vector::zeros(); K];
+        if let Some(StepPolynomial { c, h: last_h }) = self.last.filter(|last| last.h > 0.0) {
+            // λ(1 + ρ s) of the last step, ρ = h / last_h, expanded in s.
+            let ratio = h / last_h;
+            let expanded = [(c[1] + 2.0 * c[2]) * ratio, c[2] * (ratio * ratio)];
+            for (k, value) in coefficients.iter_mut().zip(expanded) {
+                *k = value;
+            }
+        }
+        coefficients
+    }
+}
+
+/// What the Newton needs from the options.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct NewtonSettings {
+    /// `ε` for `g`; the velocity-level end condition uses `ε / min(τ, 1)`.
+    pub tolerance: f64,
+    pub max_iterations: u32,
+    /// The exact sensitivity of the method's step map, or else the paper's estimate.
+    pub exact: bool,
+    pub accept_linearised: bool,
+}
+
+/// How the Newton on one step ended, short of an error that no smaller step can cure.
+pub(crate) enum NewtonOutcome<const N: usize, const Z: usize, const K: usize> {
+    Converged {
+        end: StepEnd<N, Z, K>,
+        multipliers: Multipliers<Z, K>,
+        /// Integrations of the step, the first one included.
+        integrations: u32,
+    },
+    /// A smaller step may succeed.
+    Failed { cause: StepError, integrations: u32 },
+}
+
+/// The end conditions of `K` coefficients per row: `g = 0`; with two, also `w = 0` (`ġ` of the
+/// position rows).
+struct Conditions<const Z: usize, const K: usize> {
+    values: [Vector<Z>; K],
+}
+
+impl<const Z: usize, const K: usize> Conditions<Z, K> {
+    fn at<S: ConstrainedSystem<N, Z>, const N: usize>(
+        model: &mut Model<'_, S, N, Z>,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> Result<Self, StepError> {
+        let mut values = [Vector::zeros(); K];
+        values[0] = model.residual(q, v, t)?;
+        if K > 1 {
+            values[1] = model.rate(q, v, t)?;
+        }
+        Ok(Conditions { values })
+    }
+
+    /// The largest `|g_j|` and its row.
+    fn worst(&self) -> (f64, usize) {
+        max_abs(&self.values[0])
+    }
+
+    fn hold(&self, settings: &NewtonSettings, h: f64) -> bool {
+        let velocity_tolerance = settings.tolerance / h.min(1.0);
+        self.worst().0 <= settings.tolerance
+            && self.values[1..]
+                .iter()
+                .all(|w| max_abs(w).0 <= velocity_tolerance)
+    }
+}
+
+/// Newton on the coefficients of `multipliers` until the end conditions hold at `start.t + h`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    method: &mut M,
+    start: &Start<N, Z, K>,
+    h: f64,
+    t_end: f64,
+    mut multipliers: Multipliers<Z, K>,
+    settings: &NewtonSettings,
+) -> Result<NewtonOutcome<N, Z, K>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+    M: Method<N, Z>,
+{
+    let paper = if settings.exact {
+        None
+    } else {
+        Some(paper_sensitivity(model, start, h, &multipliers)?)
+    };
+    let mut worst = (f64::INFINITY, 0);
+    for iteration in 1..=settings.max_iterations {
+        let end = match method.integrate(model, start, h, &multipliers, settings.exact) {
+            Ok(end) if finite_state(&end.q, &end.v) => end,
+            Ok(_) => return Ok(failed(StepError::non_finite_state(t_end), iteration)),
+            Err(cause @ (StepError::NonFinite { .. } | StepError::StageDidNotConverge { .. })) => {
+                return Ok(failed(cause, iteration))
+            }
+            Err(error) => return Err(error),
+        };
+        let conditions = Conditions::<Z, K>::at(model, &end.q, &end.v, t_end)?;
+        worst = conditions.worst();
+        if conditions.hold(settings, h) {
+            return Ok(converged(end, multipliers, iteration));
+        }
+        let (dq_dc, dv_dc) = paper.unwrap_or((end.dq_dc, end.dv_dc));
+        let blocks = linearise(model, &end, t_end, &dq_dc, &dv_dc)?;
+        let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
+            return singular(model, &end, t_end, h, iteration, worst);
+        };
+        for (c, d) in multipliers.coefficients.iter_mut().zip(delta.iter()) {
+            *c += d;
+        }
+        if settings.exact && settings.accept_linearised {
+            let mut q = end.q;
+            let mut v = end.v;
+            for k in 0..K {
+                q += dq_dc[k] * delta[k];
+                v += dv_dc[k] * delta[k];
+            }
+            if finite_state(&q, &v)
+                && Conditions::<Z, K>::at(model, &q, &v, t_end)?.hold(settings, h)
+            {
+                let updated = StepEnd { q, v, ..end };
+                return Ok(converged(updated, multipliers, iteration));
+            }
+        }
+    }
+    let cause = not_converged::<S, N, Z>(start.t, h, settings.max_iterations, worst);
+    Ok(failed(cause, settings.max_iterations))
+}
+
+fn converged<const N: usize, const Z: usize, const K: usize>(
+    end: StepEnd<N, Z, K>,
+    multipliers: Multipliers<Z, K>,
+    integrations: u32,
+) -> NewtonOutcome<N, Z, K> {
+    NewtonOutcome::Converged {
+        end,
+        multipliers,
+        integrations,
+    }
+}
+
+fn failed<const N: usize, const Z: usize, const K: usize>(
+    cause: StepError,
+    integrations: u32,
+) -> NewtonOutcome<N, Z, K> {
+    NewtonOutcome::Failed {
+        cause,
+        integrations,
+    }
+}
+
+fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
+    q.iter().chain(v.iter()).all(|x| x.is_finite())
+}
+
+fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    t: f64,
+    step: f64,
+    iterations: u32,
+    (residual, row): (f64, usize),
+) -> StepError {
+    StepError::NewtonDidNotConverge {
+        t,
+        step,
+        iterations,
+        residual,
+        worst_row: Row {
+            index: row,
+            position_rows: S::POSITION_CONSTRAINTS,
+        },
+    }
+}
+
+/// A singular Newton matrix: rank-deficient constraints at the step end (named), or else a step
+/// too large for the linearisation.
+fn singular<S, const N: usize, const Z: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    end: &StepEnd<N, Z, K>,
+    t_end: f64,
+    h: f64,
+    iteration: u32,
+    worst: (f64, usize),
+) -> Result<NewtonOutcome<N, Z, K>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    let directions = model.directions(&end.q, &end.v, t_end)?;
+    let rows: RowSet = dependent_rows(&directions.gram(), S::POSITION_CONSTRAINTS);
+    if !rows.is_empty() {
+        return Err(StepError::RankDeficientConstraints {
+            t: t_end,
+            dependent_rows: rows,
+        });
+    }
+    let cause = not_converged::<S, N, Z>(t_end - h, h, iteration, worst);
+    Ok(failed(cause, iteration))
+}
+
+type Sensitivities<const N: usize, const Z: usize, const K: usize> =
+    ([Matrix<N, Z>; K], [Matrix<N, Z>; K]);
+
+/// The paper's estimate (eq. 7), generalised to a coefficient of `s^m`: with `B = -M⁻¹Gᵀ` frozen
+/// at the step start, `∂q/∂c = τ²/((m+1)(m+2)) B` and `∂q'/∂c = τ/(m+1) B` (for `m = 0` the
+/// paper's `τ²/2` and `τ`).
+fn paper_sensitivity<S, const N: usize, const Z: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    start: &Start<N, Z, K>,
+    h: f64,
+    multipliers: &Multipliers<Z, K>,
+) -> Result<Sensitivities<N, Z, K>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    let b = -model.directions(&start.q, &start.v, start.t)?.m_inv_gt;
+    let power = |k: usize| f64::from(multipliers.first_power + k as i32);
+    let dq = core::array::from_fn(|k| (h * h / ((power(k) + 1.0) * (power(k) + 2.0))) * b);
+    let dv = core::array::from_fn(|k| (h / (power(k) + 1.0)) * b);
+    Ok((dq, dv))
+}
+
+/// The Newton matrix: the end conditions' derivatives by the coefficients, block `(l, k)` for
+/// condition `l` and coefficient `k`. `∂g/∂q` is `G` for position rows (plus `∂g/∂q'` for velocity
+/// rows); `∂w/∂q` has rows `(H_j q')ᵀ`, with the Hessian `H_j` of `g_j` from the constraint-force
+/// Jacobian along `e_j` (`∂²g/∂q∂t` is left out: Newton then converges linearly for rheonomic
+/// constraints).
+fn linearise<S, const N: usize, const Z: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    end: &StepEnd<N, Z, K>,
+    t_end: f64,
+    dq_dc: &[Matrix<N, Z>; K],
+    dv_dc: &[Matrix<N, Z>; K],
+) -> Result<[[Matrix<Z, Z>; K]; K], StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    let (dg_dq, dg_dv) = model.linearisation(&end.q, &end.v, t_end)?;
+    let mut blocks = [[Matrix::<Z, Z>::zeros(); K]; K];
+    for k in 0..K {
+        blocks[0][k] = dg_dq * dq_dc[k];
+        if S::POSITION_CONSTRAINTS != Z {
+            blocks[0][k] += dg_dv * dv_dc[k];
+        }
+    }
+    if K > 1 {
+        let mut dw_dq = Matrix::<Z, N>::zeros();
+        for j in 0..Z {
+            let unit = Vector::<Z>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
+            let (hessian, _) = model.constraint_force_jacobians(&end.q, &end.v, t_end, &unit)?;
+            dw_dq.set_row(j, &(hessian * end.v).transpose());
+        }
+        for k in 0..K {
+            blocks[1][k] = dw_dq * dq_dc[k] + dg_dq * dv_dc[k];
+        }
+    }
+    Ok(blocks)
+}
