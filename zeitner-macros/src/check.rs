@@ -1,7 +1,7 @@
 //! Checks of the model as a whole: sizes agree between the functions.
 
 use crate::errors::Errors;
-use crate::model::{Model, Role, Shape};
+use crate::model::{Model, ModelFn, Role, Shape};
 
 /// The model's dimensions: coordinates, position-level and velocity-level constraints.
 #[derive(Clone, Copy, Debug)]
@@ -17,45 +17,53 @@ impl Sizes {
     }
 }
 
-pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Option<Sizes> {
-    let force = model.function(Role::Force)?;
-    let n = force.shape.len();
-    if n == 0 {
+/// Checks the sizes of every function against the others, recording every mismatch in
+/// `errors`. The sizes are returned even when something is wrong, so that the later stages
+/// still look at each function; they are the model's only when `errors` stays empty.
+pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
+    // The number of coordinates is what `force` returns; when `force` is missing or itself
+    // malformed (already reported), `mass` stands in, so the other functions are still checked.
+    let force = model.function(Role::Force);
+    if let Some(force) = force.filter(|f| f.shape.len() == 0) {
         errors.error_spanned_by(
             force.shape.len_expr(),
             "a model needs at least one coordinate",
         );
-        return None;
     }
-    let before = errors.count();
+    let reference = force
+        .or(model.function(Role::Mass))
+        .filter(|f| f.shape.len() > 0);
+    let n = reference.map_or(0, |f| f.shape.len());
     for function in &model.functions {
         let owner = function.role.name();
-        if matches!(function.role, Role::Mass | Role::Force) && function.shape.len() != n {
-            {
+        if let Some(reference) = reference {
+            if matches!(function.role, Role::Mass | Role::Force) && function.shape.len() != n {
                 errors.error_spanned_by(
                     function.shape.len_expr(),
                     format_args!(
-                        "`{owner}` has size {}, but `force` returns {n} components: every model function \
-                         uses the same number of coordinates",
-                        function.shape.len()
+                        "`{owner}` has size {}, but {}: every model function uses the same number \
+                         of coordinates",
+                        function.shape.len(),
+                        describe(reference)
                     ),
                 );
+            }
+            for arg in [&function.q, &function.v].into_iter().flatten() {
+                if arg.len != n {
+                    errors.error_spanned_by(
+                        arg.len_expr,
+                        format_args!(
+                            "this array has {} components, but {}: coordinates and velocities \
+                             have one component per coordinate",
+                            arg.len,
+                            describe(reference)
+                        ),
+                    );
+                }
             }
         }
         if let (Shape::Matrix { .. }, false) = (&function.shape, function.role == Role::Mass) {
             errors.error_spanned_by(function.shape.len_expr(), "only `mass` may return a matrix");
-        }
-        for arg in [&function.q, &function.v].into_iter().flatten() {
-            if arg.len != n {
-                errors.error_spanned_by(
-                    arg.len_expr,
-                    format_args!(
-                        "this array has {} components, but `force` returns {n}: coordinates and velocities \
-                         have one component per coordinate",
-                        arg.len
-                    ),
-                );
-            }
         }
         if function.result.elems.len() != function.shape.len() {
             errors.error_spanned_by(
@@ -82,7 +90,7 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Option<Sizes> {
             );
         }
     }
-    if r + k > n {
+    if reference.is_some() && r + k > n {
         let blame = model
             .function(Role::VelocityConstraints)
             .or(model.function(Role::Constraints))
@@ -97,5 +105,25 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Option<Sizes> {
             );
         }
     }
-    (errors.count() == before).then_some(Sizes { n, r, k })
+    Sizes { n, r, k }
+}
+
+/// How the function that fixes the number of coordinates states it.
+fn describe(reference: &ModelFn<'_>) -> String {
+    let n = reference.shape.len();
+    match reference.role {
+        Role::Force => format!("`force` returns {n} components"),
+        other => format!("`{}` has size {n}", other.name()),
+    }
+}
+
+/// How many coordinate (and velocity) slots lowering needs so that every name of every
+/// signature is bound, even when the sizes disagree: `n` when they agree.
+pub fn slots(model: &Model<'_>, sizes: Sizes) -> usize {
+    model
+        .functions
+        .iter()
+        .flat_map(|f| [&f.q, &f.v].into_iter().flatten())
+        .map(|arg| arg.len)
+        .fold(sizes.n, usize::max)
 }

@@ -58,15 +58,17 @@ fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
     Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
 }
 
-/// Model → checks → lowering → symbolic stage, on the given graph.
+/// Model → checks → lowering → symbolic stage, on the given graph. Each stage looks at every
+/// model function the stage before could make sense of, so one build reports the mistakes of
+/// all functions; only the derivatives wait until there is none.
 fn analyse(
     item: &syn::ItemImpl,
     mut graph: zeitner_symbolic::Graph,
     errors: &mut Errors,
 ) -> Option<(Scene, Vars, Vec<Call>)> {
     let model = Model::from_item(item, errors);
-    let sizes = check::sizes(&model, errors)?;
-    let mut vars = Vars::new(sizes.n);
+    let sizes = check::sizes(&model, errors);
+    let mut vars = Vars::new(check::slots(&model, sizes));
     let mut calls = Vec::new();
     let mut lowerer = Lowerer {
         graph: &mut graph,
@@ -79,6 +81,7 @@ fn analyse(
         .iter()
         .filter_map(|f| lowerer.lower_function(f))
         .collect();
+    symbolic::check(&model, &lowered, &graph, &vars, errors);
     if !errors.is_empty() {
         return None;
     }

@@ -60,3 +60,6 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
 
 #[cfg(test)]
 mod snapshots;
+
+#[cfg(test)]
+mod error_collection;

@@ -319,7 +319,7 @@ fn parse_function<'a>(
         },
         ReturnType::Default => None,
     };
-    let Some(shape) = shape else {
+    if shape.is_none() {
         errors.error_spanned_by(
             &sig.output,
             format_args!(
@@ -327,9 +327,12 @@ fn parse_function<'a>(
                 role.signature_hint()
             ),
         );
+    }
+    // The body is read even when the signature is wrong, so its mistakes show in the same build.
+    let body = parse_body(function, errors);
+    let (Some(shape), Some((lets, result))) = (shape, body) else {
         return None;
     };
-    let (lets, result) = parse_body(function, errors)?;
     if !ok || errors.count() != before {
         return None;
     }

@@ -42,8 +42,68 @@ pub struct Scene {
 struct Entry {
     id: Id,
     span: Span,
+    role: Role,
 }
 
+/// The checks of the lowered functions that need their graphs: constraints that constrain, a
+/// symmetric mass matrix. Run on every function that lowered, even when another one did not,
+/// so that one build reports all of them.
+pub fn check(
+    model: &Model<'_>,
+    lowered: &[Lowered],
+    graph: &Graph,
+    vars: &Vars,
+    errors: &mut Errors,
+) {
+    let slots = vars.n;
+    let is_coordinate = |v: u32| (v as usize) < slots;
+    let is_velocity = |v: u32| (slots..2 * slots).contains(&(v as usize));
+    for lowered in lowered {
+        let Some(function) = model.function(lowered.role) else {
+            continue;
+        };
+        match (lowered.role, &function.shape) {
+            (Role::Constraints, _) => {
+                for (j, &id) in lowered.entries.iter().enumerate() {
+                    if !graph.depends_on_any(id, &is_coordinate) {
+                        errors.error_at(
+                            entry_span(function, j),
+                            "this constraint depends on no coordinate, so it cannot be enforced: a constraint restricts the positions `q`",
+                        );
+                    }
+                }
+            }
+            (Role::VelocityConstraints, _) => {
+                for (j, &id) in lowered.entries.iter().enumerate() {
+                    if !graph.depends_on_any(id, &is_velocity) {
+                        errors.error_at(
+                            entry_span(function, j),
+                            "this velocity constraint does not involve the velocities; state it in `constraints` instead",
+                        );
+                    }
+                }
+            }
+            (Role::Mass, &Shape::Matrix { len: n, .. }) if lowered.entries.len() == n * n => {
+                let mass = &lowered.entries;
+                for i in 0..n {
+                    for j in i + 1..n {
+                        if mass[i * n + j] != mass[j * n + i] {
+                            errors.error_at(
+                                entry_span(function, i),
+                                format_args!(
+                                    "the mass matrix must be symmetric: entry [{i}][{j}] differs from entry [{j}][{i}]"
+                                ),
+                            );
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Derivatives, simplification and scheduling of a model that passed every check.
 pub fn build(
     model: &Model<'_>,
     sizes: Sizes,
@@ -72,6 +132,7 @@ pub fn build(
             .map(|(i, &id)| Entry {
                 id,
                 span: entry_span(function, i / per_row),
+                role,
             })
             .collect()
     };
@@ -84,41 +145,7 @@ pub fn build(
         Some(Shape::Matrix { .. })
     );
 
-    let before = errors.count();
     let is_coordinate = |v: u32| (v as usize) < n;
-    let is_velocity = |v: u32| (n..2 * n).contains(&(v as usize));
-    for (j, row) in constraints.iter().enumerate() {
-        if j < r && !graph.depends_on_any(row.id, &is_coordinate) {
-            errors.error_at(
-                row.span,
-                "this constraint depends on no coordinate, so it cannot be enforced: a constraint restricts the positions `q`",
-            );
-        }
-        if j >= r && !graph.depends_on_any(row.id, &is_velocity) {
-            errors.error_at(
-                row.span,
-                "this velocity constraint does not involve the velocities; state it in `constraints` instead",
-            );
-        }
-    }
-    if full_mass {
-        for i in 0..n {
-            for j in i + 1..n {
-                if mass[i * n + j].id != mass[j * n + i].id {
-                    errors.error_at(
-                        mass[i * n + j].span,
-                        format_args!(
-                            "the mass matrix must be symmetric: entry [{i}][{j}] differs from entry [{j}][{i}]"
-                        ),
-                    );
-                }
-            }
-        }
-    }
-    if errors.count() != before {
-        return None;
-    }
-
     let time = vars.time();
     let mass_depends_on_q = mass
         .iter()
@@ -133,7 +160,7 @@ pub fn build(
     let mut derive = Derive {
         graph,
         errors,
-        failed: false,
+        failed: Vec::new(),
     };
     let mut d_dq: Vec<Differentiator> = (0..n).map(|i| Differentiator::new(i as u32)).collect();
     let mut d_dv: Vec<Differentiator> = (0..n)
@@ -205,12 +232,12 @@ pub fn build(
     let mut position_partials = Vec::new();
     for (j, row) in constraints.iter().enumerate() {
         for i in 0..n {
-            let dq = derive.by(&mut d_dq[i], row.id, row.span);
+            let dq = derive.by(&mut d_dq[i], row.id, row.span, row.role);
             position_partials.push((j, i, dq, row.span));
             let g = if j < r {
                 dq
             } else {
-                derive.by(&mut d_dv[i], row.id, row.span)
+                derive.by(&mut d_dv[i], row.id, row.span, row.role)
             };
             jacobian.push((j, i, g, row.span));
         }
@@ -233,7 +260,7 @@ pub fn build(
     let mut bias = Vec::new();
     for (j, row) in constraints.iter().enumerate() {
         let w = if j < r {
-            let mut sum = derive.by(&mut d_dt, row.id, row.span);
+            let mut sum = derive.by(&mut d_dt, row.id, row.span, row.role);
             for i in 0..n {
                 let g = jacobian[j * n + i].2;
                 let term = derive.graph.mul(g, velocities[i]);
@@ -244,9 +271,9 @@ pub fn build(
             row.id
         };
         rate.push((j, w, row.span));
-        let mut b = derive.by(&mut d_dt, w, row.span);
+        let mut b = derive.by(&mut d_dt, w, row.span, row.role);
         for i in 0..n {
-            let dw = derive.by(&mut d_dq[i], w, row.span);
+            let dw = derive.by(&mut d_dq[i], w, row.span, row.role);
             let term = derive.graph.mul(dw, velocities[i]);
             b = derive.graph.add(b, term);
         }
@@ -260,8 +287,18 @@ pub fn build(
     let mut force_dv = Vec::new();
     for (i, e) in force.iter().enumerate() {
         for c in 0..n {
-            force_dq.push((i, c, derive.by(&mut d_dq[c], e.id, e.span), e.span));
-            force_dv.push((i, c, derive.by(&mut d_dv[c], e.id, e.span), e.span));
+            force_dq.push((
+                i,
+                c,
+                derive.by(&mut d_dq[c], e.id, e.span, Role::Force),
+                e.span,
+            ));
+            force_dv.push((
+                i,
+                c,
+                derive.by(&mut d_dv[c], e.id, e.span, Role::Force),
+                e.span,
+            ));
         }
     }
     functions.push((
@@ -286,8 +323,18 @@ pub fn build(
         }
         let span = constraints.first().map_or_else(Span::call_site, |e| e.span);
         for c in 0..n {
-            reaction_dq.push((i, c, derive.by(&mut d_dq[c], reaction, span), span));
-            reaction_dv.push((i, c, derive.by(&mut d_dv[c], reaction, span), span));
+            reaction_dq.push((
+                i,
+                c,
+                derive.by(&mut d_dq[c], reaction, span, Role::Constraints),
+                span,
+            ));
+            reaction_dv.push((
+                i,
+                c,
+                derive.by(&mut d_dv[c], reaction, span, Role::Constraints),
+                span,
+            ));
         }
     }
     functions.push((
@@ -322,7 +369,7 @@ pub fn build(
             }
             let span = mass[if full_mass { i * n } else { i }].span;
             for (c, by_q) in d_dq.iter_mut().enumerate() {
-                product_dq.push((i, c, derive.by(by_q, product, span), span));
+                product_dq.push((i, c, derive.by(by_q, product, span, Role::Mass), span));
             }
         }
         functions.push((
@@ -331,7 +378,7 @@ pub fn build(
         ));
     }
 
-    if derive.failed {
+    if !derive.failed.is_empty() {
         return None;
     }
     let graph: &Graph = derive.graph;
@@ -386,21 +433,23 @@ fn matrix(
 struct Derive<'a> {
     graph: &'a mut Graph,
     errors: &'a mut Errors,
-    failed: bool,
+    /// The model functions with an expression that could not be differentiated, each
+    /// reported once.
+    failed: Vec<Role>,
 }
 
 impl Derive<'_> {
-    fn by(&mut self, differentiator: &mut Differentiator, expr: Id, span: Span) -> Id {
+    fn by(&mut self, differentiator: &mut Differentiator, expr: Id, span: Span, owner: Role) -> Id {
         match differentiator.derive(self.graph, expr) {
             Ok(id) => id,
             Err(error) => {
-                if !self.failed {
+                if !self.failed.contains(&owner) {
                     self.errors.error_at(
                         span,
                         format_args!("cannot differentiate this expression: {error}"),
                     );
+                    self.failed.push(owner);
                 }
-                self.failed = true;
                 self.graph.zero()
             }
         }

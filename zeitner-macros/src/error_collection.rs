@@ -1,0 +1,199 @@
+//! Every mistake of a build is reported at once: errors in different model functions, found by
+//! different stages, all appear in one expansion.
+
+use proc_macro2::{Delimiter, TokenStream, TokenTree};
+
+/// The messages of the `compile_error!`s the macro emits for `source`, an annotated impl.
+fn messages(source: &str) -> Vec<String> {
+    let item: syn::ItemImpl = syn::parse_str(source).expect("test model parses");
+    let expanded = crate::expand::constrained_system(TokenStream::new(), quote::quote!(#item));
+    let mut found = Vec::new();
+    collect(expanded, &mut found);
+    found
+}
+
+fn collect(tokens: TokenStream, found: &mut Vec<String>) {
+    let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+    for (i, token) in tokens.iter().enumerate() {
+        let TokenTree::Group(group) = token else {
+            continue;
+        };
+        let after_compile_error = i >= 2
+            && matches!(&tokens[i - 2], TokenTree::Ident(id) if id == "compile_error")
+            && matches!(&tokens[i - 1], TokenTree::Punct(p) if p.as_char() == '!');
+        if after_compile_error && group.delimiter() != Delimiter::None {
+            let message: syn::LitStr = syn::parse2(group.stream()).expect("a string message");
+            found.push(message.value());
+        } else {
+            collect(group.stream(), found);
+        }
+    }
+}
+
+fn assert_reports(source: &str, expected: &[&str]) {
+    let found = messages(source);
+    for fragment in expected {
+        assert!(
+            found.iter().any(|m| m.contains(fragment)),
+            "expected an error containing {fragment:?}, found {found:#?}"
+        );
+    }
+    assert_eq!(found.len(), expected.len(), "unexpected errors: {found:#?}");
+}
+
+#[test]
+fn unknown_variable_and_unsupported_method_in_two_functions() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m * gravity] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x.gamma() + y] }
+        }",
+        &["unknown variable `gravity`", "unsupported function `gamma`"],
+    );
+}
+
+#[test]
+fn size_error_in_one_function_and_lowering_error_in_another() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m, 0.0] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - length] }
+        }",
+        &["`force` returns 3 entries", "unknown variable `length`"],
+    );
+}
+
+#[test]
+fn argument_size_error_does_not_hide_other_functions() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self, [x, y, z]: [f64; 3]) -> [f64; 2] { [x, y * z] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x.cbrt() + y] }
+        }",
+        &["this array has 3 components", "unsupported function `cbrt`"],
+    );
+}
+
+#[test]
+fn lowering_error_in_one_function_and_symbolic_error_in_another() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m * gravity] }
+            fn constraints(&self) -> [f64; 1] { [self.m - 1.0] }
+        }",
+        &["unknown variable `gravity`", "depends on no coordinate"],
+    );
+}
+
+#[test]
+fn size_error_and_asymmetric_mass_matrix() {
+    assert_reports(
+        "impl S {
+            fn mass(&self, [x, _y]: [f64; 2]) -> [[f64; 2]; 2] { [[self.m, x], [0.0, self.m]] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 2] { [x * x + y * y - 1.0] }
+        }",
+        &["`constraints` returns 1 entries", "must be symmetric"],
+    );
+}
+
+#[test]
+fn malformed_force_does_not_hide_other_functions() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { return [0.0, -self.m]; }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - length] }
+        }",
+        &["without `return`", "unknown variable `length`"],
+    );
+}
+
+#[test]
+fn malformed_signature_does_not_hide_other_functions() {
+    assert_reports(
+        "impl S {
+            fn mass(&mut self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self) -> [f64; 1] { [self.m] }
+            fn velocity_constraints(&self, [x, _y]: [f64; 2], [_vx, _vy]: [f64; 2]) -> [f64; 1] { [x] }
+        }",
+        &["the first argument must be `&self`", "depends on no coordinate", "does not involve the velocities"],
+    );
+}
+
+#[test]
+fn symbolic_errors_of_two_functions() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self) -> [f64; 1] { [self.m - 1.0] }
+            fn velocity_constraints(&self, [x, _y]: [f64; 2]) -> [f64; 1] { [x] }
+        }",
+        &[
+            "depends on no coordinate",
+            "does not involve the velocities",
+        ],
+    );
+}
+
+#[test]
+fn sizes_that_disagree_do_not_invent_unknown_variables() {
+    // `z` is bound although `force` has only two coordinates: the size is the one mistake.
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y, z]: [f64; 3]) -> [f64; 1] { [x * x + y * y + z * z - 1.0] }
+        }",
+        &["this array has 3 components, but `force` returns 2 components"],
+    );
+}
+
+#[test]
+fn without_force_the_mass_fixes_the_size() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn constraints(&self, [x, y, z]: [f64; 3]) -> [f64; 1] { [x.cbrt() + y + z] }
+        }",
+        &[
+            "missing model function `force`",
+            "this array has 3 components, but `mass` has size 2",
+            "unsupported function `cbrt`",
+        ],
+    );
+}
+
+#[test]
+fn a_wrong_return_type_does_not_hide_the_body() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> Vec<f64> { return [0.0, -self.m]; }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - length] }
+        }",
+        &[
+            "unsupported return type",
+            "without `return`",
+            "unknown variable `length`",
+        ],
+    );
+}
+
+#[test]
+fn a_correct_model_has_no_errors() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - 1.0] }
+        }",
+        &[],
+    );
+}
