@@ -190,3 +190,43 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     let v = project_velocities(model, &q, v, t, tolerance, 1)?;
     consistent_point(model, t, q, v)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::PENDULUM;
+
+    #[test]
+    fn a_start_off_the_circle_moves_radially_onto_it_and_says_how_far() {
+        let mut model = Model::new(&PENDULUM);
+        let (q0, v0) = (Vector::<2>::new(3.0, 0.5), Vector::<2>::new(0.2, 1.0));
+        model.prepare(&q0, 0.0).unwrap();
+        let (point, report) =
+            consistent_start(&mut model, (q0, v0, 0.0), 1e-12, StartPolicy::Project).unwrap();
+        let l = PENDULUM.length;
+        assert!((point.q.norm() - l).abs() < 1e-12);
+        // Equal masses: the nearest point in the mass metric is the radial one.
+        assert!(
+            (point.q - q0 * (l / q0.norm())).amax() < 1e-9,
+            "{}",
+            point.q
+        );
+        assert_eq!(report.position_change, point.q - q0);
+        assert!(point.q.dot(&point.v).abs() < 1e-12);
+        assert!(!report.multipliers_given);
+        let refused = consistent_start(&mut model, (q0, v0, 0.0), 1e-12, StartPolicy::Refuse);
+        assert!(matches!(refused, Err(StepError::InconsistentStart { .. })));
+    }
+
+    #[test]
+    fn multipliers_at_rest_at_the_bottom_carry_the_weight() {
+        let mut model = Model::new(&PENDULUM);
+        let q = Vector::<2>::new(0.0, -PENDULUM.length);
+        model.prepare(&q, 0.0).unwrap();
+        let point = consistent_point(&mut model, 0.0, q, Vector::zeros()).unwrap();
+        // M a = F - Gᵀλ with a = 0, G = (0, -2L): λ = m g / (2L).
+        let expected = PENDULUM.m * PENDULUM.g / (2.0 * PENDULUM.length);
+        assert!((point.lambda[0] - expected).abs() < 1e-12);
+        assert!(point.a.amax() < 1e-12);
+    }
+}

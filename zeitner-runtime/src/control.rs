@@ -167,3 +167,76 @@ pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     let turn = (g2 - g1).tr_mul(&(lambda2 - lambda1));
     Ok((h * h / 36.0) * factor.solve(&turn))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SETTINGS: ControllerSettings = ControllerSettings {
+        safety: 0.9,
+        min_factor: 0.2,
+        max_factor: 5.0,
+        max_factor_after_rejection: 0.9,
+        beta_times_order: 0.2,
+        newton_failure_factor: 0.25,
+        slow_newton_iterations: 5,
+        landing_fraction: 1e-6,
+    };
+
+    #[test]
+    fn the_defaults_are_valid_and_documented_values() {
+        assert_eq!(ControllerSettings::default(), SETTINGS);
+        assert!(SETTINGS.is_valid());
+        let bad = ControllerSettings {
+            max_factor: 0.5,
+            ..SETTINGS
+        };
+        assert!(!bad.is_valid());
+    }
+
+    #[test]
+    fn pi_factor_follows_the_formula_and_its_bounds() {
+        let mut controller = Controller::new();
+        // k = 5: α = 0.2 - 0.75·0.04 = 0.17, β = 0.04; the previous error starts at 1e-4.
+        let factor = controller.accepted(&SETTINGS, 0.5, 5);
+        let expected = 0.9 * libm::pow(0.5, -0.17) * libm::pow(1e-4, 0.04);
+        assert!((factor - expected).abs() < 1e-14, "{factor} vs {expected}");
+        // The memory is the last error: a second step with the same error grows more.
+        let again = controller.accepted(&SETTINGS, 0.5, 5);
+        assert!((again - 0.9 * libm::pow(0.5, -0.17 + 0.04)).abs() < 1e-14);
+        // Tiny errors are capped by max_factor, an error of 1 never grows the step.
+        assert_eq!(Controller::new().accepted(&SETTINGS, 0.0, 5), 5.0);
+        assert!(Controller::new().accepted(&SETTINGS, 1.0, 5) < 1.0);
+    }
+
+    #[test]
+    fn a_rejection_always_shrinks_even_on_nan() {
+        for error in [1.0 + 1e-12, 2.0, 1e6, f64::INFINITY, f64::NAN] {
+            let factor = Controller::rejected(&SETTINGS, error, 5);
+            assert!((0.2..=0.9).contains(&factor), "{error}: {factor}");
+        }
+    }
+
+    #[test]
+    fn error_norm_is_finite_with_zero_components_and_rejects_nan() {
+        let step = StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 0.0,
+            max_step: 1.0,
+            rtol: 1e-6,
+            atol: 1e-9,
+        };
+        let zero = Vector::<2>::zeros();
+        let estimate = Some((Vector::<2>::new(1e-9, 0.0), zero));
+        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), estimate, &zero);
+        assert!((norm - 0.5).abs() < 1e-12, "{norm}");
+        let nan = Some((Vector::<2>::new(f64::NAN, 0.0), zero));
+        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), nan, &zero);
+        assert_eq!(norm, f64::INFINITY);
+        let fixed = StepControl::Fixed { step: 0.1 };
+        assert_eq!(
+            error_norm(fixed, (&zero, &zero), (&zero, &zero), estimate, &zero),
+            0.0
+        );
+    }
+}

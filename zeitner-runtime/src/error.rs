@@ -322,3 +322,47 @@ impl fmt::Display for StepError {
 }
 
 impl core::error::Error for StepError {}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::string::ToString;
+
+    #[test]
+    fn a_row_set_counts_every_row_and_names_the_first() {
+        let mut rows = RowSet::new(200);
+        for row in (0..300).step_by(10) {
+            rows.insert(row);
+        }
+        rows.insert(0);
+        assert_eq!(rows.len(), 30);
+        assert!(!rows.is_complete());
+        assert!(rows.contains(150) && !rows.contains(5));
+        let shown = rows.to_string();
+        assert!(
+            shown.starts_with("constraints[0], constraints[10]"),
+            "{shown}"
+        );
+        assert!(shown.ends_with("and 14 more rows"), "{shown}");
+        let mut velocity = RowSet::new(1);
+        velocity.insert(2);
+        assert_eq!(velocity.to_string(), "velocity_constraints[1]");
+    }
+
+    #[test]
+    fn every_invalid_option_says_what_to_change() {
+        let kind = ConstraintKind::Velocity;
+        let multipliers = MultiplierModel::Quadratic;
+        let message =
+            StepError::InvalidOption(InvalidOption::UnsupportedConstraints { multipliers, kind })
+                .to_string();
+        assert_eq!(
+            message,
+            "invalid option: `MultiplierModel::Quadratic` cannot enforce velocity-level \
+             constraints: use `MultiplierModel::Constant` for this scene"
+        );
+        let atol = StepError::InvalidOption(InvalidOption::ErrorTolerances).to_string();
+        assert!(atol.contains("atol = 0"), "{atol}");
+    }
+}

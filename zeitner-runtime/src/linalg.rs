@@ -156,6 +156,8 @@ pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
 /// elimination, each diagonal block by LU with partial pivoting; `None` when a pivot block is
 /// singular or the result is not finite. One block is a plain LU solve; two are the Schur
 /// complement of the first.
+// Block indices read as the elimination is written on paper.
+#[allow(clippy::needless_range_loop)]
 pub fn solve_blocks<const Z: usize, const K: usize>(
     blocks: &[[Matrix<Z, Z>; K]; K],
     rhs: &[Vector<Z>; K],
@@ -188,4 +190,84 @@ pub fn solve_blocks<const Z: usize, const K: usize>(
     b.iter()
         .all(|x| x.iter().all(|v| v.is_finite()))
         .then_some(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lu_solves_a_system_that_needs_pivoting() {
+        // The leading zero forces a row swap; x = (1, 2, 3).
+        let a = Matrix::<3, 3>::new(0.0, 2.0, 1.0, 1.0, 1.0, 1.0, 4.0, -1.0, 2.0);
+        let x = Vector::<3>::new(1.0, 2.0, 3.0);
+        let solved = Lu::new(a).unwrap().solve(&(a * x));
+        assert!((solved - x).amax() < 1e-14, "{solved}");
+    }
+
+    #[test]
+    fn lu_refuses_singular_and_non_finite_matrices() {
+        let singular = Matrix::<3, 3>::new(1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 0.0, 1.0, 1.0);
+        assert!(Lu::new(singular).is_none());
+        let nearly = Matrix::<2, 2>::new(1.0, 1.0, 1.0, 1.0 + 1e-15);
+        assert!(Lu::new(nearly).is_none());
+        assert!(Lu::new(Matrix::<2, 2>::new(f64::NAN, 0.0, 0.0, 1.0)).is_none());
+    }
+
+    #[test]
+    fn dependent_rows_names_the_redundant_constraint() {
+        // Rows 0 and 2 of G are the same constraint written twice.
+        let g = Matrix::<3, 2>::new(1.0, 0.0, 0.0, 1.0, 1.0, 0.0);
+        let gram = g * g.transpose();
+        let rows = dependent_rows(&gram, 3);
+        assert_eq!(rows.len(), 1);
+        assert!(rows.contains(0) || rows.contains(2), "{rows}");
+        assert!(dependent_rows(&Matrix::<2, 2>::identity(), 2).is_empty());
+        assert!(solve_spd(&gram, &Vector::<3>::repeat(1.0), 3).is_err());
+    }
+
+    #[test]
+    fn spd_solve_matches_the_product() {
+        let a = Matrix::<2, 2>::new(4.0, 1.0, 1.0, 3.0);
+        let x = Vector::<2>::new(-1.0, 2.0);
+        let solved = solve_spd(&a, &(a * x), 2).unwrap();
+        assert!((solved - x).amax() < 1e-14);
+    }
+
+    #[test]
+    fn block_elimination_matches_the_assembled_system() {
+        let blocks = [
+            [
+                Matrix::<2, 2>::new(3.0, 1.0, 0.5, 2.0),
+                Matrix::<2, 2>::new(0.1, -0.4, 0.3, 0.2),
+            ],
+            [
+                Matrix::<2, 2>::new(1.0, 0.0, -2.0, 1.0),
+                Matrix::<2, 2>::new(5.0, 1.0, 1.0, 4.0),
+            ],
+        ];
+        let mut assembled = Matrix::<4, 4>::zeros();
+        for (l, row) in blocks.iter().enumerate() {
+            for (k, block) in row.iter().enumerate() {
+                assembled
+                    .fixed_view_mut::<2, 2>(2 * l, 2 * k)
+                    .copy_from(block);
+            }
+        }
+        let x = Vector::<4>::new(1.0, -2.0, 0.5, 3.0);
+        let b = assembled * x;
+        let rhs = [Vector::<2>::new(b[0], b[1]), Vector::<2>::new(b[2], b[3])];
+        let [x0, x1] = solve_blocks(&blocks, &rhs).unwrap();
+        assert!((x0 - x.fixed_rows::<2>(0)).amax() < 1e-13, "{x0}");
+        assert!((x1 - x.fixed_rows::<2>(2)).amax() < 1e-13, "{x1}");
+        let one = solve_blocks(&[[blocks[0][0]]], &[rhs[0]]).unwrap();
+        assert!((blocks[0][0] * one[0] - rhs[0]).amax() < 1e-14);
+        assert!(solve_blocks(&[[Matrix::<2, 2>::zeros()]], &[rhs[0]]).is_none());
+    }
+
+    #[test]
+    fn max_abs_reports_nan_as_worst() {
+        assert_eq!(max_abs(&Vector::<3>::new(1.0, -3.0, 2.0)), (3.0, 1));
+        assert!(max_abs(&Vector::<2>::new(1.0, f64::NAN)).0.is_nan());
+    }
 }

@@ -367,3 +367,102 @@ where
     }
     Ok(blocks)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::method::AnyMethod;
+    use crate::options::InnerMethod;
+    use crate::testing::{swinging, PENDULUM};
+
+    fn constant(p: f64, h: f64) -> StepPolynomial<1> {
+        Multipliers {
+            base: Vector::zeros(),
+            coefficients: [Vector::from([p])],
+            first_power: 0,
+        }
+        .polynomial(h)
+    }
+
+    #[test]
+    fn constant_prediction_is_exact_for_linear_multipliers() {
+        // λ(t) = 2 + 3t; a step's constant p is its mean, λ at the step's midpoint.
+        let lambda = |t: f64| 2.0 + 3.0 * t;
+        let mut predictor = Predictor::<1>::default();
+        assert_eq!(predictor.constant(0.1, true, Vector::from([7.0]))[0], 7.0);
+        predictor.record(constant(lambda(0.05), 0.1));
+        assert_eq!(
+            predictor.constant(0.1, true, Vector::zeros())[0],
+            lambda(0.05)
+        );
+        predictor.record(constant(lambda(0.15), 0.1));
+        // Next step [0.2, 0.25]: midpoint 0.225.
+        let p = predictor.constant(0.05, true, Vector::zeros())[0];
+        assert!((p - lambda(0.225)).abs() < 1e-13, "{p}");
+        // Without extrapolation: the last step's.
+        assert_eq!(
+            predictor.constant(0.05, false, Vector::zeros())[0],
+            lambda(0.15)
+        );
+        predictor.reset();
+        assert_eq!(predictor.constant(0.05, true, Vector::from([1.0]))[0], 1.0);
+    }
+
+    #[test]
+    fn quadratic_prediction_continues_a_quadratic_exactly() {
+        // λ(t) = 1 - t + 4t²; the last step was [0, 0.2], the next is [0.2, 0.3].
+        let lambda = |t: f64| 1.0 - t + 4.0 * t * t;
+        let (h0, h1) = (0.2, 0.1);
+        let last = Multipliers {
+            base: Vector::from([lambda(0.0)]),
+            coefficients: [Vector::from([-h0]), Vector::from([4.0 * h0 * h0])],
+            first_power: 1,
+        };
+        let mut predictor = Predictor::<1>::default();
+        predictor.record(last.polynomial(h0));
+        let next = Multipliers {
+            base: Vector::from([lambda(0.2)]),
+            coefficients: predictor.continued::<2>(h1),
+            first_power: 1,
+        };
+        for s in [0.0, 0.3, 1.0] {
+            let t = 0.2 + s * h1;
+            assert!((next.at(s)[0] - lambda(t)).abs() < 1e-13, "s = {s}");
+        }
+    }
+
+    fn newton_from_a_poor_guess(exact: bool) -> (f64, u32) {
+        let mut model = Model::new(&PENDULUM);
+        let (q, v) = swinging();
+        model.prepare(&q, 0.0).unwrap();
+        let mut method = AnyMethod::<2>::new(InnerMethod::DormandPrince54);
+        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let guess = Multipliers {
+            base: Vector::zeros(),
+            coefficients: [Vector::from([0.0])],
+            first_power: 0,
+        };
+        let settings = NewtonSettings {
+            tolerance: 1e-12,
+            max_iterations: 30,
+            exact,
+            accept_linearised: false,
+        };
+        let h = 0.02;
+        match solve(&mut model, &mut method, &start, h, h, guess, &settings).unwrap() {
+            NewtonOutcome::Converged {
+                end, integrations, ..
+            } => (model.residual(&end.q, &end.v, h).unwrap()[0], integrations),
+            NewtonOutcome::Failed { cause, .. } => panic!("{cause}"),
+        }
+    }
+
+    #[test]
+    fn newton_meets_the_tolerance_faster_with_the_exact_sensitivity() {
+        let (g_exact, exact) = newton_from_a_poor_guess(true);
+        let (g_paper, paper) = newton_from_a_poor_guess(false);
+        assert!(g_exact.abs() <= 1e-12 && g_paper.abs() <= 1e-12);
+        assert!(exact <= 4, "exact: {exact} integrations");
+        assert!(paper > exact, "paper: {paper}, exact: {exact}");
+    }
+}

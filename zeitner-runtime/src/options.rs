@@ -219,12 +219,11 @@ impl Options {
                 rtol,
                 atol,
             } => {
-                if !positive(initial_step)
-                    || !(min_step >= 0.0 && min_step.is_finite())
-                    || !(max_step > 0.0)
-                    || min_step > initial_step
-                    || initial_step > max_step
-                {
+                let ordered = min_step.is_finite()
+                    && min_step >= 0.0
+                    && min_step <= initial_step
+                    && initial_step <= max_step;
+                if !(positive(initial_step) && ordered) {
                     return refuse(InvalidOption::StepSize);
                 }
                 if !(positive(rtol) && positive(atol)) {

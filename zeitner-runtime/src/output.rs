@@ -161,3 +161,36 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Deref
         self.simulator.last()
     }
 }
+
+#[cfg(all(test, feature = "dense-output"))]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dense_output_reproduces_both_ends_and_a_quintic_inside() {
+        // q(t) = t⁵ on [1, 1.5]: quintic Hermite from values, slopes and curvatures is exact.
+        let point = |t: f64| Point::<1, 1> {
+            t,
+            q: Vector::from([t.powi(5)]),
+            v: Vector::from([5.0 * t.powi(4)]),
+            a: Vector::from([20.0 * t.powi(3)]),
+            lambda: Vector::from([t]),
+        };
+        let report = StepReport {
+            start: point(1.0),
+            end: point(1.5),
+            step_multipliers: Vector::zeros(),
+            constraint_force: Vector::zeros(),
+            residual: Vector::zeros(),
+            rate_residual: Vector::zeros(),
+            newton_iterations: 1,
+        };
+        for t in [1.0, 1.2, 1.37, 1.5] {
+            let sampled = report.sample(t);
+            let exact = point(t);
+            assert!((sampled.q - exact.q).amax() < 1e-12, "q at {t}");
+            assert!((sampled.v - exact.v).amax() < 1e-11, "q' at {t}");
+            assert!((sampled.lambda - exact.lambda).amax() < 1e-15, "λ at {t}");
+        }
+    }
+}

@@ -1,1 +1,87 @@
-//! placeholder
+//! A hand-written system with closed-form derivatives for the unit tests: a planar pendulum
+//! `x² + y² = L²` with a cubic spring in `x` and linear damping, so that every Jacobian the
+//! runtime uses is nonzero.
+
+use crate::mass::DiagonalMass;
+use crate::system::{ConstrainedSystem, MassKind, Matrix, SceneSummary, Vector};
+
+pub(crate) struct SpringPendulum {
+    pub m: f64,
+    pub length: f64,
+    pub g: f64,
+    pub k: f64,
+    pub d: f64,
+}
+
+pub(crate) const PENDULUM: SpringPendulum = SpringPendulum {
+    m: 1.3,
+    length: 1.1,
+    g: 9.81,
+    k: 4.0,
+    d: 0.3,
+};
+
+impl ConstrainedSystem<2, 1> for SpringPendulum {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const SUMMARY: SceneSummary = SceneSummary {
+        coordinates: 2,
+        position_constraints: 1,
+        velocity_constraints: 0,
+        mass: MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[],
+    };
+    type Mass = DiagonalMass<2>;
+
+    fn mass_matrix(&self, _: &Vector<2>, _: f64) -> DiagonalMass<2> {
+        DiagonalMass(Vector::from([self.m, self.m]))
+    }
+    fn applied_force(&self, q: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<2> {
+        Vector::from([
+            -self.k * q[0] * q[0] * q[0] - self.d * v[0],
+            -self.m * self.g - self.d * v[1],
+        ])
+    }
+    fn constraint_residual(&self, q: &Vector<2>, _: &Vector<2>, _: f64) -> Vector<1> {
+        Vector::from([q[0] * q[0] + q[1] * q[1] - self.length * self.length])
+    }
+    fn constraint_jacobian(&self, q: &Vector<2>, _: &Vector<2>, _: f64) -> Matrix<1, 2> {
+        Matrix::from_row_slice(&[2.0 * q[0], 2.0 * q[1]])
+    }
+    fn constraint_rate(&self, q: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<1> {
+        Vector::from([2.0 * (q[0] * v[0] + q[1] * v[1])])
+    }
+    fn constraint_acceleration_bias(&self, _: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<1> {
+        Vector::from([2.0 * (v[0] * v[0] + v[1] * v[1])])
+    }
+    fn force_jacobians(
+        &self,
+        q: &Vector<2>,
+        _: &Vector<2>,
+        _: f64,
+    ) -> (Matrix<2, 2>, Matrix<2, 2>) {
+        let dq = Matrix::from_row_slice(&[-3.0 * self.k * q[0] * q[0], 0.0, 0.0, 0.0]);
+        (dq, -self.d * Matrix::identity())
+    }
+    fn constraint_force_jacobians(
+        &self,
+        _: &Vector<2>,
+        _: &Vector<2>,
+        _: f64,
+        lambda: &Vector<1>,
+    ) -> (Matrix<2, 2>, Matrix<2, 2>) {
+        ((2.0 * lambda[0]) * Matrix::identity(), Matrix::zeros())
+    }
+}
+
+/// A point on the circle, swinging.
+pub(crate) fn swinging() -> (Vector<2>, Vector<2>) {
+    let angle: f64 = 0.7;
+    let (s, c) = (libm::sin(angle), libm::cos(angle));
+    let l = PENDULUM.length;
+    (
+        Vector::from([l * s, -l * c]),
+        Vector::from([1.5 * c, 1.5 * s]),
+    )
+}

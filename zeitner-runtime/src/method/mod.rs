@@ -135,3 +135,93 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::multipliers::Multipliers;
+    use crate::testing::{swinging, PENDULUM};
+
+    /// The exact sensitivity of a method's step map against central differences of the map,
+    /// for every coefficient of the multipliers.
+    fn check_sensitivity<const K: usize>(method: InnerMethod, multipliers: Multipliers<1, K>) {
+        let mut model = Model::new(&PENDULUM);
+        let (q, v) = swinging();
+        model.prepare(&q, 0.0).unwrap();
+        let start = Start::<2, 1, K>::at(0.0, q, v);
+        let h = 0.05;
+        let mut stepper = AnyMethod::<2>::new(method);
+        let end = stepper
+            .integrate(&mut model, &start, h, &multipliers, true)
+            .unwrap();
+        let delta = 1e-5;
+        for k in 0..K {
+            let mut shifted = |sign: f64| {
+                let mut m = multipliers;
+                m.coefficients[k][0] += sign * delta;
+                stepper.integrate(&mut model, &start, h, &m, false).unwrap()
+            };
+            let (plus, minus) = (shifted(1.0), shifted(-1.0));
+            let dq = (plus.q - minus.q) / (2.0 * delta);
+            let dv = (plus.v - minus.v) / (2.0 * delta);
+            let scale = end.dv_dc[k].amax();
+            assert!(scale > 0.0);
+            assert!(
+                (dq - end.dq_dc[k].column(0)).amax() < 1e-7 * scale,
+                "{method:?}, coefficient {k}: ∂q/∂c {} vs finite differences {dq}",
+                end.dq_dc[k]
+            );
+            assert!(
+                (dv - end.dv_dc[k].column(0)).amax() < 1e-7 * scale,
+                "{method:?}, coefficient {k}: ∂q'/∂c {} vs finite differences {dv}",
+                end.dv_dc[k]
+            );
+        }
+    }
+
+    fn methods() -> [InnerMethod; 4] {
+        [
+            InnerMethod::Rk4 { substeps: 1 },
+            InnerMethod::Rk4 { substeps: 3 },
+            InnerMethod::DormandPrince54,
+            #[cfg(feature = "implicit")]
+            InnerMethod::Sdirk2,
+            #[cfg(not(feature = "implicit"))]
+            InnerMethod::DormandPrince54,
+        ]
+    }
+
+    #[test]
+    fn exact_sensitivity_of_constant_multipliers_matches_central_differences() {
+        for method in methods() {
+            let constant = Multipliers {
+                base: Vector::zeros(),
+                coefficients: [Vector::from([-6.0])],
+                first_power: 0,
+            };
+            check_sensitivity(method, constant);
+        }
+    }
+
+    #[test]
+    fn exact_sensitivity_of_quadratic_multipliers_matches_central_differences() {
+        for method in methods() {
+            let quadratic = Multipliers {
+                base: Vector::from([-6.0]),
+                coefficients: [Vector::from([0.4]), Vector::from([-0.2])],
+                first_power: 1,
+            };
+            check_sensitivity(method, quadratic);
+        }
+    }
+
+    #[test]
+    fn orders_are_those_of_the_tableaux() {
+        let order = |m: InnerMethod| Method::<2, 1>::order(&AnyMethod::<2>::new(m));
+        let embedded = |m: InnerMethod| Method::<2, 1>::embedded_order(&AnyMethod::<2>::new(m));
+        assert_eq!(order(InnerMethod::Rk4 { substeps: 1 }), 4);
+        assert_eq!(embedded(InnerMethod::Rk4 { substeps: 1 }), None);
+        assert_eq!(order(InnerMethod::DormandPrince54), 5);
+        assert_eq!(embedded(InnerMethod::DormandPrince54), Some(4));
+    }
+}

@@ -94,6 +94,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for Sdirk2<N> {
         self.factorizations
     }
 
+    // Stage indices read as the tableau is written.
+    #[allow(clippy::needless_range_loop)]
     fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
