@@ -350,9 +350,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     fn attempt(&mut self, h: f64, t_end: f64) -> Result<Attempt<N, Z>, StepError> {
         match self.options.multipliers {
             MultiplierModel::Constant => {
-                let p =
-                    self.predictor
-                        .constant(h, self.options.extrapolate_multipliers, self.lambda);
+                let p = self.constant_guess(h)?;
                 let multipliers = Multipliers {
                     base: Vector::zeros(),
                     coefficients: [p],
@@ -371,6 +369,25 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
     }
 
+    /// The constant multipliers Newton starts from: with position-level rows only, those that
+    /// make the linearised constraint hold at the step end; else extrapolated from the last two
+    /// steps (or, without extrapolation, the last step's, as in the paper).
+    fn constant_guess(&mut self, h: f64) -> Result<Vector<Z>, StepError> {
+        let extrapolate = self.options.extrapolate_multipliers;
+        if extrapolate && S::POSITION_CONSTRAINTS == Z {
+            let state = (self.time(), &self.q, &self.v);
+            // `g` of position rows does not depend on the velocities: the report's serves.
+            let known = (&self.last.residual, &self.lambda);
+            let predicted =
+                self.predictor
+                    .constant_from_constraints(&mut self.model, state, known, h)?;
+            if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
+                return Ok(p);
+            }
+        }
+        Ok(self.predictor.constant(h, extrapolate, self.lambda))
+    }
+
     fn attempt_with<const K: usize>(
         &mut self,
         h: f64,
@@ -383,6 +400,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             max_iterations: self.options.max_newton_iterations,
             exact: self.options.exact(),
             accept_linearised: self.options.accept_linearised_update,
+            step: self.options.step,
         };
         let outcome = multipliers::solve(
             &mut self.model,
@@ -503,8 +521,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             VelocityProjection::State => step.point.v,
             _ => step.v,
         };
+        self.predictor
+            .record(step.multipliers, &self.lambda, &step.point.lambda);
         self.lambda = step.point.lambda;
-        self.predictor.record(step.multipliers);
         self.last = report;
         self.planned_step = self.next_step(h_used, h_planned, &step, landing);
         self.statistics.steps += 1;
