@@ -8,7 +8,7 @@ use crate::mass::MassFactor;
 use crate::model::Model;
 use crate::options::StartPolicy;
 use crate::output::Point;
-use crate::system::{ConstrainedSystem, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Gauss–Newton sweeps when projecting a start onto the position-level constraints.
 const POSITION_SWEEPS: u32 = 50;
@@ -160,12 +160,23 @@ pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<Point<N, Z>, StepError> {
+    Ok(consistent_point_and_gram(model, t, q, v)?.0)
+}
+
+/// [`consistent_point`], with `G` and `G M⁻¹ Gᵀ` at the point.
+fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
     let directions = model.directions(&q, &v, t)?;
     let force = model.force(&q, &v, t)?;
     let m_inv_f = directions.factor.solve(&force);
     let bias = model.bias(&q, &v, t)?;
     let rhs = directions.jacobian * m_inv_f + bias;
-    let lambda = solve_spd(&directions.gram(), &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+    let gram = directions.gram();
+    let lambda = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
         StepError::RankDeficientConstraints {
             t,
             dependent_rows: rows,
@@ -175,7 +186,19 @@ pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const
     if !a.iter().chain(lambda.iter()).all(|x| x.is_finite()) {
         return Err(StepError::non_finite_state(t));
     }
-    Ok(Point { t, q, v, a, lambda })
+    let point = Point { t, q, v, a, lambda };
+    let gram = Gram {
+        jacobian: directions.jacobian,
+        gram,
+    };
+    Ok((point, gram))
+}
+
+/// `G` and `G M⁻¹ Gᵀ` at a consistent point, kept for the next step's multiplier prediction.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Gram<const N: usize, const Z: usize> {
+    pub jacobian: Matrix<Z, N>,
+    pub gram: Matrix<Z, Z>,
 }
 
 /// The consistent point at a step end: velocities projected once onto the velocity-level
@@ -186,9 +209,9 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     q: Vector<N>,
     v: Vector<N>,
     tolerance: f64,
-) -> Result<Point<N, Z>, StepError> {
+) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
     let v = project_velocities(model, &q, v, t, tolerance, 1)?;
-    consistent_point(model, t, q, v)
+    consistent_point_and_gram(model, t, q, v)
 }
 
 #[cfg(test)]

@@ -69,10 +69,11 @@ impl ControllerSettings {
     }
 }
 
-/// The controller's memory: the error norm of the last accepted step.
+/// The controller's memory: the logarithm of the last accepted step's error norm (one `ln`
+/// and one `exp` per step instead of two powers).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Controller {
-    previous_error: f64,
+    ln_previous_error: f64,
 }
 
 /// Hairer & Wanner's start value of the previous error (`facold`).
@@ -81,7 +82,7 @@ const FIRST_PREVIOUS_ERROR: f64 = 1e-4;
 impl Controller {
     pub fn new() -> Self {
         Controller {
-            previous_error: FIRST_PREVIOUS_ERROR,
+            ln_previous_error: libm::log(FIRST_PREVIOUS_ERROR),
         }
     }
 
@@ -91,12 +92,11 @@ impl Controller {
         let k = f64::from(k.max(1));
         let beta = settings.beta_times_order / k;
         let alpha = 1.0 / k - 0.75 * beta;
-        let error = error.max(1e-10);
-        let factor =
-            settings.safety * libm::pow(error, -alpha) * libm::pow(self.previous_error, beta);
+        let ln_error = libm::log(error.max(1e-10));
+        let factor = settings.safety * libm::exp(-alpha * ln_error + beta * self.ln_previous_error);
         // Hairer & Wanner keep at least 1e-4, so that one very accurate step does not hold back
         // the next one's growth.
-        self.previous_error = error.max(FIRST_PREVIOUS_ERROR);
+        self.ln_previous_error = ln_error.max(libm::log(FIRST_PREVIOUS_ERROR));
         factor.clamp(settings.min_factor, settings.max_factor)
     }
 

@@ -202,6 +202,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `G`, `M⁻¹Gᵀ` and the mass factor at a point.
+    #[inline]
     pub fn directions(
         &mut self,
         q: &Vector<N>,
@@ -219,6 +220,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `a = M⁻¹(F - Gᵀλ)` with `λ` fixed.
+    #[inline]
     pub fn acceleration(
         &mut self,
         q: &Vector<N>,

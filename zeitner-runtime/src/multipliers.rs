@@ -4,7 +4,7 @@
 
 use crate::control::error_norm;
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{dependent_rows, max_abs, solve_blocks, solve_spd};
+use crate::linalg::{dependent_rows, max_abs, solve_blocks};
 use crate::mass::MassFactor;
 use crate::method::{Method, Start, StepEnd};
 use crate::model::Model;
@@ -116,20 +116,17 @@ impl<const Z: usize> Predictor<Z> {
     /// velocities' error normal to the constraints flips sign from step to step and the step's
     /// `p` must undo it, which no extrapolation of past `p` foresees. Position-level rows only;
     /// `None` where `G M⁻¹Gᵀ` is singular.
-    pub fn constant_from_constraints<S, const N: usize>(
+    pub fn constant_from_constraints(
         &self,
-        model: &mut Model<'_, S, N, Z>,
-        (t, q, v): (f64, &Vector<N>, &Vector<N>),
-        (g, lambda): (&Vector<Z>, &Vector<Z>),
+        gram: &Matrix<Z, Z>,
+        (g, w): (&Vector<Z>, &Vector<Z>),
+        lambda: &Vector<Z>,
         h: f64,
-    ) -> Result<Option<Vector<Z>>, StepError>
-    where
-        S: ConstrainedSystem<N, Z>,
-    {
-        let gram = model.directions(q, v, t)?.gram();
-        let w = model.rate(q, v, t)?;
-        let correction = solve_spd(&gram, &((2.0 / (h * h)) * (g + h * w)), Z).ok();
-        Ok(correction.map(|c| lambda + (h / 3.0) * self.lambda_rate + c))
+    ) -> Option<Vector<Z>> {
+        // A first guess only: a plain Cholesky solve, without the rank diagnosis of `solve_spd`.
+        let cholesky = nalgebra::Cholesky::new(*gram)?;
+        let correction = cholesky.solve(&((2.0 / (h * h)) * (g + h * w)));
+        Some(lambda + (h / 3.0) * self.lambda_rate + correction)
     }
 
     /// Constant multipliers for a step of size `h`: the last step's mean, extrapolated linearly
@@ -264,7 +261,7 @@ where
             return Ok(converged(end, multipliers, iteration));
         }
         let (dq_dc, dv_dc) = paper.unwrap_or((end.dq_dc, end.dv_dc));
-        let blocks = linearise(model, &end, t_end, &dq_dc, &dv_dc)?;
+        let (blocks, reach) = linearise(model, &end, t_end, &dq_dc, &dv_dc)?;
         let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
             return singular(model, &end, t_end, h, iteration, worst);
         };
@@ -278,7 +275,7 @@ where
                 q += dq_dc[k] * delta[k];
                 v += dv_dc[k] * delta[k];
             }
-            let shift = (q - end.q, delta.iter().sum::<Vector<Z>>());
+            let shift = (q - end.q, delta.iter().sum::<Vector<Z>>(), reach);
             if finite_state(&q, &v)
                 && Conditions::<Z, K>::at(model, &q, &v, t_end)?.hold(settings, h)
                 && linearisation_is_negligible(model, settings, (start, &q, &v, t_end), shift)?
@@ -298,13 +295,13 @@ where
 /// `M⁻¹ ∂(GᵀΔp)/∂q δq` in `(q, q')`. Neither the end conditions (positions, normal direction,
 /// absolute `ε`) nor the first integration's error estimate see it: where it was left
 /// unchecked, a double pendulum's energy drifted more at tighter tolerances. Adaptive steps:
-/// at most a tenth of the error tolerance; fixed steps: it may move the constraints by `ε` at
-/// most.
+/// at most a tenth of the error tolerance; fixed steps: it may move the constraints (by up to
+/// `reach`, the largest row norm of `∂g/∂q`, per unit of position) by `ε` at most.
 fn linearisation_is_negligible<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     settings: &NewtonSettings,
     (start, q, v, t_end): (&Start<N, Z, K>, &Vector<N>, &Vector<N>, f64),
-    (dq, dp): (Vector<N>, Vector<Z>),
+    (dq, dp, reach): (Vector<N>, Vector<Z>, f64),
 ) -> Result<bool, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -323,8 +320,6 @@ where
         );
         return Ok(norm <= LINEARISATION_SHARE);
     }
-    let g = model.jacobian(q, v, t_end)?;
-    let reach = (0..Z).map(|j| g.row(j).norm()).fold(0.0, f64::max);
     Ok(reach * (eq.amax() + h * ev.amax()) <= settings.tolerance)
 }
 
@@ -430,7 +425,7 @@ fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     t_end: f64,
     dq_dc: &[Matrix<N, Z>; K],
     dv_dc: &[Matrix<N, Z>; K],
-) -> Result<[[Matrix<Z, Z>; K]; K], StepError>
+) -> Result<([[Matrix<Z, Z>; K]; K], f64), StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
@@ -453,7 +448,9 @@ where
             blocks[1][k] = dw_dq * dq_dc[k] + dg_dq * dv_dc[k];
         }
     }
-    Ok(blocks)
+    // How far a change of the positions moves the constraints, at most.
+    let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, f64::max);
+    Ok((blocks, reach))
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use core::ops::Deref;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::simulator::Simulator;
-use crate::system::{ConstrainedSystem, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,15 +89,21 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     }
 }
 
-/// The report of a step from its end point, with the constraint forces and residuals there.
+/// The report of a step from its end point, with the constraint forces and residuals there;
+/// `jacobian` is `G` at the end point if the caller has it already.
+#[inline]
 pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: Point<N, Z>,
     end: Point<N, Z>,
     step_multipliers: Vector<Z>,
     newton_iterations: u32,
+    jacobian: Option<&Matrix<Z, N>>,
 ) -> Result<StepReport<N, Z>, StepError> {
-    let g = model.jacobian(&end.q, &end.v, end.t)?;
+    let g = match jacobian {
+        Some(g) => *g,
+        None => model.jacobian(&end.q, &end.v, end.t)?,
+    };
     let constraint_force = -g.tr_mul(&end.lambda);
     if !constraint_force.iter().all(|x| x.is_finite()) {
         return Err(StepError::non_finite_state(end.t));

@@ -3,7 +3,7 @@
 //! is a part of its own ([`crate::multipliers`], [`crate::method`], [`crate::control`],
 //! [`crate::consistency`], [`crate::output`]); this file only puts them in order.
 
-use crate::consistency::{consistent_start, end_point, StartReport};
+use crate::consistency::{consistent_start, end_point, Gram, StartReport};
 use crate::control::{bounds, error_norm, freezing_error, Controller};
 use crate::error::{InvalidOption, RowSet, StepError};
 use crate::method::{AnyMethod, Method, Start, StepEnd};
@@ -44,6 +44,9 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     t_carry: f64,
     /// The consistent multipliers at the current time, the anchor of varying multipliers.
     lambda: Vector<Z>,
+    /// `G` and `G M⁻¹Gᵀ` at the current state and the consistent velocities there, from the
+    /// last step's end point (the multiplier prediction's linearisation); none after a start.
+    state_gram: Option<(Gram<N, Z>, Vector<N>)>,
     /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
     jacobian_row_scale: Vector<Z>,
     stop_time: Option<f64>,
@@ -63,6 +66,8 @@ struct Accepted<const N: usize, const Z: usize> {
     multipliers: StepPolynomial<Z>,
     integrations: u32,
     error_norm: f64,
+    /// `G` and `G M⁻¹Gᵀ` at the end point.
+    gram: Gram<N, Z>,
 }
 
 enum Attempt<const N: usize, const Z: usize> {
@@ -96,7 +101,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let tolerance = options.constraint_tolerance;
         let (point, start_report) =
             consistent_start(&mut model, (q0, v0, t0), tolerance, options.start)?;
-        let last = end_report(&mut model, point, point, point.lambda, 0)?;
+        let last = end_report(&mut model, point, point, point.lambda, 0, None)?;
         let start_jacobian = model.jacobian(&point.q, &point.v, t0)?;
         Ok(Simulator {
             model,
@@ -108,6 +113,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             v: point.v,
             t_carry: 0.0,
             lambda: point.lambda,
+            state_gram: None,
             jacobian_row_scale: Vector::from_fn(|j, _| start_jacobian.row(j).norm()),
             stop_time: None,
             planned_step: first_step(options.step),
@@ -130,7 +136,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .model
             .acceleration(&point.q, &point.v, point.t, &lambda)?
             .a;
-        self.last = end_report(&mut self.model, point, point, lambda, 0)?;
+        self.last = end_report(&mut self.model, point, point, lambda, 0, None)?;
         self.lambda = lambda;
         self.start_report.multipliers = lambda;
         self.start_report.multipliers_given = true;
@@ -157,9 +163,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             self.options.constraint_tolerance,
             self.options.start,
         )?;
-        self.last = end_report(&mut self.model, point, point, point.lambda, 0)?;
+        self.last = end_report(&mut self.model, point, point, point.lambda, 0, None)?;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
         self.t_carry = 0.0;
+        self.state_gram = None;
         self.predictor.reset();
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
@@ -374,13 +381,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// steps (or, without extrapolation, the last step's, as in the paper).
     fn constant_guess(&mut self, h: f64) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
-        if extrapolate && S::POSITION_CONSTRAINTS == Z {
-            let state = (self.time(), &self.q, &self.v);
-            // `g` of position rows does not depend on the velocities: the report's serves.
-            let known = (&self.last.residual, &self.lambda);
+        if let Some((at, consistent_v)) = self.state_gram.filter(|_| extrapolate) {
+            // Position rows: `g` does not depend on the velocities (the report's serves), and
+            // `w` is linear in them, zero at the consistent ones.
+            let w = at.jacobian * (self.v - consistent_v);
+            let residuals = (&self.last.residual, &w);
             let predicted =
                 self.predictor
-                    .constant_from_constraints(&mut self.model, state, known, h)?;
+                    .constant_from_constraints(&at.gram, residuals, &self.lambda, h);
             if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
                 return Ok(p);
             }
@@ -442,7 +450,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (h, t_end): (f64, f64),
     ) -> Result<Attempt<N, Z>, StepError> {
         let tolerance = self.options.constraint_tolerance;
-        let point = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
+        let (point, gram) = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
             let start = (self.time(), &self.q, &self.v, &self.lambda);
@@ -473,6 +481,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             multipliers: multipliers.polynomial(h),
             integrations,
             error_norm: error,
+            gram,
         }))
     }
 
@@ -504,12 +513,17 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 .acceleration(&step.q, &step.v, t_end, &step_multipliers)?
                 .a;
         }
+        // `G` of the end point serves the report unless the reported velocities differ and
+        // some row depends on them.
+        let raw = self.options.velocity_projection == VelocityProjection::Off;
+        let known = (!raw || S::POSITION_CONSTRAINTS == Z).then_some(&step.gram.jacobian);
         let report = end_report(
             &mut self.model,
             self.last.end,
             reported,
             step_multipliers,
             step.integrations,
+            known,
         )?;
         self.t_carry = if landing {
             0.0
@@ -524,6 +538,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.predictor
             .record(step.multipliers, &self.lambda, &step.point.lambda);
         self.lambda = step.point.lambda;
+        let position_rows_only = S::POSITION_CONSTRAINTS == Z;
+        self.state_gram = position_rows_only.then_some((step.gram, step.point.v));
         self.last = report;
         self.planned_step = self.next_step(h_used, h_planned, &step, landing);
         self.statistics.steps += 1;

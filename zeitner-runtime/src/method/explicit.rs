@@ -116,6 +116,7 @@ impl<const N: usize, const Z: usize, const ST: usize> Method<N, Z> for Explicit<
         self.tableau.embedded_order.filter(|_| self.substeps == 1)
     }
 
+    #[inline]
     fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,

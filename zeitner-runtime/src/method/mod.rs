@@ -111,6 +111,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         }
     }
 
+    #[inline]
     fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,

@@ -177,6 +177,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for Sdirk2<N> {
 
 /// Newton on one stage's velocity with the kept iteration matrix; `None` when it does not
 /// converge.
+#[inline]
 fn solve_stage<S, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     lu: &Lu<N>,
