@@ -1,7 +1,7 @@
 //! The orchestration of Zeitner's step: predict the multipliers, let Newton correct them until
 //! the constraints hold at the step end, test the error, accept or retry, report. Each of those
-//! is a part of its own ([`crate::multipliers`], [`crate::method`], [`crate::control`],
-//! [`crate::consistency`], [`crate::output`]); this file only puts them in order.
+//! is a part of its own (`multipliers`, `method`, [`crate::control`], [`crate::consistency`],
+//! [`crate::output`]); this file only puts them in order.
 
 use crate::consistency::{consistent_start, end_point, Gram, StartReport};
 use crate::control::{bounds, error_norm, freezing_error, Controller};
