@@ -24,7 +24,7 @@ pub extern "C" fn zeitner_steam_generator(steps: u32) -> f64 {
         return f64::NAN;
     };
     match sim.advance_to(f64::from(steps) * 1e-3, |_| {}) {
-        Ok(()) => sim.last().end.q[0],
+        Ok(_) => sim.last().end.q[0],
         Err(_) => f64::NAN,
     }
 }
