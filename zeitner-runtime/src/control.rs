@@ -102,7 +102,8 @@ impl Controller {
 
     /// The factor for the retry after a step rejected with `error` > 1 (or NaN).
     pub fn rejected(settings: &ControllerSettings, error: f64, k: u32) -> f64 {
-        let factor = settings.safety * libm::pow(error, -1.0 / f64::from(k.max(1)));
+        // `exp` and `ln` rather than `pow`: the accepted path links them already.
+        let factor = settings.safety * libm::exp(-libm::log(error) / f64::from(k.max(1)));
         if factor.is_finite() {
             factor.clamp(settings.min_factor, settings.max_factor_after_rejection)
         } else {

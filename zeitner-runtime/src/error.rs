@@ -351,6 +351,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "quadratic-multipliers")]
     fn every_invalid_option_says_what_to_change() {
         let kind = ConstraintKind::Velocity;
         let multipliers = MultiplierModel::Quadratic;

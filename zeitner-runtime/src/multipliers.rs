@@ -147,6 +147,7 @@ impl<const Z: usize> Predictor<Z> {
 
     /// The coefficients of `s`, `s²`, … for multipliers anchored at the step start: the last
     /// step's polynomial continued into the next step of size `h`.
+    #[cfg(feature = "quadratic-multipliers")]
     pub fn continued<const K: usize>(&self, h: f64) -> [Vector<Z>; K] {
         let mut coefficients = [Vector::zeros(); K];
         if let Some(StepPolynomial { c, h: last_h }) = self.last.filter(|last| last.h > 0.0) {
@@ -502,6 +503,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "quadratic-multipliers")]
     fn quadratic_prediction_continues_a_quadratic_exactly() {
         // λ(t) = 1 - t + 4t²; the last step was [0, 0.2], the next is [0.2, 0.3].
         let lambda = |t: f64| 1.0 - t + 4.0 * t * t;
@@ -552,6 +554,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "exact-sensitivity")]
     fn newton_meets_the_tolerance_faster_with_the_exact_sensitivity() {
         let (g_exact, exact) = newton_from_a_poor_guess(true);
         let (g_paper, paper) = newton_from_a_poor_guess(false);

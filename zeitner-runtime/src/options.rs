@@ -59,15 +59,18 @@ pub enum MultiplierModel {
     Constant,
     /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces the
     /// position- and velocity-level constraints at the step end (order 5 with Dormand–Prince).
-    /// Position-level constraints only.
+    /// Position-level constraints only. Needs the `quadratic-multipliers` feature.
+    #[cfg(feature = "quadratic-multipliers")]
     Quadratic,
 }
 
 impl MultiplierModel {
     /// Whether this model can enforce constraints of `kind`.
     pub fn supports(self, kind: ConstraintKind) -> bool {
+        let _ = kind; // Every model left without the feature supports both kinds.
         match self {
             MultiplierModel::Constant => true,
+            #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Quadratic => kind == ConstraintKind::Position,
         }
     }

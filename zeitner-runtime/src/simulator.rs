@@ -365,6 +365,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 };
                 self.attempt_with(h, t_end, multipliers)
             }
+            #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Quadratic => {
                 let multipliers = Multipliers {
                     base: self.lambda,

@@ -193,6 +193,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "exact-sensitivity")]
     fn exact_sensitivity_of_constant_multipliers_matches_central_differences() {
         for method in methods() {
             let constant = Multipliers {
@@ -205,6 +206,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "exact-sensitivity")]
     fn exact_sensitivity_of_quadratic_multipliers_matches_central_differences() {
         for method in methods() {
             let quadratic = Multipliers {
