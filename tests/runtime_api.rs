@@ -6,8 +6,8 @@ mod common;
 
 use common::pendulum::Pendulum;
 use zeitner::{
-    constrained_system, ConstraintKind, InvalidOption, MultiplierModel, Options, Sensitivity,
-    Simulator, StartPolicy, StepControl, StepError, StopReason, Vector,
+    constrained_system, InvalidOption, MultiplierModel, Options, Sensitivity, Simulator,
+    StartPolicy, StepControl, StepError, StopReason, Vector,
 };
 
 const PENDULUM: Pendulum = Pendulum {
@@ -245,27 +245,20 @@ impl Follower {
 }
 
 #[test]
-fn a_multiplier_model_that_cannot_enforce_a_kind_of_row_is_refused_by_name() {
-    let quadratic = Options {
-        multipliers: MultiplierModel::Quadratic,
-        ..Options::default()
-    };
-    let expected = StepError::InvalidOption(InvalidOption::UnsupportedConstraints {
-        multipliers: MultiplierModel::Quadratic,
-        kind: ConstraintKind::Velocity,
-    });
+fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_only() {
+    let resolve = |position_rows, rows| MultiplierModel::Automatic.resolve(position_rows, rows);
+    assert_eq!(resolve(1, 2), MultiplierModel::Quadratic);
+    assert_eq!(resolve(0, 1), MultiplierModel::Quadratic);
+    assert_eq!(resolve(2, 2), MultiplierModel::Constant);
+    // A mixed scene runs with it and keeps both kinds of rows.
     let (q, v) = (Vector::<3>::new(1.0, 0.0, 0.0), Vector::zeros());
-    assert_eq!(
-        Simulator::new(&Follower, q, v, 0.0, quadratic).err(),
-        Some(expected)
-    );
     let mut sim = Simulator::new(&Follower, q, v, 0.0, Options::default()).unwrap();
-    assert_eq!(sim.set_options(quadratic), Err(expected));
-    assert_eq!(sim.options().multipliers, MultiplierModel::Constant);
-    sim.advance_to(0.1, |_| {}).unwrap();
-    assert!(expected
-        .to_string()
-        .contains("use `MultiplierModel::Constant`"));
+    sim.advance_to(1.0, |step| {
+        assert!(step.residual.amax() <= 1e-10, "{}", step.residual);
+    })
+    .unwrap();
+    let end = sim.last().end;
+    assert!((end.v[2] - end.v[0]).abs() < 1e-9);
 }
 
 #[test]

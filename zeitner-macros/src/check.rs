@@ -82,11 +82,16 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
     let k = model
         .function(Role::VelocityConstraints)
         .map_or(0, |f| f.shape.len());
-    if let Some(constraints) = model.function(Role::Constraints) {
-        if r == 0 {
+    // Position-level rows may be absent (a purely nonholonomic model), but not all rows.
+    for role in [Role::Constraints, Role::VelocityConstraints] {
+        if let Some(function) = model.function(role).filter(|_| r + k == 0) {
             errors.error_spanned_by(
-                constraints.shape.len_expr(),
-                "`constraints` must return at least one constraint",
+                function.shape.len_expr(),
+                format_args!(
+                    "`{}` returns no constraint and the model has no other: a model needs at \
+                     least one constraint row",
+                    role.name()
+                ),
             );
         }
     }

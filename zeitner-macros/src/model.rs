@@ -151,8 +151,11 @@ impl<'a> Model<'a> {
                 functions.push(parsed);
             }
         }
+        // `constraints` may be left out when `velocity_constraints` states every row.
+        let constraints_optional = seen.contains(&Role::VelocityConstraints);
         for role in [Role::Mass, Role::Force, Role::Constraints] {
-            if !seen.contains(&role) {
+            let optional = role == Role::Constraints && constraints_optional;
+            if !(seen.contains(&role) || optional) {
                 errors.error_spanned_by(
                     &item.self_ty,
                     format_args!(

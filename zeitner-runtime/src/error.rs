@@ -3,8 +3,6 @@
 
 use core::fmt;
 
-use crate::options::MultiplierModel;
-
 /// The model function (or the state) in which a non-finite value appeared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
@@ -40,13 +38,6 @@ impl fmt::Display for ModelFunction {
             ModelFunction::State => "the state",
         })
     }
-}
-
-/// Whether a constraint row is position-level (`g(q, t)`) or velocity-level (`g(q, q', t)`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ConstraintKind {
-    Position,
-    Velocity,
 }
 
 /// How many rows a [`RowSet`] names one by one; the rest are counted.
@@ -173,11 +164,6 @@ pub enum InvalidOption {
     InitialMultipliers,
     /// Adaptive steps need an error estimate: only `DormandPrince54` has one.
     AdaptiveNeedsErrorEstimate,
-    /// The multiplier model cannot enforce constraints of this kind.
-    UnsupportedConstraints {
-        multipliers: MultiplierModel,
-        kind: ConstraintKind,
-    },
 }
 
 impl fmt::Display for InvalidOption {
@@ -214,15 +200,6 @@ impl fmt::Display for InvalidOption {
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
                 "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, or \
                  `StepControl::Fixed` with this method",
-            ),
-            InvalidOption::UnsupportedConstraints { multipliers, kind } => write!(
-                f,
-                "`MultiplierModel::{multipliers:?}` cannot enforce {} constraints: use \
-                 `MultiplierModel::Constant` for this scene",
-                match kind {
-                    ConstraintKind::Position => "position-level",
-                    ConstraintKind::Velocity => "velocity-level",
-                }
             ),
         }
     }
@@ -351,19 +328,10 @@ mod tests {
     }
 
     #[test]
-    #[cfg(feature = "quadratic-multipliers")]
     fn every_invalid_option_says_what_to_change() {
-        let kind = ConstraintKind::Velocity;
-        let multipliers = MultiplierModel::Quadratic;
-        let message =
-            StepError::InvalidOption(InvalidOption::UnsupportedConstraints { multipliers, kind })
-                .to_string();
-        assert_eq!(
-            message,
-            "invalid option: `MultiplierModel::Quadratic` cannot enforce velocity-level \
-             constraints: use `MultiplierModel::Constant` for this scene"
-        );
         let atol = StepError::InvalidOption(InvalidOption::ErrorTolerances).to_string();
         assert!(atol.contains("atol = 0"), "{atol}");
+        let iterations = StepError::InvalidOption(InvalidOption::IterationLimit).to_string();
+        assert!(iterations.contains("between 1 and 1000"), "{iterations}");
     }
 }

@@ -41,7 +41,7 @@ mod testing;
 
 pub use consistency::StartReport;
 pub use control::ControllerSettings;
-pub use error::{ConstraintKind, InvalidOption, ModelFunction, Row, RowSet, StepError};
+pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
 pub use options::{

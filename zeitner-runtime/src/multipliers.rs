@@ -191,8 +191,9 @@ pub(crate) enum NewtonOutcome<const N: usize, const Z: usize, const K: usize> {
     Failed { cause: StepError, integrations: u32 },
 }
 
-/// The end conditions of `K` coefficients per row: `g = 0`; with two, also `w = 0` (`ġ` of the
-/// position rows).
+/// The end conditions of `K` coefficients per row: `g = 0`; with two, also its time derivative:
+/// `w = ġ = 0` for position rows, and for velocity rows `ġ = G q'' + b = 0` with `q''` from the
+/// multipliers prescribed at the step end (so that they end consistent).
 struct Conditions<const Z: usize, const K: usize> {
     values: [Vector<Z>; K],
 }
@@ -200,14 +201,19 @@ struct Conditions<const Z: usize, const K: usize> {
 impl<const Z: usize, const K: usize> Conditions<Z, K> {
     fn at<S: ConstrainedSystem<N, Z>, const N: usize>(
         model: &mut Model<'_, S, N, Z>,
-        q: &Vector<N>,
-        v: &Vector<N>,
-        t: f64,
+        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        lambda_end: &Vector<Z>,
     ) -> Result<Self, StepError> {
         let mut values = [Vector::zeros(); K];
         values[0] = model.residual(q, v, t)?;
         if K > 1 {
             values[1] = model.rate(q, v, t)?;
+            let r = S::POSITION_CONSTRAINTS;
+            if r < Z {
+                let acceleration = model.acceleration(q, v, t, lambda_end)?;
+                let rate = acceleration.jacobian * acceleration.a + model.bias(q, v, t)?;
+                values[1].rows_mut(r, Z - r).copy_from(&rate.rows(r, Z - r));
+            }
         }
         Ok(Conditions { values })
     }
@@ -256,13 +262,15 @@ where
             }
             Err(error) => return Err(error),
         };
-        let conditions = Conditions::<Z, K>::at(model, &end.q, &end.v, t_end)?;
+        let lambda_end = multipliers.at(1.0);
+        let conditions = Conditions::<Z, K>::at(model, (&end.q, &end.v, t_end), &lambda_end)?;
         worst = conditions.worst();
         if conditions.hold(settings, h) {
             return Ok(converged(end, multipliers, iteration));
         }
         let (dq_dc, dv_dc) = paper.unwrap_or((end.dq_dc, end.dv_dc));
-        let (blocks, reach) = linearise(model, &end, t_end, &dq_dc, &dv_dc)?;
+        let sensitivities = (&dq_dc, &dv_dc);
+        let (blocks, reach) = linearise(model, &end, t_end, sensitivities, &multipliers)?;
         let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
             return singular(model, &end, t_end, h, iteration, worst);
         };
@@ -278,7 +286,8 @@ where
             }
             let shift = (q - end.q, delta.iter().sum::<Vector<Z>>(), reach);
             if finite_state(&q, &v)
-                && Conditions::<Z, K>::at(model, &q, &v, t_end)?.hold(settings, h)
+                && Conditions::<Z, K>::at(model, (&q, &v, t_end), &multipliers.at(1.0))?
+                    .hold(settings, h)
                 && linearisation_is_negligible(model, settings, (start, &q, &v, t_end), shift)?
             {
                 let updated = StepEnd { q, v, ..end };
@@ -419,34 +428,51 @@ where
 /// condition `l` and coefficient `k`. `∂g/∂q` is `G` for position rows (plus `∂g/∂q'` for velocity
 /// rows); `∂w/∂q` has rows `(H_j q')ᵀ`, with the Hessian `H_j` of `g_j` from the constraint-force
 /// Jacobian along `e_j` (`∂²g/∂q∂t` is left out: Newton then converges linearly for rheonomic
-/// constraints).
+/// constraints). For velocity rows, `∂ġ/∂c ≈ G (∂q''/∂q ∂q/∂c + ∂q''/∂q' ∂q'/∂c + ∂q''/∂λ ∂λ/∂c)`
+/// with `G = ∂g/∂q'`, leaving out the derivatives of `G` and `b` themselves (an `O(τ)` share of
+/// the whole; Newton converges linearly with that rate). Also returns the largest row norm of
+/// `∂g/∂q`.
 fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     end: &StepEnd<N, Z, K>,
     t_end: f64,
-    dq_dc: &[Matrix<N, Z>; K],
-    dv_dc: &[Matrix<N, Z>; K],
+    (dq_dc, dv_dc): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
+    multipliers: &Multipliers<Z, K>,
 ) -> Result<([[Matrix<Z, Z>; K]; K], f64), StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
     let (dg_dq, dg_dv) = model.linearisation(&end.q, &end.v, t_end)?;
+    let r = S::POSITION_CONSTRAINTS;
     let mut blocks = [[Matrix::<Z, Z>::zeros(); K]; K];
     for k in 0..K {
         blocks[0][k] = dg_dq * dq_dc[k];
-        if S::POSITION_CONSTRAINTS != Z {
+        if r != Z {
             blocks[0][k] += dg_dv * dv_dc[k];
         }
     }
     if K > 1 {
         let mut dw_dq = Matrix::<Z, N>::zeros();
-        for j in 0..Z {
+        for j in 0..r {
             let unit = Vector::<Z>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
             let (hessian, _) = model.constraint_force_jacobians(&end.q, &end.v, t_end, &unit)?;
             dw_dq.set_row(j, &(hessian * end.v).transpose());
         }
         for k in 0..K {
             blocks[1][k] = dw_dq * dq_dc[k] + dg_dq * dv_dc[k];
+        }
+        if r < Z {
+            let lambda = multipliers.at(1.0);
+            let at = model.acceleration(&end.q, &end.v, t_end, &lambda)?;
+            let jac = model.acceleration_jacobians(&end.q, &end.v, t_end, &lambda, &at)?;
+            for k in 0..K {
+                let da =
+                    jac.dq * dq_dc[k] + jac.dv * dv_dc[k] + multipliers.weight(k, 1.0) * jac.dp;
+                let rows = at.jacobian * da;
+                blocks[1][k]
+                    .rows_mut(r, Z - r)
+                    .copy_from(&rows.rows(r, Z - r));
+            }
         }
     }
     // How far a change of the positions moves the constraints, at most.

@@ -2,7 +2,7 @@
 //! ([`Options::default`]); [`Options::validate`] refuses what cannot work before anything runs.
 
 use crate::control::ControllerSettings;
-use crate::error::{ConstraintKind, InvalidOption, StepError};
+use crate::error::{InvalidOption, StepError};
 
 /// The one-step method that integrates `M q'' = F - Gᵀλ(t)` with the multipliers prescribed over
 /// the step.
@@ -54,24 +54,29 @@ pub enum VelocityProjection {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum MultiplierModel {
-    /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end. The
-    /// default.
+    /// `Quadratic` for a scene with velocity-level rows (where constant multipliers cap every
+    /// method at order 2), `Constant` otherwise; `Constant` without the `quadratic-multipliers`
+    /// feature. The default.
+    Automatic,
+    /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end.
     Constant,
-    /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces the
-    /// position- and velocity-level constraints at the step end (order 5 with Dormand–Prince).
-    /// Position-level constraints only. Needs the `quadratic-multipliers` feature.
+    /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces each
+    /// row and its time derivative at the step end (`g`, `ġ`): order 5 with Dormand–Prince on
+    /// position-level rows, order 4 with velocity-level rows. Needs the `quadratic-multipliers`
+    /// feature.
     #[cfg(feature = "quadratic-multipliers")]
     Quadratic,
 }
 
 impl MultiplierModel {
-    /// Whether this model can enforce constraints of `kind`.
-    pub fn supports(self, kind: ConstraintKind) -> bool {
-        let _ = kind; // Every model left without the feature supports both kinds.
+    /// The model used for a scene with `rows` constraints of which `position_rows` are
+    /// position-level: `Automatic` resolved, the others as they are.
+    pub fn resolve(self, position_rows: usize, rows: usize) -> MultiplierModel {
         match self {
-            MultiplierModel::Constant => true,
             #[cfg(feature = "quadratic-multipliers")]
-            MultiplierModel::Quadratic => kind == ConstraintKind::Position,
+            MultiplierModel::Automatic if rows > position_rows => MultiplierModel::Quadratic,
+            MultiplierModel::Automatic => MultiplierModel::Constant,
+            other => other,
         }
     }
 }
@@ -112,7 +117,7 @@ pub enum StartPolicy {
 pub struct Options {
     /// The inner method. Default [`InnerMethod::DormandPrince54`].
     pub method: InnerMethod,
-    /// How the multipliers vary over a step. Default [`MultiplierModel::Constant`].
+    /// How the multipliers vary over a step. Default [`MultiplierModel::Automatic`].
     pub multipliers: MultiplierModel,
     /// Step sizes. Default adaptive, see [`StepControl::Adaptive`].
     pub step: StepControl,
@@ -143,7 +148,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             method: InnerMethod::DormandPrince54,
-            multipliers: MultiplierModel::Constant,
+            multipliers: MultiplierModel::Automatic,
             step: StepControl::Adaptive {
                 initial_step: 1e-3,
                 min_step: 1e-12,
@@ -177,6 +182,7 @@ impl Options {
     pub fn paper(step: f64) -> Self {
         Options {
             method: InnerMethod::Rk4 { substeps: 1 },
+            multipliers: MultiplierModel::Constant,
             step: StepControl::Fixed { step },
             sensitivity: Sensitivity::Paper,
             velocity_projection: VelocityProjection::Off,
@@ -238,25 +244,5 @@ impl Options {
                 Ok(())
             }
         }
-    }
-
-    /// [`Options::validate`], and whether the multiplier model supports the system's constraints.
-    pub(crate) fn validate_for(&self, position_rows: usize, rows: usize) -> Result<(), StepError> {
-        self.validate()?;
-        let kinds = [
-            (ConstraintKind::Position, position_rows > 0),
-            (ConstraintKind::Velocity, rows > position_rows),
-        ];
-        for (kind, present) in kinds {
-            if present && !self.multipliers.supports(kind) {
-                return Err(StepError::InvalidOption(
-                    InvalidOption::UnsupportedConstraints {
-                        multipliers: self.multipliers,
-                        kind,
-                    },
-                ));
-            }
-        }
-        Ok(())
     }
 }

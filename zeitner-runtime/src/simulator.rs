@@ -92,7 +92,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         t0: f64,
         options: Options,
     ) -> Result<Self, StepError> {
-        options.validate_for(S::POSITION_CONSTRAINTS, Z)?;
+        options.validate()?;
         if !t0.is_finite() {
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
@@ -218,7 +218,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// Changes the options; the state is kept. Refused (and nothing changed) when the options
     /// are invalid or do not suit the system.
     pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
-        options.validate_for(S::POSITION_CONSTRAINTS, Z)?;
+        options.validate()?;
         let (min, max) = bounds(options.step);
         self.planned_step = match options.step {
             StepControl::Fixed { step } => step,
@@ -355,8 +355,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model.
     fn attempt(&mut self, h: f64, t_end: f64) -> Result<Attempt<N, Z>, StepError> {
-        match self.options.multipliers {
-            MultiplierModel::Constant => {
+        match self.options.multipliers.resolve(S::POSITION_CONSTRAINTS, Z) {
+            MultiplierModel::Automatic | MultiplierModel::Constant => {
                 let p = self.constant_guess(h)?;
                 let multipliers = Multipliers {
                     base: Vector::zeros(),
