@@ -122,7 +122,7 @@ pub(crate) fn bounds(step: StepControl) -> (f64, f64) {
     }
 }
 
-/// Weighted RMS norm of the error estimate (the embedded one plus `frozen`) over `q` and `q'`,
+/// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
 /// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
 /// estimate, infinite when the estimate is not finite (so that the step is rejected).
 pub(crate) fn error_norm<const N: usize>(
@@ -130,7 +130,7 @@ pub(crate) fn error_norm<const N: usize>(
     start: (&Vector<N>, &Vector<N>),
     end: (&Vector<N>, &Vector<N>),
     estimate: Option<(Vector<N>, Vector<N>)>,
-    frozen: &Vector<N>,
+    frozen: (&Vector<N>, &Vector<N>),
 ) -> f64 {
     let (StepControl::Adaptive { rtol, atol, .. }, Some((eq, ev))) = (step, estimate) else {
         return 0.0;
@@ -139,8 +139,8 @@ pub(crate) fn error_norm<const N: usize>(
     for i in 0..N {
         let sq = atol + rtol * start.0[i].abs().max(end.0[i].abs());
         let sv = atol + rtol * start.1[i].abs().max(end.1[i].abs());
-        let xq = (eq[i].abs() + frozen[i].abs()) / sq;
-        let xv = ev[i] / sv;
+        let xq = (eq[i].abs() + frozen.0[i].abs()) / sq;
+        let xv = (ev[i].abs() + frozen.1[i].abs()) / sv;
         sum += xq * xq + xv * xv;
     }
     let norm = libm::sqrt(sum / (2 * N).max(1) as f64);
@@ -151,22 +151,33 @@ pub(crate) fn error_norm<const N: usize>(
     }
 }
 
-/// Position error from holding the multipliers fixed while `G` turns: to leading order
-/// `τ²/36 M⁻¹ (G(t₂) - G(t₁))ᵀ (λ(t₂) - λ(t₁))`. The embedded estimate of the inner method cannot
-/// see it, since it integrates the frozen-multiplier equations.
+/// The error from holding the multipliers fixed while `G` turns, which the embedded estimate of
+/// the inner method cannot see since it integrates the frozen-multiplier equations. With
+/// `ΔG = G(t₂) - G(t₁)` and `Δλ = λ(t₂) - λ(t₁)`, to leading order: in `q`,
+/// `τ²/36 M⁻¹ ΔGᵀ Δλ`; in `q'`, for velocity-level rows (whose end condition is on `q'`, so that
+/// nothing cancels it), `τ/12 M⁻¹ ΔGᵀ Δλ` over those rows — the tangential velocity error
+/// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. (For position rows the velocity
+/// error of this kind is of higher order.)
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
     end: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
-) -> Result<Vector<N>, crate::error::StepError> {
+) -> Result<(Vector<N>, Vector<N>), crate::error::StepError> {
     let (t1, q1, v1, lambda1) = start;
     let (t2, q2, v2, lambda2) = end;
     let h = t2 - t1;
-    let g1 = model.jacobian(q1, v1, t1)?;
-    let g2 = model.jacobian(q2, v2, t2)?;
+    let turn = model.jacobian(q2, v2, t2)? - model.jacobian(q1, v1, t1)?;
+    let change = lambda2 - lambda1;
     let factor = model.mass_factor(q2, t2)?;
-    let turn = (g2 - g1).tr_mul(&(lambda2 - lambda1));
-    Ok((h * h / 36.0) * factor.solve(&turn))
+    let eq = (h * h / 36.0) * factor.solve(&turn.tr_mul(&change));
+    let r = S::POSITION_CONSTRAINTS;
+    if r == Z {
+        return Ok((eq, Vector::zeros()));
+    }
+    let mut velocity_rows = change;
+    velocity_rows.rows_mut(0, r).fill(0.0);
+    let ev = (h / 12.0) * factor.solve(&turn.tr_mul(&velocity_rows));
+    Ok((eq, ev))
 }
 
 #[cfg(test)]
@@ -229,14 +240,26 @@ mod tests {
         };
         let zero = Vector::<2>::zeros();
         let estimate = Some((Vector::<2>::new(1e-9, 0.0), zero));
-        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), estimate, &zero);
+        let norm = error_norm(
+            step,
+            (&zero, &zero),
+            (&zero, &zero),
+            estimate,
+            (&zero, &zero),
+        );
         assert!((norm - 0.5).abs() < 1e-12, "{norm}");
         let nan = Some((Vector::<2>::new(f64::NAN, 0.0), zero));
-        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), nan, &zero);
+        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), nan, (&zero, &zero));
         assert_eq!(norm, f64::INFINITY);
         let fixed = StepControl::Fixed { step: 0.1 };
         assert_eq!(
-            error_norm(fixed, (&zero, &zero), (&zero, &zero), estimate, &zero),
+            error_norm(
+                fixed,
+                (&zero, &zero),
+                (&zero, &zero),
+                estimate,
+                (&zero, &zero)
+            ),
             0.0
         );
     }

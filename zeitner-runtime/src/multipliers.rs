@@ -326,7 +326,7 @@ where
             (&start.q, &start.v),
             (q, v),
             Some((eq, ev)),
-            &Vector::zeros(),
+            (&Vector::zeros(), &Vector::zeros()),
         );
         return Ok(norm <= LINEARISATION_SHARE);
     }

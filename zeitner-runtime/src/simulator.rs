@@ -458,14 +458,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let end_state = (t_end, &end.q, &point.v, &point.lambda);
             freezing_error(&mut self.model, start, end_state)?
         } else {
-            Vector::zeros()
+            (Vector::zeros(), Vector::zeros())
         };
         let error = error_norm(
             self.options.step,
             (&self.q, &self.v),
             (&end.q, &end.v),
             end.error,
-            &frozen,
+            (&frozen.0, &frozen.1),
         );
         if !(error <= 1.0) {
             let factor = Controller::rejected(&self.options.controller, error, self.error_order());
