@@ -197,3 +197,86 @@ fn a_correct_model_has_no_errors() {
         &[],
     );
 }
+
+#[test]
+fn an_array_in_the_coordinates_place_named_as_velocities() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self, [vx, vy]: [f64; 2]) -> [f64; 2] { [-vx, -vy] }
+            fn constraints(&self, qdot: [f64; 2]) -> [f64; 1] { [qdot[0]] }
+            fn velocity_constraints(&self, v: [f64; 2], q: [f64; 2]) -> [f64; 1] { [v[0] + q[0]] }
+        }",
+        &[
+            "`[vx, vy]` reads as a velocity, but the first array argument is the coordinates `q`: to take \
+             velocities only, write `_q: [f64; 2], [vx, vy]: [f64; 2]`",
+            "`qdot` reads as a velocity, but `constraints` takes only the coordinates `q`: constraints on \
+             velocities go in `velocity_constraints`",
+            "`v` reads as a velocity, but the first array argument is the coordinates `q` and the second \
+             the velocities `q'`: put the coordinates first",
+        ],
+    );
+}
+
+#[test]
+fn coordinates_with_names_that_are_not_velocities() {
+    // `u` is a displacement; `[_u, v]` are planar coordinates; an unused `_v` changes nothing.
+    assert_reports(
+        "impl S {
+            fn mass(&self, _v: [f64; 2]) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self, [_u, v]: [f64; 2]) -> [f64; 2] { [0.0, -v] }
+            fn constraints(&self, u: [f64; 2]) -> [f64; 1] { [u[0] * u[0] + u[1] * u[1] - 1.0] }
+        }",
+        &[],
+    );
+}
+
+#[test]
+fn errors_of_a_conditional_function_are_emitted_under_its_cfg() {
+    let item: syn::ItemImpl = syn::parse_str(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            #[cfg(feature = \"a\")]
+            fn force(&self) -> [f64; 2] { [0.0, -self.m * gravity] }
+            #[cfg(not(feature = \"a\"))]
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - 1.0] }
+        }",
+    )
+    .unwrap();
+    let expanded = crate::expand::constrained_system(TokenStream::new(), quote::quote!(#item))
+        .to_string()
+        .replace(' ', "");
+    // The error of the first variant only where that variant is the enabled one; the impl of
+    // the second where it is.
+    assert!(
+        expanded.contains(
+            "#[cfg(all(all(feature=\"a\",not(any(not(feature=\"a\"))))))]::core::compile_error!"
+        ),
+        "{expanded}"
+    );
+    assert!(
+        expanded.contains(
+            "#[cfg(all(all(not(feature=\"a\"),not(any(feature=\"a\")))))]#[allow(unused_variables,unused_mut,clippy::all)]impl::zeitner::__private::ConstrainedSystem"
+        ),
+        "{expanded}"
+    );
+    // Neither enabled: `force` is missing.
+    assert!(
+        expanded.contains("#[cfg(all(not(any(feature=\"a\",not(feature=\"a\")))))]::core::compile_error!{\"missingmodelfunction`force`"),
+        "{expanded}"
+    );
+    assert_eq!(messages(&quote::quote!(#item).to_string()).len(), 2);
+}
+
+#[test]
+fn cfg_inside_a_model_function_is_refused() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self, #[cfg(feature = \"q\")] [x, y]: [f64; 2]) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [#[cfg(all())] x * x + y * y - 1.0] }
+        }",
+        &["#[cfg] on an argument cannot be honoured", "#[cfg] on an expression cannot be honoured"],
+    );
+}

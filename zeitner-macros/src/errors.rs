@@ -30,22 +30,21 @@ impl Errors {
         self.errors.is_empty()
     }
 
-    /// All errors as one `syn::Error`, or `Ok` when there are none.
-    pub fn finish(self) -> Result<(), syn::Error> {
-        let mut errors = self.errors.into_iter();
-        let Some(mut combined) = errors.next() else {
-            return Ok(());
-        };
-        for error in errors {
-            combined.combine(error);
-        }
-        Err(combined)
+    pub fn into_compile_errors(self) -> TokenStream {
+        self.into_compile_errors_under(None)
     }
 
-    pub fn into_compile_errors(self) -> TokenStream {
-        match self.finish() {
-            Ok(()) => TokenStream::new(),
-            Err(error) => error.to_compile_error(),
-        }
+    /// The errors as `compile_error!`s, each under `#[cfg(condition)]` when one is given.
+    pub fn into_compile_errors_under(self, condition: Option<&TokenStream>) -> TokenStream {
+        self.errors
+            .into_iter()
+            .map(|error| {
+                let tokens = error.to_compile_error();
+                match condition {
+                    Some(condition) => quote::quote!(#[cfg(#condition)] #tokens),
+                    None => tokens,
+                }
+            })
+            .collect()
     }
 }

@@ -5,6 +5,7 @@ use quote::{format_ident, quote, quote_spanned};
 use zeitner_symbolic::{Binary, Code, CodeCond, Compare, OpCounts};
 
 use crate::check;
+use crate::configurations;
 use crate::errors::Errors;
 use crate::lower::{self, Call, Lowerer, Vars};
 use crate::model::Model;
@@ -28,7 +29,22 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
             return quote!(#item #compile_errors);
         }
     };
-    let generated = generate(&item_impl, &mut errors);
+    // One expansion per combination of `#[cfg]` model functions, each under its cfg.
+    let configurations = configurations::configurations(&item_impl, &mut errors);
+    let generated: TokenStream = configurations
+        .iter()
+        .map(|configuration| {
+            let mut own = Errors::new();
+            let tokens = match generate(&configuration.item, &mut own) {
+                Some(tokens) if own.is_empty() => tokens,
+                _ => return own.into_compile_errors_under(configuration.condition.as_ref()),
+            };
+            match &configuration.condition {
+                Some(condition) => quote!(#[cfg(#condition)] #tokens),
+                None => tokens,
+            }
+        })
+        .collect();
     // The model functions are read by the macro, not necessarily called by the user; under
     // `no_std` their f64 methods come from the runtime's `Real` (inherent ones win under std).
     let mut item_impl = item_impl;
@@ -44,12 +60,11 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
             );
         }
     }
-    match generated {
-        Some(generated) if errors.is_empty() => quote!(#item_impl #generated),
-        _ => {
-            let compile_errors = errors.into_compile_errors();
-            quote!(#item_impl #compile_errors)
-        }
+    if errors.is_empty() {
+        quote!(#item_impl #generated)
+    } else {
+        let compile_errors = errors.into_compile_errors();
+        quote!(#item_impl #compile_errors)
     }
 }
 
@@ -385,6 +400,10 @@ impl Emitter<'_> {
     /// A method receiver: an atom, with literals typed so the method resolves.
     fn receiver(&self, code: &Code, span: Span) -> TokenStream {
         if let Code::Const(x) = code {
+            if !x.is_finite() {
+                // `f64::INFINITY`, `f64::NAN`: paths, so already typed receivers.
+                return self.code(code, ATOM, span);
+            }
             let lit = Literal::f64_suffixed(x.abs());
             return if x.is_sign_negative() {
                 quote!((-#lit))

@@ -2,12 +2,14 @@
 //! expressions and emits, at compile time, its exact derivatives as monomorphic fixed-size code
 //! implementing `zeitner::ConstrainedSystem`.
 //!
-//! Stages, one module each: `model` (the parsed impl, spans kept) → `check` (sizes) →
+//! Stages, one module each: `configurations` (one model per combination of `#[cfg]` model
+//! functions) → `model` (the parsed impl, spans kept) → `check` (sizes) →
 //! `lower` (expressions into the symbolic graph, every unsupported construct reported) →
 //! `symbolic` (derivatives, simplification, shared subexpressions) → `expand` (tokens).
 //! The symbolic engine itself is the `zeitner-symbolic` crate, free of syn.
 
 mod check;
+mod configurations;
 mod errors;
 mod expand;
 mod lower;

@@ -9,6 +9,7 @@ use quote::{quote_spanned, ToTokens};
 use syn::{BinOp, Expr, UnOp};
 use zeitner_symbolic::{Binary, Compare, CondId, Graph, Id, Unary};
 
+use crate::configurations::refuse_inner_cfg;
 use crate::errors::Errors;
 use crate::model::{ArrayArg, ArrayBinding, ModelFn, Role};
 
@@ -130,6 +131,7 @@ impl Lowerer<'_> {
         for element in &function.result.elems {
             match (&function.shape, element) {
                 (crate::model::Shape::Matrix { len, .. }, Expr::Array(row)) => {
+                    refuse_inner_cfg(&row.attrs, "a row", self.errors);
                     if row.elems.len() != *len {
                         self.errors.error_spanned_by(
                             row,
@@ -195,7 +197,34 @@ impl Lowerer<'_> {
         self.graph.depends_on_any(id, &|v| vars.is_state(v))
     }
 
+    /// The graph node of `expr`; a constant that is not finite (an overflowing literal such as
+    /// `1e400`, or constant arithmetic such as `1e300 * 1e300` or `0.0 / 0.0`) is an error at
+    /// the innermost expression that produced it.
     fn lower(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
+        let id = self.lower_expr(scope, expr)?;
+        match self.graph.constant(id) {
+            Some(value) if !value.is_finite() => {
+                let what = if value.is_nan() { "NaN" } else { "infinite" };
+                let message = match expr {
+                    Expr::Lit(_) => "this literal overflows `f64` (it would be infinite): write a finite \
+                                     number, or `f64::INFINITY` if you mean infinity"
+                        .to_string(),
+                    _ => format!(
+                        "this constant expression is {what} (evaluated at compile time): a model's \
+                         constants must be finite; write `f64::INFINITY` or `f64::NAN` if you mean it"
+                    ),
+                };
+                self.errors.error_spanned_by(expr, message);
+                None
+            }
+            _ => Some(id),
+        }
+    }
+
+    fn lower_expr(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
+        if refuse_inner_cfg(expr_attributes(expr), "an expression", self.errors) {
+            return None;
+        }
         match expr {
             Expr::Lit(lit) => match &lit.lit {
                 syn::Lit::Float(f) => f.base10_parse::<f64>().ok().map(|x| self.graph.num(x)),
@@ -226,6 +255,14 @@ impl Lowerer<'_> {
                     let a = self.lower(scope, &unary.expr)?;
                     Some(self.graph.neg(a))
                 }
+                UnOp::Deref(_) => {
+                    self.errors.error_spanned_by(
+                        unary,
+                        "`*` in front of a value dereferences; Rust has no `**` power operator: write \
+                         `x.powi(2)` for an integer exponent or `x.powf(y)`",
+                    );
+                    None
+                }
                 _ => {
                     self.errors.error_spanned_by(
                         unary,
@@ -245,6 +282,16 @@ impl Lowerer<'_> {
                     BinOp::Sub(_) => Some(self.graph.sub(a, b)),
                     BinOp::Mul(_) => Some(self.graph.mul(a, b)),
                     BinOp::Div(_) => Some(self.graph.div(a, b)),
+                    BinOp::BitXor(_) => {
+                        self.errors.error_spanned_by(
+                            binary.op,
+                            format_args!(
+                                "`^` is bitwise XOR in Rust, not a power: write `{}`",
+                                power_hint(&binary.left, &binary.right)
+                            ),
+                        );
+                        None
+                    }
                     _ => {
                         self.errors.error_spanned_by(
                             binary.op,
@@ -316,7 +363,8 @@ impl Lowerer<'_> {
                 }
                 None => {}
             }
-            let looks_like_const = name.chars().next().is_some_and(|c| c.is_ascii_uppercase());
+            // Upper case in any script: `G`, `LENGTH`, `Γ`.
+            let looks_like_const = name.chars().next().is_some_and(char::is_uppercase);
             if !looks_like_const {
                 let mut known: Vec<&String> = scope.names.keys().collect();
                 known.sort();
@@ -622,6 +670,28 @@ impl Lowerer<'_> {
     }
 }
 
+/// The outer attributes of the expressions the grammar reads (`#[cfg]` may stand on array
+/// entries and call arguments in stable Rust).
+fn expr_attributes(expr: &Expr) -> &[syn::Attribute] {
+    match expr {
+        Expr::Array(e) => &e.attrs,
+        Expr::Binary(e) => &e.attrs,
+        Expr::Block(e) => &e.attrs,
+        Expr::Call(e) => &e.attrs,
+        Expr::Cast(e) => &e.attrs,
+        Expr::Field(e) => &e.attrs,
+        Expr::Group(e) => &e.attrs,
+        Expr::If(e) => &e.attrs,
+        Expr::Index(e) => &e.attrs,
+        Expr::Lit(e) => &e.attrs,
+        Expr::MethodCall(e) => &e.attrs,
+        Expr::Paren(e) => &e.attrs,
+        Expr::Path(e) => &e.attrs,
+        Expr::Unary(e) => &e.attrs,
+        _ => &[],
+    }
+}
+
 fn is_self(expr: &Expr) -> bool {
     matches!(expr, Expr::Path(p) if p.path.is_ident("self"))
 }
@@ -631,6 +701,53 @@ fn is_self_rooted(expr: &Expr) -> bool {
         Expr::Field(f) => is_self_rooted(&f.base),
         other => is_self(other),
     }
+}
+
+/// `x.powi(2)` or `x.powf(y)` for what the user wrote as `x ^ y`. `^` binds more loosely than
+/// `+` and `*`, so `x ^ 2 + y` is `x ^ (2 + y)`: the exponent meant is the leftmost operand.
+fn power_hint(base: &Expr, exponent: &Expr) -> String {
+    let base = match base {
+        Expr::Path(_)
+        | Expr::Field(_)
+        | Expr::Index(_)
+        | Expr::Paren(_)
+        | Expr::Lit(_)
+        | Expr::MethodCall(_) => compact(base),
+        _ => format!("({})", compact(base)),
+    };
+    let mut meant = exponent;
+    while let Expr::Binary(binary) = meant {
+        meant = &binary.left;
+    }
+    match integer_literal(meant) {
+        Some(n) => format!("{base}.powi({n})"),
+        None => format!("{base}.powf({})", compact(meant)),
+    }
+}
+
+/// Source text of a small expression, without the spaces token printing puts between tokens.
+fn compact(expr: &Expr) -> String {
+    let text = expr.to_token_stream().to_string();
+    let mut out = String::new();
+    let mut last: Option<char> = None;
+    for (i, c) in text.char_indices() {
+        if c == ' ' {
+            let next = text[i + 1..].chars().next();
+            let keep =
+                matches!((last, next), (Some(a), Some(b)) if is_operator(a) || is_operator(b));
+            if keep {
+                out.push(c);
+            }
+            continue;
+        }
+        out.push(c);
+        last = Some(c);
+    }
+    out
+}
+
+fn is_operator(c: char) -> bool {
+    matches!(c, '+' | '-' | '*' | '/' | '^')
 }
 
 fn integer_literal(expr: &Expr) -> Option<i32> {

@@ -4,6 +4,7 @@
 use syn::spanned::Spanned;
 use syn::{Expr, FnArg, ImplItem, ImplItemFn, ItemImpl, Pat, ReturnType, Stmt, Type};
 
+use crate::configurations::refuse_inner_cfg;
 use crate::errors::Errors;
 
 /// The four functions a model may define.
@@ -54,6 +55,8 @@ pub struct ArrayArg<'a> {
     pub len: usize,
     pub len_expr: &'a Expr,
     pub binding: ArrayBinding<'a>,
+    /// The pattern as written, for messages.
+    pub pat: &'a Pat,
 }
 
 pub enum ArrayBinding<'a> {
@@ -213,6 +216,9 @@ fn parse_function<'a>(
     let (mut q, mut v, mut t) = (None, None, None);
     for input in inputs {
         let FnArg::Typed(typed) = input else { continue };
+        if refuse_inner_cfg(&typed.attrs, "an argument", errors) {
+            ok = false;
+        }
         if is_f64(&typed.ty) {
             if t.is_some() {
                 errors.error_spanned_by(typed, "only one `f64` argument (the time) is allowed");
@@ -232,13 +238,15 @@ fn parse_function<'a>(
             continue;
         }
         let Some((len, len_expr)) = array_len(&typed.ty) else {
-            errors.error_spanned_by(
-                &typed.ty,
-                format_args!(
-                    "unsupported argument type: coordinates and velocities are `[f64; N]`, time is `f64`; expected `{}`",
-                    role.signature_hint()
-                ),
-            );
+            if !report_sizes(&typed.ty, errors) {
+                errors.error_spanned_by(
+                    &typed.ty,
+                    format_args!(
+                        "unsupported argument type: coordinates and velocities are `[f64; N]`, time is `f64`; expected `{}`",
+                        role.signature_hint()
+                    ),
+                );
+            }
             ok = false;
             continue;
         };
@@ -285,6 +293,7 @@ fn parse_function<'a>(
             len,
             len_expr,
             binding,
+            pat: &typed.pat,
         };
         if q.is_none() {
             q = Some(arg);
@@ -312,6 +321,38 @@ fn parse_function<'a>(
             ok = false;
         }
     }
+    // Positions come first: an array in the coordinates' place whose names read as velocities
+    // (`v`, `[vx, vy]`, `qdot`) is almost surely a velocity with `q` trimmed.
+    if let Some(first) = &q {
+        if let Some(shown) = velocity_name(first) {
+            let n = first.len;
+            let message = match (role.takes_velocities(), v.is_some()) {
+                (true, false) => format!(
+                    "{shown} reads as a velocity, but the first array argument is the coordinates `q`: \
+                     to take velocities only, write `_q: [f64; {n}], {shown_arg}: [f64; {n}]`; if these \
+                     are coordinates, give them a coordinate's name",
+                    shown_arg = binding_text(first),
+                ),
+                (true, true) => format!(
+                    "{shown} reads as a velocity, but the first array argument is the coordinates `q` and \
+                     the second the velocities `q'`: put the coordinates first; if these are \
+                     coordinates, give them a coordinate's name"
+                ),
+                (false, _) => format!(
+                    "{shown} reads as a velocity, but `{}` takes only the coordinates `q`{}; if these are \
+                     coordinates, give them a coordinate's name",
+                    role.name(),
+                    if role == Role::Constraints {
+                        ": constraints on velocities go in `velocity_constraints`"
+                    } else {
+                        " (and the time)"
+                    }
+                ),
+            };
+            errors.error_spanned_by(first.pat, message);
+            ok = false;
+        }
+    }
     let shape = match &sig.output {
         ReturnType::Type(_, ty) => match (array_len(ty), matrix_len(ty)) {
             (Some((len, len_expr)), _) => Some(Shape::Vector { len, len_expr }),
@@ -322,7 +363,11 @@ fn parse_function<'a>(
         },
         ReturnType::Default => None,
     };
-    if shape.is_none() {
+    let sizes_reported = match &sig.output {
+        ReturnType::Type(_, ty) if shape.is_none() => report_sizes(ty, errors),
+        _ => false,
+    };
+    if shape.is_none() && !sizes_reported {
         errors.error_spanned_by(
             &sig.output,
             format_args!(
@@ -361,6 +406,7 @@ fn parse_body<'a>(function: &'a ImplItemFn, errors: &mut Errors) -> Option<Body<
         let last = index + 1 == statements.len();
         match statement {
             Stmt::Local(local) => {
+                refuse_inner_cfg(&local.attrs, "a `let`", errors);
                 let ident = match &local.pat {
                     Pat::Ident(p) if p.by_ref.is_none() && p.mutability.is_none() => Some(&p.ident),
                     Pat::Type(typed) => match &*typed.pat {
@@ -381,7 +427,10 @@ fn parse_body<'a>(function: &'a ImplItemFn, errors: &mut Errors) -> Option<Body<
                     _ => errors.error_spanned_by(local, "a `let` in a model needs a value: `let x = ..;`"),
                 }
             }
-            Stmt::Expr(Expr::Array(array), None) if last => result = Some(array),
+            Stmt::Expr(Expr::Array(array), None) if last => {
+                refuse_inner_cfg(&array.attrs, "the result", errors);
+                result = Some(array)
+            }
             Stmt::Expr(Expr::Return(ret), _) => {
                 errors.error_spanned_by(ret, "write the result as the final array expression, without `return`")
             }
@@ -417,6 +466,53 @@ fn parse_body<'a>(function: &'a ImplItemFn, errors: &mut Errors) -> Option<Body<
     }
 }
 
+/// Whether a name reads as a velocity: `v`, `v1`, `vx`, `vx1`, `v_x`, `vel…` (`vel`,
+/// `velocity`, `velocities`), `qd`, `dq`, `xd`, `dx`, `ud`, `du`, `qp`, or any name containing
+/// `dot` (`qdot`, `x_dot`, `thetadot`) or `prime` (`q_prime`). Leading underscores are ignored
+/// and case does not matter. `u`, `w` and `d` are *not* velocities: in structural dynamics,
+/// this method's field, they name displacements (`[u, v, w]`, Hughes' `d, v, a`).
+fn reads_as_velocity(name: &str) -> bool {
+    let name = name.trim_start_matches('_').to_lowercase();
+    let head = name.split('_').next().unwrap_or_default();
+    let v_like = head.strip_prefix('v').is_some_and(|rest| {
+        let rest = rest.strip_prefix(['x', 'y', 'z']).unwrap_or(rest);
+        rest.chars().all(|c| c.is_ascii_digit())
+    });
+    v_like
+        || head.starts_with("vel")
+        || matches!(head, "qd" | "dq" | "xd" | "dx" | "ud" | "du" | "qp")
+        || name.contains("dot")
+        || name.contains("prime")
+}
+
+/// How an array argument that reads as a velocity is named, for the message: `` `v` `` or
+/// `` `[vx, vy]` ``. An array reads as a velocity when at least one of its names is used (does
+/// not start with `_`, so the role matters) and every name reads as one: `[u, v]` are planar
+/// coordinates, `[_u, v]` too, `[_vx, vy]` velocities.
+fn velocity_name(arg: &ArrayArg<'_>) -> Option<String> {
+    let names: Vec<String> = match &arg.binding {
+        ArrayBinding::Named(name) => name.iter().map(|n| n.to_string()).collect(),
+        ArrayBinding::Elements(names) => names.iter().flatten().map(|n| n.to_string()).collect(),
+    };
+    let used = names.iter().any(|n| !n.starts_with('_'));
+    (used && names.iter().all(|n| reads_as_velocity(n))).then(|| format!("`{}`", binding_text(arg)))
+}
+
+/// The pattern of an array argument as the user wrote it: `v` or `[vx, vy]`.
+fn binding_text(arg: &ArrayArg<'_>) -> String {
+    match &arg.binding {
+        ArrayBinding::Named(Some(name)) => name.to_string(),
+        ArrayBinding::Named(None) => "_".to_string(),
+        ArrayBinding::Elements(names) => {
+            let names: Vec<String> = names
+                .iter()
+                .map(|n| n.map_or_else(|| "_".to_string(), |n| n.to_string()))
+                .collect();
+            format!("[{}]", names.join(", "))
+        }
+    }
+}
+
 fn is_f64(ty: &Type) -> bool {
     matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
 }
@@ -438,14 +534,83 @@ fn matrix_len(ty: &Type) -> Option<(usize, &Expr)> {
     (inner == rows).then_some((rows, rows_expr))
 }
 
+/// The most coordinates or constraints a model may have: the generated Jacobians are dense
+/// `N × N` code, and larger sizes would only exhaust the compiler.
+pub const MAX_SIZE: usize = 1024;
+
+/// An integer literal size up to [`MAX_SIZE`].
 fn literal_len(expr: &Expr) -> Option<(usize, &Expr)> {
     match expr {
         Expr::Lit(syn::ExprLit {
             lit: syn::Lit::Int(int),
             ..
-        }) => int.base10_parse::<usize>().ok().map(|n| (n, expr)),
+        }) => int
+            .base10_parse::<usize>()
+            .ok()
+            .filter(|&n| n <= MAX_SIZE)
+            .map(|n| (n, expr)),
         _ => None,
     }
+}
+
+/// Reports the sizes of a type shaped like `[f64; N]` or `[[f64; N]; N]` that are not integer
+/// literals the macro can use; whether it reported any.
+fn report_sizes(ty: &Type, errors: &mut Errors) -> bool {
+    let mut lens = Vec::new();
+    let mut ty = ty;
+    while let Type::Array(array) = ty {
+        lens.push(&array.len);
+        ty = &array.elem;
+    }
+    if !is_f64(ty) || lens.is_empty() || lens.len() > 2 {
+        return false;
+    }
+    let mut reported = false;
+    for len in lens {
+        match len {
+            Expr::Lit(syn::ExprLit {
+                lit: syn::Lit::Int(int),
+                ..
+            }) => {
+                if !int.base10_parse::<usize>().is_ok_and(|n| n <= MAX_SIZE) {
+                    errors.error_spanned_by(
+                        len,
+                        format_args!(
+                            "at most {MAX_SIZE} coordinates or constraints: the macro generates dense N×N \
+                             Jacobians"
+                        ),
+                    );
+                    reported = true;
+                }
+            }
+            other => {
+                let shown = match other {
+                    Expr::Path(path) => path
+                        .path
+                        .segments
+                        .iter()
+                        .map(|s| s.ident.to_string())
+                        .collect::<Vec<_>>()
+                        .join("::"),
+                    _ => "this size".to_string(),
+                };
+                let shown = if shown == "this size" {
+                    shown
+                } else {
+                    format!("`{shown}`")
+                };
+                errors.error_spanned_by(
+                    other,
+                    format_args!(
+                        "array sizes must be integer literals: #[constrained_system] reads only this impl \
+                         block and cannot see the value of {shown}; write the number itself, e.g. `[f64; 3]`"
+                    ),
+                );
+                reported = true;
+            }
+        }
+    }
+    reported
 }
 
 /// The span of the `i`th returned entry.

@@ -2,7 +2,7 @@
 //! each scheduled into straight-line code with shared subexpressions.
 
 use proc_macro2::Span;
-use zeitner_symbolic::{tree_op_counts, Differentiator, Graph, Id, OpCounts, Program};
+use zeitner_symbolic::{equivalent, tree_op_counts, Differentiator, Graph, Id, OpCounts, Program};
 
 use crate::check::Sizes;
 use crate::errors::Errors;
@@ -87,11 +87,14 @@ pub fn check(
                 let mass = &lowered.entries;
                 for i in 0..n {
                     for j in i + 1..n {
-                        if mass[i * n + j] != mass[j * n + i] {
+                        // Equal up to algebra: `0.1*x*y` and `y*x*0.1` are one entry.
+                        if !equivalent(graph, mass[i * n + j], mass[j * n + i]) {
                             errors.error_at(
                                 entry_span(function, i),
                                 format_args!(
-                                    "the mass matrix must be symmetric: entry [{i}][{j}] differs from entry [{j}][{i}]"
+                                    "the mass matrix must be symmetric: entry [{i}][{j}] differs from entry [{j}][{i}] \
+                                     (compared up to the order of terms and factors, constants and expanded \
+                                     products); if they are equal, bind the entry with `let` and use it in both places"
                                 ),
                             );
                         }
@@ -136,14 +139,27 @@ pub fn build(
             })
             .collect()
     };
-    let mass = entries_of(Role::Mass);
-    let force = entries_of(Role::Force);
-    let mut constraints = entries_of(Role::Constraints);
-    constraints.extend(entries_of(Role::VelocityConstraints));
     let full_mass = matches!(
         model.function(Role::Mass).map(|f| &f.shape),
         Some(Shape::Matrix { .. })
     );
+    let mut mass = entries_of(Role::Mass);
+    if full_mass {
+        // The check proved each entry above the diagonal equal to its mirror up to algebra;
+        // computing the mirror for both makes the generated matrix exactly symmetric.
+        for i in 0..n {
+            for j in i + 1..n {
+                if let Some(lower) = mass.get(j * n + i).map(|e| e.id) {
+                    if let Some(upper) = mass.get_mut(i * n + j) {
+                        upper.id = lower;
+                    }
+                }
+            }
+        }
+    }
+    let force = entries_of(Role::Force);
+    let mut constraints = entries_of(Role::Constraints);
+    constraints.extend(entries_of(Role::VelocityConstraints));
 
     let is_coordinate = |v: u32| (v as usize) < n;
     let time = vars.time();

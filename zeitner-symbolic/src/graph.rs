@@ -277,9 +277,19 @@ impl Graph {
         self.constant(id) == Some(1.0)
     }
 
+    /// A literal. Any `f64` is accepted: constant folding computes the IEEE value the generated
+    /// code would compute at run time, infinities and NaN included (`1e300 * 1e300` is `inf`,
+    /// `0.0 / 0.0` and `(-1.0).sqrt()` are NaN), so building never fails or panics; whether a
+    /// model may contain such a constant is the caller's decision.
     pub fn num(&mut self, value: f64) -> Id {
-        // -0.0 and 0.0 are one structural zero.
-        let value = if value == 0.0 { 0.0 } else { value };
+        // -0.0 and 0.0 are one structural zero; every NaN is one NaN.
+        let value = if value == 0.0 {
+            0.0
+        } else if value.is_nan() {
+            f64::NAN
+        } else {
+            value
+        };
         self.intern(Node::Const(value.to_bits()))
     }
 
@@ -299,19 +309,12 @@ impl Graph {
         self.intern(Node::Call(function, args))
     }
 
-    /// Folds a result only when it is finite, so that `1/0` stays a visible division.
-    fn folded(&mut self, value: f64) -> Option<Id> {
-        value.is_finite().then(|| self.num(value))
-    }
-
     pub fn add(&mut self, a: Id, b: Id) -> Id {
         if self.raw {
             return self.intern(Node::Add(a, b));
         }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
-            if let Some(id) = self.folded(x + y) {
-                return id;
-            }
+            return self.num(x + y);
         }
         if self.is_zero(a) {
             return b;
@@ -339,9 +342,7 @@ impl Graph {
             return self.intern(Node::Sub(a, b));
         }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
-            if let Some(id) = self.folded(x - y) {
-                return id;
-            }
+            return self.num(x - y);
         }
         if self.is_zero(b) {
             return a;
@@ -377,9 +378,7 @@ impl Graph {
             return self.intern(Node::Mul(a, b));
         }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
-            if let Some(id) = self.folded(x * y) {
-                return id;
-            }
+            return self.num(x * y);
         }
         if self.is_zero(a) || self.is_zero(b) {
             return self.zero();
@@ -422,9 +421,7 @@ impl Graph {
             return self.intern(Node::Div(a, b));
         }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
-            if let Some(id) = self.folded(x / y) {
-                return id;
-            }
+            return self.num(x / y);
         }
         if self.is_zero(a) && !self.is_zero(b) {
             return self.zero();
@@ -444,9 +441,7 @@ impl Graph {
             return self.intern(Node::Powi(a, n));
         }
         if let Some(x) = self.constant(a) {
-            if let Some(id) = self.folded(x.powi(n)) {
-                return id;
-            }
+            return self.num(x.powi(n));
         }
         match n {
             0 => return self.one(),
@@ -466,9 +461,7 @@ impl Graph {
             return self.intern(Node::Unary(f, a));
         }
         if let Some(x) = self.constant(a) {
-            if let Some(id) = self.folded(f.apply(x)) {
-                return id;
-            }
+            return self.num(f.apply(x));
         }
         self.intern(Node::Unary(f, a))
     }
@@ -478,9 +471,7 @@ impl Graph {
             return self.intern(Node::Binary(f, a, b));
         }
         if let (Some(x), Some(y)) = (self.constant(a), self.constant(b)) {
-            if let Some(id) = self.folded(f.apply(x, y)) {
-                return id;
-            }
+            return self.num(f.apply(x, y));
         }
         if f == Binary::Powf {
             if let Some(y) = self.constant(b) {

@@ -1,14 +1,17 @@
 //! The symbolic engine behind `#[constrained_system]`: an expression graph that simplifies and
-//! shares subexpressions as it is built ([`graph`]), differentiation ([`diff`]), numeric
+//! shares subexpressions as it is built ([`graph`]), equality up to algebra ([`canonical`]),
+//! differentiation ([`diff`]), numeric
 //! evaluation for testing ([`eval`]) and scheduling into straight-line code ([`program`]).
 //!
 //! It knows nothing of syn or Rust syntax, so it can be property-tested and fuzzed directly.
 
+pub mod canonical;
 pub mod diff;
 pub mod eval;
 pub mod graph;
 pub mod program;
 
+pub use canonical::equivalent;
 pub use diff::{DiffError, Differentiator};
 pub use eval::{Evaluator, Real};
 pub use graph::{Binary, Compare, Cond, CondId, Graph, Id, Node, Unary};
