@@ -17,8 +17,8 @@ pub struct Configuration {
     /// The cfg predicate under which this combination is the enabled one; `None` when no model
     /// function is conditional (the expansion is emitted as it is).
     pub condition: Option<TokenStream>,
-    /// The impl with only this combination's functions.
-    pub item: ItemImpl,
+    /// Which members of the impl this combination has, by index.
+    pub members: Vec<bool>,
 }
 
 /// The most combinations expanded; each costs a whole expansion.
@@ -89,7 +89,7 @@ pub fn configurations(item: &ItemImpl, errors: &mut Errors) -> Vec<Configuration
     if choices.is_empty() {
         return vec![Configuration {
             condition: None,
-            item: filtered(item, |i| !dropped[i]),
+            members: dropped.iter().map(|&d| !d).collect(),
         }];
     }
     let mut configurations = Vec::with_capacity(combinations);
@@ -129,23 +129,12 @@ pub fn configurations(item: &ItemImpl, errors: &mut Errors) -> Vec<Configuration
             .collect();
         configurations.push(Configuration {
             condition: Some(quote!(all(#(#parts),*))),
-            item: filtered(item, |i| !dropped[i] && !excluded.contains(&i)),
+            members: (0..item.items.len())
+                .map(|i| !dropped[i] && !excluded.contains(&i))
+                .collect(),
         });
     }
     configurations
-}
-
-/// `item` with only the members whose index passes `keep`.
-fn filtered(item: &ItemImpl, keep: impl Fn(usize) -> bool) -> ItemImpl {
-    let mut item = item.clone();
-    let members = std::mem::take(&mut item.items);
-    item.items = members
-        .into_iter()
-        .enumerate()
-        .filter(|(i, _)| keep(*i))
-        .map(|(_, m)| m)
-        .collect();
-    item
 }
 
 fn attributes(member: &ImplItem) -> &[Attribute] {

@@ -1,6 +1,6 @@
 //! Expansion: the scheduled programs as an `impl ConstrainedSystem<N, Z>`.
 
-use proc_macro2::{Literal, Span, TokenStream};
+use proc_macro2::{Delimiter, Group, Literal, Span, TokenStream, TokenTree};
 use quote::{format_ident, quote, quote_spanned};
 use zeitner_symbolic::{Binary, Code, CodeCond, Compare, OpCounts};
 
@@ -35,7 +35,7 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
         .iter()
         .map(|configuration| {
             let mut own = Errors::new();
-            let tokens = match generate(&configuration.item, &mut own) {
+            let tokens = match generate(&item_impl, &configuration.members, &mut own) {
                 Some(tokens) if own.is_empty() => tokens,
                 _ => return own.into_compile_errors_under(configuration.condition.as_ref()),
             };
@@ -45,43 +45,77 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
             }
         })
         .collect();
-    // The model functions are read by the macro, not necessarily called by the user; under
-    // `no_std` their f64 methods come from the runtime's `Real` (inherent ones win under std).
-    let mut item_impl = item_impl;
-    item_impl.attrs.push(syn::parse_quote!(#[allow(dead_code)]));
-    for member in &mut item_impl.items {
-        if let syn::ImplItem::Fn(function) = member {
-            function.block.stmts.insert(
-                0,
-                syn::parse_quote!(
-                    #[allow(unused_imports)]
-                    use ::zeitner::__private::Real as _;
-                ),
-            );
-        }
-    }
+    let item = reemitted(item);
     if errors.is_empty() {
-        quote!(#item_impl #generated)
+        quote!(#item #generated)
     } else {
         let compile_errors = errors.into_compile_errors();
-        quote!(#item_impl #compile_errors)
+        quote!(#item #compile_errors)
     }
 }
 
-fn generate(item: &syn::ItemImpl, errors: &mut Errors) -> Option<TokenStream> {
-    let (scene, vars, calls) = analyse(item, zeitner_symbolic::Graph::new(), errors)?;
+/// The user's impl as written, token for token (re-printing the parsed impl would recurse as
+/// deep as its deepest expression), with `#[allow(dead_code)]` before `impl` and, at the start
+/// of every method body, `use ::zeitner::__private::Real as _;`: the model functions are read
+/// by the macro, not necessarily called by the user, and under `no_std` their f64 methods come
+/// from the runtime's `Real` (inherent ones win under std).
+fn reemitted(item: TokenStream) -> TokenStream {
+    let mut tokens: Vec<TokenTree> = item.into_iter().collect();
+    // Outer attributes are `#` and a bracket group; the first identifier starts the impl.
+    if let Some(start) = tokens.iter().position(|t| matches!(t, TokenTree::Ident(_))) {
+        let allow: TokenStream = quote!(#[allow(dead_code)]);
+        tokens.splice(start..start, allow);
+    }
+    if let Some(TokenTree::Group(body)) = tokens.last_mut() {
+        if body.delimiter() == Delimiter::Brace {
+            let mut members: Vec<TokenTree> = Vec::new();
+            let mut after_fn = false;
+            for token in body.stream() {
+                match token {
+                    TokenTree::Ident(ident) if ident == "fn" => {
+                        after_fn = true;
+                        members.push(TokenTree::Ident(ident));
+                    }
+                    TokenTree::Group(group)
+                        if after_fn && group.delimiter() == Delimiter::Brace =>
+                    {
+                        after_fn = false;
+                        let mut stream = quote!(
+                            #[allow(unused_imports)]
+                            use ::zeitner::__private::Real as _;
+                        );
+                        stream.extend(group.stream());
+                        let mut replaced = Group::new(Delimiter::Brace, stream);
+                        replaced.set_span(group.span());
+                        members.push(TokenTree::Group(replaced));
+                    }
+                    other => members.push(other),
+                }
+            }
+            let mut replaced = Group::new(Delimiter::Brace, members.into_iter().collect());
+            replaced.set_span(body.span());
+            *body = replaced;
+        }
+    }
+    tokens.into_iter().collect()
+}
+
+fn generate(item: &syn::ItemImpl, members: &[bool], errors: &mut Errors) -> Option<TokenStream> {
+    let (scene, vars, calls) = analyse(item, members, zeitner_symbolic::Graph::new(), errors)?;
     Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
 }
 
-/// Model → checks → lowering → symbolic stage, on the given graph. Each stage looks at every
-/// model function the stage before could make sense of, so one build reports the mistakes of
-/// all functions; only the derivatives wait until there is none.
+/// Model → checks → lowering → symbolic stage, on the given graph, for the members of `item`
+/// marked in `members` (all when it is empty). Each stage looks at every model function the
+/// stage before could make sense of, so one build reports the mistakes of all functions; only
+/// the derivatives wait until there is none.
 fn analyse(
     item: &syn::ItemImpl,
+    members: &[bool],
     mut graph: zeitner_symbolic::Graph,
     errors: &mut Errors,
 ) -> Option<(Scene, Vars, Vec<Call>)> {
-    let model = Model::from_item(item, errors);
+    let model = Model::from_item(item, members, errors);
     let sizes = check::sizes(&model, errors);
     let mut vars = Vars::new(check::slots(&model, sizes));
     let mut calls = Vec::new();
@@ -112,10 +146,11 @@ pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, Op
     let mut errors = Errors::new();
     let raw = analyse(
         item,
+        &[],
         zeitner_symbolic::Graph::without_simplification(),
         &mut errors,
     );
-    let simplified = analyse(item, zeitner_symbolic::Graph::new(), &mut errors);
+    let simplified = analyse(item, &[], zeitner_symbolic::Graph::new(), &mut errors);
     let (Some((raw, ..)), Some((simplified, ..))) = (raw, simplified) else {
         return Vec::new();
     };

@@ -65,3 +65,6 @@ mod snapshots;
 
 #[cfg(test)]
 mod error_collection;
+
+#[cfg(test)]
+mod deep_inputs;

@@ -271,36 +271,7 @@ impl Lowerer<'_> {
                     None
                 }
             },
-            Expr::Binary(binary) => {
-                let (a, b) = (
-                    self.lower(scope, &binary.left),
-                    self.lower(scope, &binary.right),
-                );
-                let (a, b) = (a?, b?);
-                match binary.op {
-                    BinOp::Add(_) => Some(self.graph.add(a, b)),
-                    BinOp::Sub(_) => Some(self.graph.sub(a, b)),
-                    BinOp::Mul(_) => Some(self.graph.mul(a, b)),
-                    BinOp::Div(_) => Some(self.graph.div(a, b)),
-                    BinOp::BitXor(_) => {
-                        self.errors.error_spanned_by(
-                            binary.op,
-                            format_args!(
-                                "`^` is bitwise XOR in Rust, not a power: write `{}`",
-                                power_hint(&binary.left, &binary.right)
-                            ),
-                        );
-                        None
-                    }
-                    _ => {
-                        self.errors.error_spanned_by(
-                            binary.op,
-                            "unsupported operator: numeric expressions use `+ - * /`; comparisons belong in an `if` condition",
-                        );
-                        None
-                    }
-                }
-            }
+            Expr::Binary(binary) => self.lower_binary_chain(scope, binary),
             Expr::MethodCall(call) => self.lower_method_call(scope, call),
             Expr::Call(call) => self.lower_function_call(scope, call),
             Expr::If(if_expr) => self.lower_if(scope, if_expr),
@@ -346,6 +317,76 @@ impl Lowerer<'_> {
                 );
                 None
             }
+        }
+    }
+
+    /// `a + b - c * d + …`: syn nests a long chain of binary operators to the left, as deep as
+    /// it is long. The left spine is walked with a loop, so a sum of thousands of terms needs
+    /// no deeper stack than one term.
+    fn lower_binary_chain(&mut self, scope: &Scope, binary: &syn::ExprBinary) -> Option<Id> {
+        let mut spine = vec![binary];
+        let mut leftmost = &*binary.left;
+        while let Expr::Binary(inner) = leftmost {
+            if !expr_attributes(leftmost).is_empty() {
+                break;
+            }
+            spine.push(inner);
+            leftmost = &inner.left;
+        }
+        let mut value = self.lower(scope, leftmost);
+        for binary in spine.into_iter().rev() {
+            let right = self.lower(scope, &binary.right);
+            value = match (value, right) {
+                (Some(a), Some(b)) => self.apply_binary(binary, a, b),
+                _ => None,
+            };
+        }
+        value
+    }
+
+    /// One binary operation, with the finiteness check `lower` makes for every expression.
+    fn apply_binary(&mut self, binary: &syn::ExprBinary, a: Id, b: Id) -> Option<Id> {
+        let id = match binary.op {
+            BinOp::Add(_) => self.graph.add(a, b),
+            BinOp::Sub(_) => self.graph.sub(a, b),
+            BinOp::Mul(_) => self.graph.mul(a, b),
+            BinOp::Div(_) => self.graph.div(a, b),
+            BinOp::BitXor(_) => {
+                self.errors.error_spanned_by(
+                    binary.op,
+                    format_args!(
+                        "`^` is bitwise XOR in Rust, not a power: write `{}`",
+                        power_hint(&binary.left, &binary.right)
+                    ),
+                );
+                return None;
+            }
+            _ => {
+                self.errors.error_spanned_by(
+                    binary.op,
+                    "unsupported operator: numeric expressions use `+ - * /`; comparisons belong in an `if` condition",
+                );
+                return None;
+            }
+        };
+        self.finite(id, binary)
+    }
+
+    /// `id`, or an error at `expr` when it is a constant that is not finite.
+    fn finite(&mut self, id: Id, expr: &syn::ExprBinary) -> Option<Id> {
+        match self.graph.constant(id) {
+            Some(value) if !value.is_finite() => {
+                let what = if value.is_nan() { "NaN" } else { "infinite" };
+                self.errors.error_spanned_by(
+                    expr,
+                    format_args!(
+                        "this constant expression is {what} (evaluated at compile time): a model's \
+                         constants must be finite; write `f64::INFINITY` or `f64::NAN` if you mean it"
+                    ),
+                );
+                None
+            }
+            _ => Some(id),
         }
     }
 

@@ -106,8 +106,9 @@ impl<'a> Model<'a> {
         self.functions.iter().find(|f| f.role == role)
     }
 
-    /// Reads the impl block, recording every problem in `errors`.
-    pub fn from_item(item: &'a ItemImpl, errors: &mut Errors) -> Model<'a> {
+    /// Reads the impl block's members marked in `members` (all of them when it is shorter),
+    /// recording every problem in `errors`.
+    pub fn from_item(item: &'a ItemImpl, members: &[bool], errors: &mut Errors) -> Model<'a> {
         if let Some((_, path, _)) = &item.trait_ {
             errors.error_spanned_by(
                 path,
@@ -122,7 +123,10 @@ impl<'a> Model<'a> {
         }
         let mut functions: Vec<ModelFn<'a>> = Vec::new();
         let mut seen: Vec<Role> = Vec::new();
-        for member in &item.items {
+        for (index, member) in item.items.iter().enumerate() {
+            if !members.get(index).copied().unwrap_or(true) {
+                continue;
+            }
             let ImplItem::Fn(function) = member else {
                 errors.error_spanned_by(
                     member,
@@ -620,6 +624,68 @@ pub fn entry_span(function: &ModelFn<'_>, index: usize) -> proc_macro2::Span {
         .elems
         .iter()
         .nth(index)
-        .map(|e| e.span())
-        .unwrap_or_else(|| function.result.span())
+        .map(expr_span)
+        .unwrap_or_else(|| function.result.bracket_token.span.join())
+}
+
+/// The span of an expression from its first to its last token, found by walking its left and
+/// right edges: syn's `span()` prints the whole expression, recursively, which a sum of
+/// thousands of terms cannot afford.
+pub fn expr_span(expr: &Expr) -> proc_macro2::Span {
+    let mut first = expr;
+    loop {
+        first = match first {
+            Expr::Binary(e) => &e.left,
+            Expr::MethodCall(e) => &e.receiver,
+            Expr::Index(e) => &e.expr,
+            Expr::Field(e) => &e.base,
+            Expr::Cast(e) => &e.expr,
+            _ => break,
+        };
+    }
+    let mut last = expr;
+    loop {
+        last = match last {
+            Expr::Binary(e) => &e.right,
+            Expr::Unary(e) => &e.expr,
+            Expr::Cast(e) => {
+                let span = e.ty.span();
+                return join(edge_span(first, true), span);
+            }
+            _ => break,
+        };
+    }
+    if std::ptr::eq(first, last) {
+        return match first {
+            Expr::Paren(e) => e.paren_token.span.join(),
+            Expr::Array(e) => e.bracket_token.span.join(),
+            other => other.span(),
+        };
+    }
+    join(edge_span(first, true), edge_span(last, false))
+}
+
+/// The span of an expression's first (or last) token, for the expressions at the edges of a
+/// chain: delimited ones by their delimiters, the rest by syn.
+fn edge_span(expr: &Expr, first: bool) -> proc_macro2::Span {
+    let delimited =
+        |span: &proc_macro2::extra::DelimSpan| if first { span.open() } else { span.close() };
+    match expr {
+        Expr::Paren(e) => delimited(&e.paren_token.span),
+        Expr::Array(e) => delimited(&e.bracket_token.span),
+        Expr::MethodCall(e) if !first => e.paren_token.span.close(),
+        Expr::Call(e) if !first => e.paren_token.span.close(),
+        Expr::Index(e) if !first => e.bracket_token.span.close(),
+        Expr::Unary(e) if first => match e.op {
+            syn::UnOp::Neg(t) => t.span,
+            syn::UnOp::Not(t) => t.span,
+            syn::UnOp::Deref(t) => t.span,
+            _ => e.span(),
+        },
+        other => other.span(),
+    }
+}
+
+fn join(first: proc_macro2::Span, last: proc_macro2::Span) -> proc_macro2::Span {
+    first.join(last).unwrap_or(first)
 }

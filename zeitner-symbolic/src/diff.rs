@@ -40,48 +40,71 @@ impl Differentiator {
         }
     }
 
-    /// `d expr / d var`.
+    /// `d expr / d var`. Iterative, operands before the nodes that use them, so the depth of
+    /// an expression costs no stack.
     pub fn derive(&mut self, graph: &mut Graph, expr: Id) -> Result<Id, DiffError> {
-        if let Some(&d) = self.memo.get(&expr) {
-            return Ok(d);
+        let mut stack = vec![expr];
+        while let Some(&id) = stack.last() {
+            if self.memo.contains_key(&id) {
+                stack.pop();
+                continue;
+            }
+            let before = stack.len();
+            // Pushed last to first, so the first operand is derived first, with all it needs,
+            // as a recursive descent would: the graph's nodes come out in the same order.
+            let operands: Vec<Id> = derivative_operands(graph.node(id)).collect();
+            for &operand in operands.iter().rev() {
+                if !self.memo.contains_key(&operand) {
+                    stack.push(operand);
+                }
+            }
+            if stack.len() == before {
+                let d = self.derive_node(graph, id)?;
+                self.memo.insert(id, d);
+                stack.pop();
+            }
         }
-        let d = self.derive_uncached(graph, expr)?;
-        self.memo.insert(expr, d);
-        Ok(d)
+        Ok(self.memo[&expr])
     }
 
-    fn derive_uncached(&mut self, g: &mut Graph, expr: Id) -> Result<Id, DiffError> {
+    /// The derivative of an operand, already computed.
+    fn known(&self, id: Id) -> Id {
+        self.memo[&id]
+    }
+
+    /// The derivative of one node whose operands' derivatives are in the memo.
+    fn derive_node(&mut self, g: &mut Graph, expr: Id) -> Result<Id, DiffError> {
         let node = g.node(expr).clone();
         Ok(match node {
             Node::Const(_) => g.zero(),
             Node::Var(v) => g.num(if v == self.var { 1.0 } else { 0.0 }),
             Node::Add(a, b) => {
-                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let (da, db) = (self.known(a), self.known(b));
                 g.add(da, db)
             }
             Node::Sub(a, b) => {
-                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let (da, db) = (self.known(a), self.known(b));
                 g.sub(da, db)
             }
             Node::Neg(a) => {
-                let da = self.derive(g, a)?;
+                let da = self.known(a);
                 g.neg(da)
             }
             Node::Mul(a, b) => {
-                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let (da, db) = (self.known(a), self.known(b));
                 let left = g.mul(da, b);
                 let right = g.mul(a, db);
                 g.add(left, right)
             }
             Node::Div(a, b) => {
                 // (a/b)' = (a' - (a/b) b') / b reuses the quotient itself.
-                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let (da, db) = (self.known(a), self.known(b));
                 let correction = g.mul(expr, db);
                 let numerator = g.sub(da, correction);
                 g.div(numerator, b)
             }
             Node::Powi(a, n) => {
-                let da = self.derive(g, a)?;
+                let da = self.known(a);
                 if g.is_zero(da) {
                     return Ok(g.zero());
                 }
@@ -98,7 +121,7 @@ impl Differentiator {
                 g.mul(scaled, da)
             }
             Node::Unary(f, a) => {
-                let da = self.derive(g, a)?;
+                let da = self.known(a);
                 if g.is_zero(da) {
                     return Ok(g.zero());
                 }
@@ -106,14 +129,14 @@ impl Differentiator {
                 g.mul(outer, da)
             }
             Node::Binary(f, a, b) => {
-                let (da, db) = (self.derive(g, a)?, self.derive(g, b)?);
+                let (da, db) = (self.known(a), self.known(b));
                 if g.is_zero(da) && g.is_zero(db) {
                     return Ok(g.zero());
                 }
                 binary_derivative(g, f, a, b, expr, da, db)
             }
             Node::Select(cond, then, otherwise) => {
-                let (dt, de) = (self.derive(g, then)?, self.derive(g, otherwise)?);
+                let (dt, de) = (self.known(then), self.known(otherwise));
                 g.select(cond, dt, de)
             }
             Node::Call(call, args) => {
@@ -125,6 +148,22 @@ impl Differentiator {
             }
         })
     }
+}
+
+/// The operands whose derivatives a node's derivative needs (not the conditions of a select,
+/// nor the arguments of an opaque call, which are never differentiated).
+fn derivative_operands(node: &Node) -> impl Iterator<Item = Id> {
+    let (a, b) = match *node {
+        Node::Const(_) | Node::Var(_) | Node::Call(..) => (None, None),
+        Node::Add(a, b)
+        | Node::Sub(a, b)
+        | Node::Mul(a, b)
+        | Node::Div(a, b)
+        | Node::Binary(_, a, b)
+        | Node::Select(_, a, b) => (Some(a), Some(b)),
+        Node::Neg(a) | Node::Powi(a, _) | Node::Unary(_, a) => (Some(a), None),
+    };
+    a.into_iter().chain(b)
 }
 
 /// `f'(a)`, given `expr = f(a)`.

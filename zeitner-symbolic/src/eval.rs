@@ -64,11 +64,33 @@ where
         }
     }
 
+    /// The value of `id`. Iterative, operands before the nodes that use them, so the depth of
+    /// an expression costs no stack.
     pub fn eval(&mut self, id: Id) -> T {
-        if let Some(value) = self.memo[id.0 as usize] {
-            return value;
+        let mut stack = vec![id];
+        while let Some(&top) = stack.last() {
+            if self.memo[top.0 as usize].is_some() {
+                stack.pop();
+                continue;
+            }
+            let before = stack.len();
+            for operand in crate::program::children(self.graph, top) {
+                if self.memo[operand.0 as usize].is_none() {
+                    stack.push(operand);
+                }
+            }
+            if stack.len() == before {
+                let value = self.eval_node(top);
+                self.memo[top.0 as usize] = Some(value);
+                stack.pop();
+            }
         }
-        let value = match self.graph.node(id).clone() {
+        self.memo[id.0 as usize].expect("evaluated above")
+    }
+
+    /// The value of one node whose operands (condition operands included) are evaluated.
+    fn eval_node(&mut self, id: Id) -> T {
+        match self.graph.node(id).clone() {
             Node::Const(bits) => T::from_f64(f64::from_bits(bits)),
             Node::Var(v) => (self.vars)(v),
             Node::Add(a, b) => self.eval(a) + self.eval(b),
@@ -93,20 +115,50 @@ where
                 let values: Vec<T> = args.iter().map(|&a| self.eval(a)).collect();
                 (self.calls)(f, &values)
             }
-        };
-        self.memo[id.0 as usize] = Some(value);
-        value
+        }
     }
 
+    /// The truth of a condition, iteratively (both sides of `&&`, `||` are evaluated; they
+    /// have no effects).
     pub fn eval_cond(&mut self, cond: CondId) -> bool {
-        match self.graph.cond(cond).clone() {
-            Cond::Compare(op, a, b) => {
-                let (x, y) = (self.eval(a).value(), self.eval(b).value());
-                op.apply(x, y)
+        let mut truth: std::collections::HashMap<CondId, bool> = std::collections::HashMap::new();
+        let mut stack = vec![cond];
+        while let Some(&top) = stack.last() {
+            if truth.contains_key(&top) {
+                stack.pop();
+                continue;
             }
-            Cond::And(a, b) => self.eval_cond(a) && self.eval_cond(b),
-            Cond::Or(a, b) => self.eval_cond(a) || self.eval_cond(b),
-            Cond::Not(a) => !self.eval_cond(a),
+            let value = match self.graph.cond(top).clone() {
+                Cond::Compare(op, a, b) => {
+                    let (x, y) = (self.eval(a).value(), self.eval(b).value());
+                    Some(op.apply(x, y))
+                }
+                Cond::And(a, b) | Cond::Or(a, b) => match (truth.get(&a), truth.get(&b)) {
+                    (Some(&x), Some(&y)) => {
+                        Some(if matches!(self.graph.cond(top), Cond::And(..)) {
+                            x && y
+                        } else {
+                            x || y
+                        })
+                    }
+                    _ => {
+                        stack.extend([a, b]);
+                        None
+                    }
+                },
+                Cond::Not(a) => match truth.get(&a) {
+                    Some(&x) => Some(!x),
+                    None => {
+                        stack.push(a);
+                        None
+                    }
+                },
+            };
+            if let Some(value) = value {
+                truth.insert(top, value);
+                stack.pop();
+            }
         }
+        truth[&cond]
     }
 }

@@ -558,15 +558,15 @@ impl Graph {
             .any(|id| self.depends_on_any(id, is_var))
     }
 
+    /// The expression operands of a condition's comparisons, left to right (iteratively).
     pub(crate) fn push_cond_operands(&self, cond: CondId, out: &mut Vec<Id>) {
-        match self.cond(cond) {
-            Cond::Compare(_, a, b) => out.extend([*a, *b]),
-            Cond::And(a, b) | Cond::Or(a, b) => {
-                let (a, b) = (*a, *b);
-                self.push_cond_operands(a, out);
-                self.push_cond_operands(b, out);
+        let mut stack = vec![cond];
+        while let Some(cond) = stack.pop() {
+            match self.cond(cond) {
+                Cond::Compare(_, a, b) => out.extend([*a, *b]),
+                Cond::And(a, b) | Cond::Or(a, b) => stack.extend([*b, *a]),
+                Cond::Not(a) => stack.push(*a),
             }
-            Cond::Not(a) => self.push_cond_operands(*a, out),
         }
     }
 }

@@ -93,12 +93,30 @@ impl Program {
             }
         }
         let mut temp_of = vec![None; graph.len()];
+        // How deep each node's code would nest if written inline; deeper than `MAX_DEPTH` and it
+        // becomes a temporary, so no emitted expression nests deeper than that, however deep
+        // the expression (a chain of a thousand `let`s is a thousand nested operations).
+        let mut depth = vec![1usize; graph.len()];
         let mut program = Program::default();
         // Ids are topologically ordered, so a temporary's operands are always defined before it.
         for index in 0..graph.len() {
             let id = Id(index as u32);
             let leaf = matches!(graph.node(id), Node::Const(_) | Node::Var(_));
-            if reached[index] && uses[index] >= 2 && !leaf {
+            if !reached[index] || leaf {
+                continue;
+            }
+            depth[index] = 1 + children(graph, id)
+                .into_iter()
+                .map(|c| {
+                    if temp_of[c.0 as usize].is_some() {
+                        1
+                    } else {
+                        depth[c.0 as usize]
+                    }
+                })
+                .max()
+                .unwrap_or(0);
+            if uses[index] >= 2 || depth[index] > MAX_DEPTH {
                 let code = code_of(graph, id, &temp_of, true);
                 temp_of[index] = Some(program.temps.len() as u32);
                 program.temps.push(code);
@@ -121,29 +139,33 @@ impl Program {
     }
 }
 
+/// The deepest an emitted expression nests: deeper code is split into temporaries.
+pub const MAX_DEPTH: usize = 48;
+
 /// What the outputs would cost as independent expression trees: no sharing at all.
 pub fn tree_op_counts(graph: &Graph, outputs: &[Id]) -> OpCounts {
-    let mut memo: Vec<Option<OpCounts>> = vec![None; graph.len()];
-    outputs
+    let outputs: Vec<Id> = outputs
         .iter()
-        .filter(|&&id| !graph.is_zero(id))
-        .fold(OpCounts::default(), |acc, &id| {
-            acc.saturating_add(tree_counts(graph, id, &mut memo))
-        })
-}
-
-fn tree_counts(graph: &Graph, id: Id, memo: &mut Vec<Option<OpCounts>>) -> OpCounts {
-    if let Some(c) = memo[id.0 as usize] {
-        return c;
+        .copied()
+        .filter(|&id| !graph.is_zero(id))
+        .collect();
+    let Some(&last) = outputs.iter().max() else {
+        return OpCounts::default();
+    };
+    // Each node's tree count from its operands', in id order (operands come first).
+    let mut totals: Vec<OpCounts> = Vec::with_capacity(last.0 as usize + 1);
+    for index in 0..=last.0 as usize {
+        let id = Id(index as u32);
+        let mut total = OpCounts::default();
+        count_node(graph.node(id), &mut total);
+        for child in children(graph, id) {
+            total = total.saturating_add(totals[child.0 as usize]);
+        }
+        totals.push(total);
     }
-    let mut own = OpCounts::default();
-    count_node(graph.node(id), &mut own);
-    let mut total = own;
-    for child in children(graph, id) {
-        total = total.saturating_add(tree_counts(graph, child, memo));
-    }
-    memo[id.0 as usize] = Some(total);
-    total
+    outputs.iter().fold(OpCounts::default(), |acc, id| {
+        acc.saturating_add(totals[id.0 as usize])
+    })
 }
 
 fn count_node(node: &Node, counts: &mut OpCounts) {

@@ -313,3 +313,64 @@ fn the_derivative_of_the_most_negative_power_does_not_overflow() {
     let value = Evaluator::new(&g, |_| 1.0, |_, _: &[f64]| 0.0).eval(derivative);
     assert_eq!(value, f64::from(i32::MIN));
 }
+
+/// How deep a piece of scheduled code nests.
+fn code_depth(code: &zeitner_symbolic::Code) -> usize {
+    use zeitner_symbolic::Code;
+    1 + match code {
+        Code::Const(_) | Code::Var(_) | Code::Temp(_) => 0,
+        Code::Add(a, b)
+        | Code::Sub(a, b)
+        | Code::Mul(a, b)
+        | Code::Div(a, b)
+        | Code::Binary(_, a, b) => code_depth(a).max(code_depth(b)),
+        Code::Neg(a) | Code::Powi(a, _) | Code::Unary(_, a) => code_depth(a),
+        Code::Select(_, a, b) => code_depth(a).max(code_depth(b)),
+        Code::Call(_, args) => args.iter().map(code_depth).max().unwrap_or(0),
+    }
+}
+
+#[test]
+fn deep_expressions_need_no_deep_stack_and_schedule_into_shallow_code() {
+    let run = || {
+        let mut g = Graph::new();
+        let x = g.var(0);
+        let y = g.var(1);
+        // a_{k+1} = sin(a_k + y) * 0.5, twenty thousand times: the chain of `let`s a user may write.
+        let half = g.num(0.5);
+        let mut a = x;
+        for _ in 0..20_000 {
+            let sum = g.add(a, y);
+            let sin = g.unary(Unary::Sin, sum);
+            a = g.mul(sin, half);
+        }
+        let derivative = Differentiator::new(0).derive(&mut g, a).unwrap();
+        let program = Program::schedule(&g, &[(0, a), (1, derivative)]);
+        let deepest = program
+            .temps
+            .iter()
+            .chain(program.outputs.iter().map(|(_, c)| c))
+            .map(code_depth)
+            .max()
+            .unwrap();
+        assert!(
+            deepest <= zeitner_symbolic::program::MAX_DEPTH + 1,
+            "{deepest}"
+        );
+        let point = [0.3, 0.7];
+        let scheduled = program.evaluate(&|v| point[v as usize], &|_, _| 0.0);
+        let mut values = Evaluator::new(&g, |v| point[v as usize], |_, _: &[f64]| 0.0);
+        assert_eq!(
+            scheduled,
+            vec![(0, values.eval(a)), (1, values.eval(derivative))]
+        );
+        let _ = zeitner_symbolic::tree_op_counts(&g, &[a, derivative]);
+    };
+    // The scheduled code nests at most `MAX_DEPTH` deep, so evaluating it recurses that far.
+    std::thread::Builder::new()
+        .stack_size(1 << 20)
+        .spawn(run)
+        .unwrap()
+        .join()
+        .unwrap();
+}
