@@ -49,7 +49,6 @@ fn a_sum_of_3000_terms() {
 }
 
 #[test]
-#[ignore = "syn's recursive descent overflows: parentheses nested this deep are not yet outlined"]
 fn parentheses_nested_1000_deep() {
     let entry = format!(
         "{}x * x + y * y - 1.0{}",
@@ -60,7 +59,6 @@ fn parentheses_nested_1000_deep() {
 }
 
 #[test]
-#[ignore = "syn's recursive descent overflows: parentheses nested this deep are not yet outlined"]
 fn products_nested_500_deep() {
     let mut entry = String::from("x");
     for i in 0..500 {

@@ -9,6 +9,7 @@ use crate::configurations;
 use crate::errors::Errors;
 use crate::lower::{self, Call, Lowerer, Vars};
 use crate::model::Model;
+use crate::outline::{self, Outlines};
 use crate::symbolic::{self, Generated, Scene};
 
 /// The whole attribute: the user's impl, unchanged, followed by the generated trait impl, or by
@@ -18,7 +19,9 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
     if !attr.is_empty() {
         errors.error_spanned_by(&attr, "#[constrained_system] takes no arguments");
     }
-    let item_impl: syn::ItemImpl = match syn::parse2(item.clone()) {
+    // Deep parentheses are taken out before syn, whose recursive descent they would overflow.
+    let (shallow, outlines) = outline::outline(item.clone(), &mut errors);
+    let item_impl: syn::ItemImpl = match syn::parse2(shallow) {
         Ok(item_impl) => item_impl,
         Err(_) => {
             errors.error_spanned_by(
@@ -35,7 +38,7 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
         .iter()
         .map(|configuration| {
             let mut own = Errors::new();
-            let tokens = match generate(&item_impl, &configuration.members, &mut own) {
+            let tokens = match generate(&item_impl, &configuration.members, &outlines, &mut own) {
                 Some(tokens) if own.is_empty() => tokens,
                 _ => return own.into_compile_errors_under(configuration.condition.as_ref()),
             };
@@ -100,8 +103,14 @@ fn reemitted(item: TokenStream) -> TokenStream {
     tokens.into_iter().collect()
 }
 
-fn generate(item: &syn::ItemImpl, members: &[bool], errors: &mut Errors) -> Option<TokenStream> {
-    let (scene, vars, calls) = analyse(item, members, zeitner_symbolic::Graph::new(), errors)?;
+fn generate(
+    item: &syn::ItemImpl,
+    members: &[bool],
+    outlines: &Outlines,
+    errors: &mut Errors,
+) -> Option<TokenStream> {
+    let graph = zeitner_symbolic::Graph::new();
+    let (scene, vars, calls) = analyse(item, members, outlines, graph, errors)?;
     Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
 }
 
@@ -112,6 +121,7 @@ fn generate(item: &syn::ItemImpl, members: &[bool], errors: &mut Errors) -> Opti
 fn analyse(
     item: &syn::ItemImpl,
     members: &[bool],
+    outlines: &Outlines,
     mut graph: zeitner_symbolic::Graph,
     errors: &mut Errors,
 ) -> Option<(Scene, Vars, Vec<Call>)> {
@@ -124,6 +134,8 @@ fn analyse(
         vars: &mut vars,
         calls: &mut calls,
         errors,
+        outlines,
+        outlined: Vec::new(),
     };
     let lowered: Vec<_> = model
         .functions
@@ -144,13 +156,21 @@ fn analyse(
 #[cfg(test)]
 pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, OpCounts, OpCounts)> {
     let mut errors = Errors::new();
+    let none = Outlines::default();
     let raw = analyse(
         item,
         &[],
+        &none,
         zeitner_symbolic::Graph::without_simplification(),
         &mut errors,
     );
-    let simplified = analyse(item, &[], zeitner_symbolic::Graph::new(), &mut errors);
+    let simplified = analyse(
+        item,
+        &[],
+        &none,
+        zeitner_symbolic::Graph::new(),
+        &mut errors,
+    );
     let (Some((raw, ..)), Some((simplified, ..))) = (raw, simplified) else {
         return Vec::new();
     };

@@ -2,10 +2,12 @@
 //! expressions and emits, at compile time, its exact derivatives as monomorphic fixed-size code
 //! implementing `zeitner::ConstrainedSystem`.
 //!
-//! Stages, one module each: `configurations` (one model per combination of `#[cfg]` model
-//! functions) → `model` (the parsed impl, spans kept) → `check` (sizes) →
-//! `lower` (expressions into the symbolic graph, every unsupported construct reported) →
-//! `symbolic` (derivatives, simplification, shared subexpressions) → `expand` (tokens).
+//! Stages, one module each: `outline` (deep parentheses taken out before syn reads them) →
+//! `configurations` (one model per combination of `#[cfg]` model functions) → `model` (the
+//! parsed impl, spans kept) → `check` (sizes) → `lower` (expressions into the symbolic graph,
+//! every unsupported construct reported) → `symbolic` (derivatives, simplification, shared
+//! subexpressions) → `expand` (tokens). No stage recurses as deep as sums, products, parentheses
+//! or `let` chains nest (see `deep_inputs`).
 //! The symbolic engine itself is the `zeitner-symbolic` crate, free of syn.
 
 mod check;
@@ -14,6 +16,7 @@ mod errors;
 mod expand;
 mod lower;
 mod model;
+mod outline;
 mod symbolic;
 
 use proc_macro::TokenStream;

@@ -12,6 +12,7 @@ use zeitner_symbolic::{Binary, Compare, CondId, Graph, Id, Unary};
 use crate::configurations::refuse_inner_cfg;
 use crate::errors::Errors;
 use crate::model::{ArrayArg, ArrayBinding, ModelFn, Role};
+use crate::outline::Outlines;
 
 /// What a variable of the graph stands for in the generated code.
 #[derive(Clone)]
@@ -100,6 +101,10 @@ pub struct Lowerer<'g> {
     pub vars: &'g mut Vars,
     pub calls: &'g mut Vec<Call>,
     pub errors: &'g mut Errors,
+    /// Deeply nested parts of the input, read in place of their placeholders.
+    pub outlines: &'g Outlines,
+    /// Each outlined part's node once lowered (`Some(None)` when it failed, already reported).
+    pub outlined: Vec<Option<Option<Id>>>,
 }
 
 /// The names visible in one model function.
@@ -202,23 +207,7 @@ impl Lowerer<'_> {
     /// the innermost expression that produced it.
     fn lower(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
         let id = self.lower_expr(scope, expr)?;
-        match self.graph.constant(id) {
-            Some(value) if !value.is_finite() => {
-                let what = if value.is_nan() { "NaN" } else { "infinite" };
-                let message = match expr {
-                    Expr::Lit(_) => "this literal overflows `f64` (it would be infinite): write a finite \
-                                     number, or `f64::INFINITY` if you mean infinity"
-                        .to_string(),
-                    _ => format!(
-                        "this constant expression is {what} (evaluated at compile time): a model's \
-                         constants must be finite; write `f64::INFINITY` or `f64::NAN` if you mean it"
-                    ),
-                };
-                self.errors.error_spanned_by(expr, message);
-                None
-            }
-            _ => Some(id),
-        }
+        self.finite(id, expr, matches!(expr, Expr::Lit(_)))
     }
 
     fn lower_expr(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
@@ -369,30 +358,69 @@ impl Lowerer<'_> {
                 return None;
             }
         };
-        self.finite(id, binary)
+        self.finite(id, binary, false)
     }
 
-    /// `id`, or an error at `expr` when it is a constant that is not finite.
-    fn finite(&mut self, id: Id, expr: &syn::ExprBinary) -> Option<Id> {
-        match self.graph.constant(id) {
-            Some(value) if !value.is_finite() => {
-                let what = if value.is_nan() { "NaN" } else { "infinite" };
-                self.errors.error_spanned_by(
-                    expr,
-                    format_args!(
-                        "this constant expression is {what} (evaluated at compile time): a model's \
-                         constants must be finite; write `f64::INFINITY` or `f64::NAN` if you mean it"
-                    ),
-                );
-                None
-            }
-            _ => Some(id),
+    /// `id`, or an error at `expr` when it is a constant that is not finite: an overflowing
+    /// literal such as `1e400`, or constant arithmetic such as `1e300 * 1e300` or `0.0 / 0.0`,
+    /// reported at the innermost expression that produced it.
+    fn finite<T: ToTokens>(&mut self, id: Id, expr: T, literal: bool) -> Option<Id> {
+        let value = self.graph.constant(id).filter(|value| !value.is_finite());
+        let Some(value) = value else {
+            return Some(id);
+        };
+        let message = if literal {
+            "this literal overflows `f64` (it would be infinite): write a finite number, or \
+             `f64::INFINITY` if you mean infinity"
+                .to_string()
+        } else {
+            format!(
+                "this constant expression is {} (evaluated at compile time): a model's constants \
+                 must be finite; write `f64::INFINITY` or `f64::NAN` if you mean it",
+                if value.is_nan() { "NaN" } else { "infinite" }
+            )
+        };
+        self.errors.error_spanned_by(expr, message);
+        None
+    }
+
+    /// An outlined part (see [`crate::outline`]), the parts outlined from it first, with an
+    /// explicit stack: each part nests at most `outline::DEPTH` groups, so lowering one
+    /// recurses no deeper than that, however deep the parentheses.
+    fn lower_outlined(&mut self, scope: &Scope, part: usize) -> Option<Id> {
+        if self.outlined.len() < self.outlines.exprs.len() {
+            self.outlined.resize(self.outlines.exprs.len(), None);
         }
+        let mut stack = vec![part];
+        while let Some(&top) = stack.last() {
+            if self.outlined[top].is_some() {
+                stack.pop();
+                continue;
+            }
+            let before = stack.len();
+            for &child in &self.outlines.children[top] {
+                if self.outlined[child].is_none() {
+                    stack.push(child);
+                }
+            }
+            if stack.len() == before {
+                let outlines = self.outlines;
+                let value = outlines.exprs[top]
+                    .as_ref()
+                    .and_then(|expr| self.lower(scope, expr));
+                self.outlined[top] = Some(value);
+                stack.pop();
+            }
+        }
+        self.outlined[part].flatten()
     }
 
     fn lower_path(&mut self, scope: &Scope, path: &syn::ExprPath) -> Option<Id> {
         if let Some(ident) = path.path.get_ident() {
             let name = ident.to_string();
+            if let Some(part) = self.outlines.index(&name) {
+                return self.lower_outlined(scope, part);
+            }
             match scope.names.get(&name) {
                 Some(Binding::Scalar(id)) => return Some(*id),
                 Some(Binding::Array(_)) => {
@@ -664,6 +692,20 @@ impl Lowerer<'_> {
     fn lower_cond(&mut self, scope: &Scope, expr: &Expr) -> Option<CondId> {
         match expr {
             Expr::Paren(p) => self.lower_cond(scope, &p.expr),
+            Expr::Path(p)
+                if p.path
+                    .get_ident()
+                    .and_then(|i| self.outlines.index(&i.to_string()))
+                    .is_some() =>
+            {
+                let outlines = self.outlines;
+                let part = p
+                    .path
+                    .get_ident()
+                    .and_then(|i| outlines.index(&i.to_string()))?;
+                let expr = outlines.exprs[part].as_ref()?;
+                self.lower_cond(scope, expr)
+            }
             Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
                 let inner = self.lower_cond(scope, &u.expr)?;
                 Some(self.graph.not(inner))

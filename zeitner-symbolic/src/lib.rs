@@ -1,7 +1,9 @@
 //! The symbolic engine behind `#[constrained_system]`: an expression graph that simplifies and
 //! shares subexpressions as it is built ([`graph`]), equality up to algebra ([`canonical`]),
-//! differentiation ([`diff`]), numeric
-//! evaluation for testing ([`eval`]) and scheduling into straight-line code ([`program`]).
+//! differentiation ([`diff`]), numeric evaluation for testing ([`eval`]) and scheduling into
+//! straight-line code ([`program`]). Every pass over an expression's operations is iterative, so
+//! its depth costs no stack, and scheduled code nests at most [`program::MAX_DEPTH`] deep (the
+//! `&&`/`||` nesting of conditions is still walked recursively).
 //!
 //! It knows nothing of syn or Rust syntax, so it can be property-tested and fuzzed directly.
 

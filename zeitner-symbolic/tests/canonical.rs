@@ -157,7 +157,7 @@ fn rewrite(tree: &Tree, choices: &mut impl Iterator<Item = u8>) -> Tree {
         Tree::Binary(f, a, b) => {
             let (a, b) = (rewrite(a, choices), rewrite(b, choices));
             let symmetric = matches!(f, Binary::Hypot | Binary::Min | Binary::Max);
-            if symmetric && choices.next().unwrap_or(0) % 2 == 0 {
+            if symmetric && choices.next().unwrap_or(0).is_multiple_of(2) {
                 Tree::Binary(*f, boxed(b), boxed(a))
             } else {
                 Tree::Binary(*f, boxed(a), boxed(b))
