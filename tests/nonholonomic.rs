@@ -245,3 +245,25 @@ fn steered_knife_edge_orders() {
         assert_orders(name, run(options(0.04)), run(options(0.02)), expected);
     }
 }
+
+/// Adaptive steps with the default (quadratic) multipliers: the error falls with the tolerance
+/// over four decades, by at least a factor 4 per decade (`rtol^(4/5)` is the slope of an order-4
+/// error with the error per step controlled).
+#[test]
+fn adaptive_error_follows_the_tolerance() {
+    let rtols = [1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+    let worst: Vec<f64> = rtols
+        .iter()
+        .map(|&rtol| {
+            errors(adaptive(rtol, MultiplierModel::Automatic))
+                .into_iter()
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    eprintln!("errors for rtol 1e-6 … 1e-10: {worst:?}");
+    for pair in worst.windows(2) {
+        assert!(pair[1] < pair[0] / 4.0, "{worst:?}");
+    }
+    let slope = (worst[0] / worst[4]).log10() / 4.0;
+    assert!((0.7..=1.2).contains(&slope), "log–log slope {slope:.2}");
+}

@@ -20,6 +20,7 @@ use std::path::PathBuf;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use scenes::andrews::Andrews;
+use scenes::knife_edge::KnifeEdge;
 use scenes::pendulum::Pendulum;
 use scenes::reference::{self, State};
 use scenes::steam_generator::SteamGenerator;
@@ -89,7 +90,7 @@ fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error
 
 #[derive(clap::Args)]
 struct Args {
-    /// Scenes to run (pendulum, steam_generator, andrews); all by default.
+    /// Scenes to run (pendulum, steam_generator, andrews, knife_edge); all by default.
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
     /// Only methods whose name contains one of these words; all by default.
@@ -207,6 +208,7 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
             name: "zeitner-constant-lambda-rk4-exactQ",
             settings: fixed(|h| Options {
                 method: InnerMethod::Rk4 { substeps: 1 },
+                multipliers: MultiplierModel::Constant,
                 step: StepControl::Fixed { step: h },
                 ..Options::default()
             }),
@@ -247,6 +249,7 @@ fn methods(t_end: f64, tolerance: f64, quick: bool) -> Vec<Method> {
             name: "zeitner-constant-lambda-sdirk2-exactQ",
             settings: fixed(|h| Options {
                 method: InnerMethod::Sdirk2,
+                multipliers: MultiplierModel::Constant,
                 step: StepControl::Fixed { step: h },
                 ..Options::default()
             }),
@@ -448,6 +451,44 @@ fn steam_generator_scene() -> Scene {
                 &scene,
                 start,
                 &stops,
+                options,
+                &reference,
+                repeats,
+            )
+        }),
+    }
+}
+
+/// The knife edge on an incline (a velocity-level constraint only) against its closed form.
+fn knife_edge_scene() -> Scene {
+    let (t_end, omega) = (2.0, 2.0);
+    let scene = KnifeEdge::PAPER;
+    let exact = |t| {
+        let s = scene.exact(omega, t);
+        State {
+            q: s.q,
+            v: s.v,
+            lambda: [s.lambda],
+        }
+    };
+    let reference = exact(t_end);
+    let start = exact(0.0);
+    let start = (Vector::from(start.q), Vector::from(start.v));
+    Scene {
+        name: "knife_edge",
+        title: "Knife edge on an incline (nonholonomic), 2 s",
+        t_end,
+        constraint_tolerance: 1e-12,
+        reference: flattened(&reference),
+        run_diffsol: diffsol_runner(KnifeEdge::PAPER, start, t_end),
+        run: Box::new(move |method, setting, options, repeats| {
+            measure(
+                "knife_edge",
+                method,
+                setting,
+                &scene,
+                start,
+                &[t_end],
                 options,
                 &reference,
                 repeats,
@@ -665,6 +706,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     if wanted("andrews") {
         scenes.push(andrews_scene()?);
+    }
+    if wanted("knife_edge") {
+        scenes.push(knife_edge_scene());
     }
     let repeats = if args.quick { 1 } else { args.repeats };
     let plan: Vec<(usize, String, String, Options)> = scenes
