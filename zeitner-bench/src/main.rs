@@ -7,6 +7,8 @@
 mod diffsol_peer;
 #[path = "../../examples/support/figure.rs"]
 mod figure;
+mod fuzz;
+mod fuzz_command;
 mod hand_written;
 mod measure;
 mod peers;
@@ -48,6 +50,12 @@ enum Command {
     WorkPrecision(Args),
     /// Runs the stiff and extreme scenes across methods and steps and writes the stability report.
     Stability(StabilityArgs),
+    /// Fuzzes the runtime: random scenes, starts, options and calls against its promises, each
+    /// case in a watched worker process; `--accuracy` counts silent wrong answers instead.
+    Fuzz(fuzz_command::FuzzArgs),
+    /// The fuzzer's worker process (started by `fuzz`).
+    #[command(hide = true)]
+    FuzzWorker(fuzz_command::WorkerArgs),
 }
 
 #[derive(clap::Args)]
@@ -695,6 +703,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args = match Cli::parse().command {
         Command::WorkPrecision(args) => args,
         Command::Stability(args) => return stability_report(args),
+        Command::Fuzz(args) => return fuzz_command::fuzz(args),
+        Command::FuzzWorker(args) => return fuzz_command::worker(args),
     };
     let wanted = |name: &str| args.scenes.is_empty() || args.scenes.iter().any(|s| s == name);
     let mut scenes = Vec::new();

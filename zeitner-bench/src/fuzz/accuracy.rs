@@ -1,0 +1,377 @@
+//! The accuracy fuzz: sensible random options on scenes with independent references, counting
+//! silent wrong answers — `Ok` results whose error exceeds a multiple of `rtol`.
+//!
+//! References: the pendulum released horizontally and the steam generator against their
+//! reduced-coordinate solutions (`examples/scenes/reference.rs`, RK4 at 2e-5 s and 1e-5 s); the
+//! double pendulum against its angle equations integrated here by RK4 at 1e-5 s; Andrews'
+//! mechanism against the published values at 0.03 s (reliable to 1e-9 in q, 1e-7 in q', 1e-5 in
+//! λ, relative).
+//!
+//! Error: for each of q, q', λ at the end time, `max_i |x_i - ref_i|` over the largest magnitude
+//! of that quantity along the run (its scale). The options ask `atol + rtol |x|` per component
+//! of q and q', that is `rtol + atol / scale` relative to the scale (λ: the larger of the two).
+//! A result is wrong when its error exceeds 1000 times that tolerance and ten times what the
+//! reference vouches for.
+
+use std::fmt;
+
+use rand::RngExt;
+use zeitner::{
+    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
+    StepError, Vector,
+};
+
+use super::cases::{rng, variant, Rng};
+use crate::scenes::andrews::{self, Andrews};
+use crate::scenes::pendulum::Pendulum;
+use crate::scenes::reference::{self, State};
+use crate::scenes::steam_generator::SteamGenerator;
+use crate::scenes::stiff::DoublePendulum;
+
+/// A result is a silent wrong answer when its error exceeds this multiple of `rtol`.
+pub const THRESHOLD: f64 = 1000.0;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AccuracyScene {
+    Pendulum,
+    SteamGenerator,
+    DoublePendulum,
+    Andrews,
+}
+
+/// One accuracy case.
+#[derive(Clone, Debug)]
+pub struct AccuracyCase {
+    pub seed: u64,
+    pub scene: AccuracyScene,
+    /// Scene parameters (pendulum: m, L, g; steam generator: p0, d; double pendulum: m1, m2,
+    /// l1, l2, g, θ1, θ2, ω1, ω2; Andrews: none).
+    pub parameters: Vec<f64>,
+    pub t_end: f64,
+    pub options: Options,
+}
+
+impl AccuracyCase {
+    pub fn rtol(&self) -> f64 {
+        self.tolerances().0
+    }
+
+    /// `(rtol, atol)` of the options.
+    pub fn tolerances(&self) -> (f64, f64) {
+        match self.options.step {
+            StepControl::Adaptive { rtol, atol, .. } => (rtol, atol),
+            StepControl::Fixed { .. } => (f64::NAN, f64::NAN),
+        }
+    }
+}
+
+impl fmt::Display for AccuracyCase {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "seed {}: {:?}, parameters {:?}, t_end = {}",
+            self.seed, self.scene, self.parameters, self.t_end
+        )?;
+        write!(f, "  options: {:?}", self.options)
+    }
+}
+
+/// Sensible options: Dormand–Prince, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
+/// multiplier model and sensitivity; the defaults otherwise.
+fn sensible_options(rng: &mut Rng) -> Options {
+    let rtol = 10f64.powf(rng.random_range(-10.0..=-6.0));
+    let atol = rtol * 10f64.powf(rng.random_range(-4.0..=0.0));
+    Options {
+        method: InnerMethod::DormandPrince54,
+        multipliers: if rng.random_bool(0.5) {
+            MultiplierModel::Constant
+        } else {
+            MultiplierModel::Quadratic
+        },
+        sensitivity: if rng.random_bool(0.5) {
+            Sensitivity::Exact
+        } else {
+            Sensitivity::Paper
+        },
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: f64::INFINITY,
+            rtol,
+            atol,
+        },
+        ..Options::default()
+    }
+}
+
+pub fn generate(seed: u64) -> AccuracyCase {
+    let mut rng = rng(seed);
+    let options = sensible_options(&mut rng);
+    let (scene, parameters, t_end) = match rng.random_range(0..10) {
+        0..=2 => (
+            AccuracyScene::Pendulum,
+            vec![
+                rng.random_range(0.1..10.0),
+                rng.random_range(0.3..3.0),
+                rng.random_range(1.0..20.0),
+            ],
+            rng.random_range(0.2..3.0),
+        ),
+        3..=5 => (
+            AccuracyScene::SteamGenerator,
+            vec![rng.random_range(0.5e6..2e6), rng.random_range(1e6..4e6)],
+            // Whole multiples of the reference's 1e-5 s.
+            (rng.random_range(0.02..2.0) * 1e5f64).round() * 1e-5,
+        ),
+        6..=8 => (
+            AccuracyScene::DoublePendulum,
+            vec![
+                rng.random_range(0.5..3.0),
+                rng.random_range(0.5..3.0),
+                rng.random_range(0.5..1.5),
+                rng.random_range(0.3..1.0),
+                9.81,
+                rng.random_range(-1.5..1.5),
+                rng.random_range(-1.5..1.5),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            ],
+            (rng.random_range(0.1..1.0) * 1e5f64).round() * 1e-5,
+        ),
+        _ => (AccuracyScene::Andrews, Vec::new(), 0.03),
+    };
+    AccuracyCase {
+        seed,
+        scene,
+        parameters,
+        t_end,
+        options,
+    }
+}
+
+/// What an accuracy case gave.
+#[derive(Clone, Debug)]
+pub enum AccuracyOutcome {
+    /// Errors of q, q', λ relative to their scales, the tolerances the options ask of them, and
+    /// the errors the reference can vouch for.
+    Ok {
+        errors: [f64; 3],
+        tolerances: [f64; 3],
+        reliability: [f64; 3],
+    },
+    /// A typed error: the run failed loudly. Its variant, and the error.
+    Failed(String, String),
+}
+
+impl AccuracyOutcome {
+    /// Error over tolerance of q, q', λ; where the reference vouches for less than the
+    /// tolerance, over a hundredth of what it vouches for (so that `THRESHOLD` is then ten times
+    /// the reference's reliability).
+    pub fn ratios(&self) -> [f64; 3] {
+        match self {
+            AccuracyOutcome::Ok {
+                errors,
+                tolerances,
+                reliability,
+            } => core::array::from_fn(|k| errors[k] / tolerances[k].max(reliability[k] / 100.0)),
+            AccuracyOutcome::Failed(..) => [f64::NAN; 3],
+        }
+    }
+
+    /// Which of q, q', λ is wrong: its error beyond `THRESHOLD` times its tolerance (and ten
+    /// times what the reference vouches for).
+    pub fn wrong(&self) -> Vec<&'static str> {
+        ["q", "v", "lambda"]
+            .into_iter()
+            .zip(self.ratios())
+            .filter(|(_, ratio)| !(*ratio <= THRESHOLD))
+            .map(|(name, _)| name)
+            .collect()
+    }
+}
+
+/// `max_i |x_i - ref_i|` over the scale: the largest magnitude of the quantity along the run
+/// (a component passing through zero, as the pendulum's λ at its turning points, has no relative
+/// error of its own).
+fn relative(x: &[f64], reference: &[f64], scale: f64) -> f64 {
+    let diff = x
+        .iter()
+        .zip(reference)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    if scale > 0.0 {
+        diff / scale
+    } else {
+        diff
+    }
+}
+
+/// The errors against the reference. The options ask `atol + rtol |x|` of each component of
+/// q and q'; relative to the quantity's scale that is `rtol + atol / scale`. λ follows from q and
+/// q' and is held to the larger of their two tolerances.
+fn compare<const N: usize, const Z: usize>(
+    (end, scales): &(zeitner::Point<N, Z>, [f64; 3]),
+    reference: &State<N, Z>,
+    (rtol, atol): (f64, f64),
+    reliability: [f64; 3],
+) -> AccuracyOutcome {
+    let errors = [
+        relative(end.q.as_slice(), &reference.q, scales[0]),
+        relative(end.v.as_slice(), &reference.v, scales[1]),
+        relative(end.lambda.as_slice(), &reference.lambda, scales[2]),
+    ];
+    let tolerance_q = rtol + atol / scales[0];
+    let tolerance_v = rtol + atol / scales[1];
+    AccuracyOutcome::Ok {
+        errors,
+        tolerances: [tolerance_q, tolerance_v, tolerance_q.max(tolerance_v)],
+        reliability,
+    }
+}
+
+/// The end point, and the largest |q|, |q'|, |λ| along the run (at the start and every step
+/// end).
+fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v): (Vector<N>, Vector<N>),
+    stops: &[f64],
+    options: Options,
+) -> Result<(zeitner::Point<N, Z>, [f64; 3]), StepError> {
+    let mut sim = Simulator::new(scene, q, v, 0.0, options)?;
+    let size = |p: &zeitner::Point<N, Z>| [p.q.amax(), p.v.amax(), p.lambda.amax()];
+    let mut scales = size(&sim.last().end);
+    for &stop in stops {
+        sim.advance_to(stop, |step| {
+            for (scale, x) in scales.iter_mut().zip(size(&step.end)) {
+                *scale = scale.max(x);
+            }
+        })?;
+    }
+    Ok((sim.last().end, scales))
+}
+
+/// The double pendulum's angle equations (θ from the downward vertical, point masses), RK4 at
+/// 1e-5 s, and the Cartesian state, acceleration and multipliers at `t_end`.
+pub fn double_pendulum_reference(p: &[f64], t_end: f64) -> State<4, 2> {
+    let (m1, m2, l1, l2, g) = (p[0], p[1], p[2], p[3], p[4]);
+    let rhs = |_: f64, y: &[f64; 4]| -> [f64; 4] {
+        let (t1, t2, w1, w2) = (y[0], y[1], y[2], y[3]);
+        let delta = t1 - t2;
+        let den = 2.0 * m1 + m2 - m2 * (2.0 * delta).cos();
+        let a1 = (-g * (2.0 * m1 + m2) * t1.sin()
+            - m2 * g * (t1 - 2.0 * t2).sin()
+            - 2.0 * delta.sin() * m2 * (w2 * w2 * l2 + w1 * w1 * l1 * delta.cos()))
+            / (l1 * den);
+        let a2 = 2.0
+            * delta.sin()
+            * (w1 * w1 * l1 * (m1 + m2)
+                + g * (m1 + m2) * t1.cos()
+                + w2 * w2 * l2 * m2 * delta.cos())
+            / (l2 * den);
+        [w1, w2, a1, a2]
+    };
+    let steps = (t_end / 1e-5).round().max(1.0) as usize;
+    let y = reference::rk4(rhs, 0.0, [p[5], p[6], p[7], p[8]], t_end, steps);
+    let [t1, t2, w1, w2] = y;
+    let [_, _, a1, a2] = rhs(t_end, &y);
+    let (s1, c1) = t1.sin_cos();
+    let (s2, c2) = t2.sin_cos();
+    let q = [l1 * s1, -l1 * c1, l1 * s1 + l2 * s2, -l1 * c1 - l2 * c2];
+    let v1 = [l1 * c1 * w1, l1 * s1 * w1];
+    let v = [v1[0], v1[1], v1[0] + l2 * c2 * w2, v1[1] + l2 * s2 * w2];
+    let acc1 = [l1 * (c1 * a1 - s1 * w1 * w1), l1 * (s1 * a1 + c1 * w1 * w1)];
+    let acc = [
+        acc1[0],
+        acc1[1],
+        acc1[0] + l2 * (c2 * a2 - s2 * w2 * w2),
+        acc1[1] + l2 * (s2 * a2 + c2 * w2 * w2),
+    ];
+    // Gᵀλ = F - M a, with G = [[2x1, 2y1, 0, 0], [-2dx, -2dy, 2dx, 2dy]].
+    let force = [0.0, -m1 * g, 0.0, -m2 * g];
+    let mass = [m1, m1, m2, m2];
+    let r: [f64; 4] = core::array::from_fn(|i| force[i] - mass[i] * acc[i]);
+    let (dx, dy) = (q[2] - q[0], q[3] - q[1]);
+    let lambda2 = (dx * r[2] + dy * r[3]) / (2.0 * l2 * l2);
+    let lambda1 =
+        (q[0] * (r[0] + 2.0 * dx * lambda2) + q[1] * (r[1] + 2.0 * dy * lambda2)) / (2.0 * l1 * l1);
+    State {
+        q,
+        v,
+        lambda: [lambda1, lambda2],
+    }
+}
+
+/// The Cartesian start of the double pendulum for `p`.
+fn double_pendulum_start(p: &[f64]) -> (Vector<4>, Vector<4>) {
+    let (l1, l2) = (p[2], p[3]);
+    let (t1, t2, w1, w2) = (p[5], p[6], p[7], p[8]);
+    let (s1, c1) = t1.sin_cos();
+    let (s2, c2) = t2.sin_cos();
+    let q = [l1 * s1, -l1 * c1, l1 * s1 + l2 * s2, -l1 * c1 - l2 * c2];
+    let v = [
+        l1 * c1 * w1,
+        l1 * s1 * w1,
+        l1 * c1 * w1 + l2 * c2 * w2,
+        l1 * s1 * w1 + l2 * s2 * w2,
+    ];
+    (Vector::from(q), Vector::from(v))
+}
+
+pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
+    let rtol = case.tolerances();
+    let p = &case.parameters;
+    let exact = 1e-13;
+    let outcome = match case.scene {
+        AccuracyScene::Pendulum => {
+            let scene = Pendulum {
+                m: p[0],
+                length: p[1],
+                g: p[2],
+            };
+            let reference = reference::pendulum_released_horizontally(&scene, case.t_end);
+            let start = (Vector::<2>::new(p[1], 0.0), Vector::zeros());
+            integrate(&scene, start, &[case.t_end], case.options)
+                .map(|end| compare(&end, &reference, rtol, [exact; 3]))
+        }
+        AccuracyScene::SteamGenerator => {
+            let scene = SteamGenerator {
+                p0: p[0],
+                d: p[1],
+                ..SteamGenerator::paper()
+            };
+            let reference = reference::steam_generator(&scene, case.t_end);
+            // Stop at the load's kink, as a user would.
+            let stops: Vec<f64> = [scene.rise, case.t_end]
+                .into_iter()
+                .filter(|&t| t <= case.t_end)
+                .collect();
+            let start = (Vector::zeros(), Vector::zeros());
+            integrate(&scene, start, &stops, case.options)
+                .map(|end| compare(&end, &reference, rtol, [exact; 3]))
+        }
+        AccuracyScene::DoublePendulum => {
+            let scene = DoublePendulum {
+                m1: p[0],
+                m2: p[1],
+                l1: p[2],
+                l2: p[3],
+                g: p[4],
+            };
+            let reference = double_pendulum_reference(p, case.t_end);
+            integrate(
+                &scene,
+                double_pendulum_start(p),
+                &[case.t_end],
+                case.options,
+            )
+            .map(|end| compare(&end, &reference, rtol, [1e-12; 3]))
+        }
+        AccuracyScene::Andrews => {
+            let scene = Andrews::published();
+            let start = (Vector::from(Andrews::Q0), Vector::zeros());
+            let reference = andrews::published_end();
+            integrate(&scene, start, &[case.t_end], case.options)
+                .map(|end| compare(&end, &reference, rtol, [1e-9, 1e-7, 1e-5]))
+        }
+    };
+    outcome.unwrap_or_else(|error| AccuracyOutcome::Failed(variant(&error), format!("{error:?}")))
+}

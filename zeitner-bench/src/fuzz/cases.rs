@@ -1,0 +1,1799 @@
+//! The runtime fuzzer's cases: from a seed, a scene with hostile parameters, a hostile start,
+//! random options over every field and a random sequence of calls, and the checks of the
+//! runtime's promises after every call.
+//!
+//! What is checked (a [`Failure`] names the first promise a case breaks):
+//! - every `Ok` is finite: the whole `last()` report (both points, the step's multipliers, the
+//!   constraint forces, `g`, `w`), the `StartReport` of `reinitialise`, and every sampled point;
+//! - every `Ok` report is on the constraints: `|g_j| ≤ ε` for every row of `last().residual`
+//!   (position rows at the step end's positions; velocity rows at the reported velocities) —
+//!   what Newton accepts a step on, and what the projection of a start promises;
+//! - after an `Err`, `*last()`, `time()`, `options()` and `start_report()` are what they were:
+//!   before the call, or, for `advance_to`, after the last step its observer saw;
+//! - every accepted step moves the time forward, never beyond the active stop time, and lasts
+//!   `min_step..=max_step` (adaptive) or `step` (fixed) up to the rounding of the end time,
+//!   except the step that lands on the stop time (`≤ (1 + landing_fraction)` times the bound);
+//! - `time() == last().end.t`, and a new step's report starts where the last one ended;
+//! - arguments the documentation refuses are refused (stop and sample times), accepted ones are
+//!   honoured (`set_options`, the time `reinitialise` was given, the sampled time).
+
+use std::fmt;
+
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
+use zeitner::{
+    ConstrainedSystem, ControllerSettings, InnerMethod, InvalidOption, MultiplierModel, Options,
+    Point, Sensitivity, Simulator, StartPolicy, StartReport, StepControl, StepError, StepReport,
+    StopReason, Vector, VelocityProjection,
+};
+
+use super::scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
+use crate::scenes::andrews::Andrews;
+use crate::scenes::chain::{Chain2, Chain4};
+use crate::scenes::pendulum::Pendulum;
+use crate::scenes::steam_generator::SteamGenerator;
+use crate::scenes::stiff::{
+    CoupledMassPendulum, CuspBead, DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum,
+};
+
+/// The generator's random numbers: xoshiro256++, portable and reproducible from a `u64` seed.
+pub type Rng = Xoshiro256PlusPlus;
+
+pub fn rng(seed: u64) -> Rng {
+    Rng::seed_from_u64(seed)
+}
+
+/// The scenes a case can pick.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SceneKind {
+    Pendulum,
+    SteamGenerator,
+    Andrews,
+    Chain2,
+    Chain4,
+    SpringPendulum,
+    DoublePendulum,
+    SliderCrank,
+    RedundantFourBar,
+    CoupledMassPendulum,
+    CuspBead,
+    TwoLinkArm,
+    Sleigh,
+    FollowerPendulum,
+}
+
+impl SceneKind {
+    pub const ALL: [SceneKind; 14] = [
+        SceneKind::Pendulum,
+        SceneKind::SteamGenerator,
+        SceneKind::Andrews,
+        SceneKind::Chain2,
+        SceneKind::Chain4,
+        SceneKind::SpringPendulum,
+        SceneKind::DoublePendulum,
+        SceneKind::SliderCrank,
+        SceneKind::RedundantFourBar,
+        SceneKind::CoupledMassPendulum,
+        SceneKind::CuspBead,
+        SceneKind::TwoLinkArm,
+        SceneKind::Sleigh,
+        SceneKind::FollowerPendulum,
+    ];
+
+    /// `(N, Z)`.
+    pub fn dimensions(self) -> (usize, usize) {
+        match self {
+            SceneKind::Pendulum | SceneKind::CoupledMassPendulum | SceneKind::CuspBead => (2, 1),
+            SceneKind::SteamGenerator | SceneKind::SliderCrank => (3, 2),
+            SceneKind::Andrews => (7, 6),
+            SceneKind::Chain2 | SceneKind::DoublePendulum => (4, 2),
+            SceneKind::Chain4 => (8, 4),
+            SceneKind::SpringPendulum => (4, 1),
+            SceneKind::RedundantFourBar => (4, 4),
+            SceneKind::TwoLinkArm => (2, 1),
+            SceneKind::Sleigh => (4, 2),
+            SceneKind::FollowerPendulum => (3, 2),
+        }
+    }
+
+    /// The parameters the case varies, with their nominal values.
+    pub fn parameters(self) -> &'static [(&'static str, f64)] {
+        match self {
+            SceneKind::Pendulum => &[("m", 1.0), ("length", 1.0), ("g", 9.81)],
+            SceneKind::SteamGenerator => &[
+                ("m", 4.0e5),
+                ("j", 1.5e7),
+                ("g", 9.81),
+                ("h1", 4.0),
+                ("h2", 6.0),
+                ("h3", 8.0),
+                ("d", 2.0e6),
+                ("p0", 1.0e6),
+                ("rise", 0.01),
+                ("off", f64::INFINITY),
+            ],
+            SceneKind::Andrews => &[
+                ("m1", 0.04325),
+                ("m2", 0.00365),
+                ("i1", 2.194e-6),
+                ("c0", 4530.0),
+                ("l0", 0.07785),
+                ("mom", 0.033),
+                ("rr", 0.007),
+                ("d", 0.028),
+            ],
+            SceneKind::Chain2 | SceneKind::Chain4 => &[("m", 1.0), ("l", 1.0), ("g", 9.81)],
+            SceneKind::SpringPendulum => &[
+                ("m1", 1.0),
+                ("m2", 1.0),
+                ("l", 1.0),
+                ("l0", 0.5),
+                ("k", 1.0e3),
+                ("c", 0.0),
+                ("g", 9.81),
+            ],
+            SceneKind::DoublePendulum => &[
+                ("m1", 1.0),
+                ("m2", 3.0),
+                ("l1", 1.0),
+                ("l2", 0.5),
+                ("g", 9.81),
+            ],
+            SceneKind::SliderCrank => &[("m", 1.0), ("ms", 1.0), ("r", 1.0), ("l", 1.0)],
+            SceneKind::RedundantFourBar => &[
+                ("m", 1.0),
+                ("r1", 1.0),
+                ("r2", 2.0),
+                ("r3", 1.5),
+                ("d", 2.0),
+                ("g", 9.81),
+            ],
+            SceneKind::CoupledMassPendulum => {
+                &[("m11", 2.0), ("m12", 0.5), ("m22", 1.0), ("g", 9.81)]
+            }
+            SceneKind::CuspBead => &[("m", 1.0), ("g", 9.81)],
+            SceneKind::TwoLinkArm => &[
+                ("m1", 1.0),
+                ("m2", 0.5),
+                ("l1", 1.0),
+                ("l2", 0.8),
+                ("d", 1.2),
+                ("c", 0.0),
+                ("g", 9.81),
+            ],
+            SceneKind::Sleigh => &[
+                ("m", 2.0),
+                ("j", 0.3),
+                ("slope", 0.3),
+                ("push", 1.0),
+                ("torque", 0.5),
+                ("c", 0.1),
+                ("g", 9.81),
+            ],
+            SceneKind::FollowerPendulum => &[("m", 1.0), ("mz", 0.5), ("l", 1.0), ("g", 9.81)],
+        }
+    }
+
+    /// A consistent start for the given parameters (the scene's own, where it has one), with a
+    /// random configuration along its free directions where that is easy to write down.
+    fn nominal_state(self, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
+        let angle: f64 = rng.random_range(-3.0..3.0);
+        let rate: f64 = if rng.random_bool(0.5) {
+            0.0
+        } else {
+            rng.random_range(-3.0..3.0)
+        };
+        let (sin, cos) = angle.sin_cos();
+        match self {
+            SceneKind::Pendulum => {
+                let l = p[1];
+                (
+                    vec![l * sin, -l * cos],
+                    vec![l * cos * rate, l * sin * rate],
+                )
+            }
+            SceneKind::SteamGenerator => (vec![0.0; 3], vec![0.0; 3]),
+            SceneKind::Andrews => (Andrews::Q0.to_vec(), vec![0.0; 7]),
+            SceneKind::Chain2 => {
+                let l = p[1];
+                (vec![l, 0.0, 2.0 * l, 0.0], vec![0.0; 4])
+            }
+            SceneKind::Chain4 => {
+                let l = p[1];
+                let q = (0..8)
+                    .map(|k| {
+                        if k % 2 == 0 {
+                            l * (k / 2 + 1) as f64
+                        } else {
+                            0.0
+                        }
+                    })
+                    .collect();
+                (q, vec![0.0; 8])
+            }
+            SceneKind::SpringPendulum => {
+                let (l, l0) = (p[2], p[3]);
+                (
+                    vec![l * sin, -l * cos, l * sin, -l * cos - l0],
+                    vec![0.0; 4],
+                )
+            }
+            SceneKind::DoublePendulum => {
+                let (l1, l2) = (p[2], p[3]);
+                (vec![l1, 0.0, l1 + l2, 0.0], vec![0.0; 4])
+            }
+            SceneKind::SliderCrank => {
+                // l = r: the slider sits at 2 r cos φ.
+                let r = p[2];
+                (
+                    vec![r * cos, r * sin, 2.0 * r * cos],
+                    vec![-r * sin * rate, r * cos * rate, -2.0 * r * sin * rate],
+                )
+            }
+            SceneKind::RedundantFourBar => (vec![1.0, 0.0, 2.0, 1.5], vec![0.0; 4]),
+            SceneKind::CoupledMassPendulum => (vec![sin, -cos], vec![0.0; 2]),
+            SceneKind::CuspBead => (vec![1.0, 1.0], vec![0.0; 2]),
+            SceneKind::TwoLinkArm => {
+                let arm = TwoLinkArm {
+                    l1: p[2],
+                    l2: p[3],
+                    d: p[4],
+                    ..TwoLinkArm::nominal()
+                };
+                (
+                    arm.on_line(rng.random_range(0.2..0.9)).to_vec(),
+                    vec![0.0; 2],
+                )
+            }
+            SceneKind::Sleigh => {
+                let sleigh = Sleigh {
+                    slope: p[2],
+                    ..Sleigh::nominal()
+                };
+                let (q, v) = sleigh.start(angle, rate, 0.5);
+                (q.to_vec(), v.to_vec())
+            }
+            SceneKind::FollowerPendulum => {
+                let l = p[2];
+                let vx = l * cos * rate;
+                (vec![l * sin, -l * cos, 0.0], vec![vx, l * sin * rate, vx])
+            }
+        }
+    }
+}
+
+/// A time argument, resolved when the call is made.
+#[derive(Clone, Copy, Debug)]
+pub enum Time {
+    /// `time() + dt`.
+    Ahead(f64),
+    /// `start + s (end - start)` of the last step.
+    InStep(f64),
+    Absolute(f64),
+}
+
+impl Time {
+    fn resolve<const N: usize, const Z: usize>(self, last: &StepReport<N, Z>) -> f64 {
+        match self {
+            Time::Ahead(dt) => last.end.t + dt,
+            Time::InStep(s) => last.start.t + s * (last.end.t - last.start.t),
+            Time::Absolute(t) => t,
+        }
+    }
+}
+
+/// A state argument of `reinitialise`, relative to the current reported state or given.
+#[derive(Clone, Debug)]
+pub enum StateChange {
+    Keep,
+    Add(Vec<f64>),
+    Replace(Vec<f64>),
+}
+
+impl StateChange {
+    fn resolve<const N: usize>(&self, current: &Vector<N>) -> Vector<N> {
+        match self {
+            StateChange::Keep => *current,
+            StateChange::Add(delta) => current + Vector::<N>::from_column_slice(delta),
+            StateChange::Replace(x) => Vector::<N>::from_column_slice(x),
+        }
+    }
+}
+
+/// One call on the simulator.
+#[derive(Clone, Debug)]
+pub enum Call {
+    /// `step()` up to `count` times (fewer after an error).
+    Step {
+        count: u32,
+    },
+    SetStopTime(Time),
+    /// `advance_to(target)`; the observer samples every `sample_every`-th step (0: never) at
+    /// `start + sample_at (end - start)`, and stops after `stop_after` steps if given.
+    AdvanceTo {
+        target: Time,
+        sample_every: u32,
+        sample_at: f64,
+        stop_after: Option<u32>,
+    },
+    Sample(Time),
+    SetOptions(Box<Options>),
+    Reinitialise {
+        q: StateChange,
+        v: StateChange,
+        t: Time,
+    },
+    /// `with_initial_multipliers`: it consumes the simulator, so an error ends the case.
+    WithInitialMultipliers(Vec<f64>),
+}
+
+/// Everything a case does, generated from its seed.
+#[derive(Clone, Debug)]
+pub struct Case {
+    pub seed: u64,
+    pub scene: SceneKind,
+    pub parameters: Vec<f64>,
+    pub q0: Vec<f64>,
+    pub v0: Vec<f64>,
+    pub t0: f64,
+    pub options: Options,
+    pub initial_multipliers: Option<Vec<f64>>,
+    pub calls: Vec<Call>,
+}
+
+impl fmt::Display for Case {
+    /// A readable repro: the scene and its parameters by name, the start, the options, the calls.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "seed {}: scene {:?}", self.seed, self.scene)?;
+        let names = self.scene.parameters().iter().map(|(name, _)| name);
+        let params: Vec<String> = names
+            .zip(&self.parameters)
+            .map(|(name, value)| format!("{name} = {value:e}"))
+            .collect();
+        writeln!(f, "  parameters: {}", params.join(", "))?;
+        writeln!(f, "  q0 = {:?}", self.q0)?;
+        writeln!(f, "  v0 = {:?}, t0 = {:e}", self.v0, self.t0)?;
+        writeln!(f, "  options: {:?}", self.options)?;
+        if let Some(lambda) = &self.initial_multipliers {
+            writeln!(f, "  with_initial_multipliers({lambda:?})")?;
+        }
+        for (k, call) in self.calls.iter().enumerate() {
+            writeln!(f, "  call {k}: {call:?}")?;
+        }
+        Ok(())
+    }
+}
+
+impl Case {
+    /// Whether some options of the case allow very long steps: more than 100 RK4 substeps or
+    /// Newton integrations per step. Valid, and bounded, but seconds per step in a debug build.
+    pub fn is_costly(&self) -> bool {
+        let costly = |o: &Options| {
+            o.max_newton_iterations > 100
+                || matches!(o.method, InnerMethod::Rk4 { substeps } if substeps > 100)
+        };
+        costly(&self.options)
+            || self.calls.iter().any(|call| match call {
+                Call::SetOptions(options) => costly(options),
+                _ => false,
+            })
+    }
+}
+
+/// How much work one case may do: the fuzzer looks for broken promises, not long runs.
+#[derive(Clone, Copy, Debug)]
+pub struct Budget {
+    /// Accepted steps over the whole case; step-taking calls stop (or are skipped) beyond it.
+    pub steps: u64,
+    /// Accepted steps one `advance_to` may take before its observer stops it.
+    pub steps_per_advance: u32,
+}
+
+impl Default for Budget {
+    fn default() -> Self {
+        Budget {
+            steps: 1500,
+            steps_per_advance: 400,
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Generation.
+
+fn log_uniform(rng: &mut Rng, low: f64, high: f64) -> f64 {
+    10f64.powf(rng.random_range(low..high))
+}
+
+fn signed(rng: &mut Rng, x: f64) -> f64 {
+    if rng.random_bool(0.5) {
+        x
+    } else {
+        -x
+    }
+}
+
+const SPECIAL: [f64; 18] = [
+    f64::NAN,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    0.0,
+    -0.0,
+    1e300,
+    -1e300,
+    1e-300,
+    -1e-300,
+    f64::MIN_POSITIVE,
+    5e-324,
+    f64::MAX,
+    f64::MIN,
+    1e15,
+    -1e15,
+    -1.0,
+    1e-12,
+    1e12,
+];
+
+/// A hostile number: a special value, or a huge or tiny one of either sign.
+fn hostile(rng: &mut Rng) -> f64 {
+    if rng.random_bool(0.6) {
+        SPECIAL[rng.random_range(0..SPECIAL.len())]
+    } else {
+        let x = log_uniform(rng, -300.0, 300.0);
+        signed(rng, x)
+    }
+}
+
+/// Parameters: near nominal, one or two scaled far, or some hostile.
+fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<f64> {
+    let nominal: Vec<f64> = scene.parameters().iter().map(|&(_, x)| x).collect();
+    match rng.random_range(0..10) {
+        0..=3 => nominal,
+        4..=5 => nominal
+            .iter()
+            .map(|x| x * rng.random_range(0.5..2.0))
+            .collect(),
+        6..=7 => {
+            let mut p = nominal;
+            for _ in 0..rng.random_range(1..=2) {
+                let k = rng.random_range(0..p.len());
+                p[k] *= log_uniform(rng, -8.0, 8.0);
+                if rng.random_bool(0.2) {
+                    p[k] = -p[k];
+                }
+            }
+            p
+        }
+        _ => nominal
+            .iter()
+            .map(|&x| {
+                if rng.random_bool(0.3) {
+                    hostile(rng)
+                } else {
+                    x
+                }
+            })
+            .collect(),
+    }
+}
+
+fn noise(rng: &mut Rng, n: usize, scale: f64) -> Vec<f64> {
+    (0..n)
+        .map(|_| scale * rng.random_range(-1.0..1.0))
+        .collect()
+}
+
+/// A start: consistent, perturbed off the constraints, random, or with hostile components.
+fn start(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
+    let (n, _) = scene.dimensions();
+    let (mut q, mut v) = scene.nominal_state(p, rng);
+    match rng.random_range(0..20) {
+        0..=8 => {}
+        9..=13 => {
+            let scale = log_uniform(rng, -12.0, 1.0);
+            for (x, d) in q.iter_mut().zip(noise(rng, n, scale)) {
+                *x += d;
+            }
+            let scale = log_uniform(rng, -12.0, 1.0);
+            for (x, d) in v.iter_mut().zip(noise(rng, n, scale)) {
+                *x += d;
+            }
+        }
+        14..=15 => {
+            let scale = log_uniform(rng, -10.0, 10.0);
+            q = noise(rng, n, scale);
+            let scale = log_uniform(rng, -10.0, 10.0);
+            v = noise(rng, n, scale);
+        }
+        _ => {
+            for _ in 0..rng.random_range(1..=2) {
+                let k = rng.random_range(0..2 * n);
+                let x = hostile(rng);
+                if k < n {
+                    q[k] = x;
+                } else {
+                    v[k - n] = x;
+                }
+            }
+        }
+    }
+    let t0 = match rng.random_range(0..10) {
+        0..=7 => 0.0,
+        8 => rng.random_range(-10.0..10.0),
+        _ => hostile(rng),
+    };
+    (q, v, t0)
+}
+
+fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
+    match rng.random_range(0..3) {
+        0 => {
+            let substeps = match rng.random_range(0..100) {
+                0..=69 => rng.random_range(1..=4),
+                70..=91 => rng.random_range(1..=100),
+                92..=95 => 1000,
+                96..=97 => 10_000,
+                _ if wild => [0, 10_001, u32::MAX][rng.random_range(0..3)],
+                _ => 1,
+            };
+            InnerMethod::Rk4 { substeps }
+        }
+        1 => InnerMethod::DormandPrince54,
+        _ => InnerMethod::Sdirk2,
+    }
+}
+
+fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
+    let adaptive = match method {
+        InnerMethod::DormandPrince54 => rng.random_bool(0.75),
+        _ => rng.random_bool(0.05),
+    };
+    if !adaptive {
+        let step = match rng.random_range(0..10) {
+            0..=6 => log_uniform(rng, -4.0, -0.5),
+            7 => log_uniform(rng, -12.0, 2.0),
+            8 => [1e-300, 5e-324, 1e300, 1e15, 1e-15][rng.random_range(0..5)],
+            _ if wild => hostile(rng),
+            _ => 1e-3,
+        };
+        return StepControl::Fixed { step };
+    }
+    let initial_step = if rng.random_bool(0.8) {
+        log_uniform(rng, -8.0, -0.5)
+    } else {
+        [1e-300, 1e300, 5e-324, 1.0][rng.random_range(0..4)]
+    };
+    let min_step = match rng.random_range(0..6) {
+        0 => 0.0,
+        1 => 1e-12,
+        2 => 1e-300,
+        3 => initial_step,
+        _ => initial_step * log_uniform(rng, -12.0, 0.0),
+    };
+    let max_step = match rng.random_range(0..6) {
+        0 | 1 => f64::INFINITY,
+        2 => initial_step,
+        3 => 1e300,
+        _ => initial_step * log_uniform(rng, 0.0, 6.0),
+    };
+    let rtol = match rng.random_range(0..8) {
+        0 => 1e-16,
+        1 => 1.0,
+        2 => 1e-300,
+        3 => 1e10,
+        _ => log_uniform(rng, -14.0, -2.0),
+    };
+    let atol = match rng.random_range(0..8) {
+        0 => 1e-300,
+        1 => 1e10,
+        2 => 5e-324,
+        _ => log_uniform(rng, -16.0, -2.0),
+    };
+    let mut fields = [initial_step, min_step, max_step, rtol, atol];
+    if wild {
+        for _ in 0..rng.random_range(1..=2) {
+            let k = rng.random_range(0..fields.len());
+            fields[k] = hostile(rng);
+        }
+    }
+    let [initial_step, min_step, max_step, rtol, atol] = fields;
+    StepControl::Adaptive {
+        initial_step,
+        min_step,
+        max_step,
+        rtol,
+        atol,
+    }
+}
+
+fn controller(rng: &mut Rng, wild: bool) -> ControllerSettings {
+    let mut c = ControllerSettings::default();
+    if rng.random_bool(0.6) {
+        return c;
+    }
+    if rng.random_bool(0.5) {
+        c.safety = rng.random_range(0.01..=1.0);
+    }
+    if rng.random_bool(0.5) {
+        c.min_factor = [1e-6, 1e-3, 0.5, 0.999, 1e-300][rng.random_range(0..5)];
+    }
+    if rng.random_bool(0.5) {
+        c.max_factor = [1.0001, 1.5, 10.0, 1e6, 1e300][rng.random_range(0..5)];
+    }
+    if rng.random_bool(0.5) {
+        c.max_factor_after_rejection = [1e-3, 0.5, 0.999, 1e-300][rng.random_range(0..4)];
+    }
+    if rng.random_bool(0.5) {
+        c.beta_times_order = [0.0, 0.1, 0.5][rng.random_range(0..3)];
+    }
+    if rng.random_bool(0.5) {
+        c.newton_failure_factor = [1e-3, 0.5, 0.999, 1e-300][rng.random_range(0..4)];
+    }
+    if rng.random_bool(0.5) {
+        c.slow_newton_iterations = [0, 1, 2, 100, u32::MAX][rng.random_range(0..5)];
+    }
+    if rng.random_bool(0.5) {
+        c.landing_fraction = [0.0, 1e-12, 1e-3, 0.1, 0.5][rng.random_range(0..5)];
+    }
+    if wild {
+        let x = hostile(rng);
+        match rng.random_range(0..8) {
+            0 => c.safety = x,
+            1 => c.min_factor = x,
+            2 => c.max_factor = x,
+            3 => c.max_factor_after_rejection = x,
+            4 => c.beta_times_order = x,
+            5 => c.newton_failure_factor = x,
+            6 => c.landing_fraction = x,
+            _ => c.slow_newton_iterations = u32::MAX,
+        }
+    }
+    c
+}
+
+/// Options: the defaults with a change or two, every field random within its range, or with
+/// hostile values.
+pub fn options(rng: &mut Rng) -> Options {
+    let mode = rng.random_range(0..10);
+    let wild = mode >= 7;
+    if mode < 3 {
+        let mut o = Options::default();
+        match rng.random_range(0..6) {
+            0 => {}
+            1 => o.multipliers = MultiplierModel::Quadratic,
+            2 => o = Options::paper(log_uniform(rng, -4.0, -1.0)),
+            3 => o.sensitivity = Sensitivity::Paper,
+            4 => o.velocity_projection = VelocityProjection::State,
+            _ => {
+                o.method = InnerMethod::Sdirk2;
+                o.step = StepControl::Fixed {
+                    step: log_uniform(rng, -4.0, -1.0),
+                };
+            }
+        }
+        return o;
+    }
+    let method = inner_method(rng, wild);
+    let constraint_tolerance = match rng.random_range(0..10) {
+        0..=5 => log_uniform(rng, -14.0, -4.0),
+        6 => [1e-300, 1e-16, 1.0, 1e10][rng.random_range(0..4)],
+        7 => log_uniform(rng, -16.0, 2.0),
+        _ if wild => hostile(rng),
+        _ => 1e-10,
+    };
+    let max_newton_iterations = match rng.random_range(0..20) {
+        0..=11 => rng.random_range(1..=30),
+        12..=14 => 12,
+        15 => 1,
+        16 => 1000,
+        17 => rng.random_range(1..=1000),
+        _ if wild => [0, 1001, u32::MAX][rng.random_range(0..3)],
+        _ => 2,
+    };
+    Options {
+        method,
+        multipliers: if rng.random_bool(0.6) {
+            MultiplierModel::Constant
+        } else {
+            MultiplierModel::Quadratic
+        },
+        step: step_control(rng, method, wild),
+        sensitivity: if rng.random_bool(0.6) {
+            Sensitivity::Exact
+        } else {
+            Sensitivity::Paper
+        },
+        constraint_tolerance,
+        max_newton_iterations,
+        velocity_projection: [
+            VelocityProjection::Off,
+            VelocityProjection::Output,
+            VelocityProjection::State,
+        ][rng.random_range(0..3)],
+        extrapolate_multipliers: rng.random_bool(0.7),
+        accept_linearised_update: rng.random_bool(0.7),
+        start: if rng.random_bool(0.8) {
+            StartPolicy::Project
+        } else {
+            StartPolicy::Refuse
+        },
+        controller: controller(rng, wild),
+    }
+}
+
+fn time_ahead(rng: &mut Rng) -> Time {
+    match rng.random_range(0..20) {
+        0..=15 => Time::Ahead(log_uniform(rng, -6.0, 0.7)),
+        16 => Time::Ahead(0.0),
+        17 => Time::Ahead(-rng.random_range(0.0..1.0)),
+        18 => Time::Ahead(hostile(rng)),
+        _ => Time::Absolute(hostile(rng)),
+    }
+}
+
+fn state_change(rng: &mut Rng, n: usize) -> StateChange {
+    match rng.random_range(0..10) {
+        0..=3 => StateChange::Keep,
+        4..=7 => {
+            let scale = log_uniform(rng, -12.0, 0.0);
+            StateChange::Add(noise(rng, n, scale))
+        }
+        8 => {
+            let scale = log_uniform(rng, -6.0, 6.0);
+            StateChange::Replace(noise(rng, n, scale))
+        }
+        _ => StateChange::Replace((0..n).map(|_| hostile(rng)).collect()),
+    }
+}
+
+fn multipliers(rng: &mut Rng, z: usize) -> Vec<f64> {
+    let scale = log_uniform(rng, -3.0, 6.0);
+    let mut lambda = noise(rng, z, scale);
+    if rng.random_bool(0.2) {
+        let k = rng.random_range(0..z);
+        lambda[k] = hostile(rng);
+    }
+    lambda
+}
+
+fn call(rng: &mut Rng, scene: SceneKind) -> Call {
+    let (n, z) = scene.dimensions();
+    match rng.random_range(0..100) {
+        0..=29 => Call::Step {
+            count: rng.random_range(1..=40),
+        },
+        30..=54 => Call::AdvanceTo {
+            target: time_ahead(rng),
+            sample_every: if rng.random_bool(0.5) {
+                0
+            } else {
+                rng.random_range(1..=5)
+            },
+            sample_at: if rng.random_bool(0.9) {
+                rng.random_range(-0.2..1.2)
+            } else {
+                hostile(rng)
+            },
+            stop_after: rng.random_bool(0.4).then(|| rng.random_range(1..=20)),
+        },
+        55..=64 => Call::SetStopTime(time_ahead(rng)),
+        65..=74 => Call::Sample(match rng.random_range(0..10) {
+            0..=5 => Time::InStep(rng.random_range(-0.3..1.3)),
+            6 => Time::InStep(0.0),
+            7 => Time::InStep(1.0),
+            _ => Time::Absolute(hostile(rng)),
+        }),
+        75..=84 => Call::SetOptions(Box::new(options(rng))),
+        85..=95 => Call::Reinitialise {
+            q: state_change(rng, n),
+            v: state_change(rng, n),
+            t: match rng.random_range(0..10) {
+                0..=5 => Time::Ahead(0.0),
+                6..=7 => Time::Ahead(rng.random_range(-1.0..1.0)),
+                _ => Time::Absolute(hostile(rng)),
+            },
+        },
+        _ => Call::WithInitialMultipliers(multipliers(rng, z)),
+    }
+}
+
+/// The case of `seed`.
+pub fn generate(seed: u64) -> Case {
+    let mut rng = rng(seed);
+    let scene = SceneKind::ALL[rng.random_range(0..SceneKind::ALL.len())];
+    let parameters = parameters(&mut rng, scene);
+    let (q0, v0, t0) = start(&mut rng, scene, &parameters);
+    let options = options(&mut rng);
+    let initial_multipliers = rng
+        .random_bool(0.1)
+        .then(|| multipliers(&mut rng, scene.dimensions().1));
+    let calls = (0..rng.random_range(1..=12))
+        .map(|_| call(&mut rng, scene))
+        .collect();
+    Case {
+        seed,
+        scene,
+        parameters,
+        q0,
+        v0,
+        t0,
+        options,
+        initial_multipliers,
+        calls,
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Execution and checks.
+
+/// The classes of broken promises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum FailureClass {
+    /// A panic (caught by the caller).
+    Panic,
+    /// After an error, the simulator's state, time, options or start report changed.
+    StateLoss,
+    /// An `Ok` with a NaN or infinity in it.
+    NonFinite,
+    /// An `Ok` report off the constraints: `|g_j| > ε`.
+    ConstraintViolation,
+    /// A step outside the step-size bounds, beyond the stop time, or not forward; a refused
+    /// argument accepted or an accepted option not honoured.
+    OptionViolation,
+    /// A report that does not follow from the last one (`time()`, start, stop reasons).
+    ReportInconsistency,
+}
+
+impl FailureClass {
+    pub const ALL: [FailureClass; 6] = [
+        FailureClass::Panic,
+        FailureClass::StateLoss,
+        FailureClass::NonFinite,
+        FailureClass::ConstraintViolation,
+        FailureClass::OptionViolation,
+        FailureClass::ReportInconsistency,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            FailureClass::Panic => "panic",
+            FailureClass::StateLoss => "state-loss",
+            FailureClass::NonFinite => "non-finite-ok",
+            FailureClass::ConstraintViolation => "constraint-violation",
+            FailureClass::OptionViolation => "option-violation",
+            FailureClass::ReportInconsistency => "report-inconsistency",
+        }
+    }
+}
+
+/// A broken promise: its class, and what happened, naming the call.
+#[derive(Clone, Debug)]
+pub struct Failure {
+    pub class: FailureClass,
+    pub detail: String,
+}
+
+/// What a case did.
+#[derive(Clone, Debug, Default)]
+pub struct Outcome {
+    pub failure: Option<Failure>,
+    /// The typed errors the calls returned, by variant (`InvalidOption::StepSize` for options).
+    pub errors: Vec<String>,
+    /// Accepted steps.
+    pub steps: u64,
+    /// Calls made, `new` included.
+    pub calls: usize,
+}
+
+/// The variant of an error, with the refused option for `InvalidOption`.
+pub fn variant(error: &StepError) -> String {
+    let debug = format!("{error:?}");
+    let name: String = debug
+        .split([' ', '(', '{'])
+        .next()
+        .unwrap_or("")
+        .to_string();
+    match error {
+        StepError::InvalidOption(option) => {
+            let inner = format!("{option:?}");
+            let inner = inner.split([' ', '(', '{']).next().unwrap_or("");
+            format!("{name}::{inner}")
+        }
+        _ => name,
+    }
+}
+
+type Check = Result<(), Failure>;
+
+fn fail(class: FailureClass, detail: String) -> Check {
+    Err(Failure { class, detail })
+}
+
+fn all_finite<const R: usize>(x: &Vector<R>) -> bool {
+    x.iter().all(|x| x.is_finite())
+}
+
+fn point_finite<const N: usize, const Z: usize>(p: &Point<N, Z>) -> Option<&'static str> {
+    if !p.t.is_finite() {
+        Some("t")
+    } else if !all_finite(&p.q) {
+        Some("q")
+    } else if !all_finite(&p.v) {
+        Some("v")
+    } else if !all_finite(&p.a) {
+        Some("a")
+    } else if !all_finite(&p.lambda) {
+        Some("lambda")
+    } else {
+        None
+    }
+}
+
+fn report_finite<const N: usize, const Z: usize>(r: &StepReport<N, Z>) -> Option<String> {
+    if let Some(field) = point_finite(&r.start) {
+        return Some(format!("start.{field}"));
+    }
+    if let Some(field) = point_finite(&r.end) {
+        return Some(format!("end.{field}"));
+    }
+    let vectors: [(&str, &[f64]); 4] = [
+        ("step_multipliers", r.step_multipliers.as_slice()),
+        ("constraint_force", r.constraint_force.as_slice()),
+        ("residual", r.residual.as_slice()),
+        ("rate_residual", r.rate_residual.as_slice()),
+    ];
+    vectors
+        .iter()
+        .find(|(_, x)| !x.iter().all(|x| x.is_finite()))
+        .map(|(name, _)| name.to_string())
+}
+
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+fn same_point<const N: usize, const Z: usize>(a: &Point<N, Z>, b: &Point<N, Z>) -> bool {
+    a.t.to_bits() == b.t.to_bits()
+        && same_bits(a.q.as_slice(), b.q.as_slice())
+        && same_bits(a.v.as_slice(), b.v.as_slice())
+        && same_bits(a.a.as_slice(), b.a.as_slice())
+        && same_bits(a.lambda.as_slice(), b.lambda.as_slice())
+}
+
+/// Bit-for-bit equality of two reports.
+fn same_report<const N: usize, const Z: usize>(a: &StepReport<N, Z>, b: &StepReport<N, Z>) -> bool {
+    same_point(&a.start, &b.start)
+        && same_point(&a.end, &b.end)
+        && same_bits(a.step_multipliers.as_slice(), b.step_multipliers.as_slice())
+        && same_bits(a.constraint_force.as_slice(), b.constraint_force.as_slice())
+        && same_bits(a.residual.as_slice(), b.residual.as_slice())
+        && same_bits(a.rate_residual.as_slice(), b.rate_residual.as_slice())
+        && a.newton_iterations == b.newton_iterations
+}
+
+fn same_start_report<const N: usize, const Z: usize>(
+    a: &StartReport<N, Z>,
+    b: &StartReport<N, Z>,
+) -> bool {
+    same_bits(a.position_change.as_slice(), b.position_change.as_slice())
+        && same_bits(a.velocity_change.as_slice(), b.velocity_change.as_slice())
+        && same_bits(a.multipliers.as_slice(), b.multipliers.as_slice())
+        && a.multipliers_given == b.multipliers_given
+}
+
+/// An `Ok` report: finite, and on the constraints (`|g_j| ≤ ε` for every row).
+fn check_report<const N: usize, const Z: usize>(
+    report: &StepReport<N, Z>,
+    tolerance: f64,
+    position_rows: usize,
+    call: &str,
+) -> Check {
+    if let Some(field) = report_finite(report) {
+        return fail(
+            FailureClass::NonFinite,
+            format!("{call}: Ok with non-finite last().{field}: {report:?}"),
+        );
+    }
+    for (j, g) in report.residual.iter().enumerate() {
+        if !(g.abs() <= tolerance) {
+            // A row linear in the velocities with unit coefficients (the fuzzer's velocity
+            // rows) cannot be evaluated closer than a few ulps of the largest velocity.
+            let floor = 8.0 * f64::EPSILON * report.end.v.amax();
+            let kind = if j < position_rows {
+                "position row"
+            } else if g.abs() <= floor {
+                "velocity row (within rounding of |q'|)"
+            } else {
+                "velocity row"
+            };
+            return fail(
+                FailureClass::ConstraintViolation,
+                format!(
+                    "{call}: Ok at t = {:e} with the {kind} |g[{j}]| = {:e} > ε = {tolerance:e} (q = {:?}, v = {:?})",
+                    report.end.t,
+                    g.abs(),
+                    report.end.q.as_slice(),
+                    report.end.v.as_slice()
+                ),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The largest and smallest step the options allow, besides a landing one.
+fn step_bounds(step: StepControl) -> (f64, f64) {
+    match step {
+        StepControl::Fixed { step } => (step, step),
+        StepControl::Adaptive {
+            min_step, max_step, ..
+        } => (min_step, max_step),
+    }
+}
+
+/// An accepted step from `previous` to `report` under `options` with the stop time `stop`.
+fn check_step<const N: usize, const Z: usize>(
+    previous: &StepReport<N, Z>,
+    report: &StepReport<N, Z>,
+    (options, position_rows): (&Options, usize),
+    stop: Option<f64>,
+    call: &str,
+) -> Check {
+    check_report(report, options.constraint_tolerance, position_rows, call)?;
+    if !same_point(&report.start, &previous.end) {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!(
+                "{call}: the step's start {:?} is not the last step's end {:?}",
+                report.start, previous.end
+            ),
+        );
+    }
+    let (t0, t1) = (report.start.t, report.end.t);
+    let h = t1 - t0;
+    if !(h > 0.0) {
+        return fail(
+            FailureClass::OptionViolation,
+            format!("{call}: an accepted step from t = {t0:e} to {t1:e} does not move forward"),
+        );
+    }
+    let landing = stop == Some(t1);
+    if let Some(stop) = stop {
+        if t1 > stop {
+            return fail(
+                FailureClass::OptionViolation,
+                format!("{call}: a step ends at t = {t1:e}, beyond the stop time {stop:e}"),
+            );
+        }
+    }
+    // The end time is `t + h` rounded (with the carry of earlier roundings): a few ulps.
+    let slack = 4.0 * f64::EPSILON * (t0.abs().max(t1.abs()) + h);
+    let (min, max) = step_bounds(options.step);
+    let landing_max = max * (1.0 + options.controller.landing_fraction);
+    if landing {
+        if h > landing_max + slack {
+            return fail(
+                FailureClass::OptionViolation,
+                format!(
+                    "{call}: the step landing on the stop time {t1:e} lasts {h:e}, more than \
+                     (1 + landing_fraction) × {max:e}"
+                ),
+            );
+        }
+    } else if h < min - slack || h > max + slack {
+        return fail(
+            FailureClass::OptionViolation,
+            format!(
+                "{call}: a step from t = {t0:e} lasts {h:e}, outside [{min:e}, {max:e}] ({:?})",
+                options.step
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// The state that an error must leave untouched.
+struct Snapshot<const N: usize, const Z: usize> {
+    last: StepReport<N, Z>,
+    time: f64,
+    options: Options,
+    start_report: StartReport<N, Z>,
+}
+
+impl<const N: usize, const Z: usize> Snapshot<N, Z> {
+    fn of<S: ConstrainedSystem<N, Z>>(sim: &Simulator<'_, S, N, Z>) -> Self {
+        Snapshot {
+            last: *sim.last(),
+            time: sim.time(),
+            options: *sim.options(),
+            start_report: *sim.start_report(),
+        }
+    }
+
+    /// After `error`: the simulator is as it was.
+    fn unchanged<S: ConstrainedSystem<N, Z>>(
+        &self,
+        sim: &Simulator<'_, S, N, Z>,
+        call: &str,
+        error: &StepError,
+    ) -> Check {
+        let what = if !same_report(sim.last(), &self.last) {
+            "last()"
+        } else if sim.time().to_bits() != self.time.to_bits() {
+            "time()"
+        } else if *sim.options() != self.options {
+            "options()"
+        } else if !same_start_report(sim.start_report(), &self.start_report) {
+            "start_report()"
+        } else {
+            return Ok(());
+        };
+        fail(
+            FailureClass::StateLoss,
+            format!(
+                "{call} returned {error:?} and changed {what}: before {:?}, after {:?}",
+                self.last,
+                sim.last()
+            ),
+        )
+    }
+}
+
+/// `time() == last().end.t`, the only place the time comes from.
+fn check_time<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    sim: &Simulator<'_, S, N, Z>,
+    call: &str,
+) -> Check {
+    if sim.time().to_bits() != sim.last().end.t.to_bits() {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!(
+                "{call}: time() = {:e} but last().end.t = {:e}",
+                sim.time(),
+                sim.last().end.t
+            ),
+        );
+    }
+    Ok(())
+}
+
+fn check_sample<const N: usize, const Z: usize>(
+    result: &Result<Point<N, Z>, StepError>,
+    t: f64,
+    last: &StepReport<N, Z>,
+    call: &str,
+) -> Check {
+    let inside = t >= last.start.t && t <= last.end.t;
+    match result {
+        Ok(point) => {
+            if let Some(field) = point_finite(point) {
+                return fail(
+                    FailureClass::NonFinite,
+                    format!("{call}: sample({t:e}) is Ok with non-finite {field}: {point:?}"),
+                );
+            }
+            if !inside {
+                return fail(
+                    FailureClass::OptionViolation,
+                    format!(
+                        "{call}: sample({t:e}) outside the last step [{:e}, {:e}] is Ok",
+                        last.start.t, last.end.t
+                    ),
+                );
+            }
+            if point.t.to_bits() != t.to_bits() {
+                return fail(
+                    FailureClass::ReportInconsistency,
+                    format!(
+                        "{call}: sample({t:e}) returned a point at t = {:e}",
+                        point.t
+                    ),
+                );
+            }
+        }
+        Err(StepError::InvalidOption(InvalidOption::SampleTime)) if !inside => {}
+        Err(error) if !inside => {
+            return fail(
+                FailureClass::OptionViolation,
+                format!("{call}: sample({t:e}) outside the last step returned {error:?}, not SampleTime"),
+            );
+        }
+        Err(_) => {}
+    }
+    Ok(())
+}
+
+/// Runs `case` on `scene`, checking every call; `trace` gets a line per call.
+fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    case: &Case,
+    budget: &Budget,
+    trace: &mut dyn FnMut(String),
+) -> Outcome {
+    let mut outcome = Outcome::default();
+    outcome.calls += 1;
+    let q0 = Vector::<N>::from_column_slice(&case.q0);
+    let v0 = Vector::<N>::from_column_slice(&case.v0);
+    let sim = match Simulator::new(scene, q0, v0, case.t0, case.options) {
+        Ok(sim) => sim,
+        Err(error) => {
+            trace(format!("new: {error:?}"));
+            outcome.errors.push(variant(&error));
+            return outcome;
+        }
+    };
+    trace(format!("new: Ok, t = {:e}", sim.time()));
+    let mut run = Run {
+        sim: Some(sim),
+        stop: None,
+        budget: *budget,
+        outcome,
+        trace,
+    };
+    let result = run.all(case);
+    let mut outcome = run.outcome;
+    outcome.failure = result.err();
+    outcome
+}
+
+/// A case being run: the simulator (gone once `with_initial_multipliers` has consumed it with
+/// an error), the stop time in force as the documentation defines it, and what was seen.
+struct Run<'s, 't, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    sim: Option<Simulator<'s, S, N, Z>>,
+    stop: Option<f64>,
+    budget: Budget,
+    outcome: Outcome,
+    trace: &'t mut dyn FnMut(String),
+}
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_, S, N, Z> {
+    fn error(&mut self, call: &str, error: &StepError) {
+        (self.trace)(format!("{call}: {error:?}"));
+        self.outcome.errors.push(variant(error));
+    }
+
+    fn all(&mut self, case: &Case) -> Check {
+        self.started("new")?;
+        if let Some(lambda) = &case.initial_multipliers {
+            self.with_initial_multipliers("with_initial_multipliers", lambda)?;
+        }
+        for (k, call) in case.calls.iter().enumerate() {
+            if self.sim.is_none() {
+                break;
+            }
+            let name = format!("call {k}");
+            self.outcome.calls += 1;
+            match call {
+                Call::Step { count } => self.steps(&name, *count)?,
+                Call::SetStopTime(time) => self.set_stop_time(&name, *time)?,
+                Call::AdvanceTo {
+                    target,
+                    sample_every,
+                    sample_at,
+                    stop_after,
+                } => {
+                    let observer = Observer {
+                        sample_every: *sample_every,
+                        sample_at: *sample_at,
+                        stop_after: *stop_after,
+                    };
+                    self.advance_to(&name, *target, observer)?
+                }
+                Call::Sample(time) => self.sample(&name, *time)?,
+                Call::SetOptions(options) => self.set_options(&name, options)?,
+                Call::Reinitialise { q, v, t } => self.reinitialise(&name, (q, v), *t)?,
+                Call::WithInitialMultipliers(lambda) => {
+                    self.with_initial_multipliers(&name, lambda)?
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// After `new` or `reinitialise`: a finite report on the constraints, a finite start
+    /// report.
+    fn started(&mut self, call: &str) -> Check {
+        let sim = self.sim.as_mut().expect("a simulator");
+        let tolerance = sim.options().constraint_tolerance;
+        check_report(sim.last(), tolerance, S::POSITION_CONSTRAINTS, call)?;
+        check_time(sim, call)?;
+        let report = sim.start_report();
+        let mut changes = report
+            .position_change
+            .iter()
+            .chain(report.velocity_change.iter())
+            .chain(report.multipliers.iter());
+        if !changes.all(|x| x.is_finite()) {
+            return fail(
+                FailureClass::NonFinite,
+                format!("{call}: Ok with a non-finite start report {report:?}"),
+            );
+        }
+        Ok(())
+    }
+
+    fn with_initial_multipliers(&mut self, call: &str, lambda: &[f64]) -> Check {
+        let sim = self.sim.take().expect("a simulator");
+        let before = Snapshot::of(&sim);
+        let sim = match sim.with_initial_multipliers(Vector::<Z>::from_column_slice(lambda)) {
+            Ok(sim) => sim,
+            Err(error) => {
+                // The simulator is consumed: nothing left to check, the case ends.
+                self.error(&format!("{call}: with_initial_multipliers"), &error);
+                return Ok(());
+            }
+        };
+        (self.trace)(format!("{call}: with_initial_multipliers: Ok"));
+        let call = format!("{call} (with_initial_multipliers)");
+        // The same state, accepted under the tolerance of its time (the options may have
+        // changed since): finite, and the same residual.
+        check_report(sim.last(), f64::INFINITY, 0, &call)?;
+        check_time(&sim, &call)?;
+        let residual = (sim.last().residual, before.last.residual);
+        if !same_bits(residual.0.as_slice(), residual.1.as_slice()) {
+            return fail(
+                FailureClass::ReportInconsistency,
+                format!(
+                    "{call}: the residual moved from {} to {}",
+                    residual.1, residual.0
+                ),
+            );
+        }
+        if sim.time().to_bits() != before.time.to_bits() {
+            return fail(
+                FailureClass::ReportInconsistency,
+                format!(
+                    "{call}: moved the time from {:e} to {:e}",
+                    before.time,
+                    sim.time()
+                ),
+            );
+        }
+        self.sim = Some(sim);
+        Ok(())
+    }
+
+    /// `step()` up to `count` times, each checked.
+    fn steps(&mut self, call: &str, count: u32) -> Check {
+        let call = format!("{call} (step)");
+        for _ in 0..count {
+            if self.outcome.steps >= self.budget.steps {
+                break;
+            }
+            let before = Snapshot::of(self.sim.as_mut().expect("a simulator"));
+            let result = self.sim.as_mut().expect("a simulator").step();
+            let stop = self.stop;
+            let sim = self.sim.as_mut().expect("a simulator");
+            let reason = match result {
+                Ok(reason) => reason,
+                Err(error) => {
+                    before.unchanged(sim, &call, &error)?;
+                    self.error(&call, &error);
+                    break;
+                }
+            };
+            self.outcome.steps += 1;
+            let options = (&before.options, S::POSITION_CONSTRAINTS);
+            check_step(&before.last, sim.last(), options, stop, &call)?;
+            check_time(sim, &call)?;
+            let landed = stop == Some(sim.time());
+            let expected = if landed {
+                StopReason::StopTimeReached
+            } else {
+                StopReason::StepTaken
+            };
+            if reason != expected {
+                return fail(
+                    FailureClass::ReportInconsistency,
+                    format!(
+                        "{call}: step() returned {reason:?} at t = {:e}, the stop time {stop:?}",
+                        sim.time()
+                    ),
+                );
+            }
+            if landed {
+                self.stop = None;
+            }
+        }
+        let t = self.sim.as_mut().expect("a simulator").time();
+        (self.trace)(format!("{call} ×{count}: t = {t:e}"));
+        Ok(())
+    }
+
+    fn set_stop_time(&mut self, call: &str, time: Time) -> Check {
+        let sim = self.sim.as_mut().expect("a simulator");
+        let before = Snapshot::of(sim);
+        let t = time.resolve(sim.last());
+        let now = sim.time();
+        let valid = t > now && t.is_finite();
+        match sim.set_stop_time(t) {
+            Ok(()) if valid => {
+                (self.trace)(format!("{call}: set_stop_time({t:e}): Ok"));
+                self.stop = Some(t);
+                Ok(())
+            }
+            Ok(()) => fail(
+                FailureClass::OptionViolation,
+                format!("{call}: set_stop_time({t:e}) at t = {now:e} was accepted"),
+            ),
+            Err(error) => {
+                before.unchanged(sim, call, &error)?;
+                self.error(&format!("{call}: set_stop_time({t:e})"), &error);
+                if valid {
+                    return fail(
+                        FailureClass::OptionViolation,
+                        format!("{call}: set_stop_time({t:e}) at t = {now:e} was refused"),
+                    );
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// `advance_to` with an observer that checks every step it sees, samples and stops as
+    /// `observer` says, and stops the run at the budget.
+    fn advance_to(&mut self, name: &str, target: Time, observer: Observer) -> Check {
+        if self.outcome.steps >= self.budget.steps {
+            return Ok(());
+        }
+        let cap = self
+            .budget
+            .steps_per_advance
+            .min((self.budget.steps - self.outcome.steps) as u32)
+            .max(1);
+        let sim = self.sim.as_mut().expect("a simulator");
+        let before = Snapshot::of(sim);
+        let t_end = target.resolve(sim.last());
+        let t_start = sim.time();
+        let call = format!("{name} (advance_to({t_end:e}))");
+        let mut seen = Seen {
+            previous: before.last,
+            observed: 0,
+            stopped: false,
+            broken: None,
+        };
+        let options = (&before.options, S::POSITION_CONSTRAINTS);
+        let result = sim.advance_to(t_end, |step| {
+            if seen.broken.is_some() {
+                step.stop();
+                return;
+            }
+            seen.observed += 1;
+            let report = *step.report();
+            let mut check = check_step(&seen.previous, &report, options, Some(t_end), &call);
+            if check.is_ok() && observer.samples(seen.observed) {
+                let t = report.start.t + observer.sample_at * (report.end.t - report.start.t);
+                let sampled = step.sample(t);
+                check = check_sample(&sampled, t, &report, &call);
+                if check.is_ok() && !same_report(step.report(), &report) {
+                    check = fail(
+                        FailureClass::ReportInconsistency,
+                        format!("{call}: sampling in the observer changed the report"),
+                    );
+                }
+            }
+            seen.previous = report;
+            if let Err(failure) = check {
+                seen.broken = Some(failure);
+                step.stop();
+            } else if seen.observed >= cap || observer.stops(seen.observed) {
+                seen.stopped = true;
+                step.stop();
+            }
+        });
+        self.outcome.steps += u64::from(seen.observed);
+        if let Some(failure) = seen.broken {
+            return Err(failure);
+        }
+        let sim = self.sim.as_mut().expect("a simulator");
+        let observed = seen.observed;
+        match result {
+            Ok(reason) => {
+                let t = sim.time();
+                (self.trace)(format!(
+                    "{call}: {reason:?} after {observed} steps, t = {t:e}"
+                ));
+                check_time(sim, &call)?;
+                let expected = if seen.stopped {
+                    StopReason::ObserverStopped
+                } else {
+                    StopReason::StopTimeReached
+                };
+                let consistent = reason == expected
+                    && (observed == 0 || same_report(sim.last(), &seen.previous))
+                    && (reason != StopReason::StopTimeReached || t == t_end)
+                    && (observed > 0 || t_end == t_start);
+                if !consistent {
+                    return fail(
+                        FailureClass::ReportInconsistency,
+                        format!(
+                            "{call}: {reason:?} at t = {t:e} after {observed} steps (the \
+                             observer stopped it: {})",
+                            seen.stopped
+                        ),
+                    );
+                }
+                if observed > 0 {
+                    self.stop = None;
+                }
+            }
+            Err(error) => {
+                // The last accepted state is that of the last step the observer saw.
+                let after = Snapshot {
+                    last: seen.previous,
+                    time: seen.previous.end.t,
+                    ..before
+                };
+                after.unchanged(sim, &call, &error)?;
+                self.error(&format!("{call} after {observed} steps"), &error);
+                let valid = t_end > t_start && t_end.is_finite();
+                if valid {
+                    self.stop = Some(t_end);
+                } else if error != StepError::InvalidOption(InvalidOption::EndTime) {
+                    return fail(
+                        FailureClass::OptionViolation,
+                        format!("{call} from t = {t_start:e}: {error:?}, not EndTime"),
+                    );
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn sample(&mut self, call: &str, time: Time) -> Check {
+        let sim = self.sim.as_mut().expect("a simulator");
+        let before = Snapshot::of(sim);
+        let t = time.resolve(sim.last());
+        let result = sim.sample(t);
+        check_sample(&result, t, &before.last, call)?;
+        let error = result
+            .err()
+            .unwrap_or(StepError::InvalidOption(InvalidOption::SampleTime));
+        before.unchanged(sim, &format!("{call} (sample)"), &error)?;
+        match result {
+            Ok(point) => (self.trace)(format!("{call}: sample({t:e}): Ok at {:e}", point.t)),
+            Err(error) => self.error(&format!("{call}: sample({t:e})"), &error),
+        }
+        Ok(())
+    }
+
+    fn set_options(&mut self, call: &str, options: &Options) -> Check {
+        let sim = self.sim.as_mut().expect("a simulator");
+        let before = Snapshot::of(sim);
+        match sim.set_options(*options) {
+            Ok(()) => {
+                if sim.options() != options {
+                    return fail(
+                        FailureClass::OptionViolation,
+                        format!("{call}: set_options Ok but options() = {:?}", sim.options()),
+                    );
+                }
+                if !same_report(sim.last(), &before.last) {
+                    return fail(
+                        FailureClass::StateLoss,
+                        format!("{call}: set_options changed last()"),
+                    );
+                }
+                (self.trace)(format!("{call}: set_options: Ok"));
+            }
+            Err(error) => {
+                before.unchanged(sim, call, &error)?;
+                self.error(&format!("{call}: set_options"), &error);
+            }
+        }
+        Ok(())
+    }
+
+    fn reinitialise(
+        &mut self,
+        call: &str,
+        (q, v): (&StateChange, &StateChange),
+        time: Time,
+    ) -> Check {
+        let sim = self.sim.as_mut().expect("a simulator");
+        let before = Snapshot::of(sim);
+        let end = before.last.end;
+        let (q, v, t) = (
+            q.resolve(&end.q),
+            v.resolve(&end.v),
+            time.resolve(&before.last),
+        );
+        let call = format!("{call} (reinitialise(t = {t:e}))");
+        match sim.reinitialise(q, v, t) {
+            Ok(report) => {
+                (self.trace)(format!("{call}: Ok"));
+                self.started(&call)?;
+                let sim = self.sim.as_mut().expect("a simulator");
+                if !same_start_report(&report, sim.start_report()) || sim.time() != t {
+                    return fail(
+                        FailureClass::ReportInconsistency,
+                        format!(
+                            "{call}: Ok at t = {:e}, start report {report:?}",
+                            sim.time()
+                        ),
+                    );
+                }
+                self.stop = self.stop.filter(|&s| s > t);
+            }
+            Err(error) => {
+                before.unchanged(sim, &call, &error)?;
+                self.error(&call, &error);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What the observer of an `advance_to` call does besides checking.
+#[derive(Clone, Copy)]
+struct Observer {
+    sample_every: u32,
+    sample_at: f64,
+    stop_after: Option<u32>,
+}
+
+impl Observer {
+    fn samples(&self, observed: u32) -> bool {
+        self.sample_every > 0 && observed.is_multiple_of(self.sample_every)
+    }
+
+    fn stops(&self, observed: u32) -> bool {
+        self.stop_after.is_some_and(|n| observed >= n)
+    }
+}
+
+/// What the observer of an `advance_to` call saw.
+struct Seen<const N: usize, const Z: usize> {
+    previous: StepReport<N, Z>,
+    observed: u32,
+    stopped: bool,
+    broken: Option<Failure>,
+}
+
+/// Runs `case`: builds its scene from the parameters and executes the calls with the checks.
+pub fn run(case: &Case, budget: &Budget, trace: &mut dyn FnMut(String)) -> Outcome {
+    let p = &case.parameters;
+    match case.scene {
+        SceneKind::Pendulum => {
+            let s = Pendulum {
+                m: p[0],
+                length: p[1],
+                g: p[2],
+            };
+            execute::<_, 2, 1>(&s, case, budget, trace)
+        }
+        SceneKind::SteamGenerator => {
+            let s = SteamGenerator {
+                m: p[0],
+                j: p[1],
+                g: p[2],
+                h1: p[3],
+                h2: p[4],
+                h3: p[5],
+                d: p[6],
+                p0: p[7],
+                rise: p[8],
+                off: p[9],
+            };
+            execute::<_, 3, 2>(&s, case, budget, trace)
+        }
+        SceneKind::Andrews => {
+            let s = Andrews {
+                m1: p[0],
+                m2: p[1],
+                i1: p[2],
+                c0: p[3],
+                l0: p[4],
+                mom: p[5],
+                rr: p[6],
+                d: p[7],
+                ..Andrews::published()
+            };
+            execute::<_, 7, 6>(&s, case, budget, trace)
+        }
+        SceneKind::Chain2 => {
+            let s = Chain2 {
+                m: p[0],
+                l: p[1],
+                g: p[2],
+            };
+            execute::<_, 4, 2>(&s, case, budget, trace)
+        }
+        SceneKind::Chain4 => {
+            let s = Chain4 {
+                m: p[0],
+                l: p[1],
+                g: p[2],
+            };
+            execute::<_, 8, 4>(&s, case, budget, trace)
+        }
+        SceneKind::SpringPendulum => {
+            let s = SpringPendulum {
+                m1: p[0],
+                m2: p[1],
+                l: p[2],
+                l0: p[3],
+                k: p[4],
+                c: p[5],
+                g: p[6],
+            };
+            execute::<_, 4, 1>(&s, case, budget, trace)
+        }
+        SceneKind::DoublePendulum => {
+            let s = DoublePendulum {
+                m1: p[0],
+                m2: p[1],
+                l1: p[2],
+                l2: p[3],
+                g: p[4],
+            };
+            execute::<_, 4, 2>(&s, case, budget, trace)
+        }
+        SceneKind::SliderCrank => {
+            let s = SliderCrank {
+                m: p[0],
+                ms: p[1],
+                r: p[2],
+                l: p[3],
+            };
+            execute::<_, 3, 2>(&s, case, budget, trace)
+        }
+        SceneKind::RedundantFourBar => {
+            let s = RedundantFourBar {
+                m: p[0],
+                r1: p[1],
+                r2: p[2],
+                r3: p[3],
+                d: p[4],
+                g: p[5],
+            };
+            execute::<_, 4, 4>(&s, case, budget, trace)
+        }
+        SceneKind::CoupledMassPendulum => {
+            let s = CoupledMassPendulum {
+                m11: p[0],
+                m12: p[1],
+                m22: p[2],
+                g: p[3],
+            };
+            execute::<_, 2, 1>(&s, case, budget, trace)
+        }
+        SceneKind::CuspBead => {
+            let s = CuspBead { m: p[0], g: p[1] };
+            execute::<_, 2, 1>(&s, case, budget, trace)
+        }
+        SceneKind::TwoLinkArm => {
+            let s = TwoLinkArm {
+                m1: p[0],
+                m2: p[1],
+                l1: p[2],
+                l2: p[3],
+                d: p[4],
+                c: p[5],
+                g: p[6],
+            };
+            execute::<_, 2, 1>(&s, case, budget, trace)
+        }
+        SceneKind::Sleigh => {
+            let s = Sleigh {
+                m: p[0],
+                j: p[1],
+                slope: p[2],
+                push: p[3],
+                torque: p[4],
+                c: p[5],
+                g: p[6],
+            };
+            execute::<_, 4, 2>(&s, case, budget, trace)
+        }
+        SceneKind::FollowerPendulum => {
+            let s = FollowerPendulum {
+                m: p[0],
+                mz: p[1],
+                l: p[2],
+                g: p[3],
+            };
+            execute::<_, 3, 2>(&s, case, budget, trace)
+        }
+    }
+}

@@ -1,0 +1,170 @@
+//! Scenes the fuzzer adds to `examples/scenes`: a configuration-dependent full mass matrix
+//! (a two-link arm in joint angles) and velocity-level constraints (a knife-edge sleigh on a slope,
+//! and a pendulum with a follower). Kept here rather than in `examples/scenes`, whose every file has an
+//! expansion snapshot.
+
+use zeitner::constrained_system;
+
+/// A planar two-link arm in its joint angles `(θ1, θ2)` (θ1 from the x axis, θ2 relative to the
+/// first link), point masses `m1` at the elbow and `m2` at the tip, links `l1`, `l2`, gravity
+/// along -y, joint damping `c`. Its tip is held on the vertical line `x = d`: one degree of
+/// freedom. The mass matrix depends on θ2 and is full:
+/// `M11 = (m1 + m2) l1² + m2 l2² + 2 m2 l1 l2 cos θ2`, `M12 = m2 l2² + m2 l1 l2 cos θ2`,
+/// `M22 = m2 l2²`.
+pub struct TwoLinkArm {
+    pub m1: f64,
+    pub m2: f64,
+    pub l1: f64,
+    pub l2: f64,
+    pub d: f64,
+    pub c: f64,
+    pub g: f64,
+}
+
+#[constrained_system]
+impl TwoLinkArm {
+    fn mass(&self, [_theta1, theta2]: [f64; 2]) -> [[f64; 2]; 2] {
+        let coupling = self.m2 * self.l1 * self.l2 * theta2.cos();
+        let m22 = self.m2 * self.l2 * self.l2;
+        let m11 = (self.m1 + self.m2) * self.l1 * self.l1 + m22 + 2.0 * coupling;
+        let m12 = m22 + coupling;
+        [[m11, m12], [m12, m22]]
+    }
+
+    fn force(&self, [theta1, theta2]: [f64; 2], [w1, w2]: [f64; 2]) -> [f64; 2] {
+        let h = self.m2 * self.l1 * self.l2 * theta2.sin();
+        let tip = self.m2 * self.g * self.l2 * (theta1 + theta2).cos();
+        [
+            h * (2.0 * w1 * w2 + w2 * w2)
+                - (self.m1 + self.m2) * self.g * self.l1 * theta1.cos()
+                - tip
+                - self.c * w1,
+            -h * w1 * w1 - tip - self.c * w2,
+        ]
+    }
+
+    fn constraints(&self, [theta1, theta2]: [f64; 2]) -> [f64; 1] {
+        [self.l1 * theta1.cos() + self.l2 * (theta1 + theta2).cos() - self.d]
+    }
+}
+
+impl TwoLinkArm {
+    pub fn nominal() -> Self {
+        TwoLinkArm {
+            m1: 1.0,
+            m2: 0.5,
+            l1: 1.0,
+            l2: 0.8,
+            d: 1.2,
+            c: 0.0,
+            g: 9.81,
+        }
+    }
+
+    /// Joint angles with the tip on the line for a given `θ1` (elbow up), if it reaches.
+    pub fn on_line(&self, theta1: f64) -> [f64; 2] {
+        let reach = (self.d - self.l1 * theta1.cos()) / self.l2;
+        [theta1, reach.clamp(-1.0, 1.0).acos() - theta1]
+    }
+}
+
+/// A knife-edge sleigh on a plane inclined by `slope` about the y axis: contact point
+/// `(x, y, z)` held on the plane `z = x tan(slope)` (a position-level row, written as
+/// `z cos - x sin`), heading `θ` within the plane; the blade cannot slide sideways,
+/// `n(θ) · q' = 0` with the in-plane normal `n = (-sin θ cos α, cos θ, -sin θ sin α)`, a
+/// velocity-level (nonholonomic) row. Gravity along -z, pushed along the blade by `push`, turned
+/// by `torque`, damped by `c`.
+pub struct Sleigh {
+    pub m: f64,
+    pub j: f64,
+    pub slope: f64,
+    pub push: f64,
+    pub torque: f64,
+    pub c: f64,
+    pub g: f64,
+}
+
+#[constrained_system]
+impl Sleigh {
+    fn mass(&self) -> [f64; 4] {
+        [self.m, self.m, self.m, self.j]
+    }
+
+    fn force(&self, [_x, _y, _z, theta]: [f64; 4], [vx, vy, vz, w]: [f64; 4]) -> [f64; 4] {
+        let ca = self.slope.cos();
+        let sa = self.slope.sin();
+        [
+            self.push * theta.cos() * ca - self.c * vx,
+            self.push * theta.sin() - self.c * vy,
+            self.push * theta.cos() * sa - self.m * self.g - self.c * vz,
+            self.torque - self.c * w,
+        ]
+    }
+
+    fn constraints(&self, [x, _y, z, _theta]: [f64; 4]) -> [f64; 1] {
+        [z * self.slope.cos() - x * self.slope.sin()]
+    }
+
+    fn velocity_constraints(
+        &self,
+        [_x, _y, _z, theta]: [f64; 4],
+        [vx, vy, vz, _w]: [f64; 4],
+    ) -> [f64; 1] {
+        let ca = self.slope.cos();
+        let sa = self.slope.sin();
+        [-theta.sin() * ca * vx + theta.cos() * vy - theta.sin() * sa * vz]
+    }
+}
+
+impl Sleigh {
+    pub fn nominal() -> Self {
+        Sleigh {
+            m: 2.0,
+            j: 0.3,
+            slope: 0.3,
+            push: 1.0,
+            torque: 0.5,
+            c: 0.1,
+            g: 9.81,
+        }
+    }
+
+    /// A consistent start at the origin: heading `theta`, speed `speed` along the blade, turning
+    /// at `w`.
+    pub fn start(&self, theta: f64, speed: f64, w: f64) -> ([f64; 4], [f64; 4]) {
+        let (ca, sa) = (self.slope.cos(), self.slope.sin());
+        let (s, c) = theta.sin_cos();
+        (
+            [0.0, 0.0, 0.0, theta],
+            [speed * c * ca, speed * s, speed * c * sa, w],
+        )
+    }
+}
+
+/// A pendulum of length `l` in (x, y) with a third coordinate `z` that follows `x` through a
+/// velocity-level row `z' - x' = 0`: one position-level and one velocity-level row.
+pub struct FollowerPendulum {
+    pub m: f64,
+    pub mz: f64,
+    pub l: f64,
+    pub g: f64,
+}
+
+#[constrained_system]
+impl FollowerPendulum {
+    fn mass(&self) -> [f64; 3] {
+        [self.m, self.m, self.mz]
+    }
+
+    fn force(&self) -> [f64; 3] {
+        [0.0, -self.m * self.g, 0.0]
+    }
+
+    fn constraints(&self, [x, y, _z]: [f64; 3]) -> [f64; 1] {
+        [x * x + y * y - self.l * self.l]
+    }
+
+    fn velocity_constraints(&self, _q: [f64; 3], [vx, _vy, vz]: [f64; 3]) -> [f64; 1] {
+        [vz - vx]
+    }
+}
