@@ -132,9 +132,13 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
     sweeps: u32,
 ) -> Result<Vector<N>, StepError> {
     let r = S::POSITION_CONSTRAINTS;
+    let mut reach = 0.0f64;
     for _ in 0..sweeps {
         let w = model.rate(q, &v, t)?;
         let directions = model.directions(q, &v, t)?;
+        reach = (0..Z)
+            .map(|j| directions.jacobian.row(j).norm())
+            .fold(0.0, f64::max);
         let mu = solve_spd(&directions.gram(), &w, r).map_err(|rows| {
             StepError::RankDeficientConstraints {
                 t,
@@ -148,6 +152,21 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
     }
     if !v.iter().all(|x| x.is_finite()) {
         return Err(StepError::non_finite_state(t));
+    }
+    if sweeps > 1 {
+        // A start must meet its velocity-level rows as its positions meet theirs, down to what
+        // rounding of `G q'` allows.
+        let (residual, index) = max_abs(&model.rate(q, &v, t)?);
+        let floor = 64.0 * f64::EPSILON * reach * v.amax();
+        if !(residual <= tolerance.max(floor)) {
+            return Err(StepError::InconsistentStart {
+                worst_row: Row {
+                    index,
+                    position_rows: r,
+                },
+                residual,
+            });
+        }
     }
     Ok(v)
 }
@@ -170,6 +189,9 @@ fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
+    if !q.iter().chain(v.iter()).all(|x| x.is_finite()) {
+        return Err(StepError::non_finite_state(t));
+    }
     let directions = model.directions(&q, &v, t)?;
     let force = model.force(&q, &v, t)?;
     let m_inv_f = directions.factor.solve(&force);

@@ -60,6 +60,7 @@ impl ControllerSettings {
             && self.max_factor > 1.0
             && factor(self.max_factor_after_rejection)
             && self.max_factor_after_rejection < 1.0
+            && self.min_factor <= self.max_factor_after_rejection
             && self.beta_times_order.is_finite()
             && (0.0..=0.5).contains(&self.beta_times_order)
             && factor(self.newton_failure_factor)

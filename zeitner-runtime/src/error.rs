@@ -184,8 +184,8 @@ impl fmt::Display for InvalidOption {
             }
             InvalidOption::Substeps => f.write_str("RK4 `substeps` must be between 1 and 10 000"),
             InvalidOption::Controller => f.write_str(
-                "a `ControllerSettings` value is out of range: factors positive with min < 1 < max, \
-                 `safety` at most 1, `beta_times_order` in 0..=0.5, `landing_fraction` in 0..=0.5",
+                "a `ControllerSettings` value is out of range: factors positive with min < 1 < max \
+                 and `min_factor <= max_factor_after_rejection < 1`, `safety` at most 1, `beta_times_order` in 0..=0.5, `landing_fraction` in 0..=0.5",
             ),
             InvalidOption::EndTime => {
                 f.write_str("the end or stop time must be finite and not before the current time")

@@ -247,9 +247,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub fn step(&mut self) -> Result<StopReason, StepError> {
         let limit = self.stop_time.unwrap_or(f64::INFINITY);
         let (min_step, max_step) = bounds(self.options.step);
-        let mut h = self.planned_step.clamp(min_step, max_step);
+        let mut h = self
+            .planned_step
+            .clamp(min_step, max_step)
+            .min(LARGEST_STEP);
+        let mut retry = false;
         loop {
-            let (h_try, t_end, landing) = self.plan(h, limit)?;
+            let (h_try, t_end, landing) = self.plan(h, limit, retry)?;
+            retry = true;
             match self.attempt(h_try, t_end)? {
                 Attempt::Accepted(step) => {
                     self.accept(step, t_end, (h_try, h), landing)?;
@@ -298,18 +303,27 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
     }
 
-    /// The next try: its size, its end time, and whether it lands on the stop time.
-    fn plan(&self, h: f64, limit: f64) -> Result<(f64, f64, bool), StepError> {
+    /// The next try: its size, its end time, and whether it lands on the stop time. A planned
+    /// step within a sliver of the remainder is stretched to it; a retry never is (it would be
+    /// the rejected step again).
+    fn plan(&self, h: f64, limit: f64, retry: bool) -> Result<(f64, f64, bool), StepError> {
         let t = self.time();
         let remaining = limit - t;
-        // A step within a sliver of the remainder becomes the remainder.
-        let landing = h * (1.0 + self.options.controller.landing_fraction) >= remaining;
+        let sliver = if retry {
+            0.0
+        } else {
+            self.options.controller.landing_fraction
+        };
+        // `h (1 + sliver) >= remaining`, written so that it cannot overflow.
+        let stretched = h >= remaining / (1.0 + sliver);
+        // Compensated summation keeps long fixed-step runs on their grid.
+        let t_end = t + (h + self.t_carry);
+        // A step whose end rounds onto or past the stop time lands there too.
+        let landing = stretched || t_end >= limit;
         let (h_try, t_end) = if landing {
             (remaining, limit)
         } else {
-            // Compensated summation keeps long fixed-step runs on their grid.
-            let t_end = t + (h + self.t_carry);
-            (h, t_end.min(limit))
+            (h, t_end)
         };
         if !(t_end > t) {
             return Err(StepError::StepSizeTooSmall { t, step: h_try });
@@ -324,7 +338,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Err(self.singular_configuration()?.unwrap_or(cause));
         };
         // Written to also stop on a NaN step.
-        if h >= min_step && h > f64::EPSILON * t.abs() {
+        if h >= min_step && h > f64::EPSILON * t.abs() && h.is_finite() {
             return Ok(h);
         }
         let cause = match cause {
@@ -581,6 +595,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (base * factor).clamp(min_step, max_step)
     }
 }
+
+/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
+/// is valid, but `t + h` would not be).
+const LARGEST_STEP: f64 = 1e300;
 
 fn first_step(step: StepControl) -> f64 {
     match step {
