@@ -333,3 +333,17 @@ fn a_rejected_landing_step_must_shrink() {
     });
     assert_eq!(result, Ok(()));
 }
+
+/// Seeds of the 10⁵-case run that reported a velocity-level row of a step end at 2–3 ε (hostile
+/// starts with positions near 1e300, steps of 1e-15): a single projection left the rounding of a
+/// badly scaled `G M⁻¹Gᵀ` above the tolerance. Fixed by projecting again (`end_point`).
+#[test]
+fn step_ends_meet_their_velocity_rows_after_hostile_starts() {
+    for seed in [50989, 57948, 73071] {
+        match run(seed) {
+            Some(None) => {}
+            Some(Some((class, detail))) => panic!("seed {seed}: {}: {detail}", class.name()),
+            None => panic!("seed {seed}: hang"),
+        }
+    }
+}
