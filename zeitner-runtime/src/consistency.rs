@@ -44,7 +44,7 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
         refuse_inconsistent(model, &q0, &v0, t0, tolerance)?;
     }
     let q = project_positions(model, q0, &v0, t0, tolerance)?;
-    let v = project_velocities(model, &q, v0, t0, tolerance, VELOCITY_SWEEPS)?;
+    let v = project_velocities(model, &q, v0, t0, tolerance)?;
     let point = consistent_point(model, t0, q, v)?;
     let report = StartReport {
         position_change: q - q0,
@@ -121,52 +121,60 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
     }
 }
 
-/// Newton onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the mass
-/// metric; `sweeps` = 1 is a single projection (exact when `w` is linear in `q'`).
-pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+/// Newton sweeps onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the
+/// mass metric (one is exact when `w` is linear in `q'`): at most `max_sweeps`, ending early once
+/// the `w` a sweep starts from is `settled`. Returns the velocities and `G` of the last sweep.
+fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    q: &Vector<N>,
-    mut v: Vector<N>,
-    t: f64,
-    tolerance: f64,
-    sweeps: u32,
-) -> Result<Vector<N>, StepError> {
-    let r = S::POSITION_CONSTRAINTS;
-    let mut reach = 0.0f64;
-    for _ in 0..sweeps {
+    (q, mut v, t): (&Vector<N>, Vector<N>, f64),
+    max_sweeps: u32,
+    settled: impl Fn(&Vector<Z>) -> bool,
+) -> Result<(Vector<N>, Matrix<Z, N>), StepError> {
+    let mut jacobian = Matrix::zeros();
+    for sweep in 0..max_sweeps {
         let w = model.rate(q, &v, t)?;
+        if sweep > 0 && settled(&w) {
+            break;
+        }
         let directions = model.directions(q, &v, t)?;
-        reach = (0..Z)
-            .map(|j| directions.jacobian.row(j).norm())
-            .fold(0.0, f64::max);
-        let mu = solve_spd(&directions.gram(), &w, r).map_err(|rows| {
+        let mu = solve_spd(&directions.gram(), &w, S::POSITION_CONSTRAINTS).map_err(|rows| {
             StepError::RankDeficientConstraints {
                 t,
                 dependent_rows: rows,
             }
         })?;
         v -= directions.m_inv_gt * mu;
-        if sweeps > 1 && max_abs(&model.rate(q, &v, t)?).0 <= tolerance * 1e-3 {
-            break;
-        }
+        jacobian = directions.jacobian;
     }
     if !v.iter().all(|x| x.is_finite()) {
         return Err(StepError::non_finite_state(t));
     }
-    if sweeps > 1 {
-        // A start must meet its velocity-level rows as its positions meet theirs, down to what
-        // rounding of `G q'` allows.
-        let (residual, index) = max_abs(&model.rate(q, &v, t)?);
-        let floor = 64.0 * f64::EPSILON * reach * v.amax();
-        if !(residual <= tolerance.max(floor)) {
-            return Err(StepError::InconsistentStart {
-                worst_row: Row {
-                    index,
-                    position_rows: r,
-                },
-                residual,
-            });
-        }
+    Ok((v, jacobian))
+}
+
+/// The start's velocities on the velocity-level constraint: Newton until `|w|` is a thousandth
+/// of the tolerance, and refused as `InconsistentStart` if it ends above the tolerance — down to
+/// what rounding of `G q'` allows, as the positions are refused in [`project_positions`].
+pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    q: &Vector<N>,
+    v: Vector<N>,
+    t: f64,
+    tolerance: f64,
+) -> Result<Vector<N>, StepError> {
+    let settled = |w: &Vector<Z>| max_abs(w).0 <= tolerance * 1e-3;
+    let (v, jacobian) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
+    let (residual, index) = max_abs(&model.rate(q, &v, t)?);
+    let reach = (0..Z).map(|j| jacobian.row(j).norm()).fold(0.0, f64::max);
+    let floor = 64.0 * f64::EPSILON * reach * v.amax();
+    if !(residual <= tolerance.max(floor)) {
+        return Err(StepError::InconsistentStart {
+            worst_row: Row {
+                index,
+                position_rows: S::POSITION_CONSTRAINTS,
+            },
+            residual,
+        });
     }
     Ok(v)
 }
@@ -224,7 +232,9 @@ pub(crate) struct Gram<const N: usize, const Z: usize> {
 }
 
 /// The consistent point at a step end: velocities projected once onto the velocity-level
-/// constraint (exact for constraints linear in `q'`), then multipliers and accelerations.
+/// constraint (exact for constraints linear in `q'`, up to the rounding of the solve; a scene
+/// with velocity-level rows gets up to two more sweeps where that rounding — a badly scaled
+/// `G M⁻¹Gᵀ` — leaves them above the tolerance), then multipliers and accelerations.
 pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     t: f64,
@@ -232,23 +242,10 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     v: Vector<N>,
     tolerance: f64,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
-    // One projection is exact for rows linear in `q'`, up to the rounding of the solve; a
-    // scene with velocity-level rows gets up to two more sweeps where that rounding (a badly
-    // scaled `G M⁻¹Gᵀ`) leaves them above the tolerance.
-    let mut v = project_velocities(model, &q, v, t, tolerance, 1)?;
-    if S::POSITION_CONSTRAINTS < Z {
-        for _ in 0..2 {
-            let w = model.rate(&q, &v, t)?;
-            let worst = w
-                .iter()
-                .skip(S::POSITION_CONSTRAINTS)
-                .fold(0.0f64, |m, x| m.max(x.abs()));
-            if worst <= tolerance {
-                break;
-            }
-            v = project_velocities(model, &q, v, t, tolerance, 1)?;
-        }
-    }
+    let r = S::POSITION_CONSTRAINTS;
+    let sweeps = if r < Z { 3 } else { 1 };
+    let velocity_rows_hold = |w: &Vector<Z>| w.iter().skip(r).all(|x| x.abs() <= tolerance);
+    let (v, _) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
     consistent_point_and_gram(model, t, q, v)
 }
 

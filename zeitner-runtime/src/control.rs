@@ -5,7 +5,7 @@
 use crate::mass::MassFactor;
 use crate::model::Model;
 use crate::options::StepControl;
-use crate::system::{ConstrainedSystem, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The step-size controller's constants: plain data with documented defaults.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -162,12 +162,13 @@ pub(crate) fn error_norm<const N: usize>(
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
-    end: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
+    end: (f64, &Vector<N>, &Matrix<Z, N>, &Vector<Z>),
 ) -> Result<(Vector<N>, Vector<N>), crate::error::StepError> {
     let (t1, q1, v1, lambda1) = start;
-    let (t2, q2, v2, lambda2) = end;
+    // `G` at the end point is known: the consistent end point computed it.
+    let (t2, q2, g2, lambda2) = end;
     let h = t2 - t1;
-    let turn = model.jacobian(q2, v2, t2)? - model.jacobian(q1, v1, t1)?;
+    let turn = g2 - model.jacobian(q1, v1, t1)?;
     let change = lambda2 - lambda1;
     let factor = model.mass_factor(q2, t2)?;
     let eq = (h * h / 36.0) * factor.solve(&turn.tr_mul(&change));

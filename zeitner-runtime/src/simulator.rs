@@ -12,7 +12,7 @@ use crate::multipliers::StepPolynomial;
 use crate::multipliers::{self, Multipliers, NewtonOutcome, NewtonSettings, Predictor};
 use crate::options::{MultiplierModel, Options, StepControl, VelocityProjection};
 use crate::output::{end_report, Observation, Point, StepReport, StopReason};
-use crate::system::{ConstrainedSystem, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Counts over the whole run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -93,16 +93,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         options: Options,
     ) -> Result<Self, StepError> {
         options.validate()?;
-        if !t0.is_finite() {
-            return Err(StepError::InvalidOption(InvalidOption::EndTime));
-        }
         let mut model = Model::new(system);
-        model.prepare(&q0, t0)?;
-        let tolerance = options.constraint_tolerance;
-        let (point, start_report) =
-            consistent_start(&mut model, (q0, v0, t0), tolerance, options.start)?;
-        let last = end_report(&mut model, point, point, point.lambda, 0, None)?;
-        let start_jacobian = model.jacobian(&point.q, &point.v, t0)?;
+        let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
+        let point = last.end;
         Ok(Simulator {
             model,
             method: AnyMethod::new(options.method),
@@ -153,17 +146,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         v: Vector<N>,
         t: f64,
     ) -> Result<StartReport<N, Z>, StepError> {
-        if !t.is_finite() {
-            return Err(StepError::InvalidOption(InvalidOption::EndTime));
-        }
-        self.model.prepare(&q, t)?;
-        let (point, report) = consistent_start(
-            &mut self.model,
-            (q, v, t),
-            self.options.constraint_tolerance,
-            self.options.start,
-        )?;
-        self.last = end_report(&mut self.model, point, point, point.lambda, 0, None)?;
+        let (last, report, _) = start_point(&mut self.model, (q, v, t), &self.options)?;
+        let point = last.end;
+        self.last = last;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
         self.t_carry = 0.0;
         self.state_gram = None;
@@ -469,7 +454,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
             let start = (self.time(), &self.q, &self.v, &self.lambda);
-            let end_state = (t_end, &end.q, &point.v, &point.lambda);
+            let end_state = (t_end, &end.q, &gram.jacobian, &point.lambda);
             freezing_error(&mut self.model, start, end_state)?
         } else {
             (Vector::zeros(), Vector::zeros())
@@ -594,6 +579,26 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         (base * factor).clamp(min_step, max_step)
     }
+}
+
+/// The consistent start at `(q, v, t)` — for [`Simulator::new`] and
+/// [`Simulator::reinitialise`] alike — as a report, with how it was made consistent and `G`
+/// there.
+#[allow(clippy::type_complexity)]
+fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (Vector<N>, Vector<N>, f64),
+    options: &Options,
+) -> Result<(StepReport<N, Z>, StartReport<N, Z>, Matrix<Z, N>), StepError> {
+    if !t.is_finite() {
+        return Err(StepError::InvalidOption(InvalidOption::EndTime));
+    }
+    model.prepare(&q, t)?;
+    let tolerance = options.constraint_tolerance;
+    let (point, report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+    let jacobian = model.jacobian(&point.q, &point.v, t)?;
+    let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
+    Ok((last, report, jacobian))
 }
 
 /// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
