@@ -2,7 +2,7 @@
 //! start, at every step end (for the reported velocities and multipliers), for dense output and
 //! when the state is re-initialised.
 
-use crate::error::{Row, StepError};
+use crate::error::{Row, RowSet, StepError};
 use crate::linalg::{keep_leading_rows, max_abs, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::Model;
@@ -27,6 +27,23 @@ pub struct StartReport<const N: usize, const Z: usize> {
     pub multipliers: Vector<Z>,
     /// Whether the multipliers were given rather than computed.
     pub multipliers_given: bool,
+    /// Constraint rows that depend on the others at the start (redundant but consistent): the
+    /// sparse simulator runs them with minimum-norm multipliers; [`crate::Simulator`] refuses
+    /// them, so there it is always empty.
+    pub redundant_rows: RowSet,
+}
+
+impl<const N: usize, const Z: usize> StartReport<N, Z> {
+    /// Nothing moved, nothing given, nothing redundant.
+    pub(crate) fn unmoved() -> Self {
+        StartReport {
+            position_change: Vector::zeros(),
+            velocity_change: Vector::zeros(),
+            multipliers: Vector::zeros(),
+            multipliers_given: false,
+            redundant_rows: RowSet::default(),
+        }
+    }
 }
 
 /// The consistent point nearest to `(q, v)` in the mass metric, or the refusal that `policy`
@@ -51,6 +68,7 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
         velocity_change: v - v0,
         multipliers: point.lambda,
         multipliers_given: false,
+        redundant_rows: RowSet::new(S::POSITION_CONSTRAINTS),
     };
     Ok((point, report))
 }

@@ -2,9 +2,10 @@
 //! that turns them into the next step size. Every constant is a field of
 //! [`ControllerSettings`].
 
+use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::Model;
-use crate::options::StepControl;
+use crate::options::{Options, StepControl};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The step-size controller's constants: plain data with documented defaults.
@@ -123,6 +124,91 @@ pub(crate) fn bounds(step: StepControl) -> (f64, f64) {
     }
 }
 
+/// The next try of a step of size `h` from `(t, carry)` (the time and what its compensated sum
+/// has lost): its size, its end time, and whether it lands on `limit`. A planned step within
+/// `sliver` (a share of itself) of the remainder is stretched to it; a retry passes `None` and
+/// never is (it would be the rejected step again).
+pub(crate) fn plan_step(
+    (t, carry): (f64, f64),
+    h: f64,
+    limit: f64,
+    sliver: Option<f64>,
+) -> Result<(f64, f64, bool), StepError> {
+    let remaining = limit - t;
+    // `h (1 + sliver) >= remaining`, written so that it cannot overflow.
+    let stretched = h >= remaining / (1.0 + sliver.unwrap_or(0.0));
+    // Compensated summation keeps long fixed-step runs on their grid.
+    let t_end = t + (h + carry);
+    // A step whose end rounds onto or past the stop time lands there too.
+    let landing = stretched || t_end >= limit;
+    let (h_try, t_end) = if landing {
+        (remaining, limit)
+    } else {
+        (h, t_end)
+    };
+    if !(t_end > t) {
+        return Err(StepError::StepSizeTooSmall { t, step: h_try });
+    }
+    Ok((h_try, t_end, landing))
+}
+
+/// The step after a rejection at time `t`, or the error that ends the run: fixed steps cannot
+/// shrink, adaptive ones not below `min_step` nor below what still moves the time.
+pub(crate) fn retry_step(
+    step: StepControl,
+    t: f64,
+    h: f64,
+    cause: StepError,
+) -> Result<f64, StepError> {
+    let StepControl::Adaptive { min_step, .. } = step else {
+        return Err(cause);
+    };
+    // Written to also stop on a NaN step.
+    if h >= min_step && h > f64::EPSILON * t.abs() && h.is_finite() {
+        return Ok(h);
+    }
+    Err(match cause {
+        StepError::NewtonDidNotConverge { .. } | StepError::StageDidNotConverge { .. } => {
+            StepError::StepSizeTooSmall { t, step: h }
+        }
+        other => other,
+    })
+}
+
+/// The step the controller plans after a step accepted with `(error norm, Newton
+/// integrations)`, for an estimate of order `k - 1`; `(h_used, h_planned)` are the step taken
+/// and the one planned before it was shortened to land.
+pub(crate) fn next_step_size(
+    options: &Options,
+    controller: &mut Controller,
+    k: u32,
+    (error, integrations): (f64, u32),
+    (h_used, h_planned): (f64, f64),
+    landing: bool,
+) -> f64 {
+    let StepControl::Adaptive {
+        min_step, max_step, ..
+    } = options.step
+    else {
+        return bounds(options.step).0;
+    };
+    let settings = options.controller;
+    let mut factor = controller.accepted(&settings, error, k);
+    // Many Newton sweeps: the multipliers change fast; do not grow, or shrink.
+    if integrations > options.max_newton_iterations / 2 {
+        factor = factor.min(0.8);
+    } else if integrations >= settings.slow_newton_iterations {
+        factor = factor.min(1.0);
+    }
+    // A step shortened to land on the stop time says nothing about the next one.
+    let base = if landing {
+        h_planned.max(h_used)
+    } else {
+        h_used
+    };
+    (base * factor).clamp(min_step, max_step)
+}
+
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
 /// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
 /// estimate, infinite when the estimate is not finite (so that the step is rejected).
@@ -163,7 +249,7 @@ pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     model: &mut Model<'_, S, N, Z>,
     start: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
     end: (f64, &Vector<N>, &Matrix<Z, N>, &Vector<Z>),
-) -> Result<(Vector<N>, Vector<N>), crate::error::StepError> {
+) -> Result<(Vector<N>, Vector<N>), StepError> {
     let (t1, q1, v1, lambda1) = start;
     // `G` at the end point is known: the consistent end point computed it.
     let (t2, q2, g2, lambda2) = end;

@@ -164,6 +164,8 @@ pub enum InvalidOption {
     InitialMultipliers,
     /// Adaptive steps need an error estimate: only `DormandPrince54` has one.
     AdaptiveNeedsErrorEstimate,
+    /// [`crate::sparse::SparseSimulator`] does not run this yet.
+    NotForSparseSimulator(&'static str),
 }
 
 impl fmt::Display for InvalidOption {
@@ -200,6 +202,12 @@ impl fmt::Display for InvalidOption {
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
                 "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, or \
                  `StepControl::Fixed` with this method",
+            ),
+            InvalidOption::NotForSparseSimulator(what) => write!(
+                f,
+                "the sparse simulator does not run {what} yet: it takes a diagonal mass, \
+                 `InnerMethod::Rk4` or `DormandPrince54` and constant multipliers; use `Simulator` \
+                 (dense, fixed-size) for the rest"
             ),
         }
     }

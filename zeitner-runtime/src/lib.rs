@@ -17,11 +17,16 @@
 //! - `method`: inner one-step methods with their own workspace (explicit tableaux as data);
 //! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller;
 //! - [`output`]: points, step reports, dense output, stop reasons, the observer's view;
-//! - [`simulator`]: puts them in order.
+//! - [`simulator`]: puts them in order;
+//! - [`sparse`] (feature `alloc`): [`SparseSimulator`], the same step for scenes with many
+//!   coordinates, with `G` by its nonzeros and a heap workspace allocated once.
 
 #![no_std]
 // `!(x > y)` is how this crate rejects NaN along with the too-small values: on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+#[cfg(feature = "alloc")]
+extern crate alloc;
 
 pub mod consistency;
 pub mod control;
@@ -35,6 +40,8 @@ mod multipliers;
 pub mod options;
 pub mod output;
 pub mod simulator;
+#[cfg(feature = "alloc")]
+pub mod sparse;
 pub mod system;
 #[cfg(test)]
 mod testing;
@@ -50,6 +57,8 @@ pub use options::{
 };
 pub use output::{Observation, Point, StepReport, StopReason};
 pub use simulator::{Simulator, Statistics};
+#[cfg(feature = "alloc")]
+pub use sparse::SparseSimulator;
 pub use system::{
     BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,
     Vector,

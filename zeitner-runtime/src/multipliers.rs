@@ -115,17 +115,15 @@ impl<const Z: usize> Predictor<Z> {
     /// (`λ + τλ'/3` is the mean of a linear `λ` weighted as the positions feel it.) The raw
     /// velocities' error normal to the constraints flips sign from step to step and the step's
     /// `p` must undo it, which no extrapolation of past `p` foresees. Position-level rows only;
-    /// `None` where `G M⁻¹Gᵀ` is singular.
+    /// `None` where `solve_gram` (with `G M⁻¹Gᵀ`) finds it singular.
     pub fn constant_from_constraints(
         &self,
-        gram: &Matrix<Z, Z>,
+        solve_gram: impl FnOnce(&Vector<Z>) -> Option<Vector<Z>>,
         (g, w): (&Vector<Z>, &Vector<Z>),
         lambda: &Vector<Z>,
         h: f64,
     ) -> Option<Vector<Z>> {
-        // A first guess only: a plain Cholesky solve, without the rank diagnosis of `solve_spd`.
-        let cholesky = nalgebra::Cholesky::new(*gram)?;
-        let correction = cholesky.solve(&((2.0 / (h * h)) * (g + h * w)));
+        let correction = solve_gram(&((2.0 / (h * h)) * (g + h * w)))?;
         Some(lambda + (h / 3.0) * self.lambda_rate + correction)
     }
 

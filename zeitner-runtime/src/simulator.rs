@@ -4,7 +4,9 @@
 //! [`crate::output`]); this file only puts them in order.
 
 use crate::consistency::{consistent_start, end_point, Gram, StartReport};
-use crate::control::{bounds, error_norm, freezing_error, Controller};
+use crate::control::{
+    bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller,
+};
 use crate::error::{InvalidOption, RowSet, StepError};
 use crate::method::{AnyMethod, Method, Start, StepEnd};
 use crate::model::{Evaluations, Model};
@@ -288,51 +290,23 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
     }
 
-    /// The next try: its size, its end time, and whether it lands on the stop time. A planned
-    /// step within a sliver of the remainder is stretched to it; a retry never is (it would be
-    /// the rejected step again).
+    /// The next try: its size, its end time, and whether it lands on the stop time.
     fn plan(&self, h: f64, limit: f64, retry: bool) -> Result<(f64, f64, bool), StepError> {
-        let t = self.time();
-        let remaining = limit - t;
-        let sliver = if retry {
-            0.0
-        } else {
-            self.options.controller.landing_fraction
-        };
-        // `h (1 + sliver) >= remaining`, written so that it cannot overflow.
-        let stretched = h >= remaining / (1.0 + sliver);
-        // Compensated summation keeps long fixed-step runs on their grid.
-        let t_end = t + (h + self.t_carry);
-        // A step whose end rounds onto or past the stop time lands there too.
-        let landing = stretched || t_end >= limit;
-        let (h_try, t_end) = if landing {
-            (remaining, limit)
-        } else {
-            (h, t_end)
-        };
-        if !(t_end > t) {
-            return Err(StepError::StepSizeTooSmall { t, step: h_try });
-        }
-        Ok((h_try, t_end, landing))
+        let sliver = self.options.controller.landing_fraction;
+        plan_step(
+            (self.time(), self.t_carry),
+            h,
+            limit,
+            (!retry).then_some(sliver),
+        )
     }
 
     /// The step after a rejection, or the error when there is none.
     fn retry(&mut self, h: f64, cause: StepError) -> Result<f64, StepError> {
-        let t = self.time();
-        let StepControl::Adaptive { min_step, .. } = self.options.step else {
-            return Err(self.singular_configuration()?.unwrap_or(cause));
-        };
-        // Written to also stop on a NaN step.
-        if h >= min_step && h > f64::EPSILON * t.abs() && h.is_finite() {
-            return Ok(h);
+        match retry_step(self.options.step, self.time(), h, cause) {
+            Ok(h) => Ok(h),
+            Err(cause) => Err(self.singular_configuration()?.unwrap_or(cause)),
         }
-        let cause = match cause {
-            StepError::NewtonDidNotConverge { .. } | StepError::StageDidNotConverge { .. } => {
-                StepError::StepSizeTooSmall { t, step: h }
-            }
-            other => other,
-        };
-        Err(self.singular_configuration()?.unwrap_or(cause))
     }
 
     /// When a step cannot be completed: whether some constraint gradients have all but vanished
@@ -386,9 +360,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             // `w` is linear in them, zero at the consistent ones.
             let w = at.jacobian * (self.v - consistent_v);
             let residuals = (&self.last.residual, &w);
+            // A first guess only: a plain Cholesky solve, without the rank diagnosis of
+            // `solve_spd`.
+            let solve = |b: &Vector<Z>| nalgebra::Cholesky::new(at.gram).map(|c| c.solve(b));
             let predicted =
                 self.predictor
-                    .constant_from_constraints(&at.gram, residuals, &self.lambda, h);
+                    .constant_from_constraints(solve, residuals, &self.lambda, h);
             if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
                 return Ok(p);
             }
@@ -556,28 +533,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         step: &Accepted<N, Z>,
         landing: bool,
     ) -> f64 {
-        let StepControl::Adaptive {
-            min_step, max_step, ..
-        } = self.options.step
-        else {
-            return bounds(self.options.step).0;
-        };
-        let settings = self.options.controller;
         let k = self.error_order();
-        let mut factor = self.controller.accepted(&settings, step.error_norm, k);
-        // Many Newton sweeps: the multipliers change fast; do not grow, or shrink.
-        if step.integrations > self.options.max_newton_iterations / 2 {
-            factor = factor.min(0.8);
-        } else if step.integrations >= settings.slow_newton_iterations {
-            factor = factor.min(1.0);
-        }
-        // A step shortened to land on the stop time says nothing about the next one.
-        let base = if landing {
-            h_planned.max(h_used)
-        } else {
-            h_used
-        };
-        (base * factor).clamp(min_step, max_step)
+        let accepted = (step.error_norm, step.integrations);
+        next_step_size(
+            &self.options,
+            &mut self.controller,
+            k,
+            accepted,
+            (h_used, h_planned),
+            landing,
+        )
     }
 }
 

@@ -59,11 +59,43 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         t: f64,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>);
+    /// `G`'s structural nonzeros, in the order of [`jacobian_nonzeros`] of [`Self::SUMMARY`]
+    /// (all entries row by row when the summary does not list them): what the sparse
+    /// simulator evaluates instead of the dense `G`. The default gathers them from
+    /// [`Self::constraint_jacobian`]; `#[constrained_system]` writes them directly.
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        let dense = self.constraint_jacobian(q, v, t);
+        match jacobian_nonzeros(&Self::SUMMARY) {
+            Some(pattern) => {
+                for (value, &(row, col)) in values.iter_mut().zip(pattern) {
+                    *value = dense[(row, col)];
+                }
+            }
+            None => {
+                for (k, value) in values.iter_mut().enumerate().take(Z * N) {
+                    *value = dense[(k / N, k % N)];
+                }
+            }
+        }
+    }
     /// `∂(M(q) a)/∂q` for fixed `a`; zero (the default) when `M` does not depend on `q`.
     fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
         let _ = (q, t, a);
         Matrix::zeros()
     }
+}
+
+/// The `(row, column)` of every structural nonzero of `G` as the scene's summary lists them,
+/// if it does.
+pub fn jacobian_nonzeros(summary: &SceneSummary) -> Option<&'static [(usize, usize)]> {
+    let function = summary.function("constraint_jacobian")?;
+    Some(function.blocks.first()?.nonzeros)
 }
 
 /// How the mass matrix is stored and whether it changes.
