@@ -4,6 +4,9 @@
 //! earlier ones (redundant constraints) get a zero pivot and the solves return the
 //! minimum-norm solution.
 
+// Triangular solves read clearest with their indices.
+#![allow(clippy::needless_range_loop)]
+
 use alloc::vec;
 use alloc::vec::Vec;
 
