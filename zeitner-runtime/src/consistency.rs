@@ -35,6 +35,7 @@ pub struct StartReport<const N: usize, const Z: usize> {
 
 impl<const N: usize, const Z: usize> StartReport<N, Z> {
     /// Nothing moved, nothing given, nothing redundant.
+    #[cfg(feature = "alloc")]
     pub(crate) fn unmoved() -> Self {
         StartReport {
             position_change: Vector::zeros(),

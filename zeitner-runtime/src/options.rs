@@ -72,6 +72,8 @@ impl MultiplierModel {
     /// The model used for a scene with `rows` constraints of which `position_rows` are
     /// position-level: `Automatic` resolved, the others as they are.
     pub fn resolve(self, position_rows: usize, rows: usize) -> MultiplierModel {
+        // Only the quadratic model looks at the rows.
+        let _ = (position_rows, rows);
         match self {
             #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Automatic if rows > position_rows => MultiplierModel::Quadratic,
