@@ -3,10 +3,18 @@
 
 mod common;
 
+use common::andrews::Andrews;
+use common::chain::Chain16;
 use common::knife_edge::KnifeEdge;
 use common::pendulum::Pendulum;
 use common::reference::pendulum_released_horizontally;
-use zeitner::{InnerMethod, Options, SparseSimulator, StepControl, Vector};
+use common::steam_generator::SteamGenerator;
+use common::stiff::RedundantFourBar;
+use zeitner::system::jacobian_nonzeros;
+use zeitner::{
+    constrained_system, ConstrainedSystem, InnerMethod, Matrix, Options, Simulator,
+    SparseSimulator, StepControl, Vector,
+};
 
 fn adaptive(rtol: f64) -> Options {
     Options {
@@ -49,8 +57,15 @@ fn the_pendulum_follows_its_angle_reference() {
         let reference = pendulum_released_horizontally(&scene, 5.0);
         let error_q = (end.q - Vector::from(reference.q)).amax();
         let error_lambda = (end.lambda[0] - reference.lambda[0]).abs() / reference.lambda[0].abs();
-        println!("{:?}: q {error_q:.1e}, λ {error_lambda:.1e}, |g| {max_g:.1e}, {:?}", options.method, sim.statistics());
-        assert!(error_q < bound && error_lambda < 10.0 * bound, "{error_q:e} {error_lambda:e}");
+        println!(
+            "{:?}: q {error_q:.1e}, λ {error_lambda:.1e}, |g| {max_g:.1e}, {:?}",
+            options.method,
+            sim.statistics()
+        );
+        assert!(
+            error_q < bound && error_lambda < 10.0 * bound,
+            "{error_q:e} {error_lambda:e}"
+        );
         assert!(max_g <= 1e-10);
     }
 }
@@ -73,4 +88,105 @@ fn the_knife_edge_follows_its_closed_form() {
     let error = (sim.last().end.q - Vector::from(exact.q)).amax();
     println!("knife edge: q {error:.1e}, {:?}", sim.statistics());
     assert!(error < 1e-6, "{error:e}");
+}
+
+/// The generated `G` by its nonzeros equals the dense `G` there, and the dense `G` is zero
+/// elsewhere.
+fn sparse_jacobian_matches_dense<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+) {
+    let pattern = jacobian_nonzeros(&S::SUMMARY).expect("generated scenes list G's nonzeros");
+    for k in 0..5 {
+        let q = Vector::<N>::from_fn(|i, _| 0.3 + 0.17 * (i + k) as f64);
+        let v = Vector::<N>::from_fn(|i, _| -0.2 + 0.11 * (i * k) as f64);
+        let t = 0.1 * k as f64;
+        let dense = scene.constraint_jacobian(&q, &v, t);
+        let mut values = vec![f64::NAN; pattern.len()];
+        scene.constraint_jacobian_nonzeros(&q, &v, t, &mut values);
+        let mut rebuilt = Matrix::<Z, N>::zeros();
+        for (&(r, c), &value) in pattern.iter().zip(&values) {
+            rebuilt[(r, c)] = value;
+        }
+        assert_eq!(rebuilt, dense);
+    }
+}
+
+#[test]
+fn generated_sparse_jacobians_match_the_dense_ones() {
+    sparse_jacobian_matches_dense(&Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    });
+    sparse_jacobian_matches_dense(&SteamGenerator::paper());
+    sparse_jacobian_matches_dense(&Andrews::published());
+    sparse_jacobian_matches_dense(&KnifeEdge::PAPER);
+    sparse_jacobian_matches_dense(&Chain16 {
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
+    });
+    sparse_jacobian_matches_dense(&FOUR_BAR);
+}
+
+const FOUR_BAR: RedundantFourBar = RedundantFourBar {
+    m: 1.0,
+    r1: 1.0,
+    r2: 2.0,
+    r3: 1.5,
+    d: 2.0,
+    g: 9.81,
+};
+
+/// The same four-bar without its dependent fourth equation.
+struct FourBar(RedundantFourBar);
+
+#[constrained_system]
+impl FourBar {
+    fn mass(&self) -> [f64; 4] {
+        [self.0.m, self.0.m, self.0.m, self.0.m]
+    }
+
+    fn force(&self) -> [f64; 4] {
+        [0.0, -self.0.m * self.0.g, 0.0, -self.0.m * self.0.g]
+    }
+
+    fn constraints(&self, [xa, ya, xb, yb]: [f64; 4]) -> [f64; 3] {
+        [
+            xa * xa + ya * ya - self.0.r1 * self.0.r1,
+            (xb - xa).powi(2) + (yb - ya).powi(2) - self.0.r2 * self.0.r2,
+            (xb - self.0.d).powi(2) + yb * yb - self.0.r3 * self.0.r3,
+        ]
+    }
+}
+
+#[test]
+fn a_redundant_equation_runs_with_minimum_norm_multipliers() {
+    let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
+    let options = adaptive(1e-10);
+    let mut redundant =
+        SparseSimulator::new(&FOUR_BAR, start, Vector::zeros(), 0.0, options).unwrap();
+    let rows = redundant.start_report().redundant_rows;
+    assert_eq!(rows.len(), 1, "{rows}");
+    assert!(!rows.contains(1), "the coupler is independent: {rows}");
+    // The dense simulator on the independent equations is the reference.
+    let plain = FourBar(FOUR_BAR);
+    let mut reference = Simulator::new(&plain, start, Vector::zeros(), 0.0, options).unwrap();
+    redundant.advance_to(2.0, |_| {}).unwrap();
+    reference.advance_to(2.0, |_| {}).unwrap();
+    let (a, b) = (redundant.last().end, reference.last().end);
+    let error = (a.q - b.q).amax().max((a.v - b.v).amax());
+    assert!(error < 1e-7, "state differs by {error:e}");
+    // Gᵀλ is the same; of all λ giving it, the smallest: λ4 = (Λc + Λr)/3 where Λ are the
+    // independent model's multipliers of crank and rocker.
+    let (l, big) = (a.lambda, b.lambda);
+    let l4 = (big[0] + big[2]) / 3.0;
+    let expected = [big[0] - l4, big[1], big[2] - l4, l4];
+    for (j, e) in expected.iter().enumerate() {
+        assert!(
+            (l[j] - e).abs() < 1e-6 * big.amax(),
+            "λ{j}: {} vs {e}",
+            l[j]
+        );
+    }
 }

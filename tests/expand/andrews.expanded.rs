@@ -782,4 +782,49 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         dq[(6, 5)] = -(a[5] * s7) - a[6] * (self.m6 * (s1 * (2.0 * self.u) * s4));
         dq
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.rr * q[0].cos() - s1;
+        let s3 = self.d * s0.sin();
+        let s4 = q[3] + q[4];
+        let s5 = self.e * s4.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.sin();
+        let s8 = s3 - self.rr * q[0].sin();
+        let s9 = -s1;
+        let s10 = -(self.e * s4.sin());
+        let s11 = -(self.zf * s6.cos());
+        values[0] = s8;
+        values[1] = s3;
+        values[2] = -(q[2].cos() * self.ss);
+        values[3] = s2;
+        values[4] = s9;
+        values[5] = -(q[2].sin() * self.ss);
+        values[6] = s8;
+        values[7] = s3;
+        values[8] = -s5;
+        values[9] = self.zt * q[4].sin() - s5;
+        values[10] = s2;
+        values[11] = s9;
+        values[12] = s10;
+        values[13] = s10 - self.zt * q[4].cos();
+        values[14] = s8;
+        values[15] = s3;
+        values[16] = s7;
+        values[17] = s7 - self.u * q[6].cos();
+        values[18] = s2;
+        values[19] = s9;
+        values[20] = s11;
+        values[21] = s11 - self.u * q[6].sin();
+    }
 }

@@ -396,6 +396,19 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         dq[(1, 2)] = -(q[2].sin() * lambda[0]);
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -q[2].sin();
+        values[1] = q[2].cos();
+    }
 }
 #[allow(dead_code)]
 impl SteeredKnifeEdge {
@@ -804,5 +817,19 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         dq[(0, 2)] = -(q[2].cos() * lambda[1]);
         dq[(1, 2)] = -(q[2].sin() * lambda[1]);
         (dq, dv)
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = -q[2].sin();
+        values[2] = q[2].cos();
     }
 }

@@ -348,4 +348,17 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         dq[(1, 1)] = s0;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 2.0 * q[0];
+        values[1] = 2.0 * q[1];
+    }
 }

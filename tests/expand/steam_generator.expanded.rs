@@ -369,4 +369,19 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         dq[(1, 1)] = s0;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = -self.h3;
+        values[2] = 2.0 * q[0];
+        values[3] = 2.0 * (q[1] - self.h2);
+    }
 }

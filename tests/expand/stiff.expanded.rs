@@ -393,6 +393,19 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         dq[(1, 1)] = s0;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 2.0 * q[0];
+        values[1] = 2.0 * q[1];
+    }
 }
 #[allow(dead_code)]
 impl DoublePendulum {
@@ -782,6 +795,25 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         dq[(3, 3)] = s2;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * (q[2] - q[0]);
+        let s1 = 2.0 * (q[3] - q[1]);
+        values[0] = 2.0 * q[0];
+        values[1] = 2.0 * q[1];
+        values[2] = -s0;
+        values[3] = -s1;
+        values[4] = s0;
+        values[5] = s1;
+    }
 }
 #[allow(dead_code)]
 impl SliderCrank {
@@ -1153,6 +1185,24 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         dq[(2, 0)] = s1;
         dq[(2, 2)] = s2;
         (dq, dv)
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * q[1];
+        let s1 = 2.0 * (q[2] - q[0]);
+        values[0] = 2.0 * q[0];
+        values[1] = s0;
+        values[2] = -s1;
+        values[3] = s0;
+        values[4] = s1;
     }
 }
 #[allow(dead_code)]
@@ -1589,6 +1639,35 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         dq[(3, 3)] = s5;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * q[0];
+        let s1 = 2.0 * q[1];
+        let s2 = 2.0 * (q[2] - q[0]);
+        let s3 = 2.0 * (q[3] - q[1]);
+        let s4 = 2.0 * (q[2] - self.d);
+        let s5 = 2.0 * q[3];
+        values[0] = s0;
+        values[1] = s1;
+        values[2] = -s2;
+        values[3] = -s3;
+        values[4] = s2;
+        values[5] = s3;
+        values[6] = s4;
+        values[7] = s5;
+        values[8] = s0;
+        values[9] = s1;
+        values[10] = s4;
+        values[11] = s5;
+    }
 }
 #[allow(dead_code)]
 impl CoupledMassPendulum {
@@ -1942,6 +2021,19 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         dq[(1, 1)] = s0;
         (dq, dv)
     }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 2.0 * q[0];
+        values[1] = 2.0 * q[1];
+    }
 }
 #[allow(dead_code)]
 impl CuspBead {
@@ -2293,5 +2385,18 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         dq[(0, 0)] = -((s0 + 2.0 * s0) * lambda[0]);
         dq[(1, 1)] = 2.0 * lambda[0];
         (dq, dv)
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -(q[0].powi(2) + q[0] * (2.0 * q[0]));
+        values[1] = 2.0 * q[1];
     }
 }

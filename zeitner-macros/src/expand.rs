@@ -198,6 +198,21 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
             }
         }
     });
+    // `G` by its nonzeros as well, for the sparse simulator.
+    let sparse_jacobian = scene
+        .functions
+        .iter()
+        .filter(|generated| generated.method == "constraint_jacobian")
+        .map(|generated| {
+            let body = emitter.sparse_body(generated, &rt);
+            let vec_n = quote!(#rt::Vector<#n>);
+            quote! {
+                #[inline]
+                fn constraint_jacobian_nonzeros(&self, q: &#vec_n, v: &#vec_n, t: f64, values: &mut [f64]) {
+                    #body
+                }
+            }
+        });
     let (mass_type, mass_kind) = match (scene.full_mass, scene.mass_is_constant) {
         (false, true) => (quote!(#rt::DiagonalMass<#n>), quote!(ConstantDiagonal)),
         (false, false) => (quote!(#rt::DiagonalMass<#n>), quote!(Diagonal)),
@@ -225,6 +240,7 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
             };
             type Mass = #mass_type;
             #(#methods)*
+            #(#sparse_jacobian)*
         }
     }
 }
@@ -259,14 +275,19 @@ fn signature(
 
 fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
     let name = generated.method;
+    let ranks = nonzero_ranks(generated);
+    let mut first_entry = 0;
     let blocks = generated.blocks.iter().map(|block| {
+        let offset = first_entry;
+        first_entry += block.entries.len();
         let name = block.name;
         let (rows, cols) = (Literal::usize_unsuffixed(block.rows), Literal::usize_unsuffixed(block.cols));
         let nonzeros = block
             .entries
             .iter()
-            .filter(|e| !is_zero_entry(generated, e.2))
-            .map(|&(row, col, _, _)| {
+            .enumerate()
+            .filter(|(e, _)| ranks[offset + e].is_some())
+            .map(|(_, &(row, col, _, _))| {
                 let (row, col) = (Literal::usize_unsuffixed(row), Literal::usize_unsuffixed(col));
                 quote!((#row, #col))
             });
@@ -277,15 +298,24 @@ fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
     quote!(#rt::FunctionSummary { name: #name, blocks: &[#(#blocks),*], ops: #ops, ops_unshared: #unshared })
 }
 
-fn is_zero_entry(generated: &Generated, id: zeitner_symbolic::Id) -> bool {
-    // Scheduled outputs skip structural zeros; an entry is nonzero iff it was scheduled.
-    let ids: Vec<_> = generated
-        .blocks
-        .iter()
-        .flat_map(|b| b.entries.iter().map(|e| e.2))
-        .collect();
-    let slot = ids.iter().position(|&x| x == id);
-    slot.is_none_or(|_| !generated.program.outputs.iter().any(|(s, _)| ids[*s] == id))
+/// For each entry (all blocks, in order), its place among the entries the program computes —
+/// the order of the summary's `nonzeros` — or `None` for a structural zero.
+fn nonzero_ranks(generated: &Generated) -> Vec<Option<usize>> {
+    let count: usize = generated.blocks.iter().map(|b| b.entries.len()).sum();
+    let mut scheduled = vec![false; count];
+    for (slot, _) in &generated.program.outputs {
+        scheduled[*slot] = true;
+    }
+    let mut next = 0;
+    scheduled
+        .into_iter()
+        .map(|computed| {
+            computed.then(|| {
+                next += 1;
+                next - 1
+            })
+        })
+        .collect()
 }
 
 fn op_counts(counts: &OpCounts, rt: &TokenStream) -> TokenStream {
@@ -378,6 +408,34 @@ impl Emitter<'_> {
             #(#declarations)*
             #(#assignments)*
             #result
+        }
+    }
+
+    /// The body writing a single-block function's structural nonzeros into `values`, in the
+    /// order its summary lists them (entry order).
+    fn sparse_body(&self, generated: &Generated, rt: &TokenStream) -> TokenStream {
+        let temps = generated.program.temps.iter().enumerate().map(|(i, code)| {
+            let name = temp_name(i as u32);
+            let value = self.code(code, 0, Span::call_site());
+            quote!(let #name = #value;)
+        });
+        let spans: Vec<Span> = generated
+            .blocks
+            .iter()
+            .flat_map(|b| b.entries.iter().map(|e| e.3))
+            .collect();
+        let ranks = nonzero_ranks(generated);
+        let assignments = generated.program.outputs.iter().map(|(slot, code)| {
+            let span = spans[*slot];
+            let value = self.code(code, 0, span);
+            let index = Literal::usize_unsuffixed(ranks[*slot].unwrap_or(0));
+            quote_spanned!(span=> values[#index] = #value;)
+        });
+        quote! {
+            #[allow(unused_imports)]
+            use #rt::Real as _;
+            #(#temps)*
+            #(#assignments)*
         }
     }
 
