@@ -5,7 +5,6 @@ mod common;
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use common::andrews::Andrews;
 use common::steam_generator::SteamGenerator;
@@ -13,17 +12,17 @@ use zeitner::{InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, Ste
 
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
 thread_local! {
-    /// Whether this thread's allocations are counted: only the simulating thread's, so that the
-    /// test harness printing on its own thread meanwhile does not count (it made the count flaky).
+    /// Whether this thread's allocations are counted, and how many: only the simulating
+    /// thread's, so that the test harness printing on its own thread, or another test,
+    /// meanwhile does not count (it made the count flaky).
     static COUNTING: Cell<bool> = const { Cell::new(false) };
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
 }
 
 fn count() {
     if COUNTING.with(Cell::get) {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        ALLOCATIONS.with(|a| a.set(a.get() + 1));
     }
 }
 
@@ -49,7 +48,7 @@ fn allocations_during<const N: usize, const Z: usize, S: zeitner::ConstrainedSys
     sim: &mut Simulator<'_, S, N, Z>,
     steps: usize,
 ) -> usize {
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = ALLOCATIONS.with(Cell::get);
     COUNTING.with(|c| c.set(true));
     let mut taken = 0;
     while taken < steps {
@@ -57,7 +56,7 @@ fn allocations_during<const N: usize, const Z: usize, S: zeitner::ConstrainedSys
         taken += 1;
     }
     COUNTING.with(|c| c.set(false));
-    ALLOCATIONS.load(Ordering::SeqCst) - before
+    ALLOCATIONS.with(Cell::get) - before
 }
 
 #[test]
@@ -114,4 +113,46 @@ fn ten_thousand_steps_allocate_nothing() {
     )
     .unwrap();
     assert_eq!(allocations_during(&mut sim, 1_000), 0);
+}
+
+#[test]
+fn the_sparse_simulator_allocates_only_when_built() {
+    let scene = common::stiff::RedundantFourBar {
+        m: 1.0,
+        r1: 1.0,
+        r2: 2.0,
+        r3: 1.5,
+        d: 2.0,
+        g: 9.81,
+    };
+    let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
+    for options in [
+        Options {
+            method: InnerMethod::Rk4 { substeps: 1 },
+            step: StepControl::Fixed { step: 1e-4 },
+            ..Options::default()
+        },
+        Options {
+            step: StepControl::Adaptive {
+                initial_step: 1e-5,
+                min_step: 1e-12,
+                max_step: 1e-3,
+                rtol: 1e-8,
+                atol: 1e-10,
+            },
+            ..Options::default()
+        },
+    ] {
+        let mut sim =
+            zeitner::SparseSimulator::new(&scene, start, Vector::zeros(), 0.0, options).unwrap();
+        // A redundant row: the minimum-norm correction runs on every solve.
+        assert_eq!(sim.start_report().redundant_rows.len(), 1);
+        let before = ALLOCATIONS.with(Cell::get);
+        COUNTING.with(|c| c.set(true));
+        for _ in 0..10_000 {
+            sim.step().unwrap();
+        }
+        COUNTING.with(|c| c.set(false));
+        assert_eq!(ALLOCATIONS.with(Cell::get) - before, 0, "{options:?}");
+    }
 }

@@ -159,6 +159,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             &mut self.evaluations,
             (&q, &v0, t),
         )?;
+        // The end configuration too, so that its buffers for redundant rows are sized before
+        // the first step (they grow again only if more rows become redundant).
+        let at = (&q, &v0, t);
+        self.there
+            .evaluate(self.system, &self.structure, &mut self.evaluations, at)?;
         let v = self.project_velocities(&q, v0, t, true)?;
         let point = self.consistent_point(q, v, t, true)?;
         self.q = point.q;
