@@ -293,6 +293,7 @@ fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
             });
         quote!(#rt::BlockSummary { name: #name, rows: #rows, cols: #cols, nonzeros: &[#(#nonzeros),*] })
     });
+    let blocks: Vec<TokenStream> = blocks.collect();
     let ops = op_counts(&generated.program.op_counts(), rt);
     let unshared = op_counts(&generated.unshared, rt);
     quote!(#rt::FunctionSummary { name: #name, blocks: &[#(#blocks),*], ops: #ops, ops_unshared: #unshared })

@@ -2,7 +2,9 @@
 //! each scheduled into straight-line code with shared subexpressions.
 
 use proc_macro2::Span;
-use zeitner_symbolic::{equivalent, tree_op_counts, Differentiator, Graph, Id, OpCounts, Program};
+use zeitner_symbolic::{
+    equivalent, tree_op_counts, Dependencies, Differentiator, Graph, Id, OpCounts, Program,
+};
 
 use crate::check::Sizes;
 use crate::errors::Errors;
@@ -58,6 +60,7 @@ pub fn check(
     let slots = vars.n;
     let is_coordinate = |v: u32| (v as usize) < slots;
     let is_velocity = |v: u32| (slots..2 * slots).contains(&(v as usize));
+    let mut deps = Dependencies::new();
     for lowered in lowered {
         let Some(function) = model.function(lowered.role) else {
             continue;
@@ -65,7 +68,7 @@ pub fn check(
         match (lowered.role, &function.shape) {
             (Role::Constraints, _) => {
                 for (j, &id) in lowered.entries.iter().enumerate() {
-                    if !graph.depends_on_any(id, &is_coordinate) {
+                    if !deps.any(graph, id, is_coordinate) {
                         errors.error_at(
                             entry_span(function, j),
                             "this constraint depends on no coordinate, so it cannot be enforced: a constraint restricts the positions `q`",
@@ -75,7 +78,7 @@ pub fn check(
             }
             (Role::VelocityConstraints, _) => {
                 for (j, &id) in lowered.entries.iter().enumerate() {
-                    if !graph.depends_on_any(id, &is_velocity) {
+                    if !deps.any(graph, id, is_velocity) {
                         errors.error_at(
                             entry_span(function, j),
                             "this velocity constraint does not involve the velocities; state it in `constraints` instead",
@@ -161,17 +164,34 @@ pub fn build(
     let mut constraints = entries_of(Role::Constraints);
     constraints.extend(entries_of(Role::VelocityConstraints));
 
-    let is_coordinate = |v: u32| (v as usize) < n;
     let time = vars.time();
+    let mut deps = Dependencies::new();
+    // Which coordinates `i` (and velocities, as `n + i`) an expression depends on: every
+    // derivative below is taken only by those, so the work grows with the nonzeros, not n².
+    let state_of = |deps: &mut Dependencies, graph: &Graph, id: Id| -> (Vec<usize>, Vec<usize>) {
+        let set = deps.of(graph, id);
+        let coordinates = set
+            .iter()
+            .filter(|&&v| (v as usize) < n)
+            .map(|&v| v as usize)
+            .collect();
+        let velocities = set
+            .iter()
+            .filter(|&&v| (n..2 * n).contains(&(v as usize)))
+            .map(|&v| v as usize - n)
+            .collect();
+        (coordinates, velocities)
+    };
     let mass_depends_on_q = mass
         .iter()
-        .any(|e| graph.depends_on_any(e.id, &is_coordinate));
-    let mass_is_constant = !mass_depends_on_q && !mass.iter().any(|e| graph.depends_on(e.id, time));
+        .any(|e| deps.any(graph, e.id, |v| (v as usize) < n));
+    let mass_is_constant =
+        !mass_depends_on_q && !mass.iter().any(|e| deps.any(graph, e.id, |v| v == time));
     let time_dependent = mass
         .iter()
         .chain(&force)
         .chain(&constraints)
-        .any(|e| graph.depends_on(e.id, time));
+        .any(|e| deps.any(graph, e.id, |v| v == time));
 
     let mut derive = Derive {
         graph,
@@ -243,24 +263,41 @@ pub fn build(
         )],
     ));
 
-    // G: ∂g/∂q for position rows, ∂g/∂v for velocity rows; P = ∂g/∂q for all rows.
+    // G: ∂g/∂q for position rows, ∂g/∂v for velocity rows; P = ∂g/∂q for all rows. Sparse:
+    // each row by the coordinates (velocities) it depends on, in increasing order.
     let mut jacobian = Vec::new();
     let mut position_partials = Vec::new();
+    // The nonzero entries of each row of G, and of each column.
+    let mut jacobian_rows: Vec<Vec<(usize, Id)>> = vec![Vec::new(); z];
+    let mut jacobian_columns: Vec<Vec<(usize, Id)>> = vec![Vec::new(); n];
     for (j, row) in constraints.iter().enumerate() {
-        for i in 0..n {
-            let dq = derive.by(&mut d_dq[i], row.id, row.span, row.role);
-            position_partials.push((j, i, dq, row.span));
-            let g = if j < r {
+        let (by_q, by_v) = state_of(&mut deps, derive.graph, row.id);
+        let columns = if j < r { by_q.clone() } else { union(&by_q, &by_v) };
+        for i in columns {
+            let dq = if by_q.binary_search(&i).is_ok() {
+                let dq = derive.by(&mut d_dq[i], row.id, row.span, row.role);
+                position_partials.push((j, i, dq, row.span));
                 dq
             } else {
+                derive.graph.zero()
+            };
+            let g = if j < r {
+                dq
+            } else if by_v.binary_search(&i).is_ok() {
                 derive.by(&mut d_dv[i], row.id, row.span, row.role)
+            } else {
+                derive.graph.zero()
             };
             jacobian.push((j, i, g, row.span));
+            if !derive.graph.is_zero(g) {
+                jacobian_rows[j].push((i, g));
+                jacobian_columns[i].push((j, g));
+            }
         }
     }
     functions.push((
         "constraint_jacobian",
-        vec![matrix("g", z, n, jacobian.clone())],
+        vec![matrix("g", z, n, jacobian)],
     ));
     if k > 0 {
         functions.push((
@@ -277,8 +314,7 @@ pub fn build(
     for (j, row) in constraints.iter().enumerate() {
         let w = if j < r {
             let mut sum = derive.by(&mut d_dt, row.id, row.span, row.role);
-            for i in 0..n {
-                let g = jacobian[j * n + i].2;
+            for &(i, g) in &jacobian_rows[j] {
                 let term = derive.graph.mul(g, velocities[i]);
                 sum = derive.graph.add(sum, term);
             }
@@ -288,7 +324,8 @@ pub fn build(
         };
         rate.push((j, w, row.span));
         let mut b = derive.by(&mut d_dt, w, row.span, row.role);
-        for i in 0..n {
+        let (by_q, _) = state_of(&mut deps, derive.graph, w);
+        for i in by_q {
             let dw = derive.by(&mut d_dq[i], w, row.span, row.role);
             let term = derive.graph.mul(dw, velocities[i]);
             b = derive.graph.add(b, term);
@@ -302,19 +339,16 @@ pub fn build(
     let mut force_dq = Vec::new();
     let mut force_dv = Vec::new();
     for (i, e) in force.iter().enumerate() {
-        for c in 0..n {
-            force_dq.push((
-                i,
-                c,
-                derive.by(&mut d_dq[c], e.id, e.span, Role::Force),
-                e.span,
-            ));
-            force_dv.push((
-                i,
-                c,
-                derive.by(&mut d_dv[c], e.id, e.span, Role::Force),
-                e.span,
-            ));
+        let (by_q, by_v) = state_of(&mut deps, derive.graph, e.id);
+        for c in union(&by_q, &by_v) {
+            if by_q.binary_search(&c).is_ok() {
+                let d = derive.by(&mut d_dq[c], e.id, e.span, Role::Force);
+                force_dq.push((i, c, d, e.span));
+            }
+            if by_v.binary_search(&c).is_ok() {
+                let d = derive.by(&mut d_dv[c], e.id, e.span, Role::Force);
+                force_dv.push((i, c, d, e.span));
+            }
         }
     }
     functions.push((
@@ -331,26 +365,23 @@ pub fn build(
         .collect();
     let mut reaction_dq = Vec::new();
     let mut reaction_dv = Vec::new();
-    for i in 0..n {
+    let span = constraints.first().map_or_else(Span::call_site, |e| e.span);
+    for (i, column) in jacobian_columns.iter().enumerate() {
         let mut reaction = derive.graph.zero();
-        for (j, lambda) in multipliers.iter().enumerate() {
-            let term = derive.graph.mul(jacobian[j * n + i].2, *lambda);
+        for &(j, g) in column {
+            let term = derive.graph.mul(g, multipliers[j]);
             reaction = derive.graph.add(reaction, term);
         }
-        let span = constraints.first().map_or_else(Span::call_site, |e| e.span);
-        for c in 0..n {
-            reaction_dq.push((
-                i,
-                c,
-                derive.by(&mut d_dq[c], reaction, span, Role::Constraints),
-                span,
-            ));
-            reaction_dv.push((
-                i,
-                c,
-                derive.by(&mut d_dv[c], reaction, span, Role::Constraints),
-                span,
-            ));
+        let (by_q, by_v) = state_of(&mut deps, derive.graph, reaction);
+        for c in union(&by_q, &by_v) {
+            if by_q.binary_search(&c).is_ok() {
+                let d = derive.by(&mut d_dq[c], reaction, span, Role::Constraints);
+                reaction_dq.push((i, c, d, span));
+            }
+            if by_v.binary_search(&c).is_ok() {
+                let d = derive.by(&mut d_dv[c], reaction, span, Role::Constraints);
+                reaction_dv.push((i, c, d, span));
+            }
         }
     }
     functions.push((
@@ -372,20 +403,21 @@ pub fn build(
         let mut product_dq = Vec::new();
         for i in 0..n {
             let mut product = derive.graph.zero();
-            for (c, a) in accelerations.iter().enumerate() {
-                let entry = if full_mass {
-                    Some(&mass[i * n + c])
-                } else {
-                    (c == i).then(|| &mass[i])
-                };
-                if let Some(entry) = entry {
-                    let term = derive.graph.mul(entry.id, *a);
-                    product = derive.graph.add(product, term);
-                }
+            let columns = if full_mass { 0..n } else { i..i + 1 };
+            for c in columns {
+                let entry = &mass[if full_mass { i * n + c } else { i }];
+                let term = derive.graph.mul(entry.id, accelerations[c]);
+                product = derive.graph.add(product, term);
             }
             let span = mass[if full_mass { i * n } else { i }].span;
-            for (c, by_q) in d_dq.iter_mut().enumerate() {
-                product_dq.push((i, c, derive.by(by_q, product, span, Role::Mass), span));
+            let (by_q, _) = state_of(&mut deps, derive.graph, product);
+            for c in by_q {
+                product_dq.push((
+                    i,
+                    c,
+                    derive.by(&mut d_dq[c], product, span, Role::Mass),
+                    span,
+                ));
             }
         }
         functions.push((
@@ -430,6 +462,14 @@ pub fn build(
         dynamics_depend_on_velocity,
         functions,
     })
+}
+
+/// The union of two sorted index lists.
+fn union(a: &[usize], b: &[usize]) -> Vec<usize> {
+    let mut all: Vec<usize> = a.iter().chain(b).copied().collect();
+    all.sort_unstable();
+    all.dedup();
+    all
 }
 
 fn matrix(

@@ -8,12 +8,14 @@
 //! It knows nothing of syn or Rust syntax, so it can be property-tested and fuzzed directly.
 
 pub mod canonical;
+pub mod deps;
 pub mod diff;
 pub mod eval;
 pub mod graph;
 pub mod program;
 
 pub use canonical::equivalent;
+pub use deps::Dependencies;
 pub use diff::{DiffError, Differentiator};
 pub use eval::{Evaluator, Real};
 pub use graph::{Binary, Compare, Cond, CondId, Graph, Id, Node, Unary};
