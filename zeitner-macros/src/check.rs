@@ -65,16 +65,6 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
         if let (Shape::Matrix { .. }, false) = (&function.shape, function.role == Role::Mass) {
             errors.error_spanned_by(function.shape.len_expr(), "only `mass` may return a matrix");
         }
-        if function.result.elems.len() != function.shape.len() {
-            errors.error_spanned_by(
-                function.result,
-                format_args!(
-                    "`{owner}` returns {} entries but its signature says {}",
-                    function.result.elems.len(),
-                    function.shape.len()
-                ),
-            );
-        }
     }
     let r = model
         .function(Role::Constraints)
@@ -95,21 +85,8 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
             );
         }
     }
-    if reference.is_some() && r + k > n {
-        let blame = model
-            .function(Role::VelocityConstraints)
-            .or(model.function(Role::Constraints))
-            .map(|f| f.shape.len_expr());
-        if let Some(blame) = blame {
-            errors.error_spanned_by(
-                blame,
-                format_args!(
-                    "{} constraints on {n} coordinates: at most as many independent constraints as coordinates",
-                    r + k
-                ),
-            );
-        }
-    }
+    // More rows than coordinates is not an error: redundant but consistent rows (a truss
+    // pinned at both ends) are the runtime's to handle, with minimum-norm multipliers.
     Sizes { n, r, k }
 }
 

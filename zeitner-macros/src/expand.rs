@@ -136,6 +136,12 @@ fn analyse(
         errors,
         outlines,
         outlined: Vec::new(),
+        outline_depth: 0,
+        helpers: &model.helpers,
+        consts: &model.consts,
+        helper_stack: Vec::new(),
+        budget: lower::BUDGET,
+        deps: zeitner_symbolic::Dependencies::new(),
     };
     let lowered: Vec<_> = model
         .functions

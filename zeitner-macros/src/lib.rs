@@ -12,6 +12,7 @@
 
 mod check;
 mod configurations;
+mod consts;
 mod errors;
 mod expand;
 mod lower;

@@ -7,11 +7,12 @@ use proc_macro2::Literal;
 use proc_macro2::{Span, TokenStream};
 use quote::{quote_spanned, ToTokens};
 use syn::{BinOp, Expr, UnOp};
-use zeitner_symbolic::{Binary, Compare, CondId, Graph, Id, Unary};
+use zeitner_symbolic::{Binary, Compare, CondId, Dependencies, Graph, Id, Unary};
 
 use crate::configurations::refuse_inner_cfg;
 use crate::errors::Errors;
-use crate::model::{ArrayArg, ArrayBinding, ModelFn, Role};
+use crate::consts::Consts;
+use crate::model::{ArrayArg, ArrayBinding, Helper, ModelFn, Role};
 use crate::outline::Outlines;
 
 /// What a variable of the graph stands for in the generated code.
@@ -84,17 +85,19 @@ pub struct Call {
     pub method: syn::Ident,
 }
 
-/// A lowered model function: one graph node per returned entry (rows of a matrix flattened).
+/// A lowered model function: one graph node per returned entry (rows of a matrix flattened),
+/// and the span of each returned entry (of each row, for a matrix).
 pub struct Lowered {
     pub role: Role,
     pub entries: Vec<Id>,
+    pub spans: Vec<Span>,
 }
 
-#[derive(Clone)]
-enum Binding {
-    Scalar(Id),
-    Array(Vec<Id>),
-}
+#[path = "unroll.rs"]
+mod unroll;
+
+pub use unroll::{Env, BUDGET};
+use unroll::Value;
 
 pub struct Lowerer<'g> {
     pub graph: &'g mut Graph,
@@ -105,61 +108,35 @@ pub struct Lowerer<'g> {
     pub outlines: &'g Outlines,
     /// Each outlined part's node once lowered (`Some(None)` when it failed, already reported).
     pub outlined: Vec<Option<Option<Id>>>,
+    /// How many outlined parts are being lowered, one inside the other.
+    pub outline_depth: usize,
+    pub helpers: &'g [Helper<'g>],
+    pub consts: &'g Consts,
+    /// The helpers being inlined, innermost last: a helper met again here recurses.
+    pub helper_stack: Vec<String>,
+    /// Steps left before unrolling gives up (see [`unroll::BUDGET`]).
+    pub budget: usize,
+    pub deps: Dependencies,
 }
 
-/// The names visible in one model function.
-struct Scope {
-    role: Role,
-    names: HashMap<String, Binding>,
-}
+type Scope = Env;
 
 impl Lowerer<'_> {
     pub fn lower_function(&mut self, function: &ModelFn<'_>) -> Option<Lowered> {
         let before = self.errors.count();
-        let mut scope = Scope {
-            role: function.role,
-            names: HashMap::new(),
-        };
+        let mut scope = Env::new(function.role);
         self.bind_array(&mut scope, function.q.as_ref(), false);
         self.bind_array(&mut scope, function.v.as_ref(), true);
         if let Some(Some(t)) = function.t {
             let time = self.graph.var(self.vars.time());
-            self.bind_name(&mut scope, t, Binding::Scalar(time));
+            self.bind_name(&mut scope, t, Value::Scalar(time, t.span()));
         }
-        for (name, expr) in &function.lets {
-            if let Some(value) = self.lower(&scope, expr) {
-                // Shadowing is allowed, as in Rust.
-                scope.names.insert(name.to_string(), Binding::Scalar(value));
-            }
-        }
-        let mut entries = Vec::new();
-        for element in &function.result.elems {
-            match (&function.shape, element) {
-                (crate::model::Shape::Matrix { len, .. }, Expr::Array(row)) => {
-                    refuse_inner_cfg(&row.attrs, "a row", self.errors);
-                    if row.elems.len() != *len {
-                        self.errors.error_spanned_by(
-                            row,
-                            format_args!(
-                                "this row has {} entries, the mass matrix is {len}×{len}",
-                                row.elems.len()
-                            ),
-                        );
-                    }
-                    for entry in &row.elems {
-                        entries.extend(self.lower(&scope, entry));
-                    }
-                }
-                (crate::model::Shape::Matrix { .. }, other) => self.errors.error_spanned_by(
-                    other,
-                    "a full mass matrix is an array of rows: `[[m11, m12], [m21, m22]]`",
-                ),
-                (_, entry) => entries.extend(self.lower(&scope, entry)),
-            }
-        }
+        let (value, result) = self.run_body(&mut scope, function.body, "a model function")?;
+        let (entries, spans) = self.flatten_result(function, value, result)?;
         (self.errors.count() == before).then_some(Lowered {
             role: function.role,
             entries,
+            spans,
         })
     }
 
@@ -175,21 +152,25 @@ impl Lowerer<'_> {
                 self.graph.var(var)
             })
             .collect();
+        let span = Span::call_site();
         match &arg.binding {
-            ArrayBinding::Named(Some(name)) => self.bind_name(scope, name, Binding::Array(ids)),
+            ArrayBinding::Named(Some(name)) => {
+                let values = ids.into_iter().map(|id| Value::Scalar(id, span)).collect();
+                self.bind_name(scope, name, Value::Array(values))
+            }
             ArrayBinding::Named(None) => {}
             ArrayBinding::Elements(names) => {
                 for (name, id) in names.iter().zip(ids) {
                     if let Some(name) = name {
-                        self.bind_name(scope, name, Binding::Scalar(id));
+                        self.bind_name(scope, name, Value::Scalar(id, name.span()));
                     }
                 }
             }
         }
     }
 
-    fn bind_name(&mut self, scope: &mut Scope, name: &syn::Ident, binding: Binding) {
-        if scope.names.insert(name.to_string(), binding).is_some() {
+    fn bind_name(&mut self, scope: &mut Scope, name: &syn::Ident, value: Value) {
+        if !scope.bind_argument(name.to_string(), value) {
             self.errors.error_spanned_by(
                 name,
                 format_args!("duplicate name `{name}`: every coordinate, velocity and the time need their own name"),
@@ -197,9 +178,9 @@ impl Lowerer<'_> {
         }
     }
 
-    fn depends_on_state(&self, id: Id) -> bool {
-        let vars = &*self.vars;
-        self.graph.depends_on_any(id, &|v| vars.is_state(v))
+    fn depends_on_state(&mut self, id: Id) -> bool {
+        let n = self.vars.n;
+        self.deps.any(self.graph, id, |v| (v as usize) < 2 * n)
     }
 
     /// The graph node of `expr`; a constant that is not finite (an overflowing literal such as
@@ -265,17 +246,28 @@ impl Lowerer<'_> {
             Expr::Call(call) => self.lower_function_call(scope, call),
             Expr::If(if_expr) => self.lower_if(scope, if_expr),
             Expr::Cast(cast) => {
+                let to_f64 = matches!(&*cast.ty, syn::Type::Path(p) if p.path.is_ident("f64"));
+                if to_f64 && self.looks_integer(scope, &cast.expr) {
+                    let value = self.int(scope, &cast.expr)?;
+                    return Some(self.graph.num(value as f64));
+                }
                 self.errors.error_spanned_by(
                     cast,
-                    "casts are not supported: write float literals, e.g. `2.0`",
+                    "casts are not supported here: only an integer known at expansion time (a loop \
+                     index, a const of this impl) may be cast, `i as f64`; write float literals, e.g. `2.0`",
                 );
                 None
             }
-            Expr::ForLoop(_) | Expr::While(_) | Expr::Loop(_) => {
+            Expr::ForLoop(_) => {
                 self.errors.error_spanned_by(
                     expr,
-                    "loops are not supported in model functions: write each term out so it can be differentiated",
+                    "a `for` loop is a statement, not a value: accumulate into a `let mut`, e.g. \
+                     `let mut s = 0.0; for i in 0..N { s += q[i] * q[i]; }`",
                 );
+                None
+            }
+            Expr::While(_) | Expr::Loop(_) => {
+                self.errors.error_spanned_by(expr, unroll::UNSUPPORTED_LOOP);
                 None
             }
             Expr::Closure(_) => {
@@ -391,6 +383,14 @@ impl Lowerer<'_> {
         if self.outlined.len() < self.outlines.exprs.len() {
             self.outlined.resize(self.outlines.exprs.len(), None);
         }
+        if self.outline_depth == 0 {
+            // A part met again (in the next turn of a loop, say) may mean something else now.
+            let mut reset = vec![part];
+            while let Some(top) = reset.pop() {
+                self.outlined[top] = None;
+                reset.extend(self.outlines.children[top].iter().copied());
+            }
+        }
         let mut stack = vec![part];
         while let Some(&top) = stack.last() {
             if self.outlined[top].is_some() {
@@ -405,9 +405,11 @@ impl Lowerer<'_> {
             }
             if stack.len() == before {
                 let outlines = self.outlines;
+                self.outline_depth += 1;
                 let value = outlines.exprs[top]
                     .as_ref()
                     .and_then(|expr| self.lower(scope, expr));
+                self.outline_depth -= 1;
                 self.outlined[top] = Some(value);
                 stack.pop();
             }
@@ -421,12 +423,22 @@ impl Lowerer<'_> {
             if let Some(part) = self.outlines.index(&name) {
                 return self.lower_outlined(scope, part);
             }
-            match scope.names.get(&name) {
-                Some(Binding::Scalar(id)) => return Some(*id),
-                Some(Binding::Array(_)) => {
+            match scope.get(&name) {
+                Some(Value::Scalar(id, _)) => return Some(*id),
+                Some(Value::Array(_)) => {
                     self.errors.error_spanned_by(
                         ident,
                         format_args!("`{name}` is an array: use one component, e.g. `{name}[0]`"),
+                    );
+                    return None;
+                }
+                Some(Value::Int(_)) => {
+                    self.errors.error_spanned_by(
+                        ident,
+                        format_args!(
+                            "`{name}` is an integer (a loop index or an integer `let`): with numbers, \
+                             write `{name} as f64`"
+                        ),
                     );
                     return None;
                 }
@@ -435,7 +447,7 @@ impl Lowerer<'_> {
             // Upper case in any script: `G`, `LENGTH`, `Γ`.
             let looks_like_const = name.chars().next().is_some_and(char::is_uppercase);
             if !looks_like_const {
-                let mut known: Vec<&String> = scope.names.keys().collect();
+                let mut known: Vec<&String> = scope.names().collect();
                 known.sort();
                 let known: Vec<String> = known.iter().map(|k| format!("`{k}`")).collect();
                 let hint = if name == "t" {
@@ -456,40 +468,14 @@ impl Lowerer<'_> {
     }
 
     fn lower_index(&mut self, scope: &Scope, index: &syn::ExprIndex) -> Option<Id> {
-        let name = match &*index.expr {
-            Expr::Path(p) => p.path.get_ident().map(|i| i.to_string()),
-            _ => None,
-        };
-        let Some(Binding::Array(ids)) = name.as_ref().and_then(|n| scope.names.get(n)) else {
-            self.errors.error_spanned_by(
-                &index.expr,
-                "only the coordinate and velocity arrays of the signature can be indexed",
-            );
-            return None;
-        };
-        let literal = match &*index.index {
-            Expr::Lit(syn::ExprLit {
-                lit: syn::Lit::Int(i),
-                ..
-            }) => i.base10_parse::<usize>().ok(),
-            _ => None,
-        };
-        match literal {
-            Some(i) if i < ids.len() => Some(ids[i]),
-            Some(i) => {
+        match self.index_value(scope, index)? {
+            Value::Scalar(id, _) => Some(id),
+            Value::Int(value) => Some(self.graph.num(value as f64)),
+            Value::Array(_) => {
                 self.errors.error_spanned_by(
-                    &index.index,
-                    format_args!(
-                        "index {i} is out of bounds for `{}` of length {}",
-                        name.unwrap_or_default(),
-                        ids.len()
-                    ),
+                    index,
+                    "this is a row of an array: index it again, e.g. `m[i][j]`",
                 );
-                None
-            }
-            None => {
-                self.errors
-                    .error_spanned_by(&index.index, "index with an integer literal, e.g. `q[2]`");
                 None
             }
         }
@@ -502,6 +488,21 @@ impl Lowerer<'_> {
             return None;
         }
         if is_self(&call.receiver) {
+            if let Some(helper) = self.helper(&call.method) {
+                return match self.call_helper(scope, helper, call)? {
+                    Value::Scalar(id, _) => Some(id),
+                    _ => {
+                        self.errors.error_spanned_by(
+                            call,
+                            format_args!(
+                                "`{}` returns an array: use one component, e.g. `self.{}(..)[0]`, or bind it with `let`",
+                                call.method, call.method
+                            ),
+                        );
+                        None
+                    }
+                };
+            }
             return self.lower_opaque_call(scope, call);
         }
         let method = call.method.to_string();
@@ -625,7 +626,7 @@ impl Lowerer<'_> {
             }
             let time = self.vars.time();
             if matches!(scope.role, Role::Constraints | Role::VelocityConstraints)
-                && self.graph.depends_on(id, time)
+                && self.deps.any(self.graph, id, |v| v == time)
             {
                 self.errors.error_spanned_by(
                     arg,
@@ -650,6 +651,22 @@ impl Lowerer<'_> {
     }
 
     fn lower_if(&mut self, scope: &Scope, if_expr: &syn::ExprIf) -> Option<Id> {
+        if self.looks_integer_cond(scope, &if_expr.cond) {
+            // Decided at expansion time (on loop indices and consts): only the branch taken is read.
+            let taken = self.int_cond(scope, &if_expr.cond)?;
+            return match (taken, &if_expr.else_branch) {
+                (true, _) => self.lower_block_value(scope, &if_expr.then_branch),
+                (false, Some((_, otherwise))) => match &**otherwise {
+                    Expr::Block(block) => self.lower_block_value(scope, &block.block),
+                    chained => self.lower(scope, chained),
+                },
+                (false, None) => {
+                    self.errors
+                        .error_spanned_by(if_expr, "an `if` in a model needs an `else` branch");
+                    None
+                }
+            };
+        }
         let cond = self.lower_cond(scope, &if_expr.cond);
         let then = self.lower_block_value(scope, &if_expr.then_branch);
         let otherwise = match &if_expr.else_branch {

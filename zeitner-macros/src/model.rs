@@ -2,9 +2,10 @@
 //! Every piece keeps a reference to the user's syntax so later stages can point at it.
 
 use syn::spanned::Spanned;
-use syn::{Expr, FnArg, ImplItem, ImplItemFn, ItemImpl, Pat, ReturnType, Stmt, Type};
+use syn::{Expr, FnArg, ImplItem, ImplItemFn, ItemImpl, Pat, ReturnType, Type};
 
 use crate::configurations::refuse_inner_cfg;
+use crate::consts::{self, Consts};
 use crate::errors::Errors;
 
 /// The four functions a model may define.
@@ -93,12 +94,29 @@ pub struct ModelFn<'a> {
     pub v: Option<ArrayArg<'a>>,
     pub t: Option<Option<&'a syn::Ident>>,
     pub shape: Shape<'a>,
-    pub lets: Vec<(&'a syn::Ident, &'a Expr)>,
-    pub result: &'a syn::ExprArray,
+    pub body: &'a syn::Block,
+}
+
+/// What a helper method takes or returns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Param {
+    Scalar,
+    Array(usize),
+}
+
+/// A method of the annotated impl that is not a model function: inlined where it is called,
+/// so it may take coordinates and is differentiated with the rest.
+pub struct Helper<'a> {
+    pub name: &'a syn::Ident,
+    pub params: Vec<(Option<&'a syn::Ident>, Param)>,
+    pub returns: Param,
+    pub body: &'a syn::Block,
 }
 
 pub struct Model<'a> {
     pub functions: Vec<ModelFn<'a>>,
+    pub helpers: Vec<Helper<'a>>,
+    pub consts: Consts,
 }
 
 impl<'a> Model<'a> {
@@ -121,29 +139,33 @@ impl<'a> Model<'a> {
                 "#[constrained_system] does not support generic impls: the generated code is monomorphic",
             );
         }
+        let consts = Consts::from_item(item);
         let mut functions: Vec<ModelFn<'a>> = Vec::new();
+        let mut helpers: Vec<Helper<'a>> = Vec::new();
         let mut seen: Vec<Role> = Vec::new();
         for (index, member) in item.items.iter().enumerate() {
             if !members.get(index).copied().unwrap_or(true) {
                 continue;
             }
-            let ImplItem::Fn(function) = member else {
-                errors.error_spanned_by(
-                    member,
-                    "only the model functions `mass`, `force`, `constraints` and `velocity_constraints` \
-                     may stand in a #[constrained_system] impl; put other items in a second `impl` block",
-                );
-                continue;
+            let function = match member {
+                ImplItem::Fn(function) => function,
+                // Consts size arrays and bound loops; rustc checks them as written.
+                ImplItem::Const(_) => continue,
+                other => {
+                    errors.error_spanned_by(
+                        other,
+                        "only the model functions (`mass`, `force`, `constraints`, `velocity_constraints`), \
+                         helper methods and `const`s may stand in a #[constrained_system] impl; put other \
+                         items in a second `impl` block",
+                    );
+                    continue;
+                }
             };
             let name = function.sig.ident.to_string();
             let Some(role) = Role::ALL.into_iter().find(|r| r.name() == name) else {
-                errors.error_spanned_by(
-                    &function.sig.ident,
-                    format_args!(
-                        "unknown model function `{name}`: expected `mass`, `force`, `constraints` or \
-                         `velocity_constraints`; put helper methods in a second `impl` block"
-                    ),
-                );
+                if let Some(helper) = parse_helper(function, &consts, errors) {
+                    helpers.push(helper);
+                }
                 continue;
             };
             if seen.contains(&role) {
@@ -154,7 +176,7 @@ impl<'a> Model<'a> {
                 continue;
             }
             seen.push(role);
-            if let Some(parsed) = parse_function(role, function, errors) {
+            if let Some(parsed) = parse_function(role, function, &consts, errors) {
                 functions.push(parsed);
             }
         }
@@ -163,23 +185,152 @@ impl<'a> Model<'a> {
         for role in [Role::Mass, Role::Force, Role::Constraints] {
             let optional = role == Role::Constraints && constraints_optional;
             if !(seen.contains(&role) || optional) {
-                errors.error_spanned_by(
-                    &item.self_ty,
-                    format_args!(
-                        "missing model function `{}`: add `{}`",
-                        role.name(),
-                        role.signature_hint()
+                // A helper named like the missing function is most likely it, misspelt.
+                let misspelt = helpers
+                    .iter()
+                    .find(|h| close(&h.name.to_string(), role.name()));
+                match misspelt {
+                    Some(helper) => errors.error_spanned_by(
+                        helper.name,
+                        format_args!(
+                            "missing model function `{}`; `{}` is read as a helper method: if it is meant \
+                             to be the model function, name it `{}`",
+                            role.name(),
+                            helper.name,
+                            role.name()
+                        ),
                     ),
-                );
+                    None => errors.error_spanned_by(
+                        &item.self_ty,
+                        format_args!(
+                            "missing model function `{}`: add `{}`",
+                            role.name(),
+                            role.signature_hint()
+                        ),
+                    ),
+                }
             }
         }
-        Model { functions }
+        Model {
+            functions,
+            helpers,
+            consts,
+        }
     }
+}
+
+/// Whether two names differ by at most two edits (a misspelt model function).
+fn close(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let mut previous: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut current = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let cost = usize::from(ca != cb);
+            current.push((previous[j] + cost).min(previous[j + 1] + 1).min(current[j] + 1));
+        }
+        previous = current;
+    }
+    previous[b.len()] <= 2
+}
+
+/// A helper method: `&self`, then `f64` and `[f64; k]` arguments, returning `f64` or
+/// `[f64; k]`.
+fn parse_helper<'a>(
+    function: &'a ImplItemFn,
+    consts: &Consts,
+    errors: &mut Errors,
+) -> Option<Helper<'a>> {
+    let sig = &function.sig;
+    let name = &sig.ident;
+    let hint = format!(
+        "helper methods in a #[constrained_system] impl are inlined into the model: \
+         `fn {name}(&self, a: f64, b: [f64; 2]) -> f64` (`f64` and `[f64; k]` arguments and result); \
+         put other methods in a second `impl` block"
+    );
+    let before = errors.count();
+    if !sig.generics.params.is_empty() || sig.asyncness.is_some() || sig.unsafety.is_some() {
+        errors.error_spanned_by(sig, &hint);
+        return None;
+    }
+    let mut inputs = sig.inputs.iter();
+    match inputs.next() {
+        Some(FnArg::Receiver(receiver))
+            if receiver.reference.is_some() && receiver.mutability.is_none() => {}
+        Some(other) => {
+            errors.error_spanned_by(other, format_args!("the first argument must be `&self`: {hint}"));
+            return None;
+        }
+        None => {
+            errors.error_spanned_by(name, format_args!("missing `&self`: {hint}"));
+            return None;
+        }
+    }
+    let param = |ty: &Type, errors: &mut Errors| -> Option<Param> {
+        if is_f64(ty) {
+            return Some(Param::Scalar);
+        }
+        match ty {
+            Type::Array(array) if is_f64(&array.elem) => {
+                size(&array.len, consts, errors).map(Param::Array)
+            }
+            other => {
+                errors.error_spanned_by(other, &hint);
+                None
+            }
+        }
+    };
+    let mut params = Vec::new();
+    for input in inputs {
+        let FnArg::Typed(typed) = input else { continue };
+        let Some(kind) = param(&typed.ty, errors) else {
+            continue;
+        };
+        match &*typed.pat {
+            Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
+                params.push((Some(&p.ident), kind))
+            }
+            Pat::Wild(_) => params.push((None, kind)),
+            other => errors.error_spanned_by(
+                other,
+                "a helper's arguments are plain names: `a: [f64; 2]`",
+            ),
+        }
+    }
+    let returns = match &sig.output {
+        ReturnType::Type(_, ty) => param(ty, errors),
+        ReturnType::Default => {
+            errors.error_spanned_by(name, &hint);
+            None
+        }
+    };
+    (errors.count() == before).then_some(Helper {
+        name,
+        params,
+        returns: returns?,
+        body: &function.block,
+    })
+}
+
+/// An array size: an integer expression known at expansion time, at most [`MAX_SIZE`].
+pub fn size(expr: &Expr, consts: &Consts, errors: &mut Errors) -> Option<usize> {
+    let value = consts::eval(expr, consts, &|_| None, errors)?;
+    if value < 0 || value as u64 > MAX_SIZE as u64 {
+        errors.error_spanned_by(
+            expr,
+            format_args!(
+                "this size is {value}: at most {MAX_SIZE} coordinates or constraints, and no fewer than 0"
+            ),
+        );
+        return None;
+    }
+    Some(value as usize)
 }
 
 fn parse_function<'a>(
     role: Role,
     function: &'a ImplItemFn,
+    consts: &Consts,
     errors: &mut Errors,
 ) -> Option<ModelFn<'a>> {
     let sig = &function.sig;
@@ -241,8 +392,8 @@ fn parse_function<'a>(
             });
             continue;
         }
-        let Some((len, len_expr)) = array_len(&typed.ty) else {
-            if !report_sizes(&typed.ty, errors) {
+        let Some((len, len_expr)) = array_len(&typed.ty, consts) else {
+            if !report_sizes(&typed.ty, consts, errors) {
                 errors.error_spanned_by(
                     &typed.ty,
                     format_args!(
@@ -358,7 +509,7 @@ fn parse_function<'a>(
         }
     }
     let shape = match &sig.output {
-        ReturnType::Type(_, ty) => match (array_len(ty), matrix_len(ty)) {
+        ReturnType::Type(_, ty) => match (array_len(ty, consts), matrix_len(ty, consts)) {
             (Some((len, len_expr)), _) => Some(Shape::Vector { len, len_expr }),
             (None, Some((len, len_expr))) if role == Role::Mass => {
                 Some(Shape::Matrix { len, len_expr })
@@ -368,7 +519,7 @@ fn parse_function<'a>(
         ReturnType::Default => None,
     };
     let sizes_reported = match &sig.output {
-        ReturnType::Type(_, ty) if shape.is_none() => report_sizes(ty, errors),
+        ReturnType::Type(_, ty) if shape.is_none() => report_sizes(ty, consts, errors),
         _ => false,
     };
     if shape.is_none() && !sizes_reported {
@@ -380,9 +531,10 @@ fn parse_function<'a>(
             ),
         );
     }
-    // The body is read even when the signature is wrong, so its mistakes show in the same build.
-    let body = parse_body(function, errors);
-    let (Some(shape), Some((lets, result))) = (shape, body) else {
+    let Some(shape) = shape else {
+        // The body is still read for the mistakes that need no signature, so they show in the
+        // same build.
+        scan_body(&function.block, errors);
         return None;
     };
     if !ok || errors.count() != before {
@@ -394,78 +546,27 @@ fn parse_function<'a>(
         v,
         t,
         shape,
-        lets,
-        result,
+        body: &function.block,
     })
 }
 
-type Body<'a> = (Vec<(&'a syn::Ident, &'a Expr)>, &'a syn::ExprArray);
-
-fn parse_body<'a>(function: &'a ImplItemFn, errors: &mut Errors) -> Option<Body<'a>> {
-    let before = errors.count();
-    let mut lets = Vec::new();
-    let mut result = None;
-    let statements = &function.block.stmts;
-    for (index, statement) in statements.iter().enumerate() {
-        let last = index + 1 == statements.len();
+/// The statements of a body that are wrong whatever the signature says.
+fn scan_body(block: &syn::Block, errors: &mut Errors) {
+    for statement in &block.stmts {
         match statement {
-            Stmt::Local(local) => {
-                refuse_inner_cfg(&local.attrs, "a `let`", errors);
-                let ident = match &local.pat {
-                    Pat::Ident(p) if p.by_ref.is_none() && p.mutability.is_none() => Some(&p.ident),
-                    Pat::Type(typed) => match &*typed.pat {
-                        Pat::Ident(p) if is_f64(&typed.ty) && p.mutability.is_none() => Some(&p.ident),
-                        _ => None,
-                    },
-                    _ => None,
-                };
-                let Some(ident) = ident else {
-                    errors.error_spanned_by(
-                        &local.pat,
-                        "a `let` in a model binds one immutable `f64` name: `let x = ..;`",
-                    );
-                    continue;
-                };
-                match &local.init {
-                    Some(init) if init.diverge.is_none() => lets.push((ident, &*init.expr)),
-                    _ => errors.error_spanned_by(local, "a `let` in a model needs a value: `let x = ..;`"),
-                }
-            }
-            Stmt::Expr(Expr::Array(array), None) if last => {
-                refuse_inner_cfg(&array.attrs, "the result", errors);
-                result = Some(array)
-            }
-            Stmt::Expr(Expr::Return(ret), _) => {
-                errors.error_spanned_by(ret, "write the result as the final array expression, without `return`")
-            }
-            Stmt::Expr(expr, None) if last => errors.error_spanned_by(
-                expr,
-                "a model function ends with an array literal `[e1, e2, ..]`, one entry per component",
+            syn::Stmt::Expr(Expr::Return(ret), _) => errors.error_spanned_by(
+                ret,
+                "write the result as the final array expression, without `return`",
             ),
-            Stmt::Expr(expr, _) => errors.error_spanned_by(
-                expr,
-                "only `let` bindings and a final array literal may stand in a model function",
-            ),
-            Stmt::Macro(mac) => errors.error_spanned_by(
+            syn::Stmt::Macro(mac) => errors.error_spanned_by(
                 mac,
                 "macros are not supported in model functions: the body must be plain expressions the macro can differentiate",
             ),
-            Stmt::Item(item) => errors.error_spanned_by(
+            syn::Stmt::Item(item) => errors.error_spanned_by(
                 item,
-                "items are not supported in model functions; define helpers outside the #[constrained_system] impl",
+                "items are not supported in model functions; put consts and helper methods in the impl itself",
             ),
-        }
-    }
-    match result {
-        Some(result) => Some((lets, result)),
-        None => {
-            if errors.count() == before {
-                errors.error_spanned_by(
-                    &function.block,
-                    "a model function ends with an array literal `[e1, e2, ..]`, one entry per component",
-                );
-            }
-            None
+            _ => {}
         }
     }
 }
@@ -521,45 +622,35 @@ fn is_f64(ty: &Type) -> bool {
     matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
 }
 
-/// `[f64; N]` with a literal `N`.
-fn array_len(ty: &Type) -> Option<(usize, &Expr)> {
+/// `[f64; N]` with `N` known at expansion time.
+fn array_len<'t>(ty: &'t Type, consts: &Consts) -> Option<(usize, &'t Expr)> {
     let Type::Array(array) = ty else { return None };
     if !is_f64(&array.elem) {
         return None;
     }
-    literal_len(&array.len)
+    known_len(&array.len, consts)
 }
 
-/// `[[f64; N]; N]` with literal, equal `N`s.
-fn matrix_len(ty: &Type) -> Option<(usize, &Expr)> {
+/// `[[f64; N]; N]` with equal `N`s known at expansion time.
+fn matrix_len<'t>(ty: &'t Type, consts: &Consts) -> Option<(usize, &'t Expr)> {
     let Type::Array(outer) = ty else { return None };
-    let (inner, _) = array_len(&outer.elem)?;
-    let (rows, rows_expr) = literal_len(&outer.len)?;
+    let (inner, _) = array_len(&outer.elem, consts)?;
+    let (rows, rows_expr) = known_len(&outer.len, consts)?;
     (inner == rows).then_some((rows, rows_expr))
 }
 
-/// The most coordinates or constraints a model may have: the generated Jacobians are dense
-/// `N × N` code, and larger sizes would only exhaust the compiler.
+/// The most coordinates or constraints a model may have.
 pub const MAX_SIZE: usize = 1024;
 
-/// An integer literal size up to [`MAX_SIZE`].
-fn literal_len(expr: &Expr) -> Option<(usize, &Expr)> {
-    match expr {
-        Expr::Lit(syn::ExprLit {
-            lit: syn::Lit::Int(int),
-            ..
-        }) => int
-            .base10_parse::<usize>()
-            .ok()
-            .filter(|&n| n <= MAX_SIZE)
-            .map(|n| (n, expr)),
-        _ => None,
-    }
+/// A size the macro can compute, up to [`MAX_SIZE`].
+fn known_len<'t>(expr: &'t Expr, consts: &Consts) -> Option<(usize, &'t Expr)> {
+    let mut ignored = Errors::new();
+    size(expr, consts, &mut ignored).map(|n| (n, expr))
 }
 
-/// Reports the sizes of a type shaped like `[f64; N]` or `[[f64; N]; N]` that are not integer
-/// literals the macro can use; whether it reported any.
-fn report_sizes(ty: &Type, errors: &mut Errors) -> bool {
+/// Reports the sizes of a type shaped like `[f64; N]` or `[[f64; N]; N]` that the macro cannot
+/// use; whether it reported any.
+fn report_sizes(ty: &Type, consts: &Consts, errors: &mut Errors) -> bool {
     let mut lens = Vec::new();
     let mut ty = ty;
     while let Type::Array(array) = ty {
@@ -569,63 +660,11 @@ fn report_sizes(ty: &Type, errors: &mut Errors) -> bool {
     if !is_f64(ty) || lens.is_empty() || lens.len() > 2 {
         return false;
     }
-    let mut reported = false;
+    let before = errors.count();
     for len in lens {
-        match len {
-            Expr::Lit(syn::ExprLit {
-                lit: syn::Lit::Int(int),
-                ..
-            }) => {
-                if !int.base10_parse::<usize>().is_ok_and(|n| n <= MAX_SIZE) {
-                    errors.error_spanned_by(
-                        len,
-                        format_args!(
-                            "at most {MAX_SIZE} coordinates or constraints: the macro generates dense N×N \
-                             Jacobians"
-                        ),
-                    );
-                    reported = true;
-                }
-            }
-            other => {
-                let shown = match other {
-                    Expr::Path(path) => path
-                        .path
-                        .segments
-                        .iter()
-                        .map(|s| s.ident.to_string())
-                        .collect::<Vec<_>>()
-                        .join("::"),
-                    _ => "this size".to_string(),
-                };
-                let shown = if shown == "this size" {
-                    shown
-                } else {
-                    format!("`{shown}`")
-                };
-                errors.error_spanned_by(
-                    other,
-                    format_args!(
-                        "array sizes must be integer literals: #[constrained_system] reads only this impl \
-                         block and cannot see the value of {shown}; write the number itself, e.g. `[f64; 3]`"
-                    ),
-                );
-                reported = true;
-            }
-        }
+        size(len, consts, errors);
     }
-    reported
-}
-
-/// The span of the `i`th returned entry.
-pub fn entry_span(function: &ModelFn<'_>, index: usize) -> proc_macro2::Span {
-    function
-        .result
-        .elems
-        .iter()
-        .nth(index)
-        .map(expr_span)
-        .unwrap_or_else(|| function.result.bracket_token.span.join())
+    errors.count() != before
 }
 
 /// The span of an expression from its first to its last token, found by walking its left and
@@ -650,7 +689,7 @@ pub fn expr_span(expr: &Expr) -> proc_macro2::Span {
             Expr::Unary(e) => &e.expr,
             Expr::Cast(e) => {
                 let span = e.ty.span();
-                return join(edge_span(first, true), span);
+                return join_spans(edge_span(first, true), span);
             }
             _ => break,
         };
@@ -662,7 +701,7 @@ pub fn expr_span(expr: &Expr) -> proc_macro2::Span {
             other => other.span(),
         };
     }
-    join(edge_span(first, true), edge_span(last, false))
+    join_spans(edge_span(first, true), edge_span(last, false))
 }
 
 /// The span of an expression's first (or last) token, for the expressions at the edges of a
@@ -686,6 +725,6 @@ fn edge_span(expr: &Expr, first: bool) -> proc_macro2::Span {
     }
 }
 
-fn join(first: proc_macro2::Span, last: proc_macro2::Span) -> proc_macro2::Span {
+pub fn join_spans(first: proc_macro2::Span, last: proc_macro2::Span) -> proc_macro2::Span {
     first.join(last).unwrap_or(first)
 }

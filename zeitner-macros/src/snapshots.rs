@@ -245,3 +245,48 @@ fn expansion_timing() {
         );
     }
 }
+
+/// The same chain written with a loop, a const size and a repeat.
+fn looped_chain_scene(n: usize) -> String {
+    format!(
+        "pub struct Chain {{ pub m: f64, pub l: f64, pub g: f64 }}
+         #[constrained_system]
+         impl Chain {{
+             const LINKS: usize = {n};
+             fn mass(&self) -> [f64; 2 * Self::LINKS] {{ [self.m; 2 * Self::LINKS] }}
+             fn force(&self) -> [f64; 2 * Self::LINKS] {{
+                 let mut f = [0.0; 2 * Self::LINKS];
+                 for i in 0..Self::LINKS {{ f[2 * i + 1] = -self.m * self.g; }}
+                 f
+             }}
+             fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {{
+                 let mut g = [0.0; Self::LINKS];
+                 g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
+                 for i in 1..Self::LINKS {{
+                     g[i] = (q[2 * i] - q[2 * i - 2]).powi(2) + (q[2 * i + 1] - q[2 * i - 1]).powi(2)
+                         - self.l * self.l;
+                 }}
+                 g
+             }}
+         }}"
+    )
+}
+
+/// The generated trait impl only, not the user's code.
+fn generated_part(expanded: &str) -> String {
+    expanded
+        .split("impl ::zeitner::__private::ConstrainedSystem")
+        .nth(1)
+        .unwrap_or("")
+        .to_string()
+}
+
+#[test]
+fn a_looped_chain_generates_the_code_of_the_written_out_one() {
+    for n in [1, 2, 5, 16] {
+        let written = generated_part(&expand_file(&chain_scene(n)));
+        let looped = generated_part(&expand_file(&looped_chain_scene(n)));
+        assert!(!written.is_empty() && !looped.contains("compile_error"), "{looped:.3000}");
+        assert_eq!(written, looped, "chain of {n}");
+    }
+}

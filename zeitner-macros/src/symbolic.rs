@@ -9,7 +9,7 @@ use zeitner_symbolic::{
 use crate::check::Sizes;
 use crate::errors::Errors;
 use crate::lower::{Lowered, VarKind, Vars};
-use crate::model::{entry_span, Model, Role, Shape};
+use crate::model::{Model, Role, Shape};
 
 /// One output array of a generated function.
 pub struct Block {
@@ -70,7 +70,7 @@ pub fn check(
                 for (j, &id) in lowered.entries.iter().enumerate() {
                     if !deps.any(graph, id, is_coordinate) {
                         errors.error_at(
-                            entry_span(function, j),
+                            lowered.spans[j],
                             "this constraint depends on no coordinate, so it cannot be enforced: a constraint restricts the positions `q`",
                         );
                     }
@@ -80,7 +80,7 @@ pub fn check(
                 for (j, &id) in lowered.entries.iter().enumerate() {
                     if !deps.any(graph, id, is_velocity) {
                         errors.error_at(
-                            entry_span(function, j),
+                            lowered.spans[j],
                             "this velocity constraint does not involve the velocities; state it in `constraints` instead",
                         );
                     }
@@ -93,7 +93,7 @@ pub fn check(
                         // Equal up to algebra: `0.1*x*y` and `y*x*0.1` are one entry.
                         if !equivalent(graph, mass[i * n + j], mass[j * n + i]) {
                             errors.error_at(
-                                entry_span(function, i),
+                                lowered.spans[i],
                                 format_args!(
                                     "the mass matrix must be symmetric: entry [{i}][{j}] differs from entry [{j}][{i}] \
                                      (compared up to the order of terms and factors, constants and expanded \
@@ -137,7 +137,7 @@ pub fn build(
             .enumerate()
             .map(|(i, &id)| Entry {
                 id,
-                span: entry_span(function, i / per_row),
+                span: lowered.spans[i / per_row],
                 role,
             })
             .collect()
