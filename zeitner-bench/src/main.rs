@@ -12,6 +12,7 @@ mod fuzz_command;
 mod hand_written;
 mod measure;
 mod peers;
+mod scaling;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
 mod stability;
@@ -56,6 +57,12 @@ enum Command {
     /// The fuzzer's worker process (started by `fuzz`).
     #[command(hide = true)]
     FuzzWorker(fuzz_command::WorkerArgs),
+    /// Chains and ladders from 8 to 256 coordinates: time per step, growth, stack needed, and
+    /// the O(n) floor; writes `docs/scaling.md` and its figure.
+    Scaling(scaling::ScalingArgs),
+    /// One short run on a thread of a given stack (started by `scaling`).
+    #[command(hide = true)]
+    ScalingProbe(scaling::ProbeArgs),
 }
 
 #[derive(clap::Args)]
@@ -705,6 +712,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Command::Stability(args) => return stability_report(args),
         Command::Fuzz(args) => return fuzz_command::fuzz(args),
         Command::FuzzWorker(args) => return fuzz_command::worker(args),
+        Command::Scaling(args) => return scaling::report(args),
+        Command::ScalingProbe(args) => return scaling::probe(args),
     };
     let wanted = |name: &str| args.scenes.is_empty() || args.scenes.iter().any(|s| s == name);
     let mut scenes = Vec::new();

@@ -1,0 +1,174 @@
+//! The scaling family, each scene a few lines whatever its size: chains of `LINKS` pendulums,
+//! and 2×`NODES` ladders of parallelograms pinned at both ends (rails of rods, rungs between
+//! them; the pinned end rungs make three constraint rows redundant).
+
+use zeitner::{constrained_system, Vector};
+
+use super::Visit;
+
+macro_rules! chain {
+    ($name:ident, $links:literal) => {
+        /// A chain of pendulums hung from the origin, coordinates (x1, y1, x2, y2, …).
+        pub struct $name {
+            pub m: f64,
+            pub l: f64,
+            pub g: f64,
+        }
+
+        #[constrained_system]
+        impl $name {
+            const LINKS: usize = $links;
+
+            fn mass(&self) -> [f64; 2 * Self::LINKS] {
+                [self.m; 2 * Self::LINKS]
+            }
+
+            fn force(&self) -> [f64; 2 * Self::LINKS] {
+                let mut f = [0.0; 2 * Self::LINKS];
+                for i in 0..Self::LINKS {
+                    f[2 * i + 1] = -self.m * self.g;
+                }
+                f
+            }
+
+            fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+                let mut g = [0.0; Self::LINKS];
+                g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
+                for i in 1..Self::LINKS {
+                    g[i] = (q[2 * i] - q[2 * i - 2]).powi(2)
+                        + (q[2 * i + 1] - q[2 * i - 1]).powi(2)
+                        - self.l * self.l;
+                }
+                g
+            }
+        }
+    };
+}
+
+macro_rules! ladder {
+    ($name:ident, $nodes:literal) => {
+        /// Bottom rail nodes `b_i` at coordinates `4i, 4i+1`, top rail nodes `t_i` at `4i+2,
+        /// 4i+3`; rods of length `l` along both rails and as rungs `b_i t_i`; `b_0`, `t_0`
+        /// pinned at `(0, 0)`, `(0, l)` and the last pair at `(span, 0)`, `(span, l)`.
+        pub struct $name {
+            pub m: f64,
+            pub l: f64,
+            pub g: f64,
+            pub span: f64,
+        }
+
+        #[constrained_system]
+        impl $name {
+            const NODES: usize = $nodes;
+
+            fn mass(&self) -> [f64; 4 * Self::NODES] {
+                [self.m; 4 * Self::NODES]
+            }
+
+            fn force(&self) -> [f64; 4 * Self::NODES] {
+                let mut f = [0.0; 4 * Self::NODES];
+                for i in 0..2 * Self::NODES {
+                    f[2 * i + 1] = -self.m * self.g;
+                }
+                f
+            }
+
+            fn constraints(&self, q: [f64; 4 * Self::NODES]) -> [f64; 3 * Self::NODES + 6] {
+                let mut g = [0.0; 3 * Self::NODES + 6];
+                for i in 0..Self::NODES - 1 {
+                    // Both rails.
+                    g[2 * i] = self.rod(q[4 * i], q[4 * i + 1], q[4 * i + 4], q[4 * i + 5]);
+                    g[2 * i + 1] = self.rod(q[4 * i + 2], q[4 * i + 3], q[4 * i + 6], q[4 * i + 7]);
+                }
+                for i in 0..Self::NODES {
+                    g[2 * Self::NODES - 2 + i] =
+                        self.rod(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
+                }
+                let pins = 3 * Self::NODES - 2;
+                let last = 4 * Self::NODES - 4;
+                g[pins] = q[0];
+                g[pins + 1] = q[1];
+                g[pins + 2] = q[2];
+                g[pins + 3] = q[3] - self.l;
+                g[pins + 4] = q[last] - self.span;
+                g[pins + 5] = q[last + 1];
+                g[pins + 6] = q[last + 2] - self.span;
+                g[pins + 7] = q[last + 3] - self.l;
+                g
+            }
+
+            fn rod(&self, xa: f64, ya: f64, xb: f64, yb: f64) -> f64 {
+                (xb - xa).powi(2) + (yb - ya).powi(2) - self.l * self.l
+            }
+        }
+    };
+}
+
+chain!(Chain4, 4);
+chain!(Chain8, 8);
+chain!(Chain16, 16);
+chain!(Chain32, 32);
+chain!(Chain64, 64);
+chain!(Chain100, 100);
+chain!(Chain128, 128);
+ladder!(Ladder4, 4);
+ladder!(Ladder8, 8);
+ladder!(Ladder16, 16);
+ladder!(Ladder32, 32);
+ladder!(Ladder64, 64);
+
+/// A chain released with every rod horizontal.
+fn horizontal_chain<const N: usize>() -> Vector<N> {
+    Vector::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 })
+}
+
+/// A ladder whose bottom rail sags in a V (rods at ±`ANGLE`, a level rod in the middle when
+/// their number is odd) with the top rail a rung above: consistent with its pins at
+/// `span = ladder_span(nodes)`.
+fn sagging_ladder<const N: usize>() -> Vector<N> {
+    let nodes = N / 4;
+    let rods = nodes - 1;
+    let mut q = Vector::<N>::zeros();
+    let (mut x, mut y) = (0.0, 0.0);
+    for i in 0..nodes {
+        q[4 * i] = x;
+        q[4 * i + 1] = y;
+        q[4 * i + 2] = x;
+        q[4 * i + 3] = y + 1.0;
+        let angle = if 2 * i + 1 < rods {
+            -ANGLE
+        } else if 2 * i + 1 == rods {
+            0.0
+        } else {
+            ANGLE
+        };
+        x += angle.cos();
+        y += angle.sin();
+    }
+    q
+}
+
+const ANGLE: f64 = 0.3;
+
+fn ladder_span(nodes: usize) -> f64 {
+    let rods = nodes - 1;
+    let level = if rods % 2 == 1 { 1.0 } else { 0.0 };
+    (rods as f64 - level) * ANGLE.cos() + level
+}
+
+/// Every scene of the family, smallest first.
+pub fn each(visit: &mut impl Visit) {
+    macro_rules! chains {
+        ($($name:ident),*) => {$(
+            visit.visit(&format!("chain-{}", $name::LINKS), "chain", &$name { m: 1.0, l: 1.0, g: 9.81 }, horizontal_chain());
+        )*};
+    }
+    macro_rules! ladders {
+        ($($name:ident),*) => {$(
+            let scene = $name { m: 1.0, l: 1.0, g: 9.81, span: ladder_span($name::NODES) };
+            visit.visit(&format!("ladder-{}", $name::NODES), "ladder", &scene, sagging_ladder());
+        )*};
+    }
+    chains!(Chain4, Chain8, Chain16, Chain32, Chain64, Chain100, Chain128);
+    ladders!(Ladder4, Ladder8, Ladder16, Ladder32, Ladder64);
+}
