@@ -5,6 +5,7 @@
 pub mod andrews;
 pub mod chain;
 pub mod knife_edge;
+pub mod ladder;
 pub mod pendulum;
 pub mod reference;
 pub mod steam_generator;

@@ -109,7 +109,7 @@ impl Env {
         }
     }
 
-    /// ` (with i = 3, j = 0)` when loops are running.
+    /// ` with i = 3, j = 0` when loops are running.
     fn loop_context(&self) -> String {
         if self.loops.is_empty() {
             return String::new();
@@ -119,7 +119,7 @@ impl Env {
             .iter()
             .map(|(name, value)| format!("{name} = {value}"))
             .collect();
-        format!(" (with {})", indices.join(", "))
+        format!(" with {}", indices.join(", "))
     }
 }
 
@@ -249,6 +249,35 @@ impl Lowerer<'_> {
 
     fn local(&mut self, scope: &mut Scope, local: &syn::Local) {
         crate::configurations::refuse_inner_cfg(&local.attrs, "a `let`", self.errors);
+        // `let (a, b) = (x, y);`: one binding per element.
+        if let (syn::Pat::Tuple(names), Some(init)) = (&local.pat, &local.init) {
+            if let Expr::Tuple(values) = &*init.expr {
+                if names.elems.len() == values.elems.len() && init.diverge.is_none() {
+                    let mut bound = Vec::new();
+                    for (name, value) in names.elems.iter().zip(&values.elems) {
+                        let ident = match name {
+                            syn::Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
+                                Some((&p.ident, p.mutability.is_some()))
+                            }
+                            syn::Pat::Wild(_) => None,
+                            other => {
+                                self.errors.error_spanned_by(other, "expected a name or `_`");
+                                return;
+                            }
+                        };
+                        // Every element is evaluated before any name is bound, as in Rust.
+                        let value = self.value(scope, value);
+                        bound.push((ident, value));
+                    }
+                    for (ident, value) in bound {
+                        if let (Some((ident, mutable)), Some(value)) = (ident, value) {
+                            scope.bind(ident.to_string(), value, mutable);
+                        }
+                    }
+                    return;
+                }
+            }
+        }
         let pattern = match &local.pat {
             syn::Pat::Type(typed) => &*typed.pat,
             other => other,
@@ -283,6 +312,25 @@ impl Lowerer<'_> {
 
     /// `target = value` or `target op= value`, `target` a `let mut` name or an element of one.
     fn assign(&mut self, scope: &mut Scope, target: &Expr, op: Option<char>, right: &Expr) {
+        // `row += 3` on an integer `let mut`: integer arithmetic at expansion time.
+        if let (Some(op), Expr::Path(path)) = (op, target) {
+            let name = path.path.get_ident().map(|i| i.to_string());
+            if let Some(Value::Int(old)) = name.as_deref().and_then(|n| scope.get(n)) {
+                let old = *old;
+                let Some(step) = self.int(scope, right) else { return };
+                let new = match op {
+                    '+' => old.checked_add(step),
+                    '-' => old.checked_sub(step),
+                    '*' => old.checked_mul(step),
+                    _ => old.checked_div(step),
+                };
+                let Some(new) = new else {
+                    self.errors.error_spanned_by(right, "this integer assignment overflows or divides by zero");
+                    return;
+                };
+                return self.assign_value(scope, target, Value::Int(new));
+            }
+        }
         let value = match op {
             None => self.value(scope, right),
             Some(_) => self
@@ -401,6 +449,27 @@ impl Lowerer<'_> {
             place = &mut elements[*position as usize];
         }
         *place = Value::Scalar(combined, span);
+    }
+
+    /// `name = value` for a value already computed.
+    fn assign_value(&mut self, scope: &mut Scope, target: &Expr, value: Value) {
+        let Expr::Path(path) = target else { return };
+        let Some(name) = path.path.get_ident() else { return };
+        let Some(slot) = scope
+            .names
+            .get_mut(&name.to_string())
+            .and_then(|slots| slots.last_mut())
+        else {
+            return;
+        };
+        if !slot.mutable {
+            self.errors.error_spanned_by(
+                name,
+                format_args!("`{name}` is not mutable: declare it `let mut {name} = ..;`"),
+            );
+            return;
+        }
+        slot.value = value;
     }
 
     fn for_loop(&mut self, scope: &mut Scope, for_loop: &syn::ExprForLoop) {
