@@ -79,3 +79,36 @@ fn let_chain(n: usize) -> String {
 fn a_chain_of_2000_lets() {
     expands_on_a_small_stack("lets", let_chain(2000));
 }
+
+#[test]
+fn a_loop_of_5000_turns_accumulating_one_sum() {
+    let lets = "let mut s = x; for i in 0..5000 { s = (s + y) * 0.5 + (i as f64) * 1e-6; }";
+    expands_on_a_small_stack("loop", model(lets, "s * x - 1.0"));
+}
+
+#[test]
+fn deep_parentheses_in_a_loop_mean_each_turn_s_index() {
+    // An outlined part read in every turn of a loop is read afresh each time.
+    let entry = format!("{}q[i]{}", "(".repeat(40), ")".repeat(40));
+    let source = format!(
+        "impl S {{
+            fn mass(&self) -> [f64; 3] {{ [self.m; 3] }}
+            fn force(&self) -> [f64; 3] {{ [0.0, -self.m, 0.0] }}
+            fn constraints(&self, q: [f64; 3]) -> [f64; 1] {{
+                let mut s = 0.0;
+                for i in 0..3 {{ s += {entry} * {entry}; }}
+                [s - 1.0]
+            }}
+        }}"
+    );
+    let item = TokenStream::from_str(&source).unwrap();
+    let expanded = crate::expand::constrained_system(TokenStream::new(), item).to_string();
+    assert!(!expanded.contains("compile_error"), "{expanded:.2000}");
+    // All three coordinates reach the Jacobian.
+    for i in 0..3 {
+        assert!(
+            expanded.contains(&format!("g [(0 , {i})]")),
+            "{i}: {expanded:.3000}"
+        );
+    }
+}

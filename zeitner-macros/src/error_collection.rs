@@ -280,3 +280,60 @@ fn cfg_inside_a_model_function_is_refused() {
         &["#[cfg] on an argument cannot be honoured", "#[cfg] on an expression cannot be honoured"],
     );
 }
+
+#[test]
+fn a_huge_loop_is_refused_not_unrolled() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+                let mut s = 0.0;
+                for i in 0..1000000000 { s += x; }
+                [s + y]
+            }
+        }",
+        &["the model unrolls to more than"],
+    );
+}
+
+#[test]
+fn nested_helpers_that_multiply_are_stopped_by_the_budget() {
+    // Each helper calls the next twice: 2^40 calls if nothing stopped them.
+    let mut helpers = String::new();
+    for k in 0..40 {
+        helpers.push_str(&format!(
+            "fn h{k}(&self, x: f64) -> f64 {{ self.h{}(x) + self.h{}(x) }}\n",
+            k + 1,
+            k + 1
+        ));
+    }
+    helpers.push_str("fn h40(&self, x: f64) -> f64 { x }\n");
+    let source = format!(
+        "impl S {{
+            {helpers}
+            fn mass(&self) -> [f64; 2] {{ [self.m, self.m] }}
+            fn force(&self) -> [f64; 2] {{ [0.0, -self.m] }}
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {{ [self.h0(x) + y] }}
+        }}"
+    );
+    let found = messages(&source);
+    assert!(
+        found
+            .iter()
+            .any(|m| m.contains("the model unrolls to more than")),
+        "{found:#?}"
+    );
+}
+
+#[test]
+fn more_rows_than_coordinates_are_accepted() {
+    assert_reports(
+        "impl S {
+            fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+            fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+            fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 3] { [x, y, x + y] }
+        }",
+        &[],
+    );
+}

@@ -4,8 +4,9 @@
 //!
 //! Stages, one module each: `outline` (deep parentheses taken out before syn reads them) →
 //! `configurations` (one model per combination of `#[cfg]` model functions) → `model` (the
-//! parsed impl, spans kept) → `check` (sizes) → `lower` (expressions into the symbolic graph,
-//! every unsupported construct reported) → `symbolic` (derivatives, simplification, shared
+//! parsed impl, spans kept; `consts` evaluates sizes) → `check` (sizes) → `lower` (statements
+//! unrolled by `unroll`, helpers inlined, expressions into the symbolic graph, every unsupported
+//! construct reported) → `symbolic` (derivatives, simplification, shared
 //! subexpressions) → `expand` (tokens). No stage recurses as deep as sums, products, parentheses
 //! or `let` chains nest (see `deep_inputs`).
 //! The symbolic engine itself is the `zeitner-symbolic` crate, free of syn.
@@ -28,9 +29,11 @@ use proc_macro::TokenStream;
 ///
 /// Sign convention: `M(q,t) q'' = F(q, q', t) - Gᵀλ` with `G = ∂g/∂q` for position-level rows
 /// and `G = ∂g/∂q'` for velocity-level rows. The user's methods stay as written and callable.
-/// The grammar is in the README: `let` bindings and a final array literal, `+ - * /`, f64
-/// methods, `self.field`, constants, `if`/`else` on time and parameters, opaque
-/// `self.method(t)` calls.
+/// The grammar is in the README: `let` bindings and a final array, `+ - * /`, f64 methods,
+/// `self.field`, constants, `if`/`else` on time and parameters, opaque `self.method(t)` calls;
+/// for many bodies, `for` loops over ranges known at expansion time, `let mut` arrays filled
+/// by index, `[e; N]` repeats, sizes from the impl's own `const`s, and helper methods of the
+/// impl, inlined and differentiated.
 ///
 /// ```
 /// use zeitner::{constrained_system, ConstrainedSystem, Vector};

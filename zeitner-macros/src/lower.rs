@@ -10,8 +10,8 @@ use syn::{BinOp, Expr, UnOp};
 use zeitner_symbolic::{Binary, Compare, CondId, Dependencies, Graph, Id, Unary};
 
 use crate::configurations::refuse_inner_cfg;
-use crate::errors::Errors;
 use crate::consts::Consts;
+use crate::errors::Errors;
 use crate::model::{ArrayArg, ArrayBinding, Helper, ModelFn, Role};
 use crate::outline::Outlines;
 
@@ -96,8 +96,8 @@ pub struct Lowered {
 #[path = "unroll.rs"]
 mod unroll;
 
-pub use unroll::{Env, BUDGET};
 use unroll::Value;
+pub use unroll::{Env, BUDGET};
 
 pub struct Lowerer<'g> {
     pub graph: &'g mut Graph,

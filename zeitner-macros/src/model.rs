@@ -227,7 +227,11 @@ fn close(a: &str, b: &str) -> bool {
         let mut current = vec![i + 1];
         for (j, cb) in b.iter().enumerate() {
             let cost = usize::from(ca != cb);
-            current.push((previous[j] + cost).min(previous[j + 1] + 1).min(current[j] + 1));
+            current.push(
+                (previous[j] + cost)
+                    .min(previous[j + 1] + 1)
+                    .min(current[j] + 1),
+            );
         }
         previous = current;
     }
@@ -258,7 +262,10 @@ fn parse_helper<'a>(
         Some(FnArg::Receiver(receiver))
             if receiver.reference.is_some() && receiver.mutability.is_none() => {}
         Some(other) => {
-            errors.error_spanned_by(other, format_args!("the first argument must be `&self`: {hint}"));
+            errors.error_spanned_by(
+                other,
+                format_args!("the first argument must be `&self`: {hint}"),
+            );
             return None;
         }
         None => {
@@ -291,10 +298,8 @@ fn parse_helper<'a>(
                 params.push((Some(&p.ident), kind))
             }
             Pat::Wild(_) => params.push((None, kind)),
-            other => errors.error_spanned_by(
-                other,
-                "a helper's arguments are plain names: `a: [f64; 2]`",
-            ),
+            other => errors
+                .error_spanned_by(other, "a helper's arguments are plain names: `a: [f64; 2]`"),
         }
     }
     let returns = match &sig.output {

@@ -219,7 +219,12 @@ fn expansion_timing() {
         let scenes = [
             ("chain, written out", chain_scene(n), 2 * n, n),
             ("chain, loops", looped_chain_scene(n), 2 * n, n),
-            ("pinned ladder, loops", ladder_scene(n), 4 * (n + 1), 4 * n + 5),
+            (
+                "pinned ladder, loops",
+                ladder_scene(n),
+                4 * (n + 1),
+                4 * n + 5,
+            ),
         ];
         for (name, source, coordinates, rows) in scenes {
             let file = syn::parse_file(&source).unwrap();
@@ -235,8 +240,7 @@ fn expansion_timing() {
                 })
                 .unwrap();
             let start = std::time::Instant::now();
-            let expanded =
-                crate::expand::constrained_system(proc_macro2::TokenStream::new(), item);
+            let expanded = crate::expand::constrained_system(proc_macro2::TokenStream::new(), item);
             let elapsed = start.elapsed();
             let text = expanded.to_string();
             assert!(!text.contains("compile_error"), "{text:.2000}");
@@ -256,7 +260,10 @@ fn ladder_scene(bays: usize) -> String {
     )
     .unwrap();
     let start = source.find("pub struct PinnedLadder8").unwrap();
-    source[start..].replace("const BAYS: usize = 8;", &format!("const BAYS: usize = {bays};"))
+    source[start..].replace(
+        "const BAYS: usize = 8;",
+        &format!("const BAYS: usize = {bays};"),
+    )
 }
 
 /// The same chain written with a loop, a const size and a repeat.
@@ -299,7 +306,10 @@ fn a_looped_chain_generates_the_code_of_the_written_out_one() {
     for n in [1, 2, 5, 16] {
         let written = generated_part(&expand_file(&chain_scene(n)));
         let looped = generated_part(&expand_file(&looped_chain_scene(n)));
-        assert!(!written.is_empty() && !looped.contains("compile_error"), "{looped:.3000}");
+        assert!(
+            !written.is_empty() && !looped.contains("compile_error"),
+            "{looped:.3000}"
+        );
         assert_eq!(written, looped, "chain of {n}");
     }
 }

@@ -272,7 +272,11 @@ pub fn build(
     let mut jacobian_columns: Vec<Vec<(usize, Id)>> = vec![Vec::new(); n];
     for (j, row) in constraints.iter().enumerate() {
         let (by_q, by_v) = state_of(&mut deps, derive.graph, row.id);
-        let columns = if j < r { by_q.clone() } else { union(&by_q, &by_v) };
+        let columns = if j < r {
+            by_q.clone()
+        } else {
+            union(&by_q, &by_v)
+        };
         for i in columns {
             let dq = if by_q.binary_search(&i).is_ok() {
                 let dq = derive.by(&mut d_dq[i], row.id, row.span, row.role);
@@ -295,10 +299,7 @@ pub fn build(
             }
         }
     }
-    functions.push((
-        "constraint_jacobian",
-        vec![matrix("g", z, n, jacobian)],
-    ));
+    functions.push(("constraint_jacobian", vec![matrix("g", z, n, jacobian)]));
     if k > 0 {
         functions.push((
             "constraint_position_partials",

@@ -15,12 +15,12 @@ use zeitner_symbolic::Id;
 
 use super::{Lowerer, Scope};
 use crate::consts::{self, Local};
-use crate::model::{expr_span, ModelFn, Param, Shape};
 use crate::model::Role;
+use crate::model::{expr_span, ModelFn, Param, Shape};
 
 /// Statements, loop turns and array elements unrolled per expansion before the macro gives up:
 /// far more than a model of a few thousand coordinates needs, far less than a hang.
-pub const BUDGET: usize = 4_000_000;
+pub const BUDGET: usize = 1_000_000;
 
 pub const UNSUPPORTED_LOOP: &str =
     "`while` and `loop` are not supported in a model: the macro unrolls loops at expansion time, so \
@@ -135,12 +135,12 @@ fn compound(op: &BinOp) -> Option<char> {
 }
 
 impl Lowerer<'_> {
-    /// Spends one step of the budget; `false` (reported once, at `at`) when it is gone.
+    /// Spends `steps` of the budget; `false` (reported once, at `at`) when they are not there.
     fn spend(&mut self, steps: usize, at: &dyn ToTokens) -> bool {
         if self.budget == 0 {
             return false;
         }
-        if steps > self.budget {
+        if steps >= self.budget {
             self.budget = 0;
             self.errors.error_spanned_by(
                 at,
@@ -261,7 +261,8 @@ impl Lowerer<'_> {
                             }
                             syn::Pat::Wild(_) => None,
                             other => {
-                                self.errors.error_spanned_by(other, "expected a name or `_`");
+                                self.errors
+                                    .error_spanned_by(other, "expected a name or `_`");
                                 return;
                             }
                         };
@@ -317,7 +318,9 @@ impl Lowerer<'_> {
             let name = path.path.get_ident().map(|i| i.to_string());
             if let Some(Value::Int(old)) = name.as_deref().and_then(|n| scope.get(n)) {
                 let old = *old;
-                let Some(step) = self.int(scope, right) else { return };
+                let Some(step) = self.int(scope, right) else {
+                    return;
+                };
                 let new = match op {
                     '+' => old.checked_add(step),
                     '-' => old.checked_sub(step),
@@ -325,7 +328,10 @@ impl Lowerer<'_> {
                     _ => old.checked_div(step),
                 };
                 let Some(new) = new else {
-                    self.errors.error_spanned_by(right, "this integer assignment overflows or divides by zero");
+                    self.errors.error_spanned_by(
+                        right,
+                        "this integer assignment overflows or divides by zero",
+                    );
                     return;
                 };
                 return self.assign_value(scope, target, Value::Int(new));
@@ -369,7 +375,9 @@ impl Lowerer<'_> {
         let Some(slot) = scope.names.get_mut(&key).and_then(|slots| slots.last_mut()) else {
             self.errors.error_spanned_by(
                 name,
-                format_args!("unknown variable `{key}`: declare it first, e.g. `let mut {key} = [0.0; N];`"),
+                format_args!(
+                    "unknown variable `{key}`: declare it first, e.g. `let mut {key} = [0.0; N];`"
+                ),
             );
             return;
         };
@@ -445,7 +453,9 @@ impl Lowerer<'_> {
             .expect("found above")
             .value;
         for position in &positions {
-            let Value::Array(elements) = place else { return };
+            let Value::Array(elements) = place else {
+                return;
+            };
             place = &mut elements[*position as usize];
         }
         *place = Value::Scalar(combined, span);
@@ -454,7 +464,9 @@ impl Lowerer<'_> {
     /// `name = value` for a value already computed.
     fn assign_value(&mut self, scope: &mut Scope, target: &Expr, value: Value) {
         let Expr::Path(path) = target else { return };
-        let Some(name) = path.path.get_ident() else { return };
+        let Some(name) = path.path.get_ident() else {
+            return;
+        };
         let Some(slot) = scope
             .names
             .get_mut(&name.to_string())
@@ -474,10 +486,13 @@ impl Lowerer<'_> {
 
     fn for_loop(&mut self, scope: &mut Scope, for_loop: &syn::ExprForLoop) {
         let name = match &*for_loop.pat {
-            syn::Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => Some(p.ident.to_string()),
+            syn::Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
+                Some(p.ident.to_string())
+            }
             syn::Pat::Wild(_) => None,
             other => {
-                self.errors.error_spanned_by(other, "a loop index is one name: `for i in 0..N`");
+                self.errors
+                    .error_spanned_by(other, "a loop index is one name: `for i in 0..N`");
                 return;
             }
         };
@@ -615,7 +630,8 @@ impl Lowerer<'_> {
                 let element = self.value(scope, &repeat.expr);
                 let (count, element) = (count?, element?);
                 let Ok(count) = usize::try_from(count) else {
-                    self.errors.error_spanned_by(&repeat.len, "an array's length is not negative");
+                    self.errors
+                        .error_spanned_by(&repeat.len, "an array's length is not negative");
                     return None;
                 };
                 if !self.spend(count, &repeat.len) {
@@ -627,9 +643,13 @@ impl Lowerer<'_> {
                 };
                 Some(Value::Array(vec![element; count]))
             }
-            Expr::Path(p) if p.path.get_ident().is_some_and(|i| {
-                matches!(scope.get(&i.to_string()), Some(Value::Array(_) | Value::Int(_)))
-            }) =>
+            Expr::Path(p)
+                if p.path.get_ident().is_some_and(|i| {
+                    matches!(
+                        scope.get(&i.to_string()),
+                        Some(Value::Array(_) | Value::Int(_))
+                    )
+                }) =>
             {
                 let name = p.path.get_ident().expect("checked").to_string();
                 scope.get(&name).cloned()
@@ -729,7 +749,10 @@ impl Lowerer<'_> {
                 );
                 return None;
             };
-            match usize::try_from(*position).ok().and_then(|p| elements.get(p)) {
+            match usize::try_from(*position)
+                .ok()
+                .and_then(|p| elements.get(p))
+            {
                 Some(element) => current = element,
                 None => {
                     let message = out_of_bounds(*position, &array, elements.len(), index, &context);
@@ -767,12 +790,20 @@ impl Lowerer<'_> {
                 lit: syn::Lit::Bool(_),
                 ..
             }) => true,
-            Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => self.looks_integer_cond(scope, &u.expr),
+            Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
+                self.looks_integer_cond(scope, &u.expr)
+            }
             Expr::Binary(b) => match b.op {
                 BinOp::And(_) | BinOp::Or(_) => {
-                    self.looks_integer_cond(scope, &b.left) && self.looks_integer_cond(scope, &b.right)
+                    self.looks_integer_cond(scope, &b.left)
+                        && self.looks_integer_cond(scope, &b.right)
                 }
-                BinOp::Lt(_) | BinOp::Le(_) | BinOp::Gt(_) | BinOp::Ge(_) | BinOp::Eq(_) | BinOp::Ne(_) => {
+                BinOp::Lt(_)
+                | BinOp::Le(_)
+                | BinOp::Gt(_)
+                | BinOp::Ge(_)
+                | BinOp::Eq(_)
+                | BinOp::Ne(_) => {
                     self.looks_integer(scope, &b.left) && self.looks_integer(scope, &b.right)
                 }
                 _ => false,
@@ -790,8 +821,12 @@ impl Lowerer<'_> {
             }) => Some(b.value),
             Expr::Unary(u) => self.int_cond(scope, &u.expr).map(|b| !b),
             Expr::Binary(b) => match b.op {
-                BinOp::And(_) => Some(self.int_cond(scope, &b.left)? && self.int_cond(scope, &b.right)?),
-                BinOp::Or(_) => Some(self.int_cond(scope, &b.left)? || self.int_cond(scope, &b.right)?),
+                BinOp::And(_) => {
+                    Some(self.int_cond(scope, &b.left)? && self.int_cond(scope, &b.right)?)
+                }
+                BinOp::Or(_) => {
+                    Some(self.int_cond(scope, &b.left)? || self.int_cond(scope, &b.right)?)
+                }
                 op => {
                     let (l, r) = (self.int(scope, &b.left), self.int(scope, &b.right));
                     let (l, r) = (l?, r?);
@@ -893,8 +928,13 @@ impl Lowerer<'_> {
         self.helper_stack.pop();
         let (value, last) = result?;
         match (helper.returns, value) {
-            (Param::Scalar, Value::Scalar(id, _)) => Some(Value::Scalar(id, expr_span_of_call(call))),
-            (Param::Scalar, Value::Int(v)) => Some(Value::Scalar(self.graph.num(v as f64), expr_span_of_call(call))),
+            (Param::Scalar, Value::Scalar(id, _)) => {
+                Some(Value::Scalar(id, expr_span_of_call(call)))
+            }
+            (Param::Scalar, Value::Int(v)) => Some(Value::Scalar(
+                self.graph.num(v as f64),
+                expr_span_of_call(call),
+            )),
             (Param::Array(k), Value::Array(elements)) if elements.len() == k => {
                 Some(Value::Array(elements))
             }
@@ -957,7 +997,9 @@ impl Lowerer<'_> {
                     let Some((id, span)) = scalar(self, element) else {
                         self.errors.error_spanned_by(
                             result,
-                            format_args!("`{owner}` returns numbers, one per component, not arrays"),
+                            format_args!(
+                                "`{owner}` returns numbers, one per component, not arrays"
+                            ),
                         );
                         return None;
                     };
@@ -988,7 +1030,8 @@ impl Lowerer<'_> {
                     let mut row_span = None;
                     for entry in entries {
                         let Some((id, span)) = scalar(self, entry) else {
-                            self.errors.error_spanned_by(blame, "a mass matrix entry is a number");
+                            self.errors
+                                .error_spanned_by(blame, "a mass matrix entry is a number");
                             return None;
                         };
                         row_span.get_or_insert(span);
@@ -1011,8 +1054,10 @@ fn expr_span_of_call(call: &syn::ExprMethodCall) -> Span {
 
 /// Expressions that are statements even without a `;` at the end of a block.
 fn is_statement(expr: &Expr) -> bool {
-    matches!(expr, Expr::ForLoop(_) | Expr::While(_) | Expr::Loop(_) | Expr::Assign(_))
-        || matches!(expr, Expr::Binary(b) if compound(&b.op).is_some())
+    matches!(
+        expr,
+        Expr::ForLoop(_) | Expr::While(_) | Expr::Loop(_) | Expr::Assign(_)
+    ) || matches!(expr, Expr::Binary(b) if compound(&b.op).is_some())
 }
 
 /// The head of a `while` or `loop`, for the message.
