@@ -270,7 +270,8 @@ impl fmt::Display for StepError {
             StepError::RankDeficientConstraints { t, dependent_rows } => write!(
                 f,
                 "the constraint Jacobian is rank-deficient at t = {t}: {dependent_rows} depend on \
-                 the others; remove redundant constraints, or avoid the singular configuration"
+                 the others; remove redundant constraints (or run them with `SparseSimulator`, \
+                 which takes redundant but consistent rows), or avoid the singular configuration"
             ),
             StepError::MassNotPositiveDefinite { t } => write!(
                 f,

@@ -42,7 +42,10 @@ const LARGEST_STEP: f64 = 1e300;
 /// What it runs: the explicit inner methods (`Rk4`, `DormandPrince54`), constant multipliers,
 /// and Newton on them with the paper's sensitivity `Δq = -τ²/2 M⁻¹GᵀΔp` (`Δq' = -τ M⁻¹GᵀΔp` for
 /// velocity-level rows) solved with `G M⁻¹Gᵀ` of the step start; a diagonal mass. Other options
-/// are refused with [`InvalidOption::NotForSparseSimulator`].
+/// are refused with [`InvalidOption::NotForSparseSimulator`]. Every Newton update is followed by
+/// another integration (`accept_linearised_update` does not apply): the paper's sensitivity
+/// misses `G` turning over the step, which a linear correction would leave in the velocities
+/// (measured on the pendulum at 1 ms steps: an error of 2e-8 after 1 s instead of 8e-12).
 pub struct SparseSimulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     system: &'s S,
     structure: Structure,
