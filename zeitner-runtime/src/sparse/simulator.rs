@@ -723,7 +723,8 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     match options.multipliers {
         MultiplierModel::Automatic | MultiplierModel::Constant => Ok(()),
-        _ => refuse("multipliers that vary over a step"),
+        #[cfg(feature = "quadratic-multipliers")]
+        MultiplierModel::Quadratic => refuse("multipliers that vary over a step"),
     }
 }
 
