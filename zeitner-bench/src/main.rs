@@ -1043,7 +1043,9 @@ fn chain_scaling(
     let mut series = Vec::new();
     let mut table = String::from(
         "## Scaling: chains of pendulums\n\n![time per step against coordinates](figures/work_precision_chain_scaling.png)\n\n\
-         1 s of 1 ms steps from the horizontal; CPU time per step, median of the timed runs.\n\n\
+         1 s of 1 ms steps from the horizontal; CPU time per step, median of the timed runs; the dense `Simulator` on small chains. \
+         For chains and ladders up to 256 coordinates with `SparseSimulator`, against an O(n) floor, see [scaling.md](scaling.md) \
+         (`cargo run --release -p zeitner-bench -- scaling`).\n\n\
          | coordinates | constraints | method | time per step |\n|---|---|---|---|\n",
     );
     for (name, options) in methods {
