@@ -266,10 +266,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         t_end: f64,
         mut observer: impl FnMut(&mut Observation<'_, 's, S, N, Z>),
     ) -> Result<StopReason, StepError> {
-        if !(t_end >= self.time()) || !t_end.is_finite() {
-            return Err(StepError::InvalidOption(InvalidOption::EndTime));
-        }
-        if t_end == self.time() {
+        if already_there(self.time(), t_end)? {
             return Ok(StopReason::StopTimeReached);
         }
         self.set_stop_time(t_end)?;
@@ -564,6 +561,15 @@ fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let jacobian = model.jacobian(&point.q, &point.v, t)?;
     let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
     Ok((last, report, jacobian))
+}
+
+/// Whether a run to `t_end` from `now` has nothing to do; an error when `t_end` is not a
+/// finite time from `now` on.
+pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
+    if !(t_end >= now) || !t_end.is_finite() {
+        return Err(StepError::InvalidOption(InvalidOption::EndTime));
+    }
+    Ok(t_end == now)
 }
 
 /// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`

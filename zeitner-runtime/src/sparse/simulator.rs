@@ -19,7 +19,7 @@ use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,
 };
 use crate::output::{Point, StepReport, StopReason};
-use crate::simulator::Statistics;
+use crate::simulator::{already_there, Statistics};
 use crate::system::{ConstrainedSystem, MassKind, Vector};
 
 /// Position projections at the start take at most this many Newton sweeps.
@@ -293,10 +293,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         t_end: f64,
         mut observer: impl FnMut(&StepReport<N, Z>),
     ) -> Result<StopReason, StepError> {
-        if !(t_end >= self.time()) || !t_end.is_finite() {
-            return Err(StepError::InvalidOption(InvalidOption::EndTime));
-        }
-        if t_end == self.time() {
+        if already_there(self.time(), t_end)? {
             return Ok(StopReason::StopTimeReached);
         }
         self.set_stop_time(t_end)?;
