@@ -162,7 +162,7 @@ pub enum InvalidOption {
     SampleTime,
     /// Given initial multipliers that are not finite.
     InitialMultipliers,
-    /// Adaptive steps need an error estimate: only `DormandPrince54` has one.
+    /// Adaptive steps need an error estimate: `DormandPrince54` and `Esdirk32` have one.
     AdaptiveNeedsErrorEstimate,
     /// [`crate::sparse::SparseSimulator`] does not run this yet.
     NotForSparseSimulator(&'static str),
@@ -200,8 +200,8 @@ impl fmt::Display for InvalidOption {
                 f.write_str("the given initial multipliers must be finite")
             }
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
-                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, or \
-                 `StepControl::Fixed` with this method",
+                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54` or \
+                 `Esdirk32`, or `StepControl::Fixed` with this method",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,

@@ -19,6 +19,24 @@ pub enum InnerMethod {
     /// steps. Uses `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
     Sdirk2,
+    /// Kværnø's ESDIRK 3(2): order 3, L-stable and stiffly accurate, with an embedded order-2
+    /// solution for adaptive steps; the stiff method. Uses `∂F/∂q`, `∂F/∂q'`; keeps its
+    /// factorised iteration matrix across stages, sweeps and steps while it converges fast.
+    /// Needs the `implicit` feature.
+    #[cfg(feature = "implicit")]
+    Esdirk32,
+}
+
+impl InnerMethod {
+    /// Whether the method has an embedded error estimate, which adaptive steps need.
+    pub fn has_error_estimate(self) -> bool {
+        match self {
+            InnerMethod::DormandPrince54 => true,
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk32 => true,
+            _ => false,
+        }
+    }
 }
 
 /// How the change of the step-end state under a change of the multipliers is obtained.
@@ -240,7 +258,7 @@ impl Options {
                 if !(positive(rtol) && positive(atol)) {
                     return refuse(InvalidOption::ErrorTolerances);
                 }
-                if self.method != InnerMethod::DormandPrince54 {
+                if !self.method.has_error_estimate() {
                     return refuse(InvalidOption::AdaptiveNeedsErrorEstimate);
                 }
                 Ok(())

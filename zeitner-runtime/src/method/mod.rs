@@ -5,9 +5,9 @@
 //! A method is a value that owns its workspace ([`Method`]); explicit Runge–Kutta methods are
 //! tableaux ([`explicit`]), the implicit one keeps its factorised iteration matrix ([`sdirk`]).
 
-pub(crate) mod explicit;
 #[cfg(feature = "implicit")]
-pub(crate) mod sdirk;
+pub(crate) mod dirk;
+pub(crate) mod explicit;
 
 use crate::error::StepError;
 use crate::model::Model;
@@ -74,7 +74,9 @@ pub(crate) enum AnyMethod<const N: usize> {
     Explicit4(explicit::Explicit<4>),
     Explicit7(explicit::Explicit<7>),
     #[cfg(feature = "implicit")]
-    Sdirk2(sdirk::Sdirk2<N>),
+    Dirk2(dirk::Dirk<2, N>),
+    #[cfg(feature = "implicit")]
+    Dirk4(dirk::Dirk<4, N>),
 }
 
 impl<const N: usize> AnyMethod<N> {
@@ -87,7 +89,9 @@ impl<const N: usize> AnyMethod<N> {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
             }
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => AnyMethod::Sdirk2(sdirk::Sdirk2::new()),
+            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(&dirk::SDIRK2)),
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(&dirk::KVAERNO3)),
         }
     }
 }
@@ -98,7 +102,9 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Explicit4(m) => Method::<N, Z>::order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Sdirk2(m) => Method::<N, Z>::order(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z>::order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk4(m) => Method::<N, Z>::order(m),
         }
     }
 
@@ -107,7 +113,9 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Explicit4(m) => Method::<N, Z>::embedded_order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Sdirk2(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z>::embedded_order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk4(m) => Method::<N, Z>::embedded_order(m),
         }
     }
 
@@ -124,7 +132,9 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
-            AnyMethod::Sdirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk4(m) => m.integrate(model, start, h, multipliers, sensitivity),
         }
     }
 
@@ -132,7 +142,9 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => 0,
             #[cfg(feature = "implicit")]
-            AnyMethod::Sdirk2(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z>::factorizations(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk4(m) => Method::<N, Z>::factorizations(m),
         }
     }
 }
@@ -180,13 +192,17 @@ mod tests {
         }
     }
 
-    fn methods() -> [InnerMethod; 4] {
+    fn methods() -> [InnerMethod; 5] {
         [
             InnerMethod::Rk4 { substeps: 1 },
             InnerMethod::Rk4 { substeps: 3 },
             InnerMethod::DormandPrince54,
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2,
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk32,
+            #[cfg(not(feature = "implicit"))]
+            InnerMethod::DormandPrince54,
             #[cfg(not(feature = "implicit"))]
             InnerMethod::DormandPrince54,
         ]
@@ -226,5 +242,10 @@ mod tests {
         assert_eq!(embedded(InnerMethod::Rk4 { substeps: 1 }), None);
         assert_eq!(order(InnerMethod::DormandPrince54), 5);
         assert_eq!(embedded(InnerMethod::DormandPrince54), Some(4));
+        #[cfg(feature = "implicit")]
+        {
+            assert_eq!(order(InnerMethod::Esdirk32), 3);
+            assert_eq!(embedded(InnerMethod::Esdirk32), Some(2));
+        }
     }
 }

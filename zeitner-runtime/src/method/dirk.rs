@@ -1,0 +1,336 @@
+//! Diagonally implicit Runge–Kutta methods as data: a tableau with one diagonal `γ` (an explicit
+//! first stage allowed), stiffly accurate, and one stage engine for all of them. Each implicit
+//! stage solves `v = v_known + hγ a(q_known + hγ v, v)` by a simplified Newton whose iteration
+//! matrix `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q` is kept across stages, sweeps and steps while it
+//! converges fast and refreshed when it does not.
+
+use super::{Method, Start, StepEnd};
+use crate::error::StepError;
+use crate::linalg::Lu;
+use crate::model::{Acceleration, FactorOf, Model};
+use crate::multipliers::Multipliers;
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+/// A stiffly accurate DIRK tableau with `S` stages: the step end is the last stage.
+pub(crate) struct DirkTableau<const S: usize> {
+    pub a: [[f64; S]; S],
+    pub gamma: f64,
+    /// The embedded solution's weights, if any (for the error estimate).
+    pub embedded: Option<[f64; S]>,
+    pub order: u32,
+    pub embedded_order: Option<u32>,
+}
+
+impl<const S: usize> DirkTableau<S> {
+    fn c(&self, i: usize) -> f64 {
+        self.a[i].iter().sum()
+    }
+}
+
+const ALEXANDER_GAMMA: f64 = 1.0 - core::f64::consts::FRAC_1_SQRT_2;
+
+/// Alexander's 2-stage SDIRK, order 2, L-stable, stiffly accurate (R. Alexander, SIAM J. Numer.
+/// Anal. 14 (1977), Theorem 5). No error estimate: fixed steps.
+pub(crate) const SDIRK2: DirkTableau<2> = DirkTableau {
+    a: [
+        [ALEXANDER_GAMMA, 0.0],
+        [1.0 - ALEXANDER_GAMMA, ALEXANDER_GAMMA],
+    ],
+    gamma: ALEXANDER_GAMMA,
+    embedded: None,
+    order: 2,
+    embedded_order: None,
+};
+
+/// `γ` of Kværnø's ESDIRK 3(2): the root in (0, 1/2) of `γ³ - 3γ² + 3γ/2 - 1/6 = 0`, which makes
+/// the method L-stable (the `γ` of the 3-stage L-stable SDIRK of Alexander, 1977).
+const KVAERNO_GAMMA: f64 = 0.435_866_521_508_458_999_416_019_451_193_556_8;
+/// Stage 3 (`c = 1`) is the embedded order-2 solution: `Σ b̂ c = 1/2`.
+const KVAERNO_A32: f64 = (1.0 - 2.0 * KVAERNO_GAMMA) / (4.0 * KVAERNO_GAMMA);
+const KVAERNO_A31: f64 = 1.0 - KVAERNO_GAMMA - KVAERNO_A32;
+/// Stage 4 (`c = 1`) is the order-3 solution: `Σ b c = 1/2`, `Σ b c² = 1/3` (which then gives
+/// `Σ b A c = 1/6` too).
+const KVAERNO_B2: f64 = 1.0 / (12.0 * KVAERNO_GAMMA * (1.0 - 2.0 * KVAERNO_GAMMA));
+const KVAERNO_B3: f64 = 0.5 - KVAERNO_GAMMA - 2.0 * KVAERNO_GAMMA * KVAERNO_B2;
+const KVAERNO_B1: f64 = 1.0 - KVAERNO_GAMMA - KVAERNO_B2 - KVAERNO_B3;
+
+/// Kværnø's ESDIRK 3(2) with 4 stages (A. Kværnø, BIT 44 (2004) 489–502): explicit first stage,
+/// `c = (0, 2γ, 1, 1)`, order 3, L-stable and stiffly accurate, with a stiffly accurate embedded
+/// solution of order 2 (its third stage). The coefficients follow from `γ` and the order
+/// conditions above, so that they hold to rounding.
+pub(crate) const KVAERNO3: DirkTableau<4> = DirkTableau {
+    a: [
+        [0.0; 4],
+        [KVAERNO_GAMMA, KVAERNO_GAMMA, 0.0, 0.0],
+        [KVAERNO_A31, KVAERNO_A32, KVAERNO_GAMMA, 0.0],
+        [KVAERNO_B1, KVAERNO_B2, KVAERNO_B3, KVAERNO_GAMMA],
+    ],
+    gamma: KVAERNO_GAMMA,
+    embedded: Some([KVAERNO_A31, KVAERNO_A32, KVAERNO_GAMMA, 0.0]),
+    order: 3,
+    embedded_order: Some(2),
+};
+
+/// Stage Newton sweeps before the stage counts as not converged.
+const STAGE_ITERATIONS: usize = 25;
+/// A stage that needs more sweeps than this with a kept iteration matrix refreshes it.
+const SLOW_STAGE: usize = 6;
+/// A kept iteration matrix serves steps within this ratio of the step it was formed for.
+const STEP_RATIO_KEPT: f64 = 1.25;
+
+/// The method and its workspace: the factorised iteration matrix and the step it was formed
+/// for.
+pub(crate) struct Dirk<const S: usize, const N: usize> {
+    tableau: &'static DirkTableau<S>,
+    iteration: Option<(f64, Lu<N>)>,
+    factorizations: u64,
+}
+
+/// The stages' velocities, accelerations and their sensitivities.
+struct Stages<const S: usize, const N: usize, const Z: usize, const K: usize> {
+    q: [Vector<N>; S],
+    v: [Vector<N>; S],
+    a: [Vector<N>; S],
+    dq: [[Matrix<N, Z>; K]; S],
+    dv: [[Matrix<N, Z>; K]; S],
+    da: [[Matrix<N, Z>; K]; S],
+}
+
+impl<const S: usize, const N: usize> Dirk<S, N> {
+    pub fn new(tableau: &'static DirkTableau<S>) -> Self {
+        Dirk {
+            tableau,
+            iteration: None,
+            factorizations: 0,
+        }
+    }
+
+    /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
+    fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
+        let hg = h * self.tableau.gamma;
+        let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
+        self.factorizations += 1;
+        let lu = Lu::new(matrix)?;
+        self.iteration = Some((h, lu));
+        Some(lu)
+    }
+
+    /// The kept iteration matrix if it was formed for a step near `h`.
+    fn kept(&self, h: f64) -> Option<Lu<N>> {
+        let (formed_for, lu) = self.iteration?;
+        let ratio = h / formed_for;
+        (ratio <= STEP_RATIO_KEPT && ratio >= 1.0 / STEP_RATIO_KEPT).then_some(lu)
+    }
+}
+
+impl<const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<S, N> {
+    fn order(&self) -> u32 {
+        self.tableau.order
+    }
+
+    fn embedded_order(&self) -> Option<u32> {
+        self.tableau.embedded_order
+    }
+
+    fn factorizations(&self) -> u64 {
+        self.factorizations
+    }
+
+    fn integrate<Sys: ConstrainedSystem<N, Z>, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        start: &Start<N, Z, K>,
+        h: f64,
+        multipliers: &Multipliers<Z, K>,
+        sensitivity: bool,
+    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
+        let mut stages = Stages {
+            q: [start.q; S],
+            v: [start.v; S],
+            a: [Vector::zeros(); S],
+            dq: [start.dq_dc; S],
+            dv: [start.dv_dc; S],
+            da: [[Matrix::zeros(); K]; S],
+        };
+        let stall = StepError::StageDidNotConverge {
+            t: start.t,
+            step: h,
+        };
+        for i in 0..S {
+            let c = self.tableau.c(i);
+            let (t, lambda) = (start.t + c * h, multipliers.at(c));
+            let acceleration = if self.tableau.a[i][i] == 0.0 {
+                // The explicit first stage is the step start.
+                model.acceleration(&start.q, &start.v, t, &lambda)?
+            } else {
+                self.implicit_stage(model, start, &mut stages, i, h, &lambda)?
+                    .ok_or(stall)?
+            };
+            stages.a[i] = acceleration.a;
+            if sensitivity {
+                let lambdas = (multipliers, &lambda);
+                self.stage_sensitivity(model, (start, &mut stages), (i, t, h), lambdas, &acceleration)
+                    .ok_or(stall)??;
+            }
+        }
+        Ok(self.end(&stages, h))
+    }
+}
+
+impl<const S: usize, const N: usize> Dirk<S, N> {
+    /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
+    /// when it does not converge even with a fresh iteration matrix.
+    #[allow(clippy::type_complexity)]
+    fn implicit_stage<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        start: &Start<N, Z, K>,
+        stages: &mut Stages<S, N, Z, K>,
+        i: usize,
+        h: f64,
+        lambda: &Vector<Z>,
+    ) -> Result<Option<Acceleration<FactorOf<Sys, N, Z>, N, Z>>, StepError> {
+        let (a, hg) = (&self.tableau.a, h * self.tableau.gamma);
+        let (mut q_known, mut v_known) = (start.q, start.v);
+        for j in 0..i {
+            q_known += (h * a[i][j]) * stages.v[j];
+            v_known += (h * a[i][j]) * stages.a[j];
+        }
+        let t = start.t + self.tableau.c(i) * h;
+        // Guess: the last stage's velocity, or the start's continued by its acceleration.
+        let guess = if i == 0 {
+            start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
+        } else {
+            stages.v[i - 1]
+        };
+        for fresh in [false, true] {
+            let lu = match self.kept(h).filter(|_| !fresh) {
+                Some(lu) => lu,
+                None => {
+                    let q_guess = q_known + hg * guess;
+                    let at = model.acceleration(&q_guess, &guess, t, lambda)?;
+                    let jac = model.acceleration_jacobians(&q_guess, &guess, t, lambda, &at)?;
+                    let Some(lu) = self.refresh(h, (&jac.dq, &jac.dv)) else {
+                        return Ok(None);
+                    };
+                    lu
+                }
+            };
+            let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
+            if let Some(v) = solve_stage(model, &lu, (q_known, v_known), guess, (t, hg, lambda), limit) {
+                let v = v?;
+                let q = q_known + hg * v;
+                (stages.q[i], stages.v[i]) = (q, v);
+                return model.acceleration(&q, &v, t, lambda).map(Some);
+            }
+        }
+        Ok(None)
+    }
+
+    /// The sensitivity of stage `i` to the multipliers' coefficients, from the derivative of
+    /// its converged equation `v = v_known + hγ a(q_known + hγ v, v)`: a fresh factorisation
+    /// there, which then serves as the next iteration matrix. `None` when it is singular.
+    #[allow(clippy::type_complexity)]
+    fn stage_sensitivity<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        (start, stages): (&Start<N, Z, K>, &mut Stages<S, N, Z, K>),
+        (i, t, h): (usize, f64, f64),
+        (multipliers, lambda): (&Multipliers<Z, K>, &Vector<Z>),
+        acceleration: &Acceleration<FactorOf<Sys, N, Z>, N, Z>,
+    ) -> Option<Result<(), StepError>> {
+        let (a, hg) = (&self.tableau.a, h * self.tableau.gamma);
+        let c = self.tableau.c(i);
+        let (q, v) = (stages.q[i], stages.v[i]);
+        let jac = match model.acceleration_jacobians(&q, &v, t, lambda, acceleration) {
+            Ok(jac) => jac,
+            Err(error) => return Some(Err(error)),
+        };
+        let implicit = a[i][i] != 0.0;
+        let lu = if implicit {
+            Some(self.refresh(h, (&jac.dq, &jac.dv))?)
+        } else {
+            None
+        };
+        for k in 0..K {
+            let (mut dq, mut dv) = (start.dq_dc[k], start.dv_dc[k]);
+            for j in 0..i {
+                dq += (h * a[i][j]) * stages.dv[j][k];
+                dv += (h * a[i][j]) * stages.da[j][k];
+            }
+            let w = multipliers.weight(k, c);
+            if let Some(lu) = &lu {
+                dv = lu.solve(&(dv + hg * (jac.dq * dq + w * jac.dp)));
+                dq += hg * dv;
+            }
+            stages.dq[i][k] = dq;
+            stages.dv[i][k] = dv;
+            stages.da[i][k] = jac.dq * dq + jac.dv * dv + w * jac.dp;
+        }
+        Some(Ok(()))
+    }
+
+    /// The step end (the last stage) and, with an embedded solution, the error estimate.
+    fn end<const Z: usize, const K: usize>(
+        &self,
+        stages: &Stages<S, N, Z, K>,
+        h: f64,
+    ) -> StepEnd<N, Z, K> {
+        let last = S - 1;
+        let error = self.tableau.embedded.map(|embedded| {
+            let (mut eq, mut ev) = (Vector::<N>::zeros(), Vector::<N>::zeros());
+            for j in 0..S {
+                let e = h * (self.tableau.a[last][j] - embedded[j]);
+                eq += e * stages.v[j];
+                ev += e * stages.a[j];
+            }
+            (eq, ev)
+        });
+        StepEnd {
+            q: stages.q[last],
+            v: stages.v[last],
+            dq_dc: stages.dq[last],
+            dv_dc: stages.dv[last],
+            error,
+        }
+    }
+}
+
+/// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
+/// `None` when it does not converge within them.
+#[inline]
+fn solve_stage<Sys, const N: usize, const Z: usize>(
+    model: &mut Model<'_, Sys, N, Z>,
+    lu: &Lu<N>,
+    (q_known, v_known): (Vector<N>, Vector<N>),
+    mut v: Vector<N>,
+    (t, hg, lambda): (f64, f64, &Vector<Z>),
+    limit: usize,
+) -> Option<Result<Vector<N>, StepError>>
+where
+    Sys: ConstrainedSystem<N, Z>,
+{
+    let mut last_norm = f64::INFINITY;
+    for _ in 0..limit {
+        let q = q_known + hg * v;
+        let a = match model.acceleration(&q, &v, t, lambda) {
+            Ok(acceleration) => acceleration.a,
+            Err(error) => return Some(Err(error)),
+        };
+        let delta = lu.solve(&(v - v_known - hg * a));
+        v -= delta;
+        let norm = delta.amax();
+        let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
+        // Converged; or stalled at the rounding floor, which stiff forces raise well above the
+        // velocities' own precision (k·x is rounded before it is divided back down).
+        if norm <= 1e-12 * scale || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm) {
+            return Some(Ok(v));
+        }
+        if !norm.is_finite() || norm > 1e3 * last_norm {
+            return None;
+        }
+        last_norm = norm;
+    }
+    None
+}
