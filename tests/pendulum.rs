@@ -178,3 +178,14 @@ fn convergence_orders_sdirk2() {
         [2.0, 2.0, 2.0, 1.0, 2.0],
     );
 }
+
+#[test]
+fn convergence_orders_esdirk32() {
+    assert_orders(
+        "ESDIRK3(2)",
+        InnerMethod::Esdirk32,
+        Sensitivity::Exact,
+        [100, 200],
+        [3.0, 2.0, 3.0, 1.0, 3.0],
+    );
+}
