@@ -222,5 +222,11 @@ fn esdirk_with_quadratic_multipliers_converges_at_its_order_3() {
             relative_error(end.lambda.as_slice(), &reference.lambda),
         ]
     };
-    assert_order_within("ESDIRK3(2), quadratic", (errors(100), errors(200)), 2.0, 3.0, 0.3);
+    assert_order_within(
+        "ESDIRK3(2), quadratic",
+        (errors(100), errors(200)),
+        2.0,
+        3.0,
+        0.3,
+    );
 }

@@ -6,8 +6,8 @@ mod common;
 
 use common::pendulum::Pendulum;
 use zeitner::{
-    constrained_system, InvalidOption, MultiplierModel, Options, Sensitivity, Simulator,
-    StartPolicy, StepControl, StepError, StopReason, Vector,
+    constrained_system, InnerMethod, InvalidOption, MultiplierModel, Options, Sensitivity,
+    Simulator, StartPolicy, StepControl, StepError, StopReason, Vector,
 };
 
 const PENDULUM: Pendulum = Pendulum {
@@ -245,11 +245,15 @@ impl Follower {
 }
 
 #[test]
-fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_only() {
-    let resolve = |position_rows, rows| MultiplierModel::Automatic.resolve(position_rows, rows);
+fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_or_the_stiff_method() {
+    let explicit = InnerMethod::DormandPrince54;
+    let resolve =
+        |position_rows, rows| MultiplierModel::Automatic.resolve(explicit, position_rows, rows);
     assert_eq!(resolve(1, 2), MultiplierModel::Quadratic);
     assert_eq!(resolve(0, 1), MultiplierModel::Quadratic);
     assert_eq!(resolve(2, 2), MultiplierModel::Constant);
+    let stiff = MultiplierModel::Automatic.resolve(InnerMethod::Esdirk32, 2, 2);
+    assert_eq!(stiff, MultiplierModel::Quadratic);
     // A mixed scene runs with it and keeps both kinds of rows.
     let (q, v) = (Vector::<3>::new(1.0, 0.0, 0.0), Vector::zeros());
     let mut sim = Simulator::new(&Follower, q, v, 0.0, Options::default()).unwrap();

@@ -8,5 +8,6 @@ pub mod knife_edge;
 pub mod ladder;
 pub mod pendulum;
 pub mod reference;
+pub mod spring_support;
 pub mod steam_generator;
 pub mod stiff;

@@ -2,6 +2,7 @@
 //! any tolerance the tests use.
 
 use super::pendulum::Pendulum;
+use super::spring_support::SpringSupportedPendulum;
 use super::steam_generator::SteamGenerator;
 
 /// A reference state and its multipliers at one time.
@@ -124,4 +125,80 @@ pub fn pendulum_released_horizontally(p: &Pendulum, t: f64) -> State<2, 1> {
         v: [l * w * cos, l * w * sin],
         lambda: [m * (l * w * w + g * cos) / (2.0 * l)],
     }
+}
+
+/// The spring-supported pendulum in reduced coordinates: the support `p = (x_s, y_s)` and the
+/// rod angle `θ` from the downward vertical, bob `b = p + l (sin θ, -cos θ)`. Lagrange's
+/// equations with `T = ½ m_s |p'|² + ½ m |p' + l θ' (cos θ, sin θ)|²`,
+/// `V = ½ k |p|² + m_s g y_s + m g (y_s - l cos θ)` and the damping force `-c p'`:
+///   (m_s + m) x_s'' + m l cos θ θ'' = -k x_s - c x_s' + m l θ'² sin θ,
+///   (m_s + m) y_s'' + m l sin θ θ'' = -k y_s - c y_s' - (m_s + m) g - m l θ'² cos θ,
+///   m l cos θ x_s'' + m l sin θ y_s'' + m l² θ'' = -m g l sin θ.
+/// The multiplier from the bob's equation `m b'' = (0, -m g) - 2 (b - p) λ`.
+/// RK4 with 2e-7 s steps (the support's frequency times the step is 0.02).
+pub fn spring_supported_pendulum(s: &SpringSupportedPendulum, t: f64) -> State<4, 1> {
+    let start = s.start();
+    let y0 = [
+        start[0],
+        start[1],
+        core::f64::consts::FRAC_PI_2,
+        0.0,
+        0.0,
+        0.0,
+    ];
+    let steps = (t / 2e-7).round().max(1.0) as usize;
+    let y = rk4(|_, y| spring_support_rhs(s, y), 0.0, y0, t, steps);
+    let acc = spring_support_rhs(s, &y);
+    let (sin, cos) = y[2].sin_cos();
+    let (w, dw) = (y[5], acc[5]);
+    let q = [y[0], y[1], y[0] + s.l * sin, y[1] - s.l * cos];
+    let v = [y[3], y[4], y[3] + s.l * cos * w, y[4] + s.l * sin * w];
+    let bob_acc = [
+        acc[3] + s.l * (cos * dw - sin * w * w),
+        acc[4] + s.l * (sin * dw + cos * w * w),
+    ];
+    let rod = [q[2] - q[0], q[3] - q[1]];
+    let lambda =
+        -(s.m * bob_acc[0] * rod[0] + (s.m * bob_acc[1] + s.m * s.g) * rod[1]) / (2.0 * s.l * s.l);
+    State {
+        q,
+        v,
+        lambda: [lambda],
+    }
+}
+
+/// `(x_s, y_s, θ, x_s', y_s', θ')'` of the reduced equations above.
+fn spring_support_rhs(s: &SpringSupportedPendulum, y: &[f64; 6]) -> [f64; 6] {
+    let (sin, cos) = y[2].sin_cos();
+    let (total, ml) = (s.support + s.m, s.m * s.l);
+    let w = y[5];
+    let mass = [
+        [total, 0.0, ml * cos],
+        [0.0, total, ml * sin],
+        [ml * cos, ml * sin, ml * s.l],
+    ];
+    let rhs = [
+        -s.k * y[0] - s.c * y[3] + ml * w * w * sin,
+        -s.k * y[1] - s.c * y[4] - total * s.g - ml * w * w * cos,
+        -s.m * s.g * s.l * sin,
+    ];
+    let a = solve3(mass, rhs);
+    [y[3], y[4], y[5], a[0], a[1], a[2]]
+}
+
+/// `M x = b` for a 3×3 `M` by Cramer's rule.
+fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
+    let det = |m: &[[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(&m);
+    core::array::from_fn(|col| {
+        let mut replaced = m;
+        for row in 0..3 {
+            replaced[row][col] = b[row];
+        }
+        det(&replaced) / d
+    })
 }

@@ -163,8 +163,15 @@ impl<const Z: usize> Predictor<Z> {
 /// What the Newton needs from the options.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct NewtonSettings {
-    /// `ε` for `g`; the velocity-level end condition uses `ε / min(τ, 1)`.
+    /// `ε` for `g`; the velocity-level end condition uses `ε / min(τ, 1)`, or `ε` itself with
+    /// `steady_velocity_tolerance`.
     pub tolerance: f64,
+    /// Whether the velocity-level tolerance must not grow as steps shrink: with an embedded
+    /// solution of order below 3 (ESDIRK 3(2)). What `w` is left at a step end, the next
+    /// step's multipliers undo within that step, as a polynomial whose `s²` term such an
+    /// embedded solution does not integrate exactly; left at `ε / τ`, its estimate then stays
+    /// at the size of `w` however short the step, and the steps shrank without end.
+    pub steady_velocity_tolerance: bool,
     pub max_iterations: u32,
     /// The exact sensitivity of the method's step map, or else the paper's estimate.
     pub exact: bool,
@@ -222,7 +229,11 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
     }
 
     fn hold(&self, settings: &NewtonSettings, h: f64) -> bool {
-        let velocity_tolerance = settings.tolerance / h.min(1.0);
+        let velocity_tolerance = if settings.steady_velocity_tolerance {
+            settings.tolerance
+        } else {
+            settings.tolerance / h.min(1.0)
+        };
         self.worst().0 <= settings.tolerance
             && self.values[1..]
                 .iter()
@@ -562,6 +573,7 @@ mod tests {
             first_power: 0,
         };
         let settings = NewtonSettings {
+            steady_velocity_tolerance: false,
             tolerance: 1e-12,
             max_iterations: 30,
             exact,

@@ -28,6 +28,16 @@ pub enum InnerMethod {
 }
 
 impl InnerMethod {
+    /// Whether the method is the one for stiff models (`Esdirk32`), for which the automatic
+    /// multiplier model is the quadratic one.
+    pub fn is_stiff(self) -> bool {
+        #[cfg(feature = "implicit")]
+        if self == InnerMethod::Esdirk32 {
+            return true;
+        }
+        false
+    }
+
     /// Whether the method has an embedded error estimate, which adaptive steps need.
     pub fn has_error_estimate(self) -> bool {
         match self {
@@ -73,8 +83,11 @@ pub enum VelocityProjection {
 #[non_exhaustive]
 pub enum MultiplierModel {
     /// `Quadratic` for a scene with velocity-level rows (where constant multipliers cap every
-    /// method at order 2), `Constant` otherwise; `Constant` without the `quadratic-multipliers`
-    /// feature. The default.
+    /// method at order 2) and with the stiff method `Esdirk32` (constant multipliers jump from
+    /// step to step, and a stiff part of the model answers every jump with a transient the
+    /// error estimate sees: on the spring-supported pendulum, 3 618 805 steps at rtol 1e-5
+    /// instead of 66), `Constant` otherwise; `Constant` without the `quadratic-multipliers` feature. The
+    /// default.
     Automatic,
     /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end.
     Constant,
@@ -87,14 +100,21 @@ pub enum MultiplierModel {
 }
 
 impl MultiplierModel {
-    /// The model used for a scene with `rows` constraints of which `position_rows` are
-    /// position-level: `Automatic` resolved, the others as they are.
-    pub fn resolve(self, position_rows: usize, rows: usize) -> MultiplierModel {
-        // Only the quadratic model looks at the rows.
-        let _ = (position_rows, rows);
+    /// The model used with `method` for a scene with `rows` constraints of which
+    /// `position_rows` are position-level: `Automatic` resolved, the others as they are.
+    pub fn resolve(
+        self,
+        method: InnerMethod,
+        position_rows: usize,
+        rows: usize,
+    ) -> MultiplierModel {
+        // Only the quadratic model looks at the rows and the method.
+        let _ = (method, position_rows, rows);
         match self {
             #[cfg(feature = "quadratic-multipliers")]
-            MultiplierModel::Automatic if rows > position_rows => MultiplierModel::Quadratic,
+            MultiplierModel::Automatic if rows > position_rows || method.is_stiff() => {
+                MultiplierModel::Quadratic
+            }
             MultiplierModel::Automatic => MultiplierModel::Constant,
             other => other,
         }

@@ -325,7 +325,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model.
     fn attempt(&mut self, h: f64, t_end: f64) -> Result<Attempt<N, Z>, StepError> {
-        match self.options.multipliers.resolve(S::POSITION_CONSTRAINTS, Z) {
+        let method = self.options.method;
+        match self
+            .options
+            .multipliers
+            .resolve(method, S::POSITION_CONSTRAINTS, Z)
+        {
             MultiplierModel::Automatic | MultiplierModel::Constant => {
                 let p = self.constant_guess(h)?;
                 let multipliers = Multipliers {
@@ -377,7 +382,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         guess: Multipliers<Z, K>,
     ) -> Result<Attempt<N, Z>, StepError> {
         let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
+        let embedded_order = Method::<N, Z>::embedded_order(&self.method);
         let settings = NewtonSettings {
+            steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3),
             tolerance: self.options.constraint_tolerance,
             max_iterations: self.options.max_newton_iterations,
             exact: self.options.exact(),

@@ -82,7 +82,9 @@ const STEP_RATIO_KEPT: f64 = 1.25;
 /// for.
 pub(crate) struct Dirk<const S: usize, const N: usize> {
     tableau: &'static DirkTableau<S>,
-    iteration: Option<(f64, Lu<N>)>,
+    /// The step it was formed for, its factor, and `∂a/∂q` it was formed from (for filtering
+    /// the error estimate).
+    iteration: Option<(f64, Lu<N>, Matrix<N, N>)>,
     factorizations: u64,
 }
 
@@ -111,13 +113,13 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
         self.factorizations += 1;
         let lu = Lu::new(matrix)?;
-        self.iteration = Some((h, lu));
+        self.iteration = Some((h, lu, *dq));
         Some(lu)
     }
 
     /// The kept iteration matrix if it was formed for a step near `h`.
     fn kept(&self, h: f64) -> Option<Lu<N>> {
-        let (formed_for, lu) = self.iteration?;
+        let (formed_for, lu, _) = self.iteration?;
         let ratio = h / formed_for;
         (ratio <= STEP_RATIO_KEPT && ratio >= 1.0 / STEP_RATIO_KEPT).then_some(lu)
     }
@@ -170,8 +172,14 @@ impl<const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<S, N>
             stages.a[i] = acceleration.a;
             if sensitivity {
                 let lambdas = (multipliers, &lambda);
-                self.stage_sensitivity(model, (start, &mut stages), (i, t, h), lambdas, &acceleration)
-                    .ok_or(stall)??;
+                self.stage_sensitivity(
+                    model,
+                    (start, &mut stages),
+                    (i, t, h),
+                    lambdas,
+                    &acceleration,
+                )
+                .ok_or(stall)??;
             }
         }
         Ok(self.end(&stages, h))
@@ -218,7 +226,14 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
                 }
             };
             let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
-            if let Some(v) = solve_stage(model, &lu, (q_known, v_known), guess, (t, hg, lambda), limit) {
+            if let Some(v) = solve_stage(
+                model,
+                &lu,
+                (q_known, v_known),
+                guess,
+                (t, hg, lambda),
+                limit,
+            ) {
                 let v = v?;
                 let q = q_known + hg * v;
                 (stages.q[i], stages.v[i]) = (q, v);
@@ -271,7 +286,11 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         Some(Ok(()))
     }
 
-    /// The step end (the last stage) and, with an embedded solution, the error estimate.
+    /// The step end (the last stage) and, with an embedded solution, the error estimate —
+    /// filtered through `(I - hγ J)⁻¹` of the first-order system, as Hairer & Wanner do for
+    /// Radau IIA (*Solving ODEs II*, IV.8): the embedded solution is not L-stable, so the raw
+    /// difference keeps a stiff component's size however short the step, and the controller
+    /// would shrink the step without end; filtered, it decays like the method's own solution.
     fn end<const Z: usize, const K: usize>(
         &self,
         stages: &Stages<S, N, Z, K>,
@@ -285,7 +304,15 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
                 eq += e * stages.v[j];
                 ev += e * stages.a[j];
             }
-            (eq, ev)
+            match &self.iteration {
+                // `(x, y)` with `x - hγ y = eq`, `-hγ ∂a/∂q x + (I - hγ ∂a/∂q') y = ev`.
+                Some((_, lu, dq)) => {
+                    let hg = h * self.tableau.gamma;
+                    let y = lu.solve(&(ev + hg * (dq * eq)));
+                    (eq + hg * y, y)
+                }
+                None => (eq, ev),
+            }
         });
         StepEnd {
             q: stages.q[last],

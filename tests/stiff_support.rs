@@ -1,0 +1,80 @@
+//! The stiff spring-supported pendulum against its reduced-coordinate reference: the adaptive
+//! L-stable ESDIRK 3(2) follows its tolerance with steps far longer than the support's period,
+//! and Dormand–Prince gets there too, with the steps its stability allows.
+
+mod common;
+
+use common::reference::spring_supported_pendulum;
+use common::relative_error;
+use common::spring_support::SpringSupportedPendulum;
+use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, Vector};
+
+const END: f64 = 0.25;
+
+fn run(method: InnerMethod, multipliers: MultiplierModel, rtol: f64) -> ([f64; 3], u64) {
+    let scene = SpringSupportedPendulum::STIFF;
+    let options = Options {
+        method,
+        multipliers,
+        step: StepControl::Adaptive {
+            initial_step: 1e-4,
+            min_step: 1e-12,
+            max_step: 0.1,
+            rtol,
+            atol: rtol * 1e-3,
+        },
+        constraint_tolerance: 1e-12,
+        max_newton_iterations: 30,
+        ..Options::default()
+    };
+    let q0 = Vector::from(scene.start());
+    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+    if let Err(e) = sim.advance_to(END, |_| {}) {
+        panic!(
+            "{method:?} {multipliers:?} rtol {rtol:e}: {e} at {:?}",
+            sim.statistics()
+        );
+    }
+    let end = sim.last().end;
+    let reference = spring_supported_pendulum(&scene, END);
+    // The bob's position and velocity, and the rod's multiplier: the slow motion.
+    let errors = [
+        relative_error(&end.q.as_slice()[2..], &reference.q[2..]),
+        relative_error(&end.v.as_slice()[2..], &reference.v[2..]),
+        relative_error(end.lambda.as_slice(), &reference.lambda),
+    ];
+    (errors, sim.statistics().steps)
+}
+
+#[test]
+fn esdirk_follows_the_tolerance_on_the_stiff_support() {
+    // Automatic: quadratic with the stiff method. (Constant multipliers jump from step to step
+    // and the stiff support answers every jump with a transient the error estimate sees: at
+    // rtol 1e-5 they are accurate but take millions of steps.)
+    for multipliers in [MultiplierModel::Automatic] {
+        for rtol in [1e-5, 1e-7] {
+            let (errors, steps) = run(InnerMethod::Esdirk32, multipliers, rtol);
+            eprintln!("ESDIRK3(2) {multipliers:?} rtol {rtol:e}: errors {errors:?}, {steps} steps");
+            assert!(errors.iter().all(|&e| e < 100.0 * rtol), "{errors:?}");
+        }
+    }
+}
+
+#[test]
+fn dormand_prince_needs_the_support_resolved() {
+    let (errors, steps) = run(
+        InnerMethod::DormandPrince54,
+        MultiplierModel::Constant,
+        1e-7,
+    );
+    let (_, implicit_steps) = run(InnerMethod::Esdirk32, MultiplierModel::Automatic, 1e-7);
+    eprintln!("DOPRI5 rtol 1e-7: errors {errors:?}, {steps} steps; ESDIRK {implicit_steps}");
+    assert!(errors.iter().all(|&e| e < 1e-5), "{errors:?}");
+    // Its stability bound: about 3.3/ω per step, ω = 1e5 rad/s; the L-stable method is not
+    // bound by it.
+    assert!(steps as f64 > END * 1e5 / 3.3 / 2.0, "{steps} steps");
+    assert!(
+        implicit_steps * 10 < steps,
+        "{implicit_steps} against {steps}"
+    );
+}
