@@ -4,6 +4,9 @@
 //! matrix `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q` is kept across stages, sweeps and steps while it
 //! converges fast and refreshed when it does not.
 
+// Stage indices read as the tableau is written.
+#![allow(clippy::needless_range_loop)]
+
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::linalg::Lu;
@@ -121,7 +124,9 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
     fn kept(&self, h: f64) -> Option<Lu<N>> {
         let (formed_for, lu, _) = self.iteration?;
         let ratio = h / formed_for;
-        (ratio <= STEP_RATIO_KEPT && ratio >= 1.0 / STEP_RATIO_KEPT).then_some(lu)
+        (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT)
+            .contains(&ratio)
+            .then_some(lu)
     }
 }
 
