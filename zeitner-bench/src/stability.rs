@@ -118,6 +118,13 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
         max_newton_iterations: 20,
         ..Options::default()
     };
+    let adaptive = StepControl::Adaptive {
+        initial_step: h,
+        min_step: h * 1e-6,
+        max_step: h * 100.0,
+        rtol: 1e-6,
+        atol: 1e-9,
+    };
     vec![
         (
             "rk4-paperQ",
@@ -138,13 +145,7 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
         (
             "dopri5-adaptive",
             Options {
-                step: StepControl::Adaptive {
-                    initial_step: h,
-                    min_step: h * 1e-6,
-                    max_step: h * 100.0,
-                    rtol: 1e-6,
-                    atol: 1e-9,
-                },
+                step: adaptive,
                 ..base
             },
         ),
@@ -160,13 +161,7 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
             "esdirk32-adaptive",
             Options {
                 method: InnerMethod::Esdirk32,
-                step: StepControl::Adaptive {
-                    initial_step: h,
-                    min_step: h * 1e-6,
-                    max_step: h * 100.0,
-                    rtol: 1e-6,
-                    atol: 1e-9,
-                },
+                step: adaptive,
                 ..base
             },
         ),
