@@ -279,3 +279,70 @@ fn the_ladder_pinned_at_both_ends_hangs_in_equilibrium() {
         "pins carry {carried}, weight {weight}"
     );
 }
+
+#[test]
+fn what_it_does_not_run_is_refused_typed_and_a_failed_step_keeps_the_state() {
+    use common::stiff::CoupledMassPendulum;
+    use zeitner::{InvalidOption, MultiplierModel, StepError};
+    let pendulum = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let refused = |error: Option<StepError>| {
+        matches!(
+            error,
+            Some(StepError::InvalidOption(
+                InvalidOption::NotForSparseSimulator(_)
+            ))
+        )
+    };
+    for options in [
+        Options {
+            method: InnerMethod::Sdirk2,
+            step: StepControl::Fixed { step: 1e-3 },
+            ..Options::default()
+        },
+        Options {
+            multipliers: MultiplierModel::Quadratic,
+            ..Options::default()
+        },
+    ] {
+        let error = SparseSimulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).err();
+        assert!(refused(error), "{error:?}");
+    }
+    let full_mass = CoupledMassPendulum {
+        m11: 1.0,
+        m12: 0.1,
+        m22: 1.0,
+        g: 9.81,
+    };
+    let error =
+        SparseSimulator::new(&full_mass, q0, Vector::zeros(), 0.0, Options::default()).err();
+    assert!(refused(error), "{error:?}");
+    // A start that is not finite.
+    let nan = Vector::<2>::new(f64::NAN, 0.0);
+    let error =
+        SparseSimulator::new(&pendulum, nan, Vector::zeros(), 0.0, Options::default()).err();
+    assert!(
+        matches!(error, Some(StepError::NonFinite { .. })),
+        "{error:?}"
+    );
+    // A fixed step far too long for one Newton sweep fails, typed, and changes nothing.
+    let options = Options {
+        method: InnerMethod::Rk4 { substeps: 1 },
+        step: StepControl::Fixed { step: 0.5 },
+        max_newton_iterations: 1,
+        ..Options::default()
+    };
+    let mut sim = SparseSimulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).unwrap();
+    let before = *sim.last();
+    let error = sim.step().err();
+    assert!(
+        matches!(error, Some(StepError::NewtonDidNotConverge { .. })),
+        "{error:?}"
+    );
+    assert_eq!(*sim.last(), before);
+    assert_eq!(sim.time(), 0.0);
+}
