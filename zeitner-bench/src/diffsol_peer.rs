@@ -84,9 +84,8 @@ pub fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
                     }
                 }
             }
-            times.sort_by(f64::total_cmp);
             let mut end = last.expect("six runs");
-            end.cpu_seconds = times[times.len() / 2];
+            end.cpu_seconds = crate::measure::median(times);
             PeerRun {
                 setting,
                 outcome: Ok(end),

@@ -34,7 +34,7 @@ use zeitner::{
 };
 
 use crate::hand_written::HandWritten;
-use crate::measure::{cpu_seconds, Allocations};
+use crate::measure::{cpu_seconds, median, Allocations};
 
 #[global_allocator]
 static ALLOCATOR: Allocations = Allocations;
@@ -393,8 +393,7 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             row.allocations = row.allocations.max(Some(allocations));
         }
     }
-    times.sort_by(f64::total_cmp);
-    row.cpu_seconds = times[times.len() / 2];
+    row.cpu_seconds = median(times);
     row
 }
 
@@ -1111,9 +1110,7 @@ fn chain_scaling(
             steps = sim.statistics().steps;
         }
         // The first run is the warm-up.
-        let mut timed = times.split_off(1);
-        timed.sort_by(f64::total_cmp);
-        Ok((timed[timed.len() / 2] / steps as f64, steps))
+        Ok((median(times.split_off(1)) / steps as f64, steps))
     }
 
     let methods = [

@@ -44,3 +44,9 @@ unsafe impl GlobalAlloc for Allocations {
         unsafe { System.realloc(ptr, layout, new_size) }
     }
 }
+
+/// The median of some timings (the upper one of an even count).
+pub fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}

@@ -253,19 +253,34 @@ pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     let (t1, q1, v1, lambda1) = start;
     // `G` at the end point is known: the consistent end point computed it.
     let (t2, q2, g2, lambda2) = end;
-    let h = t2 - t1;
     let turn = g2 - model.jacobian(q1, v1, t1)?;
-    let change = lambda2 - lambda1;
     let factor = model.mass_factor(q2, t2)?;
-    let eq = (h * h / 36.0) * factor.solve(&turn.tr_mul(&change));
-    let r = S::POSITION_CONSTRAINTS;
-    if r == Z {
-        return Ok((eq, Vector::zeros()));
+    let turned = |rows: &Vector<Z>| factor.solve(&turn.tr_mul(rows));
+    let change = lambda2 - lambda1;
+    Ok(frozen_estimate(
+        t2 - t1,
+        &change,
+        S::POSITION_CONSTRAINTS,
+        turned,
+    ))
+}
+
+/// The frozen-multiplier estimate of [`freezing_error`] for a step of size `h` from the change
+/// `change` of the multipliers and `turned(y) = M⁻¹ (G(t₂) - G(t₁))ᵀ y`, whatever stores `G`;
+/// rows from `position_rows` on are velocity-level.
+pub(crate) fn frozen_estimate<const N: usize, const Z: usize>(
+    h: f64,
+    change: &Vector<Z>,
+    position_rows: usize,
+    turned: impl Fn(&Vector<Z>) -> Vector<N>,
+) -> (Vector<N>, Vector<N>) {
+    let eq = (h * h / 36.0) * turned(change);
+    if position_rows == Z {
+        return (eq, Vector::zeros());
     }
-    let mut velocity_rows = change;
-    velocity_rows.rows_mut(0, r).fill(0.0);
-    let ev = (h / 12.0) * factor.solve(&turn.tr_mul(&velocity_rows));
-    Ok((eq, ev))
+    let mut velocity_rows = *change;
+    velocity_rows.rows_mut(0, position_rows).fill(0.0);
+    (eq, (h / 12.0) * turned(&velocity_rows))
 }
 
 #[cfg(test)]

@@ -70,7 +70,8 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     constant_factor: Option<FactorOf<S, N, Z>>,
 }
 
-fn finite<const R: usize, const C: usize>(
+/// `value`, or the typed error naming `function` when an entry is not finite.
+pub(crate) fn finite<const R: usize, const C: usize>(
     value: Matrix<R, C>,
     t: f64,
     function: ModelFunction,

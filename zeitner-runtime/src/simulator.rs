@@ -581,9 +581,10 @@ pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
 
 /// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
 /// is valid, but `t + h` would not be).
-const LARGEST_STEP: f64 = 1e300;
+pub(crate) const LARGEST_STEP: f64 = 1e300;
 
-fn first_step(step: StepControl) -> f64 {
+/// The first step the options plan.
+pub(crate) fn first_step(step: StepControl) -> f64 {
     match step {
         StepControl::Fixed { step } => step,
         StepControl::Adaptive { initial_step, .. } => initial_step,

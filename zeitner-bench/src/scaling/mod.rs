@@ -15,7 +15,7 @@ use zeitner::{
 };
 
 use crate::figure;
-use crate::measure::cpu_seconds;
+use crate::measure::{cpu_seconds, median};
 use floor::ChainFloor;
 
 #[derive(clap::Args)]
@@ -150,10 +150,9 @@ fn time_per_step<S: ConstrainedSystem<N, Z> + Sync, const N: usize, const Z: usi
         sweeps = statistics.newton_iterations as f64 / statistics.steps as f64;
         error = reference.map(|r| distance(&q, r));
     }
-    let mut timed = times.split_off(1);
-    timed.sort_by(f64::total_cmp);
     Ok(Measured {
-        per_step: timed[timed.len() / 2],
+        // The first run is the warm-up.
+        per_step: median(times.split_off(1)),
         sweeps,
         error,
     })
@@ -398,9 +397,7 @@ fn floor_rows(
                 times.push((cpu_seconds() - before) / steps as f64);
                 error = reference.as_deref().map(|r| distance(&q, r));
             }
-            let mut timed = times.split_off(1);
-            timed.sort_by(f64::total_cmp);
-            (*coordinates, timed[timed.len() / 2], error)
+            (*coordinates, median(times.split_off(1)), error)
         })
         .collect()
 }

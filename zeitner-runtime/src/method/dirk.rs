@@ -217,9 +217,11 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         } else {
             stages.v[i - 1]
         };
-        for fresh in [false, true] {
-            let lu = match self.kept(h).filter(|_| !fresh) {
-                Some(lu) => lu,
+        // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
+        let mut kept = self.kept(h);
+        loop {
+            let (lu, fresh) = match kept.take() {
+                Some(lu) => (lu, false),
                 None => {
                     let q_guess = q_known + hg * guess;
                     let at = model.acceleration(&q_guess, &guess, t, lambda)?;
@@ -227,7 +229,7 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
                     let Some(lu) = self.refresh(h, (&jac.dq, &jac.dv)) else {
                         return Ok(None);
                     };
-                    lu
+                    (lu, true)
                 }
             };
             let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
@@ -244,8 +246,10 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
                 (stages.q[i], stages.v[i]) = (q, v);
                 return model.acceleration(&q, &v, t, lambda).map(Some);
             }
+            if fresh {
+                return Ok(None);
+            }
         }
-        Ok(None)
     }
 
     /// The sensitivity of stage `i` to the multipliers' coefficients, from the derivative of

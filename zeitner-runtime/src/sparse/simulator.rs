@@ -10,16 +10,19 @@ use super::configuration::{
     inverse_mass, jacobian_into, transpose_times, Configuration, Structure,
 };
 use crate::consistency::StartReport;
-use crate::control::{bounds, error_norm, next_step_size, plan_step, retry_step, Controller};
+use crate::control::{
+    bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, Controller,
+};
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
+use crate::linalg::max_abs;
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
-use crate::model::Evaluations;
+use crate::model::{finite, Evaluations};
 use crate::multipliers::{Predictor, StepPolynomial};
 use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,
 };
 use crate::output::{Point, StepReport, StopReason};
-use crate::simulator::{already_there, Statistics};
+use crate::simulator::{already_there, first_step, Statistics, LARGEST_STEP};
 use crate::system::{ConstrainedSystem, MassKind, Vector};
 
 /// Position projections at the start take at most this many Newton sweeps.
@@ -29,8 +32,6 @@ const VELOCITY_SWEEPS: u32 = 3;
 /// `k` of the step-size controller: Dormand–Prince's embedded order 4, plus one (adaptive
 /// steps need its estimate; RK4 runs fixed steps only).
 const ERROR_ORDER: u32 = 5;
-/// No step is longer (see [`crate::Simulator`]).
-const LARGEST_STEP: f64 = 1e300;
 
 /// A constrained system with many coordinates, integrated with `G` kept by its nonzeros and
 /// `G M⁻¹Gᵀ` factorised in a narrow envelope (rows ordered by reverse Cuthill–McKee when the
@@ -108,10 +109,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             t_carry: 0.0,
             lambda: Vector::zeros(),
             stop_time: None,
-            planned_step: match options.step {
-                StepControl::Fixed { step } => step,
-                StepControl::Adaptive { initial_step, .. } => initial_step,
-            },
+            planned_step: first_step(options.step),
             last: empty_report(t0),
             start_report: StartReport::unmoved(),
             statistics: Statistics::default(),
@@ -129,7 +127,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         }
         let tolerance = self.options.constraint_tolerance;
         if self.options.start == StartPolicy::Refuse {
-            let (worst, residual) = worst_row(&self.rate(&q0, &v0, t)?);
+            let (residual, worst) = max_abs(&self.rate(&q0, &v0, t)?);
             if residual > tolerance {
                 return Err(inconsistent::<S, N, Z>(t, (worst, residual), None));
             }
@@ -139,7 +137,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             let mut g = self.residual(&q, &v0, t)?;
             g.rows_mut(S::POSITION_CONSTRAINTS, Z - S::POSITION_CONSTRAINTS)
                 .fill(0.0);
-            let (worst, residual) = worst_row(&g);
+            let (residual, worst) = max_abs(&g);
             if residual <= tolerance {
                 break;
             }
@@ -195,7 +193,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         let tolerance = self.options.constraint_tolerance;
         for _ in 0..VELOCITY_SWEEPS {
             let w = self.rate(q, &v, t)?;
-            if worst_row(&w).1 <= tolerance && !w.iter().any(|x| x.is_nan()) {
+            // A NaN compares false: no sweep stops on it.
+            if max_abs(&w).0 <= tolerance {
                 break;
             }
             let at = if at_start {
@@ -351,7 +350,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     ) -> Result<Result<End<N, Z>, (f64, StepError)>, StepError> {
         let mut p = self.guess(h)?;
         let tolerance = self.options.constraint_tolerance;
-        let mut worst = (0, f64::INFINITY);
+        let mut worst = (f64::INFINITY, 0);
         for integrations in 1..=self.options.max_newton_iterations {
             self.statistics.newton_iterations += 1;
             let (q, v, error) = match self.integrate(h, &p) {
@@ -360,8 +359,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
                 Err(other) => return Err(other),
             };
             let g = self.residual(&q, &v, t_end)?;
-            worst = worst_row(&g);
-            if worst.1 <= tolerance {
+            worst = max_abs(&g);
+            if worst.0 <= tolerance {
                 return Ok(Ok(End {
                     q,
                     v,
@@ -386,9 +385,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             t: self.time(),
             step: h,
             iterations: self.options.max_newton_iterations,
-            residual: worst.1,
+            residual: worst.0,
             worst_row: Row {
-                index: worst.0,
+                index: worst.1,
                 position_rows: S::POSITION_CONSTRAINTS,
             },
         };
@@ -543,25 +542,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         )))
     }
 
-    /// The error of holding the multipliers while `G` turns (see [`crate::control`]):
-    /// `τ²/36 M⁻¹ΔGᵀΔλ` in `q`, `τ/12` of it over the velocity-level rows in `q'`.
+    /// The error of holding the multipliers while `G` turns ([`crate::control`]'s estimate).
     fn freezing_error(&self, h: f64, lambda_end: &Vector<Z>) -> (Vector<N>, Vector<N>) {
         if !matches!(self.options.step, StepControl::Adaptive { .. }) {
             return (Vector::zeros(), Vector::zeros());
         }
-        let change = lambda_end - self.lambda;
-        let turn = |rows: &Vector<Z>| {
+        let turned = |rows: &Vector<Z>| {
             (self.there.transpose_times(&self.structure, rows)
                 - self.here.transpose_times(&self.structure, rows))
             .component_mul(&self.there.inverse_mass)
         };
-        let eq = (h * h / 36.0) * turn(&change);
-        if S::POSITION_CONSTRAINTS == Z {
-            return (eq, Vector::zeros());
-        }
-        let mut velocity_rows = change;
-        velocity_rows.rows_mut(0, S::POSITION_CONSTRAINTS).fill(0.0);
-        (eq, (h / 12.0) * turn(&velocity_rows))
+        let change = lambda_end - self.lambda;
+        frozen_estimate(h, &change, S::POSITION_CONSTRAINTS, turned)
     }
 
     fn accept(
@@ -649,32 +641,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             ModelFunction::ConstraintAccelerationBias,
         )
     }
-}
-
-fn finite<const R: usize>(
-    value: Vector<R>,
-    t: f64,
-    function: ModelFunction,
-) -> Result<Vector<R>, StepError> {
-    if value.iter().all(|x| x.is_finite()) {
-        Ok(value)
-    } else {
-        Err(StepError::NonFinite { t, function })
-    }
-}
-
-/// The row with the largest `|g|`, and that value (NaN counts as the largest).
-fn worst_row<const Z: usize>(g: &Vector<Z>) -> (usize, f64) {
-    let mut worst = (0, 0.0);
-    for (j, &x) in g.iter().enumerate() {
-        if x.is_nan() {
-            return (j, f64::INFINITY);
-        }
-        if x.abs() > worst.1 {
-            worst = (j, x.abs());
-        }
-    }
-    worst
 }
 
 /// A start that could not be projected: the redundant rows when there are some (inconsistent
