@@ -17,6 +17,7 @@ pub enum ModelFunction {
     ForceJacobians,
     ConstraintForceJacobians,
     MassJacobianProduct,
+    EventFunctions,
     /// The state handed to the simulator, or one the integration produced (positions,
     /// velocities, accelerations, multipliers or constraint forces).
     State,
@@ -35,6 +36,7 @@ impl fmt::Display for ModelFunction {
             ModelFunction::ForceJacobians => "the force Jacobians ∂F/∂q, ∂F/∂q'",
             ModelFunction::ConstraintForceJacobians => "the constraint-force Jacobians",
             ModelFunction::MassJacobianProduct => "the mass matrix's derivative ∂(M a)/∂q",
+            ModelFunction::EventFunctions => "the event functions (`events`)",
             ModelFunction::State => "the state",
         })
     }
@@ -166,6 +168,12 @@ pub enum InvalidOption {
     AdaptiveNeedsErrorEstimate,
     /// [`crate::sparse::SparseSimulator`] does not run this yet.
     NotForSparseSimulator(&'static str),
+    /// RK4 `substeps × max_newton_iterations` above 100 000: one step would do too much work.
+    StepWork,
+    /// An [`crate::EventSettings`] value out of range.
+    Events,
+    /// A system with more gaps or event functions than the runtime holds (32 each).
+    TooManyEvents,
 }
 
 impl fmt::Display for InvalidOption {
@@ -202,6 +210,18 @@ impl fmt::Display for InvalidOption {
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
                 "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54` or \
                  `Esdirk32`, or `StepControl::Fixed` with this method",
+            ),
+            InvalidOption::StepWork => f.write_str(
+                "RK4 `substeps` times `max_newton_iterations` must not exceed 100 000: one step \
+                 would integrate that many substeps; take smaller steps or fewer Newton sweeps",
+            ),
+            InvalidOption::Events => f.write_str(
+                "`events.time_tolerance` must be positive and at most 1e-3 s (default 1e-12), \
+                 `events.rest_velocity` finite and not negative (default 1e-3)",
+            ),
+            InvalidOption::TooManyEvents => f.write_str(
+                "the system has more than 32 gaps or more than 32 event functions; split them or \
+                 combine several into one event function",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,

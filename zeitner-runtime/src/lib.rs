@@ -16,6 +16,8 @@
 //!   coefficients for every multiplier model;
 //! - `method`: inner one-step methods with their own workspace (explicit tableaux as data);
 //! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller;
+//! - [`events`]: zero crossings of event functions, gaps and contact forces, located on the
+//!   dense output; [`contact`]: which gaps are closed, and the impulse when they close;
 //! - [`output`]: points, step reports, dense output, stop reasons, the observer's view;
 //! - [`simulator`]: puts them in order;
 //! - [`sparse`] (feature `alloc`): [`SparseSimulator`], the same step for scenes with many
@@ -29,8 +31,10 @@
 extern crate alloc;
 
 pub mod consistency;
+pub mod contact;
 pub mod control;
 pub mod error;
+pub mod events;
 mod linalg;
 pub mod mass;
 pub mod math;
@@ -47,12 +51,14 @@ pub mod system;
 mod testing;
 
 pub use consistency::StartReport;
+pub use contact::{GapSet, Impact};
 pub use control::ControllerSettings;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
+pub use events::Direction;
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
 pub use options::{
-    InnerMethod, MultiplierModel, Options, Sensitivity, StartPolicy, StepControl,
+    EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity, StartPolicy, StepControl,
     VelocityProjection,
 };
 pub use output::{Observation, Point, StepReport, StopReason};

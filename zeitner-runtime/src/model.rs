@@ -1,9 +1,10 @@
 //! The evaluation layer: every call into the system goes through here, is counted, and is
 //! checked for non-finite values, so that a bad model becomes a typed error, not a NaN trajectory.
 
+use crate::contact::GapSet;
 use crate::error::{ModelFunction, StepError};
 use crate::mass::{MassFactor, MassMatrix};
-use crate::system::{ConstrainedSystem, Matrix, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// How often each model function was called.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -30,6 +31,8 @@ pub struct Evaluations {
     pub mass_jacobian_products: u64,
     /// Factorisations of `M`.
     pub mass_factorizations: u64,
+    /// Evaluations of the event functions (at step ends and while locating a crossing).
+    pub event_functions: u64,
 }
 
 pub(crate) type FactorOf<S, const N: usize, const Z: usize> =
@@ -55,12 +58,62 @@ pub(crate) struct ConstraintDirections<F, const N: usize, const Z: usize> {
     pub factor: F,
     pub jacobian: Matrix<Z, N>,
     pub m_inv_gt: Matrix<N, Z>,
+    /// The rows of open gaps, which read as zero in `G`.
+    pub open: OpenRows,
 }
 
 impl<F, const N: usize, const Z: usize> ConstraintDirections<F, N, Z> {
-    /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite.
+    /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite; a unit diagonal in the rows of open gaps,
+    /// so that their multipliers solve to zero.
     pub fn gram(&self) -> Matrix<Z, Z> {
-        self.jacobian * self.m_inv_gt
+        let mut gram = self.jacobian * self.m_inv_gt;
+        self.open.regularise(&mut gram);
+        gram
+    }
+}
+
+/// The rows of the open gaps (unilateral constraints not in contact): they read as zero in
+/// `g`, `G`, `w`, `b` and in the multipliers, so that every solve and every Newton on the
+/// multipliers sees only the closed ones, without changing a size.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct OpenRows {
+    /// The first gap row.
+    first: usize,
+    open: GapSet,
+}
+
+impl OpenRows {
+    fn rows(&self) -> impl Iterator<Item = usize> + '_ {
+        self.open.iter().map(|k| self.first + k)
+    }
+
+    fn is_empty(&self) -> bool {
+        self.open.is_empty()
+    }
+
+    /// Zeroes the rows of open gaps.
+    pub fn clear<const R: usize, const C: usize>(&self, m: &mut Matrix<R, C>) {
+        for j in self.rows() {
+            m.row_mut(j).fill(0.0);
+        }
+    }
+
+    /// A diagonal entry in the rows of open gaps of a Z×Z matrix whose rows and columns there
+    /// are zero, of the size of the largest other diagonal entry (so that pivot tests relative
+    /// to it do not take these rows for dependent ones).
+    pub fn regularise<const Z: usize>(&self, m: &mut Matrix<Z, Z>) {
+        let scale = (0..Z)
+            .filter(|&j| !(j >= self.first && self.open.contains(j - self.first)))
+            .map(|j| m[(j, j)].abs())
+            .fold(0.0, f64::max);
+        let scale = if scale > 0.0 && scale.is_finite() {
+            scale
+        } else {
+            1.0
+        };
+        for j in self.rows() {
+            m[(j, j)] = scale;
+        }
     }
 }
 
@@ -68,6 +121,7 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     pub system: &'s S,
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
+    open: OpenRows,
 }
 
 /// `value`, or the typed error naming `function` when an entry is not finite.
@@ -89,6 +143,102 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             system,
             evaluations: Evaluations::default(),
             constant_factor: None,
+            open: OpenRows {
+                first: S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
+                open: GapSet::EMPTY,
+            },
+        }
+    }
+
+    /// The gaps whose contact is open (not enforced).
+    pub fn open_gaps(&self) -> GapSet {
+        self.open.open
+    }
+
+    pub fn set_open_gaps(&mut self, open: GapSet) {
+        self.open.open = open;
+    }
+
+    /// The rows of the open gaps.
+    pub fn open_rows(&self) -> OpenRows {
+        self.open
+    }
+
+    /// Zeroes the rows of open gaps; nothing for systems without gaps.
+    #[inline(always)]
+    fn mask<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
+        if S::UNILATERAL_CONSTRAINTS > 0 && !self.open.is_empty() {
+            self.open.clear(&mut m);
+        }
+        m
+    }
+
+    /// Every gap's `g_u(q, t)`, open or closed, into the first `UNILATERAL_CONSTRAINTS` entries.
+    pub fn gaps(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> Result<[f64; MAX_GAPS], StepError> {
+        self.evaluations.constraint_residuals += 1;
+        let g = finite(
+            self.system.constraint_residual(q, v, t),
+            t,
+            ModelFunction::ConstraintResidual,
+        )?;
+        let mut values = [0.0; MAX_GAPS];
+        for (k, value) in values
+            .iter_mut()
+            .enumerate()
+            .take(S::UNILATERAL_CONSTRAINTS)
+        {
+            *value = g[self.open.first + k];
+        }
+        Ok(values)
+    }
+
+    /// Every gap's rate `ġ_u`, open or closed.
+    pub fn gap_rates(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> Result<[f64; MAX_GAPS], StepError> {
+        self.evaluations.constraint_rates += 1;
+        let w = finite(
+            self.system.constraint_rate(q, v, t),
+            t,
+            ModelFunction::ConstraintRate,
+        )?;
+        let mut values = [0.0; MAX_GAPS];
+        for (k, value) in values
+            .iter_mut()
+            .enumerate()
+            .take(S::UNILATERAL_CONSTRAINTS)
+        {
+            *value = w[self.open.first + k];
+        }
+        Ok(values)
+    }
+
+    /// The event functions at a state.
+    pub fn events(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> Result<[f64; MAX_EVENTS], StepError> {
+        self.evaluations.event_functions += 1;
+        let mut values = [0.0; MAX_EVENTS];
+        self.system
+            .event_functions(q, v, t, &mut values[..S::EVENTS]);
+        if values.iter().all(|x| x.is_finite()) {
+            Ok(values)
+        } else {
+            Err(StepError::NonFinite {
+                t,
+                function: ModelFunction::EventFunctions,
+            })
         }
     }
 
@@ -139,7 +289,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     ) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_residuals += 1;
         let g = self.system.constraint_residual(q, v, t);
-        finite(g, t, ModelFunction::ConstraintResidual)
+        Ok(self.mask(finite(g, t, ModelFunction::ConstraintResidual)?))
     }
 
     pub fn jacobian(
@@ -150,7 +300,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     ) -> Result<Matrix<Z, N>, StepError> {
         self.evaluations.constraint_jacobians += 1;
         let g = self.system.constraint_jacobian(q, v, t);
-        finite(g, t, ModelFunction::ConstraintJacobian)
+        Ok(self.mask(finite(g, t, ModelFunction::ConstraintJacobian)?))
     }
 
     /// `(∂g/∂q, ∂g/∂q')` of all rows, for the Newton linearisation at the step end.
@@ -166,11 +316,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             return Ok((g, Matrix::zeros()));
         }
         self.evaluations.constraint_position_partials += 1;
-        let position = finite(
+        let position = self.mask(finite(
             self.system.constraint_position_partials(q, v, t),
             t,
             ModelFunction::ConstraintPositionPartials,
-        )?;
+        )?);
         let mut velocity = g;
         velocity.rows_mut(0, r).fill(0.0);
         Ok((position, velocity))
@@ -179,13 +329,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     pub fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_rates += 1;
         let w = self.system.constraint_rate(q, v, t);
-        finite(w, t, ModelFunction::ConstraintRate)
+        Ok(self.mask(finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
     pub fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
         self.evaluations.acceleration_biases += 1;
         let b = self.system.constraint_acceleration_bias(q, v, t);
-        finite(b, t, ModelFunction::ConstraintAccelerationBias)
+        Ok(self.mask(finite(b, t, ModelFunction::ConstraintAccelerationBias)?))
     }
 
     /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
@@ -197,6 +347,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
     ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
         self.evaluations.constraint_force_jacobians += 1;
+        let lambda = &self.mask(*lambda);
         let (dq, dv) = self.system.constraint_force_jacobians(q, v, t, lambda);
         let function = ModelFunction::ConstraintForceJacobians;
         Ok((finite(dq, t, function)?, finite(dv, t, function)?))
@@ -217,6 +368,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             factor,
             jacobian,
             m_inv_gt,
+            open: self.open,
         })
     }
 

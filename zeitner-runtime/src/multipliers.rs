@@ -484,6 +484,12 @@ where
             }
         }
     }
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        // Open gaps: zero rows and columns; their coefficients stay as they are.
+        for (l, row) in blocks.iter_mut().enumerate() {
+            model.open_rows().regularise(&mut row[l]);
+        }
+    }
     // How far a change of the positions moves the constraints, at most.
     let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, f64::max);
     Ok((blocks, reach))

@@ -182,6 +182,31 @@ pub struct Options {
     pub start: StartPolicy,
     /// The step-size controller's constants. Default [`ControllerSettings::default`].
     pub controller: ControllerSettings,
+    /// How events, gaps and impacts are located and resolved. Default
+    /// [`EventSettings::default`].
+    pub events: EventSettings,
+}
+
+/// How zero crossings of event functions and gaps are located, and when an impact ends in
+/// contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventSettings {
+    /// A step stops within this time of a zero crossing (s): after it for event functions and
+    /// contacts that open, before it for gaps that close. Default 1e-12.
+    pub time_tolerance: f64,
+    /// A gap closing slower than this (in the gap's units per second, m/s for a distance)
+    /// stays closed instead of bouncing: persistent contact, which ends the ever shorter
+    /// bounces of a restitution below 1 in finite time. Default 1e-3.
+    pub rest_velocity: f64,
+}
+
+impl Default for EventSettings {
+    fn default() -> Self {
+        EventSettings {
+            time_tolerance: 1e-12,
+            rest_velocity: 1e-3,
+        }
+    }
 }
 
 impl Default for Options {
@@ -207,6 +232,7 @@ impl Default for Options {
             accept_linearised_update: true,
             start: StartPolicy::Project,
             controller: ControllerSettings::default(),
+            events: EventSettings::default(),
         }
     }
 }
@@ -215,6 +241,10 @@ impl Default for Options {
 /// them one step could run for minutes.
 pub const MAX_NEWTON_ITERATIONS: u32 = 1000;
 pub const MAX_SUBSTEPS: u32 = 10_000;
+/// The most RK4 substeps one step may integrate over all its Newton sweeps
+/// (`substeps × max_newton_iterations`): a bound on the work of one step, about a second on a
+/// scene of Andrews' size.
+pub const MAX_SUBSTEPS_PER_STEP: u32 = 100_000;
 
 impl Options {
     /// The paper's method as published: RK4 inner step with fixed `step`, the paper's sensitivity
@@ -254,6 +284,17 @@ impl Options {
             if !(1..=MAX_SUBSTEPS).contains(&substeps) {
                 return refuse(InvalidOption::Substeps);
             }
+            if u64::from(substeps) * u64::from(self.max_newton_iterations)
+                > u64::from(MAX_SUBSTEPS_PER_STEP)
+            {
+                return refuse(InvalidOption::StepWork);
+            }
+        }
+        let events = self.events;
+        if !(positive(events.time_tolerance) && events.time_tolerance <= 1e-3)
+            || !(events.rest_velocity >= 0.0 && events.rest_velocity.is_finite())
+        {
+            return refuse(InvalidOption::Events);
         }
         if !self.controller.is_valid() {
             return refuse(InvalidOption::Controller);

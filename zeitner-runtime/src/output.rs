@@ -47,45 +47,53 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// `λ`. For multipliers as accurate as the positions, use [`Simulator::sample`]. Outside the
     /// step it extrapolates.
     pub fn sample(&self, t: f64) -> Point<N, Z> {
-        let (a, b) = (&self.start, &self.end);
-        let h = b.t - a.t;
-        if h <= 0.0 {
-            return *b;
-        }
-        let s = (t - a.t) / h;
-        let (s2, s3, s4, s5) = (s * s, s * s * s, s * s * s * s, s * s * s * s * s);
-        // Quintic Hermite basis: values, first and second derivatives at s = 0 and s = 1.
-        let value = [
-            1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
-            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
-            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
-            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
-            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
-            0.5 * s3 - s4 + 0.5 * s5,
-        ];
-        let slope = [
-            -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
-            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
-            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
-            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
-            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
-            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
-        ];
-        let combine = |w: &[f64; 6]| {
-            w[0] * a.q
-                + (w[1] * h) * a.v
-                + (w[2] * h * h) * a.a
-                + w[3] * b.q
-                + (w[4] * h) * b.v
-                + (w[5] * h * h) * b.a
-        };
-        Point {
-            t,
-            q: combine(&value),
-            v: combine(&slope) / h,
-            a: a.a + s * (b.a - a.a),
-            lambda: a.lambda + s * (b.lambda - a.lambda),
-        }
+        interpolate(&self.start, &self.end, t)
+    }
+}
+
+/// The quintic Hermite interpolant between two points (see [`StepReport::sample`]).
+pub(crate) fn interpolate<const N: usize, const Z: usize>(
+    a: &Point<N, Z>,
+    b: &Point<N, Z>,
+    t: f64,
+) -> Point<N, Z> {
+    let h = b.t - a.t;
+    if h <= 0.0 {
+        return *b;
+    }
+    let s = (t - a.t) / h;
+    let (s2, s3, s4, s5) = (s * s, s * s * s, s * s * s * s, s * s * s * s * s);
+    // Quintic Hermite basis: values, first and second derivatives at s = 0 and s = 1.
+    let value = [
+        1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
+        s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
+        0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
+        10.0 * s3 - 15.0 * s4 + 6.0 * s5,
+        -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
+        0.5 * s3 - s4 + 0.5 * s5,
+    ];
+    let slope = [
+        -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
+        1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
+        s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
+        30.0 * s2 - 60.0 * s3 + 30.0 * s4,
+        -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
+        1.5 * s2 - 4.0 * s3 + 2.5 * s4,
+    ];
+    let combine = |w: &[f64; 6]| {
+        w[0] * a.q
+            + (w[1] * h) * a.v
+            + (w[2] * h * h) * a.a
+            + w[3] * b.q
+            + (w[4] * h) * b.v
+            + (w[5] * h * h) * b.a
+    };
+    Point {
+        t,
+        q: combine(&value),
+        v: combine(&slope) / h,
+        a: a.a + s * (b.a - a.a),
+        lambda: a.lambda + s * (b.lambda - a.lambda),
     }
 }
 
@@ -129,6 +137,24 @@ pub enum StopReason {
     StopTimeReached,
     /// The observer of [`Simulator::advance_to`] asked to stop after the step it saw.
     ObserverStopped,
+    /// A step landed exactly on a known discontinuity in time of the model
+    /// ([`crate::ConstrainedSystem::time_event_after`]); the multipliers' predictor and the
+    /// step-size controller start afresh there. `advance_to` goes on.
+    TimeEventReached,
+    /// A step landed just past a zero crossing of event function `index` (within
+    /// [`crate::EventSettings::time_tolerance`]). Several at once are returned one per call
+    /// (the later ones without a step). `advance_to` returns here, so that the caller can act
+    /// (change parameters, [`Simulator::reinitialise`]).
+    Event {
+        index: usize,
+        direction: crate::Direction,
+    },
+    /// Gaps closed: the velocities jumped by an impulse ([`Simulator::last_impact`]), a step of
+    /// zero length whose report has the velocities before and after. `advance_to` goes on.
+    Impact,
+    /// Contacts opened where their force would have pulled: their gaps are free again.
+    /// `advance_to` goes on.
+    ContactsOpened { gaps: crate::GapSet },
 }
 
 /// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's

@@ -3,18 +3,20 @@
 //! is a part of its own (`multipliers`, `method`, [`crate::control`], [`crate::consistency`],
 //! [`crate::output`]); this file only puts them in order.
 
-use crate::consistency::{consistent_start, end_point, Gram, StartReport};
+use crate::consistency::{consistent_point, consistent_start, end_point, Gram, StartReport};
+use crate::contact::{self, GapSet, Impact};
 use crate::control::{
     bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller,
 };
 use crate::error::{InvalidOption, RowSet, StepError};
+use crate::events::{self, Crossing, Direction, Sides, Values, Watched};
 use crate::method::{AnyMethod, Method, Start, StepEnd};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::StepPolynomial;
 use crate::multipliers::{self, Multipliers, NewtonOutcome, NewtonSettings, Predictor};
 use crate::options::{MultiplierModel, Options, StepControl, VelocityProjection};
 use crate::output::{end_report, Observation, Point, StepReport, StopReason};
-use crate::system::{ConstrainedSystem, Matrix, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -57,7 +59,25 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     last: StepReport<N, Z>,
     start_report: StartReport<N, Z>,
     statistics: Statistics,
+    /// The side of zero of every watched function at the current state.
+    sides: Sides,
+    /// What the next [`Simulator::step`] reports before it integrates.
+    pending: Pending,
+    last_impact: Option<Impact<N, Z>>,
 }
+
+/// Events found at the last step end and not yet returned, and gaps to close by an impact.
+#[derive(Clone, Copy, Debug, Default)]
+struct Pending {
+    /// Event functions that crossed, by bit, and which of them rose.
+    events: u32,
+    rising: u32,
+    impact: GapSet,
+}
+
+/// How many times a step is integrated again to end nearer a crossing before it is taken as it
+/// is (the next step finds the crossing again, from much nearer).
+const RELOCATIONS: u32 = 8;
 
 /// A step whose constraints hold and whose error is within tolerance.
 struct Accepted<const N: usize, const Z: usize> {
@@ -95,9 +115,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         options: Options,
     ) -> Result<Self, StepError> {
         options.validate()?;
+        let fits = S::EVENTS <= MAX_EVENTS
+            && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
+            && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS;
+        if !fits {
+            return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
+        }
         let mut model = Model::new(system);
         let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
         let point = last.end;
+        let sides = sides_at(&mut model, &point)?;
         Ok(Simulator {
             model,
             method: AnyMethod::new(options.method),
@@ -115,6 +142,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             last,
             start_report,
             statistics: Statistics::default(),
+            sides,
+            pending: Pending::default(),
+            last_impact: None,
         })
     }
 
@@ -148,8 +178,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         v: Vector<N>,
         t: f64,
     ) -> Result<StartReport<N, Z>, StepError> {
-        let (last, report, _) = start_point(&mut self.model, (q, v, t), &self.options)?;
+        let open = self.model.open_gaps();
+        let started =
+            start_point(&mut self.model, (q, v, t), &self.options).and_then(|(last, report, _)| {
+                Ok((last, report, sides_at(&mut self.model, &last.end)?))
+            });
+        let (last, report, sides) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = last.end;
+        self.sides = sides;
+        self.pending = Pending::default();
         self.last = last;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
         self.t_carry = 0.0;
@@ -230,33 +267,263 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         Ok(())
     }
 
-    /// One accepted step, not beyond the stop time; says whether it reached it.
+    /// One accepted step, not beyond the stop time nor past a zero crossing of an event
+    /// function or a gap; says why it returned. Events found at the last step end and an
+    /// impact due there are returned first, one per call, without a step.
     pub fn step(&mut self) -> Result<StopReason, StepError> {
-        let limit = self.stop_time.unwrap_or(f64::INFINITY);
+        if let Some(reason) = self.pending_stop()? {
+            return Ok(reason);
+        }
+        let stop = self.stop_time.unwrap_or(f64::INFINITY);
+        let time_event = self.model.system.time_event_after(self.time());
+        let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
         let (min_step, max_step) = bounds(self.options.step);
         let mut h = self
             .planned_step
             .clamp(min_step, max_step)
             .min(LARGEST_STEP);
-        let mut retry = false;
+        let planned = h;
+        let (mut retry, mut target, mut relocations) = (false, None::<f64>, 0);
         loop {
-            let (h_try, t_end, landing) = self.plan(h, limit, retry)?;
+            let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
             retry = true;
             match self.attempt(h_try, t_end)? {
                 Attempt::Accepted(step) => {
-                    self.accept(step, t_end, (h_try, h), landing)?;
-                    if landing {
-                        self.stop_time = None;
-                        return Ok(StopReason::StopTimeReached);
+                    let (values, crossing) = self.crossing(&step, t_end)?;
+                    if let Some(aim) = crossing.and_then(|c| self.aim(c, t_end)) {
+                        if relocations < RELOCATIONS {
+                            (relocations, target, h) =
+                                (relocations + 1, Some(aim), aim - self.time());
+                            continue;
+                        }
                     }
-                    return Ok(StopReason::StepTaken);
+                    let landed = landing && target.is_none_or(|aim| aim == t_end);
+                    self.accept(step, t_end, (h_try, planned.max(h)), landed)?;
+                    return self.after_step(values, t_end, (landing, time_event));
                 }
                 Attempt::Rejected { factor, cause } => {
                     self.statistics.rejected_steps += 1;
                     h = self.retry(h_try * factor, cause)?;
+                    target = target.filter(|&aim| self.time() + h >= aim);
                 }
             }
         }
+    }
+
+    /// The last impact, if any (see [`StopReason::Impact`]).
+    pub fn last_impact(&self) -> Option<&Impact<N, Z>> {
+        self.last_impact.as_ref()
+    }
+
+    /// The gaps whose contact is closed now.
+    pub fn closed_gaps(&self) -> GapSet {
+        GapSet::first(S::UNILATERAL_CONSTRAINTS).without(self.model.open_gaps())
+    }
+
+    /// The watched functions at a candidate step's end, and their earliest crossing of interest
+    /// within the step.
+    fn crossing(
+        &mut self,
+        step: &Accepted<N, Z>,
+        t_end: f64,
+    ) -> Result<(Option<Values>, Option<Crossing>), StepError> {
+        if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
+            return Ok((None, None));
+        }
+        let end = Point {
+            t: t_end,
+            ..step.point
+        };
+        let values = events::values(&mut self.model, &end)?;
+        let tolerance = self.options.events.time_tolerance;
+        let start = self.last.end;
+        let ends = (&start, &end);
+        let crossing = events::earliest(&mut self.model, ends, &self.sides, &values, tolerance)?;
+        Ok((Some(values), crossing))
+    }
+
+    /// Where a step with a crossing should end instead of `t_end`: half the time tolerance
+    /// beyond it (before it for a gap), or nowhere new if `t_end` is that already.
+    fn aim(&self, crossing: Crossing, t_end: f64) -> Option<f64> {
+        let half = 0.5 * self.options.events.time_tolerance;
+        let offset = if crossing.watched.lands_before() {
+            -half
+        } else {
+            half
+        };
+        let now = self.time();
+        let aim = (crossing.t + offset).max(now + half).min(t_end);
+        (aim < t_end && t_end - aim > 0.25 * half && aim > now).then_some(aim)
+    }
+
+    /// What a step that was just accepted stopped for.
+    fn after_step(
+        &mut self,
+        values: Option<Values>,
+        t_end: f64,
+        (landing, time_event): (bool, Option<f64>),
+    ) -> Result<StopReason, StepError> {
+        if let Some(values) = values {
+            if let Some(reason) = self.resolve_crossings(&values)? {
+                if landing && self.stop_time == Some(t_end) {
+                    self.stop_time = None;
+                }
+                return Ok(reason);
+            }
+        }
+        if landing && time_event == Some(t_end) {
+            self.restart_predictors();
+            if self.stop_time == Some(t_end) {
+                self.stop_time = None;
+                return Ok(StopReason::StopTimeReached);
+            }
+            return Ok(StopReason::TimeEventReached);
+        }
+        if landing && self.stop_time == Some(t_end) {
+            self.stop_time = None;
+            return Ok(StopReason::StopTimeReached);
+        }
+        Ok(StopReason::StepTaken)
+    }
+
+    /// The crossings at the step end: event functions that changed side (returned, the later
+    /// ones kept for the next calls), contacts whose force would pull (opened now), gaps
+    /// closing (their impact kept for the next call).
+    fn resolve_crossings(&mut self, values: &Values) -> Result<Option<StopReason>, StepError> {
+        let before = self.sides;
+        let mut sides = Sides::of(values, (S::EVENTS, S::UNILATERAL_CONSTRAINTS));
+        let mut events = 0u32;
+        for i in (0..S::EVENTS).filter(|&i| sides.event(i) != before.event(i)) {
+            events |= 1 << i;
+        }
+        self.pending.rising = sides_bits(&sides, S::EVENTS);
+        let open = self.model.open_gaps();
+        let mut releasing = GapSet::EMPTY;
+        for k in (0..S::UNILATERAL_CONSTRAINTS).filter(|&k| !open.contains(k)) {
+            if sides.gap(k) && !before.gap(k) {
+                releasing.insert(k);
+            }
+        }
+        let closing = self.closing_gaps(values)?;
+        for k in closing.iter() {
+            // Until the impact, the gap counts as open and not yet crossed.
+            sides.set(Watched::Gap(k), true);
+        }
+        if !releasing.is_empty() {
+            self.open_contacts(releasing)?;
+            for k in releasing.iter() {
+                sides.set(Watched::Gap(k), true);
+            }
+        }
+        self.sides = sides;
+        self.pending.events = events;
+        self.pending.impact = closing;
+        if let Some(reason) = self.next_event() {
+            return Ok(Some(reason));
+        }
+        Ok((!releasing.is_empty()).then_some(StopReason::ContactsOpened { gaps: releasing }))
+    }
+
+    /// Open gaps at the current end that close now: approaching, and within the time tolerance
+    /// (or the constraint tolerance) of zero, or past it.
+    fn closing_gaps(&mut self, values: &Values) -> Result<GapSet, StepError> {
+        let mut closing = GapSet::EMPTY;
+        let open = self.model.open_gaps();
+        if open.is_empty() {
+            return Ok(closing);
+        }
+        let near = |k: usize| values.gaps[k] <= self.options.constraint_tolerance.max(0.0);
+        if !open.iter().any(|k| k < S::UNILATERAL_CONSTRAINTS) {
+            return Ok(closing);
+        }
+        let end = self.last.end;
+        let rates = self.model.gap_rates(&end.q, &end.v, end.t)?;
+        let window = 2.0 * self.options.events.time_tolerance;
+        for k in open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS) {
+            if rates[k] < 0.0 && (near(k) || values.gaps[k] <= -rates[k] * window) {
+                closing.insert(k);
+            }
+        }
+        Ok(closing)
+    }
+
+    /// Opens the contacts of `gaps` at the current end: multipliers recomputed without them.
+    fn open_contacts(&mut self, gaps: GapSet) -> Result<(), StepError> {
+        let open = self.model.open_gaps();
+        self.model.set_open_gaps(open.union(gaps));
+        let end = self.last.end;
+        let point = consistent_point(&mut self.model, end.t, end.q, end.v)
+            .inspect_err(|_| self.model.set_open_gaps(open))?;
+        self.last.end = point;
+        self.lambda = point.lambda;
+        self.restart_predictors();
+        Ok(())
+    }
+
+    /// The next event function found at the last step end and not yet returned.
+    fn next_event(&mut self) -> Option<StopReason> {
+        let index = (0..S::EVENTS).find(|&i| self.pending.events & (1 << i) != 0)?;
+        self.pending.events &= !(1 << index);
+        let direction = if self.pending.rising & (1 << index) != 0 {
+            Direction::Rising
+        } else {
+            Direction::Falling
+        };
+        Some(StopReason::Event { index, direction })
+    }
+
+    /// What the last step end left to report: events, then an impact.
+    fn pending_stop(&mut self) -> Result<Option<StopReason>, StepError> {
+        if let Some(reason) = self.next_event() {
+            return Ok(Some(reason));
+        }
+        if self.pending.impact.is_empty() {
+            return Ok(None);
+        }
+        self.impact(self.pending.impact)?;
+        self.pending.impact = GapSet::EMPTY;
+        Ok(Some(StopReason::Impact))
+    }
+
+    /// The impact of `gaps` at the current state: the velocity jump, the contacts that stay
+    /// closed, and a consistent state after it, reported as a step of zero length.
+    fn impact(&mut self, gaps: GapSet) -> Result<(), StepError> {
+        let before = self.last.end;
+        let open = self.model.open_gaps();
+        let rest = self.options.events.rest_velocity;
+        let resolved = contact::impact(
+            &mut self.model,
+            (&before.q, &before.v, before.t),
+            gaps,
+            rest,
+        )
+        .and_then(|impact| {
+            let state = (before.q, impact.velocity_after, before.t);
+            let (mut last, report, _) = start_point(&mut self.model, state, &self.options)?;
+            contact::open_pulling(&mut self.model, &mut last.end)?;
+            let last = end_report(&mut self.model, before, last.end, last.end.lambda, 0, None)?;
+            Ok((impact, last, report, sides_at(&mut self.model, &last.end)?))
+        });
+        let (impact, last, report, mut sides) =
+            resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
+        for k in gaps.iter().filter(|&k| self.model.open_gaps().contains(k)) {
+            sides.set(Watched::Gap(k), true);
+        }
+        let point = last.end;
+        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
+        (self.last, self.start_report, self.sides) = (last, report, sides);
+        self.last_impact = Some(impact);
+        self.t_carry = 0.0;
+        self.restart_predictors();
+        self.controller = Controller::new();
+        self.planned_step = first_step(self.options.step);
+        Ok(())
+    }
+
+    /// After a discontinuity the multipliers' history says nothing about what follows.
+    fn restart_predictors(&mut self) {
+        self.predictor.reset();
+        self.state_gram = None;
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the
@@ -281,7 +548,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 self.stop_time = None;
                 return Ok(StopReason::ObserverStopped);
             }
-            if reason == StopReason::StopTimeReached {
+            if matches!(
+                reason,
+                StopReason::StopTimeReached | StopReason::Event { .. }
+            ) {
                 return Ok(reason);
             }
         }
@@ -312,7 +582,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     fn singular_configuration(&mut self) -> Result<Option<StepError>, StepError> {
         let g = self.model.jacobian(&self.q, &self.v, self.time())?;
         let mut rows = RowSet::new(S::POSITION_CONSTRAINTS);
-        for j in (0..Z).filter(|&j| g.row(j).norm() < 1e-3 * self.jacobian_row_scale[j]) {
+        let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+        let open = self.model.open_gaps();
+        let vanishing = |j: usize| g.row(j).norm() < 1e-3 * self.jacobian_row_scale[j];
+        let open_gap = |j: usize| j >= first_gap && open.contains(j - first_gap);
+        for j in (0..Z).filter(|&j| vanishing(j) && !open_gap(j)) {
             rows.insert(j);
         }
         Ok(
@@ -552,7 +826,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
 /// The consistent start at `(q, v, t)` — for [`Simulator::new`] and
 /// [`Simulator::reinitialise`] alike — as a report, with how it was made consistent and `G`
-/// there.
+/// there. Gaps that touch and do not separate start closed, unless their force would pull.
 #[allow(clippy::type_complexity)]
 fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -564,10 +838,34 @@ fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     model.prepare(&q, t)?;
     let tolerance = options.constraint_tolerance;
-    let (point, report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        let closed = contact::touching(model, (&q, &v, t), tolerance)?;
+        model.set_open_gaps(GapSet::first(S::UNILATERAL_CONSTRAINTS).without(closed));
+    }
+    let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+    if S::UNILATERAL_CONSTRAINTS > 0 && !contact::open_pulling(model, &mut point)?.is_empty() {
+        report.multipliers = point.lambda;
+    }
     let jacobian = model.jacobian(&point.q, &point.v, t)?;
     let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
     Ok((last, report, jacobian))
+}
+
+/// The sides of the watched functions at a point.
+fn sides_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: &Point<N, Z>,
+) -> Result<Sides, StepError> {
+    if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
+        return Ok(Sides::default());
+    }
+    let values = events::values(model, point)?;
+    Ok(Sides::of(&values, (S::EVENTS, S::UNILATERAL_CONSTRAINTS)))
+}
+
+/// The event sides as bits (`1` where positive), for the directions of crossings.
+fn sides_bits(sides: &Sides, events: usize) -> u32 {
+    (0..events).fold(0, |bits, i| bits | (u32::from(sides.event(i)) << i))
 }
 
 /// Whether a run to `t_end` from `now` has nothing to do; an error when `t_end` is not a

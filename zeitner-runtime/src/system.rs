@@ -89,7 +89,39 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         let _ = (q, t, a);
         Matrix::zeros()
     }
+
+    /// How many of the position-level rows are gaps `g_u(q, t) ≥ 0` (unilateral constraints,
+    /// at most [`MAX_GAPS`]): the last `UNILATERAL_CONSTRAINTS` of the position rows. A gap row
+    /// is enforced only while its contact is closed; see [`crate::Simulator`]'s events.
+    const UNILATERAL_CONSTRAINTS: usize = 0;
+    /// How many event functions [`Self::event_functions`] writes (at most [`MAX_EVENTS`]).
+    const EVENTS: usize = 0;
+
+    /// Newton's coefficient of restitution of gap `gap` (`0..UNILATERAL_CONSTRAINTS`): the
+    /// separating velocity after an impact is `e` times the approaching one. Default 0.
+    fn restitution(&self, gap: usize) -> f64 {
+        let _ = gap;
+        0.0
+    }
+
+    /// The event functions at a state, into `values[..EVENTS]`: the simulator stops where one
+    /// of them crosses zero.
+    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+        let _ = (q, v, t, values);
+    }
+
+    /// The first known discontinuity in time of the model's functions strictly after `t` (a
+    /// load's kink, a switch), which steps land on exactly. Default: none.
+    fn time_event_after(&self, t: f64) -> Option<f64> {
+        let _ = t;
+        None
+    }
 }
+
+/// The most gaps (unilateral rows) a system may have.
+pub const MAX_GAPS: usize = 32;
+/// The most event functions a system may have.
+pub const MAX_EVENTS: usize = 32;
 
 /// The `(row, column)` of every structural nonzero of `G` as the scene's summary lists them,
 /// if it does.

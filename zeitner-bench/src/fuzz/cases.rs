@@ -22,9 +22,9 @@ use std::fmt;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use zeitner::{
-    ConstrainedSystem, ControllerSettings, InnerMethod, InvalidOption, MultiplierModel, Options,
-    Point, Sensitivity, Simulator, StartPolicy, StartReport, StepControl, StepError, StepReport,
-    StopReason, Vector, VelocityProjection,
+    ConstrainedSystem, ControllerSettings, EventSettings, InnerMethod, InvalidOption,
+    MultiplierModel, Options, Point, Sensitivity, Simulator, StartPolicy, StartReport, StepControl,
+    StepError, StepReport, StopReason, Vector, VelocityProjection,
 };
 
 use super::scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
@@ -651,6 +651,20 @@ fn controller(rng: &mut Rng, wild: bool) -> ControllerSettings {
     c
 }
 
+/// Event settings: the defaults, values within range, or hostile ones.
+fn event_settings(rng: &mut Rng, wild: bool) -> EventSettings {
+    let mut e = EventSettings::default();
+    match rng.random_range(0..6) {
+        0 | 1 => {}
+        2 => e.time_tolerance = log_uniform(rng, -15.0, -3.0),
+        3 => e.rest_velocity = log_uniform(rng, -8.0, 1.0),
+        4 => e.rest_velocity = 0.0,
+        _ if wild => e.time_tolerance = hostile(rng),
+        _ => e.rest_velocity = hostile(rng).abs(),
+    }
+    e
+}
+
 /// Options: the defaults with a change or two, every field random within its range, or with
 /// hostile values.
 pub fn options(rng: &mut Rng) -> Options {
@@ -718,6 +732,7 @@ pub fn options(rng: &mut Rng) -> Options {
             StartPolicy::Refuse
         },
         controller: controller(rng, wild),
+        events: event_settings(rng, wild),
     }
 }
 

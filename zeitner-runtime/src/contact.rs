@@ -1,0 +1,205 @@
+//! Gaps (unilateral constraints `g_u(q, t) ≥ 0`): which contacts are closed, and the impulse
+//! when gaps close.
+//!
+//! A closed gap is a constraint row like any other; an open one reads as zero (see the model's
+//! `OpenRows`), so no size changes when contacts open and close. An impact is Newton's
+//! restitution law solved as one impulse problem in the mass metric: every bilateral row and
+//! every closed gap keeps `ġ = 0`, every impacting gap gets `ġ⁺ = -e ġ⁻`, and a gap whose
+//! impulse would pull is dropped from the problem and solved again (an active set, which
+//! settles simultaneous impacts consistently).
+
+use crate::consistency::consistent_point;
+use crate::error::StepError;
+use crate::linalg::solve_spd;
+use crate::mass::MassMatrix;
+use crate::model::Model;
+use crate::output::Point;
+use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
+
+/// A set of gaps by their index in the model's `gaps` (`0..UNILATERAL_CONSTRAINTS`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GapSet(u32);
+
+impl GapSet {
+    pub const EMPTY: GapSet = GapSet(0);
+
+    /// Gaps `0..count`.
+    pub fn first(count: usize) -> Self {
+        if count >= 32 {
+            GapSet(u32::MAX)
+        } else {
+            GapSet((1u32 << count) - 1)
+        }
+    }
+
+    pub fn insert(&mut self, gap: usize) {
+        self.0 |= 1 << gap;
+    }
+
+    pub fn remove(&mut self, gap: usize) {
+        self.0 &= !(1 << gap);
+    }
+
+    pub fn contains(&self, gap: usize) -> bool {
+        gap < MAX_GAPS && self.0 & (1 << gap) != 0
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0 == 0
+    }
+
+    pub fn len(&self) -> usize {
+        self.0.count_ones() as usize
+    }
+
+    /// The gaps in `self` but not in `other`.
+    pub fn without(self, other: GapSet) -> GapSet {
+        GapSet(self.0 & !other.0)
+    }
+
+    pub fn union(self, other: GapSet) -> GapSet {
+        GapSet(self.0 | other.0)
+    }
+
+    /// The gaps, in increasing order.
+    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..MAX_GAPS).filter(|&k| self.contains(k))
+    }
+}
+
+/// What one impact did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact<const N: usize, const Z: usize> {
+    pub t: f64,
+    /// The gaps that closed approaching, and took part in the impulse.
+    pub gaps: GapSet,
+    /// Of those, the ones that stay closed: restitution 0, or an approach slower than
+    /// [`crate::EventSettings::rest_velocity`] (persistent contact).
+    pub persistent: GapSet,
+    /// The impulse of every row, in the multipliers' convention (the velocities jump by
+    /// `-M⁻¹GᵀΛ`; a gap's impulse pushes when negative): the gaps' and that of every bilateral
+    /// row that keeps holding.
+    pub impulse: Vector<Z>,
+    pub velocity_before: Vector<N>,
+    pub velocity_after: Vector<N>,
+    /// The rate `ġ_u` of each gap (by gap index) before and after.
+    pub gap_rate_before: [f64; MAX_GAPS],
+    pub gap_rate_after: [f64; MAX_GAPS],
+    /// Kinetic energy before minus after (0 for `e = 1` up to rounding).
+    pub energy_lost: f64,
+}
+
+/// The gaps closed at a start `(q, v, t)`: those touching or overlapping (`g_u ≤ tolerance`)
+/// and not separating (`ġ_u ≤ tolerance`).
+pub(crate) fn touching<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    tolerance: f64,
+) -> Result<GapSet, StepError> {
+    let mut closed = GapSet::EMPTY;
+    if S::UNILATERAL_CONSTRAINTS == 0 {
+        return Ok(closed);
+    }
+    let (gaps, rates) = (model.gaps(q, v, t)?, model.gap_rates(q, v, t)?);
+    for k in 0..S::UNILATERAL_CONSTRAINTS {
+        if gaps[k] <= tolerance && rates[k] <= tolerance {
+            closed.insert(k);
+        }
+    }
+    Ok(closed)
+}
+
+/// Opens the closed gaps whose multiplier pulls (`λ > 0`) at a consistent point, and recomputes
+/// the point without them until none pulls; returns the gaps opened.
+pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: &mut Point<N, Z>,
+) -> Result<GapSet, StepError> {
+    let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+    let mut opened = GapSet::EMPTY;
+    for _ in 0..=S::UNILATERAL_CONSTRAINTS {
+        let closed = GapSet::first(S::UNILATERAL_CONSTRAINTS).without(model.open_gaps());
+        // The most pulling first: opening it may relieve the others.
+        let pulling = closed
+            .iter()
+            .map(|k| (k, point.lambda[first + k]))
+            .filter(|&(_, lambda)| lambda > 0.0)
+            .fold(None, |best: Option<(usize, f64)>, (k, l)| match best {
+                Some((_, b)) if b >= l => best,
+                _ => Some((k, l)),
+            });
+        let Some((k, _)) = pulling else {
+            return Ok(opened);
+        };
+        opened.insert(k);
+        let mut open = model.open_gaps();
+        open.insert(k);
+        model.set_open_gaps(open);
+        *point = consistent_point(model, point.t, point.q, point.v)?;
+    }
+    Ok(opened)
+}
+
+/// The impact of the gaps in `impacting` at `(q, v, t)`: the impulse, the velocities after it,
+/// and the contacts that stay closed, which it leaves set in the model.
+pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    impacting: GapSet,
+    rest_velocity: f64,
+) -> Result<Impact<N, Z>, StepError> {
+    let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
+    let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+    let rates = model.gap_rates(q, v, t)?;
+    let bouncing = {
+        let mut set = GapSet::EMPTY;
+        for k in impacting.iter() {
+            if model.system.restitution(k) > 0.0 && -rates[k] > rest_velocity {
+                set.insert(k);
+            }
+        }
+        set
+    };
+    let mut active = all.without(model.open_gaps()).union(impacting);
+    let mut impulse = Vector::<Z>::zeros();
+    let mut after = *v;
+    for _ in 0..=S::UNILATERAL_CONSTRAINTS {
+        model.set_open_gaps(all.without(active));
+        let directions = model.directions(q, v, t)?;
+        let mut rhs = model.rate(q, v, t)?;
+        for k in bouncing.iter().filter(|&k| active.contains(k)) {
+            rhs[first + k] += model.system.restitution(k) * rates[k];
+        }
+        impulse = solve_spd(&directions.gram(), &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+            StepError::RankDeficientConstraints {
+                t,
+                dependent_rows: rows,
+            }
+        })?;
+        after = v - directions.m_inv_gt * impulse;
+        let pulling = active.iter().find(|&k| impulse[first + k] > 0.0);
+        match pulling {
+            Some(k) => active.remove(k),
+            None => break,
+        }
+    }
+    let persistent = impacting.without(bouncing);
+    let closed = active.without(bouncing);
+    model.set_open_gaps(all.without(closed));
+    let energy = |w: &Vector<N>| 0.5 * w.dot(&model.system.mass_matrix(q, t).mul(w));
+    let energy_lost = energy(v) - energy(&after);
+    if !(after.iter().all(|x| x.is_finite()) && energy_lost.is_finite()) {
+        return Err(StepError::non_finite_state(t));
+    }
+    Ok(Impact {
+        t,
+        gaps: impacting.without(all.without(active)),
+        persistent: persistent.without(all.without(active)),
+        impulse,
+        velocity_before: *v,
+        velocity_after: after,
+        gap_rate_before: rates,
+        gap_rate_after: model.gap_rates(q, &after, t)?,
+        energy_lost,
+    })
+}
