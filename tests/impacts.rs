@@ -2,7 +2,7 @@
 
 use zeitner::{
     ConstrainedSystem, DiagonalMass, MassKind, Matrix, Options, SceneSummary, Simulator,
-    StepControl, StopReason, Vector,
+    StopReason, Vector,
 };
 
 /// A ball of mass `m` above a floor: `y ≥ 0`, restitution `e`; written by hand.
@@ -109,4 +109,33 @@ fn a_ball_bounces_at_the_closed_form_times() {
         );
     }
     assert_eq!(impacts.len(), 11);
+}
+
+mod common;
+use common::contact::{Ball as GeneratedBall, FallingBar, WallPendulum};
+
+#[test]
+fn the_generated_ball_bounces_like_the_hand_written_one() {
+    let ball = GeneratedBall {
+        m: 2.0,
+        g: 9.81,
+        e: 1.0,
+    };
+    let mut sim = Simulator::new(
+        &ball,
+        Vector::from([1.0]),
+        Vector::zeros(),
+        0.0,
+        Options::default(),
+    )
+    .unwrap();
+    sim.set_stop_time(1.0).unwrap();
+    let mut impacts = 0;
+    while sim.step().unwrap() != StopReason::StopTimeReached {
+        if let Some(impact) = sim.last_impact() {
+            impacts += 1;
+            assert!((impact.t - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
+        }
+    }
+    assert!(impacts > 0);
 }

@@ -4,6 +4,7 @@
 
 pub mod andrews;
 pub mod chain;
+pub mod contact;
 pub mod knife_edge;
 pub mod ladder;
 pub mod pendulum;

@@ -3,13 +3,20 @@
 use crate::errors::Errors;
 use crate::model::{Model, ModelFn, Role, Shape};
 
-/// The model's dimensions: coordinates, position-level and velocity-level constraints.
+/// The model's dimensions: coordinates, position-level rows (the gaps among them, last),
+/// velocity-level rows, event functions.
 #[derive(Clone, Copy, Debug)]
 pub struct Sizes {
     pub n: usize,
     pub r: usize,
     pub k: usize,
+    pub u: usize,
+    pub e: usize,
 }
+
+/// The most gaps and the most event functions a model may have (the runtime's limits).
+const MAX_GAPS: usize = 32;
+const MAX_EVENTS: usize = 32;
 
 impl Sizes {
     pub fn z(&self) -> usize {
@@ -66,14 +73,14 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
             errors.error_spanned_by(function.shape.len_expr(), "only `mass` may return a matrix");
         }
     }
-    let r = model
-        .function(Role::Constraints)
-        .map_or(0, |f| f.shape.len());
-    let k = model
-        .function(Role::VelocityConstraints)
-        .map_or(0, |f| f.shape.len());
+    let length = |role: Role| model.function(role).map_or(0, |f| f.shape.len());
+    let u = length(Role::Gaps);
+    let r = length(Role::Constraints) + u;
+    let k = length(Role::VelocityConstraints);
+    let e = length(Role::Events);
+    check_gaps_and_events(model, (u, e), errors);
     // Position-level rows may be absent (a purely nonholonomic model), but not all rows.
-    for role in [Role::Constraints, Role::VelocityConstraints] {
+    for role in [Role::Constraints, Role::VelocityConstraints, Role::Gaps] {
         if let Some(function) = model.function(role).filter(|_| r + k == 0) {
             errors.error_spanned_by(
                 function.shape.len_expr(),
@@ -87,7 +94,33 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
     }
     // More rows than coordinates is not an error: redundant but consistent rows (a truss
     // pinned at both ends) are the runtime's to handle, with minimum-norm multipliers.
-    Sizes { n, r, k }
+    Sizes { n, r, k, u, e }
+}
+
+/// One restitution per gap, none without gaps; gaps and events within the runtime's limits.
+fn check_gaps_and_events(model: &Model<'_>, (u, e): (usize, usize), errors: &mut Errors) {
+    if let Some(restitution) = model.function(Role::Restitution) {
+        if restitution.shape.len() != u {
+            errors.error_spanned_by(
+                restitution.shape.len_expr(),
+                format_args!(
+                    "`restitution` has {} entries, but the model has {u} gaps: one coefficient per gap",
+                    restitution.shape.len()
+                ),
+            );
+        }
+    }
+    for (role, count, limit) in [(Role::Gaps, u, MAX_GAPS), (Role::Events, e, MAX_EVENTS)] {
+        if let Some(function) = model.function(role).filter(|_| count > limit) {
+            errors.error_spanned_by(
+                function.shape.len_expr(),
+                format_args!(
+                    "`{}` returns {count} values; the runtime watches at most {limit}",
+                    role.name()
+                ),
+            );
+        }
+    }
 }
 
 /// How the function that fixes the number of coordinates states it.

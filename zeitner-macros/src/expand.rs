@@ -196,6 +196,9 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let methods = scene.functions.iter().map(|generated| {
         let method = format_ident!("{}", generated.method);
         let body = emitter.body(generated, &rt);
+        if let Some(wrapped) = values_only(generated, &body, &n, &rt) {
+            return wrapped;
+        }
         let (arguments, output) = signature(generated.method, &n, &z, &rt);
         quote! {
             #[inline]
@@ -204,6 +207,11 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
             }
         }
     });
+    let (u, e) = (scene.sizes.u, scene.sizes.e);
+    let gaps_and_events = quote! {
+        const UNILATERAL_CONSTRAINTS: usize = #u;
+        const EVENTS: usize = #e;
+    };
     // `G` by its nonzeros as well, for the sparse simulator.
     let sparse_jacobian = scene
         .functions
@@ -245,10 +253,51 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
                 functions: &[#(#summaries),*],
             };
             type Mass = #mass_type;
+            #gaps_and_events
             #(#methods)*
             #(#sparse_jacobian)*
         }
     }
+}
+
+/// The trait methods whose generated vector is read through another signature: one
+/// restitution by gap, the event functions into a slice, the next time event after `t`.
+fn values_only(
+    generated: &Generated,
+    body: &TokenStream,
+    n: &Literal,
+    rt: &TokenStream,
+) -> Option<TokenStream> {
+    let vec_n = quote!(#rt::Vector<#n>);
+    let count = Literal::usize_unsuffixed(generated.blocks[0].rows);
+    Some(match generated.method {
+        "restitution" => quote! {
+            #[inline]
+            fn restitution(&self, gap: usize) -> f64 {
+                let e = { #body };
+                if gap < #count { e[gap] } else { 0.0 }
+            }
+        },
+        "event_functions" => quote! {
+            #[inline]
+            fn event_functions(&self, q: &#vec_n, v: &#vec_n, t: f64, values: &mut [f64]) {
+                let e = { #body };
+                for (value, x) in values.iter_mut().zip(e.iter()) {
+                    *value = *x;
+                }
+            }
+        },
+        "time_event_after" => quote! {
+            #[inline]
+            fn time_event_after(&self, after: f64) -> Option<f64> {
+                let times = { #body };
+                times.iter().copied().filter(|&s| s > after).fold(None, |next: Option<f64>, s| {
+                    Some(next.map_or(s, |n| n.min(s)))
+                })
+            }
+        },
+        _ => return None,
+    })
 }
 
 fn signature(

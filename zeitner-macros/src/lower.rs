@@ -625,9 +625,7 @@ impl Lowerer<'_> {
                 return None;
             }
             let time = self.vars.time();
-            if matches!(scope.role, Role::Constraints | Role::VelocityConstraints)
-                && self.deps.any(self.graph, id, |v| v == time)
-            {
+            if scope.role.is_constraint() && self.deps.any(self.graph, id, |v| v == time) {
                 self.errors.error_spanned_by(
                     arg,
                     format_args!(

@@ -8,21 +8,33 @@ use crate::configurations::refuse_inner_cfg;
 use crate::consts::{self, Consts};
 use crate::errors::Errors;
 
-/// The four functions a model may define.
+/// The functions a model may define.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Role {
     Mass,
     Force,
     Constraints,
     VelocityConstraints,
+    /// Unilateral constraints `g_u(q, t) ≥ 0`, rows after `constraints`.
+    Gaps,
+    /// Newton's coefficient of restitution of each gap.
+    Restitution,
+    /// Functions whose zero crossings stop a step.
+    Events,
+    /// Times at which the model's functions are not smooth.
+    TimeEvents,
 }
 
 impl Role {
-    pub const ALL: [Role; 4] = [
+    pub const ALL: [Role; 8] = [
         Role::Mass,
         Role::Force,
         Role::Constraints,
         Role::VelocityConstraints,
+        Role::Gaps,
+        Role::Restitution,
+        Role::Events,
+        Role::TimeEvents,
     ];
 
     pub fn name(self) -> &'static str {
@@ -31,12 +43,29 @@ impl Role {
             Role::Force => "force",
             Role::Constraints => "constraints",
             Role::VelocityConstraints => "velocity_constraints",
+            Role::Gaps => "gaps",
+            Role::Restitution => "restitution",
+            Role::Events => "events",
+            Role::TimeEvents => "time_events",
         }
     }
 
     /// Whether the function may take velocities.
     pub fn takes_velocities(self) -> bool {
-        matches!(self, Role::Force | Role::VelocityConstraints)
+        matches!(self, Role::Force | Role::VelocityConstraints | Role::Events)
+    }
+
+    /// Whether the function may take the state at all (the others depend on parameters only).
+    pub fn takes_state(self) -> bool {
+        !matches!(self, Role::Restitution | Role::TimeEvents)
+    }
+
+    /// Whether its rows are constraints, differentiated for `G`.
+    pub fn is_constraint(self) -> bool {
+        matches!(
+            self,
+            Role::Constraints | Role::VelocityConstraints | Role::Gaps
+        )
     }
 
     fn signature_hint(self) -> &'static str {
@@ -47,6 +76,10 @@ impl Role {
             Role::VelocityConstraints => {
                 "fn velocity_constraints(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; K]"
             }
+            Role::Gaps => "fn gaps(&self, q: [f64; N], t: f64) -> [f64; U]",
+            Role::Restitution => "fn restitution(&self) -> [f64; U]",
+            Role::Events => "fn events(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; E]",
+            Role::TimeEvents => "fn time_events(&self) -> [f64; K]",
         }
     }
 }
@@ -154,9 +187,9 @@ impl<'a> Model<'a> {
                 other => {
                     errors.error_spanned_by(
                         other,
-                        "only the model functions (`mass`, `force`, `constraints`, `velocity_constraints`), \
-                         helper methods and `const`s may stand in a #[constrained_system] impl; put other \
-                         items in a second `impl` block",
+                        "only the model functions (`mass`, `force`, `constraints`, `velocity_constraints`, \
+                         `gaps`, `restitution`, `events`, `time_events`), helper methods and `const`s may \
+                         stand in a #[constrained_system] impl; put other items in a second `impl` block",
                     );
                     continue;
                 }
@@ -180,8 +213,9 @@ impl<'a> Model<'a> {
                 functions.push(parsed);
             }
         }
-        // `constraints` may be left out when `velocity_constraints` states every row.
-        let constraints_optional = seen.contains(&Role::VelocityConstraints);
+        // `constraints` may be left out when `velocity_constraints` or `gaps` state every row.
+        let constraints_optional =
+            seen.contains(&Role::VelocityConstraints) || seen.contains(&Role::Gaps);
         for role in [Role::Mass, Role::Force, Role::Constraints] {
             let optional = role == Role::Constraints && constraints_optional;
             if !(seen.contains(&role) || optional) {
@@ -379,6 +413,18 @@ fn parse_function<'a>(
         if refuse_inner_cfg(&typed.attrs, "an argument", errors) {
             ok = false;
         }
+        if !role.takes_state() {
+            errors.error_spanned_by(
+                typed,
+                format_args!(
+                    "`{}` depends on parameters only (`self.e`, constants): expected `{}`",
+                    role.name(),
+                    role.signature_hint()
+                ),
+            );
+            ok = false;
+            continue;
+        }
         if is_f64(&typed.ty) {
             if t.is_some() {
                 errors.error_spanned_by(typed, "only one `f64` argument (the time) is allowed");
@@ -470,7 +516,7 @@ fn parse_function<'a>(
                     "`{}` takes no velocities: expected `{}`{}",
                     role.name(),
                     role.signature_hint(),
-                    if role == Role::Constraints {
+                    if matches!(role, Role::Constraints | Role::Gaps) {
                         "; constraints on velocities go in `velocity_constraints`"
                     } else {
                         ""

@@ -66,7 +66,7 @@ pub fn check(
             continue;
         };
         match (lowered.role, &function.shape) {
-            (Role::Constraints, _) => {
+            (Role::Constraints | Role::Gaps, _) => {
                 for (j, &id) in lowered.entries.iter().enumerate() {
                     if !deps.any(graph, id, is_coordinate) {
                         errors.error_at(
@@ -118,7 +118,7 @@ pub fn build(
     vars: &mut Vars,
     errors: &mut Errors,
 ) -> Option<Scene> {
-    let Sizes { n, r, k } = sizes;
+    let Sizes { n, r, k, .. } = sizes;
     let z = r + k;
     let entries_of = |role: Role| -> Vec<Entry> {
         let (Some(function), Some(lowered)) = (
@@ -162,6 +162,7 @@ pub fn build(
     }
     let force = entries_of(Role::Force);
     let mut constraints = entries_of(Role::Constraints);
+    constraints.extend(entries_of(Role::Gaps));
     constraints.extend(entries_of(Role::VelocityConstraints));
 
     let time = vars.time();
@@ -425,6 +426,20 @@ pub fn build(
             "mass_jacobian_product",
             vec![matrix("dq", n, n, product_dq)],
         ));
+    }
+
+    // Restitution, event functions and time events: values only, nothing differentiated.
+    let values_only = [
+        (Role::Restitution, "restitution", "e"),
+        (Role::Events, "event_functions", "e"),
+        (Role::TimeEvents, "time_event_after", "times"),
+    ];
+    for (role, method, name) in values_only {
+        let entries = entries_of(role);
+        if !entries.is_empty() {
+            let items = entries.iter().enumerate().map(|(i, e)| (i, e.id, e.span));
+            functions.push((method, vec![vector(name, entries.len(), items.collect())]));
+        }
     }
 
     if !derive.failed.is_empty() {
