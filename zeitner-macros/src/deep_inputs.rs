@@ -154,9 +154,9 @@ fn a_chain_of_1000_powers_and_binary_methods() {
 }
 
 #[test]
-fn an_else_if_chain_of_1000_arms() {
+fn an_else_if_chain_of_3000_arms() {
     let mut entry = String::from("if t < 0.0 { x * x }");
-    for i in 1..1000 {
+    for i in 1..3000 {
         entry.push_str(&format!(
             " else if t < {i}.0 * self.m {{ x * x + {i}.5 * y }}"
         ));
@@ -179,4 +179,32 @@ fn conditions_of_2000_comparisons() {
         mixed.join(" || ")
     );
     expands_on_a_small_stack("conditions", timed_model(&entry));
+}
+
+#[test]
+fn chains_decided_at_expansion_time() {
+    // `else if` chains of 5000 arms and a `&&` chain of 5000 comparisons on a loop index: as
+    // values, in sums, as statements.
+    let arms = |value: &dyn Fn(usize) -> String| {
+        let mut chain = format!("if i == 0 {{ {} }}", value(0));
+        for k in 1..5000 {
+            chain.push_str(&format!(" else if i == {k} {{ {} }}", value(k)));
+        }
+        chain + " else { x * y }"
+    };
+    let all: Vec<String> = (0..5000).map(|k| format!("i < {}", k + 4)).collect();
+    let lets = format!(
+        "let mut s = 0.0;
+        for i in 0..4 {{
+            let a = {};
+            s += {};
+            {}
+            if {} {{ s += a; }} else {{ s -= a; }}
+        }}",
+        arms(&|k| format!("{k}.5 * x")),
+        arms(&|k| format!("{k}.0 * y")),
+        arms(&|k| format!("{{ s += {k}.25 * x * y; }}")),
+        all.join(" && ")
+    );
+    expands_on_a_small_stack("integer chains", model(&lets, "s * x - 1.0"));
 }

@@ -700,10 +700,10 @@ impl Lowerer<'_> {
         let mut arms: Vec<(&syn::ExprIf, Option<CondId>, Option<Id>)> = Vec::new();
         let mut current = if_expr;
         let mut value = loop {
-            let otherwise = match &current.else_branch {
-                Some((_, otherwise)) => Some(&**otherwise),
-                None => None,
-            };
+            let otherwise = current
+                .else_branch
+                .as_ref()
+                .map(|(_, otherwise)| &**otherwise);
             if self.looks_integer_cond(scope, &current.cond) {
                 // Decided at expansion time (on loop indices and consts): only the branch taken is read.
                 let Some(taken) = self.int_cond(scope, &current.cond) else {
