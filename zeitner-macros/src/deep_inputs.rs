@@ -112,3 +112,99 @@ fn deep_parentheses_in_a_loop_mean_each_turn_s_index() {
         );
     }
 }
+
+/// A model whose constraint is `entry`, with the time as an argument (for conditions).
+fn timed_model(entry: &str) -> String {
+    format!(
+        "impl S {{
+            fn mass(&self) -> [f64; 2] {{ [self.m, self.m] }}
+            fn force(&self) -> [f64; 2] {{ [0.0, -self.m] }}
+            fn constraints(&self, [x, y]: [f64; 2], t: f64) -> [f64; 1] {{ [{entry}] }}
+        }}"
+    )
+}
+
+#[test]
+fn unary_minus_2000_deep() {
+    // An odd count: the chain is `-(x * x + y)` in the end.
+    let entry = format!("{}(x * x + y) - 1.0", "- ".repeat(2001));
+    expands_on_a_small_stack("minus", model("", &entry));
+}
+
+#[test]
+fn unary_minus_in_parentheses_1000_deep() {
+    let entry = format!("{}x * y{} - 1.0", "-(".repeat(1000), ")".repeat(1000));
+    expands_on_a_small_stack("minus parentheses", model("", &entry));
+}
+
+#[test]
+fn a_chain_of_2000_method_calls() {
+    let calls: String = (0..2000)
+        .map(|i| [".sin()", ".cos()", ".abs()", ".sqrt()"][i % 4])
+        .collect();
+    expands_on_a_small_stack("methods", model("", &format!("(x * y){calls} - 1.0")));
+}
+
+#[test]
+fn a_chain_of_1000_powers_and_binary_methods() {
+    let calls: String = (0..1000)
+        .map(|i| [".powi(2)", ".min(y)", ".hypot(x)", ".atan2(y)"][i % 4])
+        .collect();
+    expands_on_a_small_stack("binary methods", model("", &format!("x{calls} - 1.0")));
+}
+
+#[test]
+fn an_else_if_chain_of_3000_arms() {
+    let mut entry = String::from("if t < 0.0 { x * x }");
+    for i in 1..3000 {
+        entry.push_str(&format!(
+            " else if t < {i}.0 * self.m {{ x * x + {i}.5 * y }}"
+        ));
+    }
+    entry.push_str(" else { y * y } - 1.0");
+    expands_on_a_small_stack("else if", timed_model(&entry));
+}
+
+#[test]
+fn conditions_of_2000_comparisons() {
+    let all: Vec<String> = (0..2000).map(|i| format!("t > {i}.5 * self.m")).collect();
+    let any: Vec<String> = (0..2000).map(|i| format!("t < {i}.5 * self.m")).collect();
+    let mixed: Vec<String> = (0..2000)
+        .map(|i| format!("!(t > {i}.5) && t < self.m || t == {i}.0"))
+        .collect();
+    let entry = format!(
+        "(if {} {{ x }} else {{ y }}) + (if {} {{ x }} else {{ y }}) * (if {} {{ x }} else {{ y }}) - 1.0",
+        all.join(" && "),
+        any.join(" || "),
+        mixed.join(" || ")
+    );
+    expands_on_a_small_stack("conditions", timed_model(&entry));
+}
+
+#[test]
+fn chains_decided_at_expansion_time() {
+    // `else if` chains of 5000 arms and a `&&` chain of 5000 comparisons on a loop index: as
+    // values, in sums, as statements.
+    let arms = |value: &dyn Fn(usize) -> String| {
+        let mut chain = format!("if i == 0 {{ {} }}", value(0));
+        for k in 1..5000 {
+            chain.push_str(&format!(" else if i == {k} {{ {} }}", value(k)));
+        }
+        chain + " else { x * y }"
+    };
+    let all: Vec<String> = (0..5000).map(|k| format!("i < {}", k + 4)).collect();
+    let lets = format!(
+        "let mut s = 0.0;
+        for i in 0..4 {{
+            let a = {};
+            s += {};
+            {}
+            if {} {{ s += a; }} else {{ s -= a; }}
+        }}",
+        arms(&|k| format!("{k}.5 * x")),
+        arms(&|k| format!("{k}.0 * y")),
+        arms(&|k| format!("{{ s += {k}.25 * x * y; }}")),
+        all.join(" && ")
+    );
+    expands_on_a_small_stack("integer chains", model(&lets, "s * x - 1.0"));
+}

@@ -596,13 +596,21 @@ impl Emitter<'_> {
                     Compare::Ne => quote!(#a != #b),
                 }
             }
-            CodeCond::And(a, b) => {
-                let (a, b) = (self.cond(a, span), self.cond(b, span));
-                quote!((#a) && (#b))
+            // A chain is emitted flat, `a && b && c`, however long: rustc reads it without
+            // nesting. Only an `||` inside an `&&` needs parentheses.
+            CodeCond::And(operands) => {
+                let operands = operands.iter().map(|c| match c {
+                    CodeCond::Or(_) => {
+                        let c = self.cond(c, span);
+                        quote!((#c))
+                    }
+                    _ => self.cond(c, span),
+                });
+                quote!(#(#operands)&&*)
             }
-            CodeCond::Or(a, b) => {
-                let (a, b) = (self.cond(a, span), self.cond(b, span));
-                quote!((#a) || (#b))
+            CodeCond::Or(operands) => {
+                let operands = operands.iter().map(|c| self.cond(c, span));
+                quote!(#(#operands)||*)
             }
             CodeCond::Not(a) => {
                 let a = self.cond(a, span);

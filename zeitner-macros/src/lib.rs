@@ -7,8 +7,9 @@
 //! parsed impl, spans kept; `consts` evaluates sizes) → `check` (sizes) → `lower` (statements
 //! unrolled by `unroll`, helpers inlined, expressions into the symbolic graph, every unsupported
 //! construct reported) → `symbolic` (derivatives, simplification, shared
-//! subexpressions) → `expand` (tokens). No stage recurses as deep as sums, products, parentheses
-//! or `let` chains nest (see `deep_inputs`).
+//! subexpressions) → `expand` (tokens). No stage recurses as deep as sums, products, parentheses,
+//! `let` chains, unary minus, method-call chains, `else if` chains or `&&`/`||` chains nest
+//! (see `deep_inputs`).
 //! The symbolic engine itself is the `zeitner-symbolic` crate, free of syn.
 
 mod check;

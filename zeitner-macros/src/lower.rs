@@ -186,9 +186,51 @@ impl Lowerer<'_> {
     /// The graph node of `expr`; a constant that is not finite (an overflowing literal such as
     /// `1e400`, or constant arithmetic such as `1e300 * 1e300` or `0.0 / 0.0`) is an error at
     /// the innermost expression that produced it.
+    ///
+    /// Unary minus, parentheses and method calls on a value nest as deep as they are long
+    /// (`x.sin().cos()…`, `-(-x.abs()).sqrt()`): that spine is walked with a loop, its innermost
+    /// operand lowered first and the operations applied outwards, so a chain of thousands costs
+    /// no deeper stack than one link.
     fn lower(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
-        let id = self.lower_expr(scope, expr)?;
-        self.finite(id, expr, matches!(expr, Expr::Lit(_)))
+        let mut spine: Vec<&Expr> = Vec::new();
+        let mut leaf = Some(expr);
+        while let Some(node) = leaf {
+            let inner = match node {
+                Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => &*u.expr,
+                Expr::Paren(p) => &*p.expr,
+                Expr::Group(g) => &*g.expr,
+                Expr::MethodCall(c) if c.turbofish.is_none() && !is_self(&c.receiver) => {
+                    &*c.receiver
+                }
+                _ => break,
+            };
+            if refuse_inner_cfg(expr_attributes(node), "an expression", self.errors) {
+                leaf = None;
+                break;
+            }
+            spine.push(node);
+            leaf = Some(inner);
+        }
+        let mut value = leaf.and_then(|leaf| {
+            let id = self.lower_expr(scope, leaf)?;
+            self.finite(id, leaf, matches!(leaf, Expr::Lit(_)))
+        });
+        for node in spine.into_iter().rev() {
+            let id = match node {
+                Expr::Unary(_) => value.map(|a| self.graph.neg(a)),
+                Expr::MethodCall(call) => self.apply_method(
+                    scope,
+                    &call.method,
+                    &call.method.to_string(),
+                    value,
+                    call.args.iter().collect(),
+                    call,
+                ),
+                _ => value,
+            };
+            value = id.and_then(|id| self.finite(id, node, false));
+        }
+        value
     }
 
     fn lower_expr(&mut self, scope: &Scope, expr: &Expr) -> Option<Id> {
@@ -648,47 +690,65 @@ impl Lowerer<'_> {
         Some(self.graph.call(index as u32, args))
     }
 
+    /// `if c { a } else if d { b } else { e }`: syn nests an `else if` chain as deep as it is
+    /// long, so the chain is walked with a loop, each arm's condition and value lowered in
+    /// order, and the selects built from the last arm back.
     fn lower_if(&mut self, scope: &Scope, if_expr: &syn::ExprIf) -> Option<Id> {
-        if self.looks_integer_cond(scope, &if_expr.cond) {
-            // Decided at expansion time (on loop indices and consts): only the branch taken is read.
-            let taken = self.int_cond(scope, &if_expr.cond)?;
-            return match (taken, &if_expr.else_branch) {
-                (true, _) => self.lower_block_value(scope, &if_expr.then_branch),
-                (false, Some((_, otherwise))) => match &**otherwise {
-                    Expr::Block(block) => self.lower_block_value(scope, &block.block),
-                    chained => self.lower(scope, chained),
-                },
-                (false, None) => {
-                    self.errors
-                        .error_spanned_by(if_expr, "an `if` in a model needs an `else` branch");
-                    None
+        // Arms whose condition is read at run time: (the `if`, its condition, its value).
+        let mut arms: Vec<(&syn::ExprIf, Option<CondId>, Option<Id>)> = Vec::new();
+        let mut current = if_expr;
+        let mut value = loop {
+            let otherwise = current
+                .else_branch
+                .as_ref()
+                .map(|(_, otherwise)| &**otherwise);
+            if self.looks_integer_cond(scope, &current.cond) {
+                // Decided at expansion time (on loop indices and consts): only the branch taken is read.
+                let Some(taken) = self.int_cond(scope, &current.cond) else {
+                    break None;
+                };
+                if taken {
+                    break self.lower_block_value(scope, &current.then_branch);
                 }
-            };
-        }
-        let cond = self.lower_cond(scope, &if_expr.cond);
-        let then = self.lower_block_value(scope, &if_expr.then_branch);
-        let otherwise = match &if_expr.else_branch {
-            Some((_, otherwise)) => match &**otherwise {
-                Expr::Block(block) => self.lower_block_value(scope, &block.block),
-                chained => self.lower(scope, chained),
-            },
-            None => {
-                self.errors
-                    .error_spanned_by(if_expr, "an `if` in a model needs an `else` branch");
-                None
+            } else {
+                let cond = self.lower_cond(scope, &current.cond);
+                let then = self.lower_block_value(scope, &current.then_branch);
+                arms.push((current, cond, then));
+            }
+            match otherwise {
+                Some(Expr::If(chained)) if chained.attrs.is_empty() => {
+                    current = chained;
+                }
+                Some(Expr::Block(block)) => break self.lower_block_value(scope, &block.block),
+                Some(chained) => break self.lower(scope, chained),
+                None => {
+                    self.errors
+                        .error_spanned_by(current, "an `if` in a model needs an `else` branch");
+                    break None;
+                }
             }
         };
-        let cond = cond?;
-        let vars = &*self.vars;
-        if self.graph.cond_depends_on_any(cond, &|v| vars.is_state(v)) {
-            self.errors.error_spanned_by(
-                &if_expr.cond,
-                "this condition depends on a coordinate or velocity; conditions may use only `t` and parameters \
-                 (use `min`, `max` or `abs` for piecewise terms in the state)",
-            );
-            return None;
+        for (if_expr, cond, then) in arms.into_iter().rev() {
+            let Some(cond) = cond else {
+                value = None;
+                continue;
+            };
+            let vars = &*self.vars;
+            if self.graph.cond_depends_on_any(cond, &|v| vars.is_state(v)) {
+                self.errors.error_spanned_by(
+                    &if_expr.cond,
+                    "this condition depends on a coordinate or velocity; conditions may use only `t` and parameters \
+                     (use `min`, `max` or `abs` for piecewise terms in the state)",
+                );
+                value = None;
+                continue;
+            }
+            value = match (then, value) {
+                (Some(then), Some(otherwise)) => Some(self.graph.select(cond, then, otherwise)),
+                _ => None,
+            };
         }
-        Some(self.graph.select(cond, then?, otherwise?))
+        value
     }
 
     fn lower_block_value(&mut self, scope: &Scope, block: &syn::Block) -> Option<Id> {
@@ -704,67 +764,103 @@ impl Lowerer<'_> {
         }
     }
 
+    /// A condition: comparisons combined by `&&`, `||` and `!`. A chain of thousands of `&&`
+    /// nests as deep in syn as it is long, so it is read with an explicit stack: each operand
+    /// visited left to right, each combination built once both its operands are.
     fn lower_cond(&mut self, scope: &Scope, expr: &Expr) -> Option<CondId> {
-        match expr {
-            Expr::Paren(p) => self.lower_cond(scope, &p.expr),
-            Expr::Path(p)
-                if p.path
-                    .get_ident()
-                    .and_then(|i| self.outlines.index(&i.to_string()))
-                    .is_some() =>
-            {
-                let outlines = self.outlines;
-                let part = p
-                    .path
-                    .get_ident()
-                    .and_then(|i| outlines.index(&i.to_string()))?;
-                let expr = outlines.exprs[part].as_ref()?;
-                self.lower_cond(scope, expr)
-            }
-            Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
-                let inner = self.lower_cond(scope, &u.expr)?;
-                Some(self.graph.not(inner))
-            }
-            Expr::Binary(b) => {
-                let compare = match b.op {
-                    BinOp::Lt(_) => Some(Compare::Lt),
-                    BinOp::Le(_) => Some(Compare::Le),
-                    BinOp::Gt(_) => Some(Compare::Gt),
-                    BinOp::Ge(_) => Some(Compare::Ge),
-                    BinOp::Eq(_) => Some(Compare::Eq),
-                    BinOp::Ne(_) => Some(Compare::Ne),
-                    _ => None,
-                };
-                if let Some(op) = compare {
-                    let (l, r) = (self.lower(scope, &b.left), self.lower(scope, &b.right));
-                    return Some(self.graph.compare(op, l?, r?));
+        enum Task<'e> {
+            Visit(&'e Expr),
+            Not,
+            And,
+            Or,
+        }
+        let outlines = self.outlines;
+        let mut tasks = vec![Task::Visit(expr)];
+        let mut values: Vec<Option<CondId>> = Vec::new();
+        while let Some(task) = tasks.pop() {
+            let expr = match task {
+                Task::Visit(expr) => expr,
+                Task::Not => {
+                    let a = values.pop().expect("the operand was visited");
+                    values.push(a.map(|a| self.graph.not(a)));
+                    continue;
                 }
-                match b.op {
-                    BinOp::And(_) | BinOp::Or(_) => {
-                        let (l, r) = (
-                            self.lower_cond(scope, &b.left),
-                            self.lower_cond(scope, &b.right),
-                        );
-                        let (l, r) = (l?, r?);
-                        Some(if matches!(b.op, BinOp::And(_)) {
-                            self.graph.and(l, r)
-                        } else {
-                            self.graph.or(l, r)
-                        })
-                    }
-                    _ => {
-                        self.errors
-                            .error_spanned_by(b, "a condition compares numbers: `t < self.t_off`");
-                        None
+                Task::And | Task::Or => {
+                    let b = values.pop().expect("the right operand was visited");
+                    let a = values.pop().expect("the left operand was visited");
+                    values.push(match (a, b) {
+                        (Some(a), Some(b)) if matches!(task, Task::And) => {
+                            Some(self.graph.and(a, b))
+                        }
+                        (Some(a), Some(b)) => Some(self.graph.or(a, b)),
+                        _ => None,
+                    });
+                    continue;
+                }
+            };
+            match expr {
+                Expr::Paren(p) => tasks.push(Task::Visit(&p.expr)),
+                Expr::Path(p)
+                    if p.path
+                        .get_ident()
+                        .and_then(|i| outlines.index(&i.to_string()))
+                        .is_some() =>
+                {
+                    let part = p
+                        .path
+                        .get_ident()
+                        .and_then(|i| outlines.index(&i.to_string()));
+                    match part.and_then(|part| outlines.exprs[part].as_ref()) {
+                        Some(expr) => tasks.push(Task::Visit(expr)),
+                        None => values.push(None),
                     }
                 }
-            }
-            other => {
-                self.errors
-                    .error_spanned_by(other, "a condition compares numbers: `t < self.t_off`");
-                None
+                Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
+                    tasks.push(Task::Not);
+                    tasks.push(Task::Visit(&u.expr));
+                }
+                Expr::Binary(b) => {
+                    let compare = match b.op {
+                        BinOp::Lt(_) => Some(Compare::Lt),
+                        BinOp::Le(_) => Some(Compare::Le),
+                        BinOp::Gt(_) => Some(Compare::Gt),
+                        BinOp::Ge(_) => Some(Compare::Ge),
+                        BinOp::Eq(_) => Some(Compare::Eq),
+                        BinOp::Ne(_) => Some(Compare::Ne),
+                        _ => None,
+                    };
+                    if let Some(op) = compare {
+                        let (l, r) = (self.lower(scope, &b.left), self.lower(scope, &b.right));
+                        values.push(l.zip(r).map(|(l, r)| self.graph.compare(op, l, r)));
+                        continue;
+                    }
+                    match b.op {
+                        BinOp::And(_) | BinOp::Or(_) => {
+                            tasks.push(if matches!(b.op, BinOp::And(_)) {
+                                Task::And
+                            } else {
+                                Task::Or
+                            });
+                            tasks.push(Task::Visit(&b.right));
+                            tasks.push(Task::Visit(&b.left));
+                        }
+                        _ => {
+                            self.errors.error_spanned_by(
+                                b,
+                                "a condition compares numbers: `t < self.t_off`",
+                            );
+                            values.push(None);
+                        }
+                    }
+                }
+                other => {
+                    self.errors
+                        .error_spanned_by(other, "a condition compares numbers: `t < self.t_off`");
+                    values.push(None);
+                }
             }
         }
+        values.pop().expect("the condition was visited")
     }
 }
 
@@ -794,11 +890,11 @@ fn is_self(expr: &Expr) -> bool {
     matches!(expr, Expr::Path(p) if p.path.is_ident("self"))
 }
 
-fn is_self_rooted(expr: &Expr) -> bool {
-    match expr {
-        Expr::Field(f) => is_self_rooted(&f.base),
-        other => is_self(other),
+fn is_self_rooted(mut expr: &Expr) -> bool {
+    while let Expr::Field(f) = expr {
+        expr = &f.base;
     }
+    is_self(expr)
 }
 
 /// `x.powi(2)` or `x.powf(y)` for what the user wrote as `x ^ y`. `^` binds more loosely than

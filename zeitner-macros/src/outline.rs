@@ -5,9 +5,15 @@
 //! [`DEPTH`] groups deep are taken out ("outlined") and replaced by a placeholder name, one per
 //! comma-separated part; each outlined part is parsed on its own, just as shallow, and lowering
 //! reads a placeholder as the expression it stands for. All of it is iterative. Input nested
-//! less deeply than [`DEPTH`] is left exactly as it is.
+//! less deeply than [`DEPTH`] is left exactly as it is, but for long runs of unary minus.
+//!
+//! syn also recurses once per unary operator (about 3 KiB of stack a level unoptimised: `- - x`
+//! six hundred deep overflows 2 MiB, where rustc compiles thousands). In a run of `-` tokens
+//! every one after the first is a unary minus, and two of those in a row cancel exactly
+//! (`-(-e)` is `e`, bit for bit, for every `f64`), so pairs are dropped until no run is longer than two: `a - - - - b` reads as `a - b`. The
+//! user's impl is re-emitted as written; only what the macro reads is shortened.
 
-use proc_macro2::{Delimiter, Group, Ident, Span, TokenStream, TokenTree};
+use proc_macro2::{Delimiter, Group, Ident, Spacing, Span, TokenStream, TokenTree};
 
 use crate::errors::Errors;
 
@@ -84,7 +90,7 @@ pub fn outline(item: TokenStream, errors: &mut Errors) -> (TokenStream, Outlines
                 }
             };
             let TokenTree::Group(group) = token else {
-                top.out.push(token);
+                push_collapsing_minus(&mut top.out, token);
                 continue;
             };
             let depth = top.depth + 1;
@@ -150,4 +156,17 @@ pub fn outline(item: TokenStream, errors: &mut Errors) -> (TokenStream, Outlines
         });
     let exprs = std::iter::once(None).chain(parts).collect();
     (item, Outlines { exprs, children })
+}
+
+/// Pushes `token`, cancelling a pair of unary minuses: when `out` ends with `- -` and `token`
+/// is a third `-`, the last two are both unary (each follows a `-`) and `-(-e)` is `e`. A `-`
+/// joined to what follows (`->`, `-=`) is never dropped.
+fn push_collapsing_minus(out: &mut Vec<TokenTree>, token: TokenTree) {
+    let is_minus = |t: &TokenTree| matches!(t, TokenTree::Punct(p) if p.as_char() == '-');
+    let alone_minus = matches!(&token, TokenTree::Punct(p) if p.as_char() == '-' && p.spacing() == Spacing::Alone);
+    if alone_minus && out.len() >= 2 && out[out.len() - 2..].iter().all(is_minus) {
+        out.pop();
+        return;
+    }
+    out.push(token);
 }

@@ -575,41 +575,80 @@ impl Lowerer<'_> {
         }
     }
 
+    /// An `if` statement on loop indices and consts; an `else if` chain is followed with a loop.
     fn if_statement(&mut self, scope: &mut Scope, if_expr: &syn::ExprIf) {
-        if !self.looks_integer_cond(scope, &if_expr.cond) {
-            self.errors.error_spanned_by(
-                &if_expr.cond,
-                "an `if` statement needs a condition known at expansion time (on loop indices and \
-                 consts); for values that depend on `t` or parameters, write `if` as an expression: \
-                 `let x = if t < self.t0 { a } else { b };`",
-            );
-            return;
-        }
-        let Some(taken) = self.int_cond(scope, &if_expr.cond) else {
-            return;
-        };
-        if taken {
-            scope.open();
-            self.run_statements(scope, &if_expr.then_branch.stmts);
-            scope.close();
-            return;
-        }
-        match if_expr.else_branch.as_ref().map(|(_, e)| &**e) {
-            Some(Expr::Block(block)) => {
-                scope.open();
-                self.run_statements(scope, &block.block.stmts);
-                scope.close();
+        let mut if_expr = if_expr;
+        loop {
+            if !self.looks_integer_cond(scope, &if_expr.cond) {
+                self.errors.error_spanned_by(
+                    &if_expr.cond,
+                    "an `if` statement needs a condition known at expansion time (on loop indices and \
+                     consts); for values that depend on `t` or parameters, write `if` as an expression: \
+                     `let x = if t < self.t0 { a } else { b };`",
+                );
+                return;
             }
-            Some(Expr::If(chained)) => self.if_statement(scope, chained),
-            Some(other) => self.statement(scope, &Stmt::Expr(other.clone(), None)),
-            None => {}
+            let Some(taken) = self.int_cond(scope, &if_expr.cond) else {
+                return;
+            };
+            if taken {
+                scope.open();
+                self.run_statements(scope, &if_expr.then_branch.stmts);
+                scope.close();
+                return;
+            }
+            match if_expr.else_branch.as_ref().map(|(_, e)| &**e) {
+                Some(Expr::Block(block)) => {
+                    scope.open();
+                    self.run_statements(scope, &block.block.stmts);
+                    scope.close();
+                }
+                Some(Expr::If(chained)) => {
+                    if_expr = chained;
+                    continue;
+                }
+                Some(other) => self.statement(scope, &Stmt::Expr(other.clone(), None)),
+                None => {}
+            }
+            return;
         }
     }
 
     /// The value of an expression: a number, an integer, or an array.
     pub(super) fn value(&mut self, scope: &Scope, expr: &Expr) -> Option<Value> {
+        // Parentheses and `if`s decided at expansion time lead to the expression that gives
+        // the value: followed with a loop, so an `else if` chain of any length costs no stack.
+        let mut expr = expr;
+        loop {
+            let inner = match expr {
+                Expr::Paren(p) if !self.looks_integer(scope, expr) => &*p.expr,
+                Expr::If(if_expr) if self.looks_integer_cond(scope, &if_expr.cond) => {
+                    let taken = self.int_cond(scope, &if_expr.cond)?;
+                    let branch = if taken {
+                        block_expr(&if_expr.then_branch)
+                    } else {
+                        match if_expr.else_branch.as_ref().map(|(_, e)| &**e) {
+                            Some(Expr::Block(block)) => block_expr(&block.block),
+                            Some(chained) => Some(chained),
+                            None => None,
+                        }
+                    };
+                    match branch {
+                        Some(branch) => branch,
+                        None => {
+                            self.errors.error_spanned_by(
+                                if_expr,
+                                "an `if` that gives a value has an `else`, and each branch holds one expression",
+                            );
+                            return None;
+                        }
+                    }
+                }
+                _ => break,
+            };
+            expr = inner;
+        }
         match expr {
-            Expr::Paren(p) if !self.looks_integer(scope, expr) => self.value(scope, &p.expr),
             Expr::Array(array) => {
                 crate::configurations::refuse_inner_cfg(&array.attrs, "an array", self.errors);
                 let mut elements = Vec::with_capacity(array.elems.len());
@@ -663,28 +702,6 @@ impl Lowerer<'_> {
             {
                 let helper = self.helper(&call.method).expect("checked");
                 self.call_helper(scope, helper, call)
-            }
-            Expr::If(if_expr) if self.looks_integer_cond(scope, &if_expr.cond) => {
-                let taken = self.int_cond(scope, &if_expr.cond)?;
-                let branch = if taken {
-                    block_expr(&if_expr.then_branch)
-                } else {
-                    match if_expr.else_branch.as_ref().map(|(_, e)| &**e) {
-                        Some(Expr::Block(block)) => block_expr(&block.block),
-                        Some(chained) => Some(chained),
-                        None => None,
-                    }
-                };
-                match branch {
-                    Some(branch) => self.value(scope, branch),
-                    None => {
-                        self.errors.error_spanned_by(
-                            if_expr,
-                            "an `if` that gives a value has an `else`, and each branch holds one expression",
-                        );
-                        None
-                    }
-                }
             }
             _ if self.looks_integer(scope, expr) => self.int(scope, expr).map(Value::Int),
             _ => self
@@ -782,66 +799,83 @@ impl Lowerer<'_> {
         })
     }
 
-    /// Whether a condition compares integers only (so it is decided at expansion time).
+    /// Whether a condition compares integers only (so it is decided at expansion time). The
+    /// left spine of a `&&`/`||` chain is walked with a loop.
     pub(super) fn looks_integer_cond(&self, scope: &Scope, expr: &Expr) -> bool {
-        match expr {
-            Expr::Paren(p) => self.looks_integer_cond(scope, &p.expr),
-            Expr::Lit(syn::ExprLit {
-                lit: syn::Lit::Bool(_),
-                ..
-            }) => true,
-            Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => {
-                self.looks_integer_cond(scope, &u.expr)
+        let mut expr = expr;
+        loop {
+            match expr {
+                Expr::Paren(p) => expr = &p.expr,
+                Expr::Lit(syn::ExprLit {
+                    lit: syn::Lit::Bool(_),
+                    ..
+                }) => return true,
+                Expr::Unary(u) if matches!(u.op, UnOp::Not(_)) => expr = &u.expr,
+                Expr::Binary(b) => match b.op {
+                    BinOp::And(_) | BinOp::Or(_) => {
+                        if !self.looks_integer_cond(scope, &b.right) {
+                            return false;
+                        }
+                        expr = &b.left;
+                    }
+                    BinOp::Lt(_)
+                    | BinOp::Le(_)
+                    | BinOp::Gt(_)
+                    | BinOp::Ge(_)
+                    | BinOp::Eq(_)
+                    | BinOp::Ne(_) => {
+                        return self.looks_integer(scope, &b.left)
+                            && self.looks_integer(scope, &b.right)
+                    }
+                    _ => return false,
+                },
+                _ => return false,
             }
-            Expr::Binary(b) => match b.op {
-                BinOp::And(_) | BinOp::Or(_) => {
-                    self.looks_integer_cond(scope, &b.left)
-                        && self.looks_integer_cond(scope, &b.right)
-                }
-                BinOp::Lt(_)
-                | BinOp::Le(_)
-                | BinOp::Gt(_)
-                | BinOp::Ge(_)
-                | BinOp::Eq(_)
-                | BinOp::Ne(_) => {
-                    self.looks_integer(scope, &b.left) && self.looks_integer(scope, &b.right)
-                }
-                _ => false,
-            },
-            _ => false,
         }
     }
 
+    /// The truth of a condition decided at expansion time, short-circuiting as Rust does. The
+    /// left spine of a `&&`/`||` chain is walked with a loop.
     pub(super) fn int_cond(&mut self, scope: &Scope, expr: &Expr) -> Option<bool> {
-        match expr {
+        let mut spine: Vec<&syn::ExprBinary> = Vec::new();
+        let mut leftmost = expr;
+        while let Expr::Binary(b) = leftmost {
+            if !matches!(b.op, BinOp::And(_) | BinOp::Or(_)) {
+                break;
+            }
+            spine.push(b);
+            leftmost = &b.left;
+        }
+        let mut value = match leftmost {
             Expr::Paren(p) => self.int_cond(scope, &p.expr),
             Expr::Lit(syn::ExprLit {
                 lit: syn::Lit::Bool(b),
                 ..
             }) => Some(b.value),
             Expr::Unary(u) => self.int_cond(scope, &u.expr).map(|b| !b),
-            Expr::Binary(b) => match b.op {
-                BinOp::And(_) => {
-                    Some(self.int_cond(scope, &b.left)? && self.int_cond(scope, &b.right)?)
-                }
-                BinOp::Or(_) => {
-                    Some(self.int_cond(scope, &b.left)? || self.int_cond(scope, &b.right)?)
-                }
-                op => {
-                    let (l, r) = (self.int(scope, &b.left), self.int(scope, &b.right));
-                    let (l, r) = (l?, r?);
-                    Some(match op {
-                        BinOp::Lt(_) => l < r,
-                        BinOp::Le(_) => l <= r,
-                        BinOp::Gt(_) => l > r,
-                        BinOp::Ge(_) => l >= r,
-                        BinOp::Eq(_) => l == r,
-                        _ => l != r,
-                    })
-                }
-            },
+            Expr::Binary(b) => {
+                let (l, r) = (self.int(scope, &b.left), self.int(scope, &b.right));
+                let (l, r) = (l?, r?);
+                Some(match b.op {
+                    BinOp::Lt(_) => l < r,
+                    BinOp::Le(_) => l <= r,
+                    BinOp::Gt(_) => l > r,
+                    BinOp::Ge(_) => l >= r,
+                    BinOp::Eq(_) => l == r,
+                    _ => l != r,
+                })
+            }
             _ => None,
+        };
+        for b in spine.into_iter().rev() {
+            let left = value?;
+            value = match b.op {
+                BinOp::And(_) if !left => Some(false),
+                BinOp::Or(_) if left => Some(true),
+                _ => self.int_cond(scope, &b.right),
+            };
         }
+        value
     }
 
     pub(super) fn helper(&self, method: &syn::Ident) -> Option<usize> {

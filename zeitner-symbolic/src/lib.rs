@@ -2,8 +2,9 @@
 //! shares subexpressions as it is built ([`graph`]), equality up to algebra ([`canonical`]),
 //! differentiation ([`diff`]), numeric evaluation for testing ([`eval`]) and scheduling into
 //! straight-line code ([`program`]). Every pass over an expression's operations is iterative, so
-//! its depth costs no stack, and scheduled code nests at most [`program::MAX_DEPTH`] deep (the
-//! `&&`/`||` nesting of conditions is still walked recursively).
+//! its depth costs no stack, and scheduled code nests at most [`program::MAX_DEPTH`] deep; a
+//! condition's `&&`/`||` chains are flat lists in scheduled code, so only parentheses the
+//! user wrote around mixed `&&`/`||`/`!` nest there.
 //!
 //! It knows nothing of syn or Rust syntax, so it can be property-tested and fuzzed directly.
 

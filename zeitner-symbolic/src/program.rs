@@ -21,12 +21,15 @@ pub enum Code {
     Call(u32, Vec<Code>),
 }
 
-/// A condition of the emitted code.
+/// A condition of the emitted code. A chain of `&&` (or of `||`) is one flat list, however it
+/// was grouped: `&&` and `||` are associative, short circuit included, so `a && b && c` is one
+/// node with three operands, none of them itself an `And` (an `Or`), and a chain of thousands
+/// nests no deeper than one.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CodeCond {
     Compare(Compare, Code, Code),
-    And(Box<CodeCond>, Box<CodeCond>),
-    Or(Box<CodeCond>, Box<CodeCond>),
+    And(Vec<CodeCond>),
+    Or(Vec<CodeCond>),
     Not(Box<CodeCond>),
 }
 
@@ -228,16 +231,16 @@ fn count_code(code: &Code, counts: &mut OpCounts) {
 }
 
 fn count_cond(cond: &CodeCond, counts: &mut OpCounts) {
-    match cond {
-        CodeCond::Compare(_, a, b) => {
-            count_code(a, counts);
-            count_code(b, counts);
+    let mut stack = vec![cond];
+    while let Some(cond) = stack.pop() {
+        match cond {
+            CodeCond::Compare(_, a, b) => {
+                count_code(a, counts);
+                count_code(b, counts);
+            }
+            CodeCond::And(operands) | CodeCond::Or(operands) => stack.extend(operands),
+            CodeCond::Not(a) => stack.push(a),
         }
-        CodeCond::And(a, b) | CodeCond::Or(a, b) => {
-            count_cond(a, counts);
-            count_cond(b, counts);
-        }
-        CodeCond::Not(a) => count_cond(a, counts),
     }
 }
 
@@ -291,23 +294,56 @@ fn code_of(graph: &Graph, id: Id, temp_of: &[Option<u32>], defining: bool) -> Co
     }
 }
 
+/// The code of a condition, built with an explicit stack; each `&&` (`||`) chain flattened.
 fn cond_code(graph: &Graph, cond: CondId, temp_of: &[Option<u32>]) -> CodeCond {
-    match graph.cond(cond) {
-        Cond::Compare(op, a, b) => CodeCond::Compare(
-            *op,
-            code_of(graph, *a, temp_of, false),
-            code_of(graph, *b, temp_of, false),
-        ),
-        Cond::And(a, b) => CodeCond::And(
-            Box::new(cond_code(graph, *a, temp_of)),
-            Box::new(cond_code(graph, *b, temp_of)),
-        ),
-        Cond::Or(a, b) => CodeCond::Or(
-            Box::new(cond_code(graph, *a, temp_of)),
-            Box::new(cond_code(graph, *b, temp_of)),
-        ),
-        Cond::Not(a) => CodeCond::Not(Box::new(cond_code(graph, *a, temp_of))),
+    enum Task {
+        Visit(CondId),
+        /// Take the last `n` conditions built as the operands of an `And` (`true`) or `Or`.
+        Chain(bool, usize),
+        Not,
     }
+    let mut tasks = vec![Task::Visit(cond)];
+    let mut built: Vec<CodeCond> = Vec::new();
+    while let Some(task) = tasks.pop() {
+        match task {
+            Task::Visit(cond) => match *graph.cond(cond) {
+                Cond::Compare(op, a, b) => built.push(CodeCond::Compare(
+                    op,
+                    code_of(graph, a, temp_of, false),
+                    code_of(graph, b, temp_of, false),
+                )),
+                Cond::Not(a) => tasks.extend([Task::Not, Task::Visit(a)]),
+                Cond::And(..) | Cond::Or(..) => {
+                    let and = matches!(graph.cond(cond), Cond::And(..));
+                    // The operands of the whole chain, left to right.
+                    let mut operands = Vec::new();
+                    let mut chain = vec![cond];
+                    while let Some(c) = chain.pop() {
+                        match *graph.cond(c) {
+                            Cond::And(a, b) if and => chain.extend([b, a]),
+                            Cond::Or(a, b) if !and => chain.extend([b, a]),
+                            _ => operands.push(c),
+                        }
+                    }
+                    tasks.push(Task::Chain(and, operands.len()));
+                    tasks.extend(operands.into_iter().rev().map(Task::Visit));
+                }
+            },
+            Task::Chain(and, n) => {
+                let operands = built.split_off(built.len() - n);
+                built.push(if and {
+                    CodeCond::And(operands)
+                } else {
+                    CodeCond::Or(operands)
+                });
+            }
+            Task::Not => {
+                let a = built.pop().expect("the operand was built");
+                built.push(CodeCond::Not(Box::new(a)));
+            }
+        }
+    }
+    built.pop().expect("the condition was built")
 }
 
 impl Program {
@@ -373,8 +409,8 @@ fn run_cond(
         CodeCond::Compare(op, a, b) => {
             op.apply(run(a, temps, vars, calls), run(b, temps, vars, calls))
         }
-        CodeCond::And(a, b) => run_cond(a, temps, vars, calls) && run_cond(b, temps, vars, calls),
-        CodeCond::Or(a, b) => run_cond(a, temps, vars, calls) || run_cond(b, temps, vars, calls),
+        CodeCond::And(operands) => operands.iter().all(|c| run_cond(c, temps, vars, calls)),
+        CodeCond::Or(operands) => operands.iter().any(|c| run_cond(c, temps, vars, calls)),
         CodeCond::Not(a) => !run_cond(a, temps, vars, calls),
     }
 }
