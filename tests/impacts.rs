@@ -2,7 +2,7 @@
 
 use zeitner::{
     ConstrainedSystem, DiagonalMass, MassKind, Matrix, Options, SceneSummary, Simulator,
-    StopReason, Vector,
+    StepControl, StopReason, Vector,
 };
 
 /// A ball of mass `m` above a floor: `y ≥ 0`, restitution `e`; written by hand.
@@ -100,7 +100,6 @@ fn a_ball_bounces_at_the_closed_form_times() {
             break;
         }
     }
-    println!("{impacts:?}");
     for (n, (t, _, _, _)) in impacts.iter().enumerate() {
         let expected = fall * (1.0 + 2.0 * n as f64);
         assert!(
@@ -138,4 +137,271 @@ fn the_generated_ball_bounces_like_the_hand_written_one() {
         }
     }
     assert!(impacts > 0);
+}
+
+/// The complete elliptic integral of the first kind by the arithmetic–geometric mean:
+/// `K(k) = π / (2 AGM(1, √(1 - k²)))`.
+fn complete_elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
+    for _ in 0..30 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
+
+/// The incomplete elliptic integral `F(ψ, k) = ∫₀^ψ dφ / √(1 - k² sin²φ)`, composite Simpson
+/// (the integrand is analytic; 4000 intervals leave ~1e-16).
+fn incomplete_elliptic_f(psi: f64, k: f64) -> f64 {
+    let n = 4000;
+    let h = psi / n as f64;
+    let f = |x: f64| 1.0 / (1.0 - k * k * x.sin().powi(2)).sqrt();
+    let inner: f64 = (1..n)
+        .map(|i| f(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    h / 3.0 * (f(0.0) + inner + f(psi))
+}
+
+/// Runs to `t_end` through every event, returning the impacts and the events (time, index,
+/// direction).
+#[allow(clippy::type_complexity)]
+fn run_until<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    sim: &mut Simulator<'_, S, N, Z>,
+    t_end: f64,
+) -> (
+    Vec<zeitner::Impact<N, Z>>,
+    Vec<(f64, usize, zeitner::Direction)>,
+) {
+    let mut impacts = Vec::new();
+    let mut events = Vec::new();
+    loop {
+        let reason = sim
+            .advance_to(t_end, |step| {
+                if let Some(impact) = step.impact() {
+                    impacts.push(*impact);
+                }
+            })
+            .unwrap();
+        match reason {
+            StopReason::Event { index, direction } => events.push((sim.time(), index, direction)),
+            _ => return (impacts, events),
+        }
+    }
+}
+
+fn impacts_until<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    sim: &mut Simulator<'_, S, N, Z>,
+    t_end: f64,
+) -> Vec<zeitner::Impact<N, Z>> {
+    run_until(sim, t_end).0
+}
+
+#[test]
+fn a_ball_with_restitution_one_keeps_its_energy_over_100_impacts() {
+    let ball = GeneratedBall {
+        m: 1.5,
+        g: 9.81,
+        e: 1.0,
+    };
+    let h0 = 1.0;
+    let fall = (2.0 * h0 / ball.g).sqrt();
+    let mut sim = Simulator::new(
+        &ball,
+        Vector::from([h0]),
+        Vector::zeros(),
+        0.0,
+        Options::default(),
+    )
+    .unwrap();
+    let mut worst_energy = 0.0f64;
+    let mut impacts = Vec::new();
+    sim.advance_to(fall * 200.5, |step| {
+        let energy = ball.m * ball.g * step.end.q[0] + 0.5 * ball.m * step.end.v[0].powi(2);
+        worst_energy = worst_energy.max((energy - ball.m * ball.g * h0).abs());
+        if step.start.t == step.end.t {
+            impacts.push(step.end.t);
+        }
+    })
+    .unwrap();
+    assert_eq!(impacts.len(), 100);
+    let worst_time = impacts
+        .iter()
+        .enumerate()
+        .map(|(n, t)| (t - fall * (1.0 + 2.0 * n as f64)).abs())
+        .fold(0.0, f64::max);
+    println!("100 impacts: worst time error {worst_time:.2e} s, energy error {worst_energy:.2e} J of {:.2} J", ball.m * ball.g * h0);
+    assert!(worst_time < 1e-9, "{worst_time}");
+    assert!(worst_energy < 1e-7 * ball.m * ball.g * h0, "{worst_energy}");
+}
+
+#[test]
+fn a_ball_with_restitution_one_half_loses_three_quarters_of_its_height_each_bounce_and_comes_to_rest(
+) {
+    let ball = GeneratedBall {
+        m: 1.5,
+        g: 9.81,
+        e: 0.5,
+    };
+    let h0 = 1.0;
+    let fall = (2.0 * h0 / ball.g).sqrt();
+    let v0 = ball.g * fall;
+    let mut sim = Simulator::new(
+        &ball,
+        Vector::from([h0]),
+        Vector::zeros(),
+        0.0,
+        Options::default(),
+    )
+    .unwrap();
+    // The bounces end at T0 (1 + 2e/(1-e)) = 3 T0; run to twice that.
+    let rest_time = fall * (1.0 + 2.0 * ball.e / (1.0 - ball.e));
+    let impacts = impacts_until(&mut sim, 2.0 * rest_time);
+    let mut expected_t = fall;
+    for (n, impact) in impacts.iter().enumerate() {
+        let approach = v0 * ball.e.powi(n as i32);
+        assert!(
+            (impact.t - expected_t).abs() < 1e-9,
+            "impact {n} at {} expected {expected_t}",
+            impact.t
+        );
+        assert!(
+            (impact.velocity_before[0] + approach).abs() < 1e-8 * v0,
+            "impact {n}"
+        );
+        if !impact.persistent.contains(0) {
+            // Height of the next apex: (e v)² / 2g = e² times the last.
+            let apex = impact.velocity_after[0].powi(2) / (2.0 * ball.g);
+            let expected_apex = h0 * ball.e.powi(2 * (n as i32 + 1));
+            assert!(
+                (apex - expected_apex).abs() < 1e-9,
+                "apex {n}: {apex} vs {expected_apex}"
+            );
+        }
+        expected_t += 2.0 * ball.e * approach / ball.g;
+    }
+    let last = impacts.last().unwrap();
+    assert!(last.persistent.contains(0), "ends in persistent contact");
+    assert!(
+        last.t < rest_time,
+        "rest at {} before the closed form's {rest_time}",
+        last.t
+    );
+    assert_eq!(sim.closed_gaps(), zeitner::GapSet::first(1));
+    let end = sim.last().end;
+    assert!(end.q[0].abs() < 1e-10 && end.v[0].abs() < 1e-10);
+    assert!(
+        (end.lambda[0] + ball.m * ball.g).abs() < 1e-9,
+        "the floor carries the weight: {}",
+        end.lambda[0]
+    );
+    println!(
+        "e = 0.5: {} impacts, rest at {:.6} s (closed form {:.6} s), {} steps",
+        impacts.len(),
+        last.t,
+        rest_time,
+        sim.statistics().steps
+    );
+}
+
+#[test]
+fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_returns() {
+    let pendulum = WallPendulum {
+        m: 2.0,
+        length: 0.8,
+        g: 9.81,
+        e: 1.0,
+        height: -0.4,
+    };
+    let (l, g) = (pendulum.length, pendulum.g);
+    let k = std::f64::consts::FRAC_1_SQRT_2;
+    let quarter = (l / g).sqrt() * complete_elliptic_k(k);
+    // The event y = -L/2: θ = 60° from the vertical, sin ψ = sin(θ/2)/k.
+    let psi = ((std::f64::consts::PI / 6.0).sin() / k).asin();
+    let event_time = (l / g).sqrt() * (complete_elliptic_k(k) - incomplete_elliptic_f(psi, k));
+    let options = Options {
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: 0.05,
+            rtol: 1e-12,
+            atol: 1e-14,
+        },
+        constraint_tolerance: 1e-13,
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(
+        &pendulum,
+        Vector::from([l, 0.0]),
+        Vector::zeros(),
+        0.0,
+        options,
+    )
+    .unwrap();
+    let (impacts, events) = run_until(&mut sim, 2.0 * quarter);
+    use zeitner::Direction::{Falling, Rising};
+    assert_eq!(
+        events.iter().map(|e| (e.1, e.2)).collect::<Vec<_>>(),
+        [(0, Falling), (0, Rising)]
+    );
+    assert_eq!(impacts.len(), 1);
+    // Elastic: the swing back mirrors the swing down.
+    for (located, expected) in [
+        (events[0].0, event_time),
+        (impacts[0].t, quarter),
+        (events[1].0, 2.0 * quarter - event_time),
+    ] {
+        println!(
+            "located {located:.15} s, closed form {expected:.15} s: {:.1e}",
+            located - expected
+        );
+        assert!((located - expected).abs() < 1e-10);
+    }
+    let end = sim.last().end;
+    println!(
+        "back at the horizontal: q = {:?}, v = {:?}",
+        end.q.as_slice(),
+        end.v.as_slice()
+    );
+    assert!((end.q[0] - l).abs() < 1e-8 && end.q[1].abs() < 1e-8 && end.v.amax() < 1e-7);
+}
+
+#[test]
+fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
+    for e in [0.0, 0.5] {
+        let bar = FallingBar {
+            m: 3.0,
+            j: 0.4,
+            a: 0.5,
+            g: 9.81,
+            e,
+        };
+        let mut sim = Simulator::new(
+            &bar,
+            Vector::from([0.0, 0.3, 0.0]),
+            Vector::zeros(),
+            0.0,
+            Options::default(),
+        )
+        .unwrap();
+        let impacts = impacts_until(&mut sim, 0.3);
+        let first = impacts[0];
+        assert_eq!(first.gaps.len(), 2, "both ends in one impulse problem");
+        let (first_gap, _) = (3 - 2, 0);
+        let (left, right) = (first.impulse[first_gap], first.impulse[first_gap + 1]);
+        assert!(
+            (left - right).abs() < 1e-9 * left.abs(),
+            "equal impulses {left} {right}"
+        );
+        assert!(first.velocity_after[2].abs() < 1e-12, "no spin");
+        assert!((first.velocity_after[1] + e * first.velocity_before[1]).abs() < 1e-9);
+        if e == 0.0 {
+            let end = sim.last().end;
+            assert_eq!(sim.closed_gaps().len(), 2);
+            assert!(
+                (end.lambda[1] + 0.5 * bar.m * bar.g).abs() < 1e-8,
+                "{}",
+                end.lambda[1]
+            );
+            assert!((end.lambda[2] + 0.5 * bar.m * bar.g).abs() < 1e-8);
+        }
+    }
 }

@@ -3,6 +3,7 @@
 
 use core::ops::Deref;
 
+use crate::contact::{GapSet, Impact};
 use crate::error::StepError;
 use crate::model::Model;
 use crate::simulator::Simulator;
@@ -162,6 +163,7 @@ pub enum StopReason {
 /// recomputed multipliers, and a way to stop the run.
 pub struct Observation<'a, 's, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     pub(crate) simulator: &'a mut Simulator<'s, S, N, Z>,
+    pub(crate) reason: StopReason,
     pub(crate) stop: bool,
 }
 
@@ -169,6 +171,22 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Observation<'_,
     /// The step just taken.
     pub fn report(&self) -> &StepReport<N, Z> {
         self.simulator.last()
+    }
+
+    /// What [`Simulator::step`] returned for it.
+    pub fn reason(&self) -> StopReason {
+        self.reason
+    }
+
+    /// The impact, when the step was one ([`StopReason::Impact`]).
+    pub fn impact(&self) -> Option<&Impact<N, Z>> {
+        let impact = self.simulator.last_impact();
+        impact.filter(|_| self.reason == StopReason::Impact)
+    }
+
+    /// The gaps whose contact is closed after the step.
+    pub fn closed_gaps(&self) -> GapSet {
+        self.simulator.closed_gaps()
     }
 
     /// Dense output within the step just taken, multipliers recomputed: see

@@ -541,6 +541,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let reason = self.step()?;
             let mut observation = Observation {
                 simulator: self,
+                reason,
                 stop: false,
             };
             observer(&mut observation);
