@@ -405,3 +405,43 @@ fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
         }
     }
 }
+
+#[test]
+fn the_steam_generator_s_strut_engages_when_its_free_flight_says() {
+    use common::reference::steam_generator_first_contact;
+    use common::steam_generator::SteamGeneratorWithGap;
+    let scene = SteamGeneratorWithGap::paper();
+    let expected = steam_generator_first_contact(&scene);
+    let options = Options {
+        step: StepControl::Adaptive {
+            initial_step: 1e-4,
+            min_step: 1e-12,
+            max_step: 0.05,
+            rtol: 1e-10,
+            atol: 1e-12,
+        },
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+    let (impacts, _) = run_until(&mut sim, 0.5);
+    let first = impacts[0];
+    println!(
+        "first contact at {:.12} s, free-flight reference {expected:.12} s ({:.1e}); strut impulse {:.4e} N s, approach {:.4e} m/s, energy lost {:.4e} J; {} impacts to 0.5 s",
+        first.t,
+        first.t - expected,
+        first.impulse[2],
+        first.gap_rate_before[1],
+        first.energy_lost,
+        impacts.len()
+    );
+    // The rotation outruns the column: the strut is pulled first (the second gap).
+    assert_eq!(first.gaps.iter().collect::<Vec<_>>(), [1]);
+    assert!((first.t - expected).abs() < 1e-9);
+    // The rebound: e times the approach speed, pushed back by a negative (pushing) impulse.
+    let (before, after) = (first.gap_rate_before[1], first.gap_rate_after[1]);
+    assert!(
+        (after + scene.e * before).abs() < 1e-9 * before.abs(),
+        "{before} {after}"
+    );
+    assert!(first.impulse[2] < 0.0);
+}

@@ -3,7 +3,7 @@
 
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
-use super::steam_generator::SteamGenerator;
+use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
 
 /// A reference state and its multipliers at one time.
 pub struct State<const N: usize, const Z: usize> {
@@ -201,4 +201,47 @@ fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
         }
         det(&replaced) / d
     })
+}
+
+/// The steam generator with a clearance at its strut flies free until the strut engages: two
+/// degrees of freedom, the column angle φ (q1 = h2 sin φ, q2 = h2 (1 - cos φ)) and the rotation
+/// q3. `T = ½ m h2² φ'² + ½ J q3'²`, generalised forces
+///   Q_φ = (P - d h2 cos φ φ') h2 cos φ - m g h2 sin φ,   Q_3 = P h1,
+/// so `m h2² φ'' = Q_φ` and `J q3'' = P h1`. The strut engages where the travel
+/// `|h2 sin φ - h3 q3|` reaches the clearance. RK4 with 1e-5 s steps across the load's kink, the
+/// crossing refined by bisection on RK4 steps from the last grid point. Returns the time.
+pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> f64 {
+    let b = &s.base;
+    let rhs = |t: f64, y: &[f64; 4]| -> [f64; 4] {
+        let (phi, w, _q3, w3) = (y[0], y[1], y[2], y[3]);
+        let (sin, cos) = phi.sin_cos();
+        let p = b.load(t);
+        let q_phi = (p - b.d * b.h2 * cos * w) * b.h2 * cos - b.m * b.g * b.h2 * sin;
+        [w, q_phi / (b.m * b.h2 * b.h2), w3, p * b.h1 / b.j]
+    };
+    let travel = |y: &[f64; 4]| (b.h2 * y[0].sin() - b.h3 * y[2]).abs();
+    let h = 1e-5;
+    let (mut t, mut y) = (0.0, [0.0; 4]);
+    // Up to the kink, then on in steps of h until the travel passes the clearance.
+    y = rk4(rhs, 0.0, y, b.rise, (b.rise / h).round() as usize);
+    t += b.rise;
+    assert!(travel(&y) < s.clearance, "contact before the load's kink");
+    // The free flight ends within a few seconds under the sustained load.
+    for _ in 0..(10.0 / h) as usize {
+        let next = rk4(rhs, t, y, t + h, 1);
+        if travel(&next) >= s.clearance {
+            break;
+        }
+        (t, y) = (t + h, next);
+    }
+    let (mut lo, mut hi) = (0.0, h);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if travel(&rk4(rhs, t, y, t + mid, 1)) >= s.clearance {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    t + 0.5 * (lo + hi)
 }

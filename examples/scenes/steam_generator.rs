@@ -70,4 +70,69 @@ impl SteamGenerator {
             q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2,
         ]
     }
+
+    /// The load's kink at the end of its ramp and its switch-off: steps land on them.
+    fn time_events(&self) -> [f64; 2] {
+        [self.rise, self.off]
+    }
+}
+
+/// The paper's scene with a clearance at the lateral strut C: the strut engages only where
+/// `|q1 - h3 q3|` reaches the clearance (a snubber with a gap on either side), and then acts
+/// like the paper's strut; an impact with restitution `e` where it engages.
+pub struct SteamGeneratorWithGap {
+    pub base: SteamGenerator,
+    /// The clearance on either side, m.
+    pub clearance: f64,
+    /// Newton's coefficient of restitution of the strut's contact.
+    pub e: f64,
+}
+
+impl SteamGeneratorWithGap {
+    /// The paper's scene with a 5 mm clearance and `e = 0.5`.
+    pub fn paper() -> Self {
+        SteamGeneratorWithGap {
+            base: SteamGenerator::paper(),
+            clearance: 0.005,
+            e: 0.5,
+        }
+    }
+
+    pub fn load(&self, t: f64) -> f64 {
+        self.base.load(t)
+    }
+}
+
+#[constrained_system]
+impl SteamGeneratorWithGap {
+    fn mass(&self) -> [f64; 3] {
+        [self.base.m, self.base.m, self.base.j]
+    }
+
+    fn force(&self, [_q1, _q2, _q3]: [f64; 3], [v1, _v2, _v3]: [f64; 3], t: f64) -> [f64; 3] {
+        let p = self.load(t);
+        [
+            p - self.base.d * v1,
+            -self.base.m * self.base.g,
+            p * self.base.h1,
+        ]
+    }
+
+    fn constraints(&self, [q1, q2, _q3]: [f64; 3]) -> [f64; 1] {
+        [q1 * q1 + (q2 - self.base.h2).powi(2) - self.base.h2 * self.base.h2]
+    }
+
+    /// The strut's travel left before it engages, pushed (first) and pulled (second).
+    fn gaps(&self, [q1, _q2, q3]: [f64; 3]) -> [f64; 2] {
+        let travel = q1 - self.base.h3 * q3;
+        [self.clearance - travel, self.clearance + travel]
+    }
+
+    fn restitution(&self) -> [f64; 2] {
+        [self.e, self.e]
+    }
+
+    fn time_events(&self) -> [f64; 2] {
+        [self.base.rise, self.base.off]
+    }
 }
