@@ -207,11 +207,11 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
             }
         }
     });
+    // Only what the scene has: the trait's defaults are none.
     let (u, e) = (scene.sizes.u, scene.sizes.e);
-    let gaps_and_events = quote! {
-        const UNILATERAL_CONSTRAINTS: usize = #u;
-        const EVENTS: usize = #e;
-    };
+    let gaps = (u > 0).then(|| quote!(const UNILATERAL_CONSTRAINTS: usize = #u;));
+    let events = (e > 0).then(|| quote!(const EVENTS: usize = #e;));
+    let gaps_and_events = quote!(#gaps #events);
     // `G` by its nonzeros as well, for the sparse simulator.
     let sparse_jacobian = scene
         .functions

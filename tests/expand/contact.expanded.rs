@@ -1,0 +1,1292 @@
+#[allow(dead_code)]
+impl Ball {
+    fn mass(&self) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m]
+    }
+    fn force(&self) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [-self.m * self.g]
+    }
+    fn gaps(&self, [y]: [f64; 1]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y]
+    }
+    fn restitution(&self) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.e]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 1,
+        position_constraints: 1,
+        velocity_constraints: 0,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "restitution",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "e",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<1>;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    #[inline]
+    fn mass_matrix(&self, q: &::zeitner::__private::Vector<1>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<1>::zeros();
+        f[0] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<1>::zeros();
+        g[0] = q[0];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> ::zeitner::__private::Matrix<1, 1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<1>::zeros();
+        g[0] = 1.0;
+        g
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<1>::zeros();
+        w[0] = v[0];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<1> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        b
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Vector::<1>::zeros();
+        let mut dv = ::zeitner::__private::Vector::<1>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+    ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Vector::<1>::zeros();
+        let mut dv = ::zeitner::__private::Vector::<1>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn restitution(&self, gap: usize) -> f64 {
+        let e = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut e = ::zeitner::__private::Vector::<1>::zeros();
+            e[0] = self.e;
+            e
+        };
+        if gap < 1 { e[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+    }
+}
+#[allow(dead_code)]
+impl WallPendulum {
+    fn mass(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m]
+    }
+    fn force(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [0.0, -self.m * self.g]
+    }
+    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [x * x + y * y - self.length * self.length]
+    }
+    fn gaps(&self, [x, _y]: [f64; 2]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [x]
+    }
+    fn restitution(&self) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.e]
+    }
+    fn events(&self, [_x, y]: [f64; 2]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y - self.height]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
+    const POSITION_CONSTRAINTS: usize = 2;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 2,
+        position_constraints: 2,
+        velocity_constraints: 0,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "restitution",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "e",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "event_functions",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "e",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<2>;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const EVENTS: usize = 1usize;
+    #[inline]
+    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<2>::zeros();
+        g[0] = q[0].powi(2) + q[1].powi(2) - self.length.powi(2);
+        g[1] = q[0];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = 1.0;
+        g
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<2>::zeros();
+        w[0] = 2.0 * q[0] * v[0] + 2.0 * q[1] * v[1];
+        w[1] = v[0];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        b
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        dq[(0, 0)] = s0;
+        dq[(1, 1)] = s0;
+        (dq, dv)
+    }
+    #[inline]
+    fn restitution(&self, gap: usize) -> f64 {
+        let e = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut e = ::zeitner::__private::Vector::<1>::zeros();
+            e[0] = self.e;
+            e
+        };
+        if gap < 1 { e[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn event_functions(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        let e = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut e = ::zeitner::__private::Vector::<1>::zeros();
+            e[0] = q[1] - self.height;
+            e
+        };
+        for (value, x) in values.iter_mut().zip(e.iter()) {
+            *value = *x;
+        }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 2.0 * q[0];
+        values[1] = 2.0 * q[1];
+        values[2] = 1.0;
+    }
+}
+#[allow(dead_code)]
+impl FallingBar {
+    fn mass(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m, self.j]
+    }
+    fn force(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [0.0, -self.m * self.g, 0.0]
+    }
+    fn constraints(&self, [x, _y, _theta]: [f64; 3]) -> [f64; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [x]
+    }
+    fn gaps(&self, [_x, y, theta]: [f64; 3]) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y - self.a * theta.sin(), y + self.a * theta.sin()]
+    }
+    fn restitution(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.e, self.e]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
+    const POSITION_CONSTRAINTS: usize = 3;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 3,
+        position_constraints: 3,
+        velocity_constraints: 0,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (1, 1), (1, 2), (2, 1), (2, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "restitution",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "e",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<3>;
+    const UNILATERAL_CONSTRAINTS: usize = 2usize;
+    #[inline]
+    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.j;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].sin();
+        let mut g = ::zeitner::__private::Vector::<3>::zeros();
+        g[0] = q[0];
+        g[1] = q[1] - s0;
+        g[2] = q[1] + s0;
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> ::zeitner::__private::Matrix<3, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].cos();
+        let mut g = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        g[(0, 0)] = 1.0;
+        g[(1, 1)] = 1.0;
+        g[(1, 2)] = -s0;
+        g[(2, 1)] = 1.0;
+        g[(2, 2)] = s0;
+        g
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].cos() * v[2];
+        let mut w = ::zeitner::__private::Vector::<3>::zeros();
+        w[0] = v[0];
+        w[1] = v[1] - s0;
+        w[2] = v[1] + s0;
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = v[2] * (self.a * q[2].sin() * v[2]);
+        let mut b = ::zeitner::__private::Vector::<3>::zeros();
+        b[1] = s0;
+        b[2] = -s0;
+        b
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].sin();
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        dq[(2, 2)] = s0 * lambda[1] - s0 * lambda[2];
+        (dq, dv)
+    }
+    #[inline]
+    fn restitution(&self, gap: usize) -> f64 {
+        let e = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut e = ::zeitner::__private::Vector::<2>::zeros();
+            e[0] = self.e;
+            e[1] = self.e;
+            e
+        };
+        if gap < 2 { e[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].cos();
+        values[0] = 1.0;
+        values[1] = 1.0;
+        values[2] = -s0;
+        values[3] = 1.0;
+        values[4] = s0;
+    }
+}
