@@ -291,9 +291,9 @@ impl Options {
             }
         }
         let events = self.events;
-        if !(positive(events.time_tolerance) && events.time_tolerance <= 1e-3)
-            || !(events.rest_velocity >= 0.0 && events.rest_velocity.is_finite())
-        {
+        let time_tolerance = positive(events.time_tolerance) && events.time_tolerance <= 1e-3;
+        let rest_velocity = events.rest_velocity >= 0.0 && events.rest_velocity.is_finite();
+        if !(time_tolerance && rest_velocity) {
             return refuse(InvalidOption::Events);
         }
         if !self.controller.is_valid() {
