@@ -16,20 +16,39 @@
 //! - `time() == last().end.t`, and a new step's report starts where the last one ended;
 //! - arguments the documentation refuses are refused (stop and sample times), accepted ones are
 //!   honoured (`set_options`, the time `reinitialise` was given, the sampled time).
+//!
+//! The contact scenes (a ball, a pendulum beside a wall with an event, a bar falling onto two
+//! gaps) add hostile restitutions, event heights and starts below, on and above their gaps,
+//! the calls `step` until an impact (then `sample` on its zero-length report) and
+//! `reinitialise` into contact, and the checks:
+//! - after an `Err`, `closed_gaps()` and `last_impact()` are unchanged too;
+//! - no gap is below `-(2 · time_tolerance · |ġ| + ε)` at a step end unless it already was at
+//!   the step's start and went no deeper ([`FailureClass::Penetration`]): nothing tunnels;
+//! - `StopReason::Impact` comes with a zero-length report starting at the last end, a finite
+//!   `last_impact()` at that time, and no energy gained (`energy_lost ≥ -1e-9 ×` the kinetic
+//!   energy, and the same of the report's velocities) unless the restitution is above 1
+//!   ([`FailureClass::ImpactViolation`]);
+//! - `Event { index, direction }` names an event function on the side its direction says; a
+//!   report unchanged by `step()` only with a pending `Event`; a step shorter than `min_step`
+//!   (or the fixed step) only where it ends at a crossing (an event, a contact opening, an open
+//!   gap approaching and ending near zero; inside `advance_to`, whose observer does not see the
+//!   stop reason, not checked for scenes with gaps or events).
 
 use std::fmt;
 
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use zeitner::{
-    ConstrainedSystem, ControllerSettings, EventSettings, InnerMethod, InvalidOption,
-    MultiplierModel, Options, Point, Sensitivity, Simulator, StartPolicy, StartReport, StepControl,
-    StepError, StepReport, StopReason, Vector, VelocityProjection,
+    ConstrainedSystem, ControllerSettings, Direction, EventSettings, GapSet, Impact, InnerMethod,
+    InvalidOption, MassMatrix, MultiplierModel, Options, Point, Sensitivity, Simulator,
+    StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason, Vector,
+    VelocityProjection,
 };
 
 use super::scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
 use crate::scenes::andrews::Andrews;
 use crate::scenes::chain::{Chain2, Chain4};
+use crate::scenes::contact::{Ball, FallingBar, WallPendulum};
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::steam_generator::SteamGenerator;
 use crate::scenes::stiff::{
@@ -60,10 +79,43 @@ pub enum SceneKind {
     TwoLinkArm,
     Sleigh,
     FollowerPendulum,
+    /// The contact scenes (`examples/scenes/contact.rs`): gaps, restitution, an event function.
+    Ball,
+    WallPendulum,
+    FallingBar,
 }
 
 impl SceneKind {
-    pub const ALL: [SceneKind; 14] = [
+    /// The scenes with gaps (and events), the last three of [`SceneKind::ALL`].
+    pub const CONTACT: [SceneKind; 3] = [
+        SceneKind::Ball,
+        SceneKind::WallPendulum,
+        SceneKind::FallingBar,
+    ];
+
+    pub fn has_contacts(self) -> bool {
+        SceneKind::CONTACT.contains(&self)
+    }
+
+    /// The restitution of the contact scenes (every gap of a scene has the same).
+    pub fn restitution(self, p: &[f64]) -> Option<f64> {
+        match self {
+            SceneKind::Ball => Some(p[2]),
+            SceneKind::WallPendulum => Some(p[3]),
+            SceneKind::FallingBar => Some(p[4]),
+            _ => None,
+        }
+    }
+
+    /// The size of the gap functions' terms besides `|q|` (the bar's half length).
+    pub fn gap_scale(self, p: &[f64]) -> f64 {
+        match self {
+            SceneKind::FallingBar => p[2].abs().max(1.0),
+            _ => 1.0,
+        }
+    }
+
+    pub const ALL: [SceneKind; 17] = [
         SceneKind::Pendulum,
         SceneKind::SteamGenerator,
         SceneKind::Andrews,
@@ -78,6 +130,9 @@ impl SceneKind {
         SceneKind::TwoLinkArm,
         SceneKind::Sleigh,
         SceneKind::FollowerPendulum,
+        SceneKind::Ball,
+        SceneKind::WallPendulum,
+        SceneKind::FallingBar,
     ];
 
     /// `(N, Z)`.
@@ -93,6 +148,9 @@ impl SceneKind {
             SceneKind::TwoLinkArm => (2, 1),
             SceneKind::Sleigh => (4, 2),
             SceneKind::FollowerPendulum => (3, 2),
+            SceneKind::Ball => (1, 1),
+            SceneKind::WallPendulum => (2, 2),
+            SceneKind::FallingBar => (3, 3),
         }
     }
 
@@ -171,6 +229,15 @@ impl SceneKind {
                 ("g", 9.81),
             ],
             SceneKind::FollowerPendulum => &[("m", 1.0), ("mz", 0.5), ("l", 1.0), ("g", 9.81)],
+            SceneKind::Ball => &[("m", 1.0), ("g", 9.81), ("e", 0.8)],
+            SceneKind::WallPendulum => &[
+                ("m", 1.0),
+                ("length", 1.0),
+                ("g", 9.81),
+                ("e", 0.8),
+                ("height", -0.5),
+            ],
+            SceneKind::FallingBar => &[("m", 1.0), ("j", 0.1), ("a", 0.5), ("g", 9.81), ("e", 0.5)],
         }
     }
 
@@ -258,7 +325,130 @@ impl SceneKind {
                 let vx = l * cos * rate;
                 (vec![l * sin, -l * cos, 0.0], vec![vx, l * sin * rate, vx])
             }
+            SceneKind::Ball | SceneKind::WallPendulum | SceneKind::FallingBar => {
+                contact_state(self, p, rng)
+            }
         }
+    }
+}
+
+/// A gap's distance at a contact scene's start: well above, exactly touching, a hair above,
+/// below (inside the floor or the wall), or `-0.0`.
+fn gap_offset(rng: &mut Rng) -> f64 {
+    match rng.random_range(0..10) {
+        0..=2 => rng.random_range(0.0..2.0),
+        3 | 4 => 0.0,
+        5 => log_uniform(rng, -16.0, -8.0),
+        6 | 7 => -log_uniform(rng, -12.0, 0.0),
+        8 => -0.0,
+        _ => -f64::MIN_POSITIVE,
+    }
+}
+
+/// A gap's rate at a contact scene's start: at rest, approaching, separating, or a hair
+/// either way.
+fn gap_speed(rng: &mut Rng) -> f64 {
+    match rng.random_range(0..8) {
+        0 | 1 => 0.0,
+        2 | 3 => -rng.random_range(0.0..10.0),
+        4 | 5 => rng.random_range(0.0..10.0),
+        6 => {
+            let x = log_uniform(rng, -14.0, -8.0);
+            signed(rng, x)
+        }
+        _ => {
+            let x = log_uniform(rng, 1.0, 4.0);
+            signed(rng, x)
+        }
+    }
+}
+
+/// A start of a contact scene on its bilateral rows, with its gaps above, touching or below
+/// zero and approaching, resting or separating.
+fn contact_state(scene: SceneKind, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
+    match scene {
+        SceneKind::Ball => (vec![gap_offset(rng)], vec![gap_speed(rng)]),
+        SceneKind::WallPendulum => {
+            // The bob at angle φ from the downward vertical, x = L sin φ ≥ 0 for φ in [0, π].
+            let l = p[1];
+            let phi = match rng.random_range(0..8) {
+                0 | 1 => rng.random_range(0.0..std::f64::consts::PI),
+                2 | 3 => 0.0,
+                4 => std::f64::consts::FRAC_PI_2,
+                5 => std::f64::consts::PI,
+                6 => -rng.random_range(0.0..1.0),
+                _ => -log_uniform(rng, -14.0, -2.0),
+            };
+            let (sin, cos) = phi.sin_cos();
+            let x = if phi == std::f64::consts::PI {
+                0.0
+            } else {
+                l * sin
+            };
+            // ω < 0 at φ = 0 approaches the wall.
+            let w = gap_speed(rng) / l.abs().max(1e-300);
+            (vec![x, -l * cos], vec![l * cos * w, l * sin * w])
+        }
+        SceneKind::FallingBar => {
+            let a = p[2];
+            let theta = match rng.random_range(0..8) {
+                0..=2 => 0.0,
+                3 | 4 => rng.random_range(-0.3..0.3),
+                5 => {
+                    let x = log_uniform(rng, -12.0, -3.0);
+                    signed(rng, x)
+                }
+                6 => std::f64::consts::FRAC_PI_2,
+                _ => -std::f64::consts::FRAC_PI_2,
+            };
+            let y = a * theta.sin().abs() + gap_offset(rng);
+            let w = if rng.random_bool(0.5) {
+                0.0
+            } else {
+                rng.random_range(-3.0..3.0)
+            };
+            (vec![0.0, y, theta], vec![0.0, gap_speed(rng), w])
+        }
+        _ => unreachable!("not a contact scene"),
+    }
+}
+
+/// A restitution: within `[0, 1]`, its ends, or hostile (NaN, negative, above 1, huge).
+fn restitution(rng: &mut Rng) -> f64 {
+    match rng.random_range(0..14) {
+        0..=3 => rng.random_range(0.0..=1.0),
+        4 => 0.0,
+        5 => 1.0,
+        6 => 1.0 - 1e-12,
+        7 => f64::NAN,
+        8 => -rng.random_range(0.0..1.0),
+        9 => 1.0 + rng.random_range(0.0..1.0),
+        10 => [1e300, f64::INFINITY, f64::NEG_INFINITY, 1e-300][rng.random_range(0..4)],
+        11 => -0.0,
+        _ => hostile(rng),
+    }
+}
+
+/// The contact scenes' own hostile parameters: restitution, and the event's height.
+fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut [f64]) {
+    let e = match scene {
+        SceneKind::Ball => 2,
+        SceneKind::WallPendulum => 3,
+        SceneKind::FallingBar => 4,
+        _ => return,
+    };
+    if rng.random_bool(0.6) {
+        p[e] = restitution(rng);
+    }
+    if scene == SceneKind::WallPendulum && rng.random_bool(0.5) {
+        let l = p[1];
+        p[4] = match rng.random_range(0..6) {
+            0 | 1 => l * rng.random_range(-1.2..0.2),
+            2 => 0.0,
+            3 => -l,
+            4 => -l * (1.0 - 1e-12),
+            _ => hostile(rng),
+        };
     }
 }
 
@@ -325,6 +515,12 @@ pub enum Call {
     },
     /// `with_initial_multipliers`: it consumes the simulator, so an error ends the case.
     WithInitialMultipliers(Vec<f64>),
+    /// `step()` until it returns [`StopReason::Impact`] (at most `max_steps` calls), then
+    /// `sample` within the (zero-length) report if given.
+    StepUntilImpact {
+        max_steps: u32,
+        then_sample: Option<Time>,
+    },
 }
 
 /// Everything a case does, generated from its seed.
@@ -771,8 +967,50 @@ fn multipliers(rng: &mut Rng, z: usize) -> Vec<f64> {
     lambda
 }
 
-fn call(rng: &mut Rng, scene: SceneKind) -> Call {
+/// A call of the contact scenes: step until an impact (and sample on its zero-length report),
+/// re-initialise into contact, advance across impacts sampling every step.
+fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
+    match rng.random_range(0..4) {
+        0 | 1 => Call::StepUntilImpact {
+            max_steps: rng.random_range(1..=400),
+            then_sample: rng.random_bool(0.6).then(|| match rng.random_range(0..6) {
+                0 => Time::InStep(0.0),
+                1 => Time::InStep(1.0),
+                2 => Time::InStep(0.5),
+                3 => Time::InStep(rng.random_range(-0.3..1.3)),
+                4 => Time::Ahead(0.0),
+                _ => Time::Ahead({
+                    let x = log_uniform(rng, -16.0, -6.0);
+                    signed(rng, x)
+                }),
+            }),
+        },
+        2 => {
+            let (q, v) = contact_state(scene, p, rng);
+            Call::Reinitialise {
+                q: StateChange::Replace(q),
+                v: StateChange::Replace(v),
+                t: if rng.random_bool(0.7) {
+                    Time::Ahead(0.0)
+                } else {
+                    Time::Ahead(rng.random_range(-1.0..1.0))
+                },
+            }
+        }
+        _ => Call::AdvanceTo {
+            target: Time::Ahead(log_uniform(rng, -1.0, 0.7)),
+            sample_every: 1,
+            sample_at: [0.0, 0.5, 1.0, rng.random_range(0.0..1.0)][rng.random_range(0..4)],
+            stop_after: None,
+        },
+    }
+}
+
+fn call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
     let (n, z) = scene.dimensions();
+    if scene.has_contacts() && rng.random_bool(0.35) {
+        return contact_call(rng, scene, p);
+    }
     match rng.random_range(0..100) {
         0..=29 => Call::Step {
             count: rng.random_range(1..=40),
@@ -815,15 +1053,22 @@ fn call(rng: &mut Rng, scene: SceneKind) -> Call {
 /// The case of `seed`.
 pub fn generate(seed: u64) -> Case {
     let mut rng = rng(seed);
-    let scene = SceneKind::ALL[rng.random_range(0..SceneKind::ALL.len())];
-    let parameters = parameters(&mut rng, scene);
+    // The contact scenes, new, get two cases in five.
+    let scene = if rng.random_bool(0.4) {
+        SceneKind::CONTACT[rng.random_range(0..SceneKind::CONTACT.len())]
+    } else {
+        let others = SceneKind::ALL.len() - SceneKind::CONTACT.len();
+        SceneKind::ALL[rng.random_range(0..others)]
+    };
+    let mut parameters = parameters(&mut rng, scene);
+    contact_parameters(&mut rng, scene, &mut parameters);
     let (q0, v0, t0) = start(&mut rng, scene, &parameters);
     let options = options(&mut rng);
     let initial_multipliers = rng
         .random_bool(0.1)
         .then(|| multipliers(&mut rng, scene.dimensions().1));
     let calls = (0..rng.random_range(1..=12))
-        .map(|_| call(&mut rng, scene))
+        .map(|_| call(&mut rng, scene, &parameters))
         .collect();
     Case {
         seed,
@@ -857,16 +1102,25 @@ pub enum FailureClass {
     OptionViolation,
     /// A report that does not follow from the last one (`time()`, start, stop reasons).
     ReportInconsistency,
+    /// A gap below zero at a step end by more than the event time tolerance allows
+    /// (`2 · time_tolerance · |ġ| + ε`): it went through the floor during the step, or deeper
+    /// into it.
+    Penetration,
+    /// An impact that is not a zero-length step, or that creates energy with a restitution
+    /// of at most 1.
+    ImpactViolation,
 }
 
 impl FailureClass {
-    pub const ALL: [FailureClass; 6] = [
+    pub const ALL: [FailureClass; 8] = [
         FailureClass::Panic,
         FailureClass::StateLoss,
         FailureClass::NonFinite,
         FailureClass::ConstraintViolation,
         FailureClass::OptionViolation,
         FailureClass::ReportInconsistency,
+        FailureClass::Penetration,
+        FailureClass::ImpactViolation,
     ];
 
     pub fn name(self) -> &'static str {
@@ -877,6 +1131,8 @@ impl FailureClass {
             FailureClass::ConstraintViolation => "constraint-violation",
             FailureClass::OptionViolation => "option-violation",
             FailureClass::ReportInconsistency => "report-inconsistency",
+            FailureClass::Penetration => "penetration",
+            FailureClass::ImpactViolation => "impact-violation",
         }
     }
 }
@@ -1050,12 +1306,14 @@ fn step_bounds(step: StepControl) -> (f64, f64) {
     }
 }
 
-/// An accepted step from `previous` to `report` under `options` with the stop time `stop`.
+/// An accepted step from `previous` to `report` under `options` with the stop time `stop`;
+/// `crossing`: the step was shortened to end at a zero crossing (an event, a gap closing, a
+/// contact opening), a landing that may be shorter than `min_step` or the fixed step.
 fn check_step<const N: usize, const Z: usize>(
     previous: &StepReport<N, Z>,
     report: &StepReport<N, Z>,
     (options, position_rows): (&Options, usize),
-    stop: Option<f64>,
+    (stop, crossing): (Option<f64>, bool),
     call: &str,
 ) -> Check {
     check_report(report, options.constraint_tolerance, position_rows, call)?;
@@ -1099,7 +1357,7 @@ fn check_step<const N: usize, const Z: usize>(
                 ),
             );
         }
-    } else if h < min - slack || h > max + slack {
+    } else if (h < min - slack && !crossing) || h > max + slack {
         return fail(
             FailureClass::OptionViolation,
             format!(
@@ -1111,12 +1369,23 @@ fn check_step<const N: usize, const Z: usize>(
     Ok(())
 }
 
-/// The state that an error must leave untouched.
+/// The state that an error must leave untouched (`None`: not compared, where the fuzzer cannot
+/// know what it should be).
 struct Snapshot<const N: usize, const Z: usize> {
     last: StepReport<N, Z>,
     time: f64,
     options: Options,
-    start_report: StartReport<N, Z>,
+    start_report: Option<StartReport<N, Z>>,
+    closed_gaps: Option<GapSet>,
+    last_impact: Option<Option<Impact<N, Z>>>,
+}
+
+/// Bit-for-bit equality of two impacts (through `Debug`, which prints every `f64` exactly).
+fn same_impact<const N: usize, const Z: usize>(
+    a: Option<&Impact<N, Z>>,
+    b: Option<&Impact<N, Z>>,
+) -> bool {
+    format!("{a:?}") == format!("{b:?}")
 }
 
 impl<const N: usize, const Z: usize> Snapshot<N, Z> {
@@ -1125,7 +1394,9 @@ impl<const N: usize, const Z: usize> Snapshot<N, Z> {
             last: *sim.last(),
             time: sim.time(),
             options: *sim.options(),
-            start_report: *sim.start_report(),
+            start_report: Some(*sim.start_report()),
+            closed_gaps: Some(sim.closed_gaps()),
+            last_impact: Some(sim.last_impact().copied()),
         }
     }
 
@@ -1142,8 +1413,18 @@ impl<const N: usize, const Z: usize> Snapshot<N, Z> {
             "time()"
         } else if *sim.options() != self.options {
             "options()"
-        } else if !same_start_report(sim.start_report(), &self.start_report) {
+        } else if self
+            .start_report
+            .is_some_and(|r| !same_start_report(sim.start_report(), &r))
+        {
             "start_report()"
+        } else if self.closed_gaps.is_some_and(|g| g != sim.closed_gaps()) {
+            "closed_gaps()"
+        } else if self
+            .last_impact
+            .is_some_and(|i| !same_impact(sim.last_impact(), i.as_ref()))
+        {
+            "last_impact()"
         } else {
             return Ok(());
         };
@@ -1222,6 +1503,320 @@ fn check_sample<const N: usize, const Z: usize>(
     Ok(())
 }
 
+// ---------------------------------------------------------------------------------------------
+// The checks of gaps, impacts and events.
+
+/// What the contact checks know of the case.
+#[derive(Clone, Copy, Debug)]
+struct ContactFacts {
+    /// The scene's restitution (every gap's); `None` without gaps.
+    restitution: Option<f64>,
+    /// The size of the gap functions' terms besides `|q|`, for their rounding.
+    gap_scale: f64,
+}
+
+impl ContactFacts {
+    /// Whether an impact may add energy: only with a restitution above 1 (a NaN or negative one
+    /// must not).
+    fn may_create_energy(&self) -> bool {
+        self.restitution.is_some_and(|e| e > 1.0)
+    }
+}
+
+fn kinetic_energy<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, t): (&Vector<N>, f64),
+    v: &Vector<N>,
+) -> f64 {
+    0.5 * v.dot(&scene.mass_matrix(q, t).mul(v))
+}
+
+/// The gap values and rates (by gap index) at a point, unmasked: open or closed.
+fn gaps_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    p: &Point<N, Z>,
+) -> (Vec<f64>, Vec<f64>) {
+    let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+    let g = scene.constraint_residual(&p.q, &p.v, p.t);
+    let w = scene.constraint_rate(&p.q, &p.v, p.t);
+    let rows = first..S::POSITION_CONSTRAINTS;
+    (
+        rows.clone().map(|j| g[j]).collect(),
+        rows.map(|j| w[j]).collect(),
+    )
+}
+
+/// How far below zero a gap may be at a step end: the event time tolerance times the gap's
+/// speed (twice: the step aims half a tolerance before a crossing located within a quarter),
+/// plus the constraint tolerance, plus rounding.
+fn penetration_allowed(options: &Options, speed: f64, p: (f64, f64), scale: f64) -> f64 {
+    let (q_size, t) = p;
+    let rounding =
+        64.0 * f64::EPSILON * (1.0 + q_size) * scale + 4.0 * f64::EPSILON * t.abs() * speed;
+    2.0 * options.events.time_tolerance * speed + options.constraint_tolerance.max(0.0) + rounding
+}
+
+/// No gap at the end of `report` is below zero by more than allowed, unless it already was at
+/// its start and did not go deeper: the ball does not tunnel through the floor.
+fn check_gaps<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    report: &StepReport<N, Z>,
+    options: &Options,
+    facts: &ContactFacts,
+    call: &str,
+) -> Check {
+    if S::UNILATERAL_CONSTRAINTS == 0 {
+        return Ok(());
+    }
+    let (g0, w0) = gaps_at(scene, &report.start);
+    let (g1, w1) = gaps_at(scene, &report.end);
+    let q_size = report.start.q.amax().max(report.end.q.amax());
+    for k in 0..S::UNILATERAL_CONSTRAINTS {
+        let speed = w0[k].abs().max(w1[k].abs());
+        let allowed = penetration_allowed(options, speed, (q_size, report.end.t), facts.gap_scale);
+        let (before, after) = (g0[k], g1[k]);
+        if !(after.is_finite() && before.is_finite() && allowed.is_finite()) {
+            continue;
+        }
+        let crossed = before >= -allowed;
+        let deeper = after < before - allowed;
+        if after < -allowed && (crossed || deeper) {
+            let how = if crossed {
+                "went through zero"
+            } else {
+                "went deeper below zero"
+            };
+            return fail(
+                FailureClass::Penetration,
+                format!(
+                    "{call}: gap {k} {how} over the step [{:e}, {:e}]: {before:e} -> {after:e}, \
+                     below -{allowed:e} (rates {:e} -> {:e}, time tolerance {:e}, ε {:e}) \
+                     (q = {:?}, v = {:?})",
+                    report.start.t,
+                    report.end.t,
+                    w0[k],
+                    w1[k],
+                    options.events.time_tolerance,
+                    options.constraint_tolerance,
+                    report.end.q.as_slice(),
+                    report.end.v.as_slice(),
+                ),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Whether a step was shortened to end at a zero crossing, as far as the fuzzer can tell from
+/// outside: a gap open at its start (`open`) approaching zero and ending near it (or below),
+/// or an event function ending near zero or across it — near: within 5 % of its change over
+/// the step, or within the penetration allowed. The runtime locates a crossing on the dense
+/// output and integrates the step again to end there, so the end can fall short of the true
+/// crossing by the interpolation error.
+fn ends_at_a_crossing<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    report: &StepReport<N, Z>,
+    (options, open): (&Options, GapSet),
+    facts: &ContactFacts,
+) -> bool {
+    let near = |f0: f64, f1: f64, allowed: f64| f1.abs() <= 0.05 * (f1 - f0).abs() + allowed;
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        let (g0, w0) = gaps_at(scene, &report.start);
+        let (g1, w1) = gaps_at(scene, &report.end);
+        let q_size = report.end.q.amax();
+        let gap = (0..S::UNILATERAL_CONSTRAINTS).any(|k| {
+            let speed = w0[k].abs().max(w1[k].abs());
+            let allowed =
+                penetration_allowed(options, speed, (q_size, report.end.t), facts.gap_scale);
+            open.contains(k) && g1[k] < g0[k] && (g1[k] <= 0.0 || near(g0[k], g1[k], allowed))
+        });
+        if gap {
+            return true;
+        }
+    }
+    if S::EVENTS > 0 {
+        let (start, end) = (&report.start, &report.end);
+        let mut e0 = vec![0.0; S::EVENTS];
+        let mut e1 = vec![0.0; S::EVENTS];
+        scene.event_functions(&start.q, &start.v, start.t, &mut e0);
+        scene.event_functions(&end.q, &end.v, end.t, &mut e1);
+        let event =
+            (0..S::EVENTS).any(|i| (e0[i] > 0.0) != (e1[i] > 0.0) || near(e0[i], e1[i], 0.0));
+        if event {
+            return true;
+        }
+    }
+    false
+}
+
+/// A zero-length report after `previous`: an impact. It starts where the last one ended, is
+/// finite and on its closed rows, ends on no gap below zero, and its velocities do not gain
+/// energy with a restitution of at most 1.
+fn check_impact_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    previous: &StepReport<N, Z>,
+    report: &StepReport<N, Z>,
+    options: &Options,
+    facts: &ContactFacts,
+    call: &str,
+) -> Check {
+    check_report(
+        report,
+        options.constraint_tolerance,
+        S::POSITION_CONSTRAINTS,
+        call,
+    )?;
+    if report.start.t.to_bits() != report.end.t.to_bits() {
+        return fail(
+            FailureClass::ImpactViolation,
+            format!(
+                "{call}: an impact reported as a step from t = {:e} to {:e}, not of zero length",
+                report.start.t, report.end.t
+            ),
+        );
+    }
+    if !same_point(&report.start, &previous.end) {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!(
+                "{call}: the impact's start {:?} is not the last step's end {:?}",
+                report.start, previous.end
+            ),
+        );
+    }
+    check_gaps(scene, report, options, facts, call)?;
+    let before = kinetic_energy(scene, (&report.start.q, report.start.t), &report.start.v);
+    let after = kinetic_energy(scene, (&report.end.q, report.end.t), &report.end.v);
+    let scale = before.abs() + after.abs();
+    if !facts.may_create_energy() && after - before > 1e-9 * scale {
+        return fail(
+            FailureClass::ImpactViolation,
+            format!(
+                "{call}: the impact at t = {:e} raised the kinetic energy from {before:e} to \
+                 {after:e} with restitution {:?} (v {:?} -> {:?})",
+                report.end.t,
+                facts.restitution,
+                report.start.v.as_slice(),
+                report.end.v.as_slice()
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// `last_impact()` after a call that returned `StopReason::Impact`: there, at the report's
+/// time, finite, and not creating energy with a restitution of at most 1.
+fn check_last_impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    impact: Option<&Impact<N, Z>>,
+    report: &StepReport<N, Z>,
+    facts: &ContactFacts,
+    call: &str,
+) -> Check {
+    let Some(impact) = impact else {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!("{call}: StopReason::Impact but last_impact() is None"),
+        );
+    };
+    if impact.t.to_bits() != report.end.t.to_bits() {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!(
+                "{call}: last_impact().t = {:e}, the report ends at {:e}",
+                impact.t, report.end.t
+            ),
+        );
+    }
+    let finite = impact.energy_lost.is_finite()
+        && all_finite(&impact.velocity_after)
+        && all_finite(&impact.velocity_before)
+        && all_finite(&impact.impulse);
+    if !finite {
+        return fail(
+            FailureClass::NonFinite,
+            format!("{call}: Ok with a non-finite last_impact() {impact:?}"),
+        );
+    }
+    let (q, t) = (&report.start.q, report.start.t);
+    let scale = kinetic_energy(scene, (q, t), &impact.velocity_before).abs()
+        + kinetic_energy(scene, (q, t), &impact.velocity_after).abs();
+    if !facts.may_create_energy() && !(impact.energy_lost >= -1e-9 * scale) {
+        return fail(
+            FailureClass::ImpactViolation,
+            format!(
+                "{call}: the impact at t = {:e} has energy_lost = {:e} (energy scale {scale:e}) \
+                 with restitution {:?}: gaps {:?}, persistent {:?}, ġ {:?} -> {:?}",
+                impact.t,
+                impact.energy_lost,
+                facts.restitution,
+                impact.gaps,
+                impact.persistent,
+                &impact.gap_rate_before[..S::UNILATERAL_CONSTRAINTS],
+                &impact.gap_rate_after[..S::UNILATERAL_CONSTRAINTS],
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// `StopReason::Event { index, direction }` at the end of `report`: a valid index, and the
+/// event function there on the side the direction says.
+fn check_event<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    report: &StepReport<N, Z>,
+    (index, direction): (usize, Direction),
+    call: &str,
+) -> Check {
+    if index >= S::EVENTS {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!("{call}: event {index} of a scene with {} events", S::EVENTS),
+        );
+    }
+    let mut values = vec![0.0; S::EVENTS];
+    let end = &report.end;
+    scene.event_functions(&end.q, &end.v, end.t, &mut values);
+    let value = values[index];
+    let side = match direction {
+        Direction::Rising => value > 0.0,
+        Direction::Falling => value <= 0.0,
+    };
+    if !side {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!(
+                "{call}: event {index} {direction:?} at t = {:e}, where the function is {value:e}",
+                end.t
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// What a call of `step()` did to the report.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Change {
+    /// Nothing: a pending event returned without a step.
+    None,
+    /// A zero-length report: an impact.
+    ZeroLength,
+    Step,
+}
+
+fn change<const N: usize, const Z: usize>(
+    previous: &StepReport<N, Z>,
+    report: &StepReport<N, Z>,
+) -> Change {
+    if same_report(previous, report) {
+        Change::None
+    } else if report.start.t.to_bits() == report.end.t.to_bits() {
+        Change::ZeroLength
+    } else {
+        Change::Step
+    }
+}
+
 /// Runs `case` on `scene`, checking every call; `trace` gets a line per call.
 fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
@@ -1242,7 +1837,13 @@ fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
     };
     trace(format!("new: Ok, t = {:e}", sim.time()));
+    let facts = ContactFacts {
+        restitution: case.scene.restitution(&case.parameters),
+        gap_scale: case.scene.gap_scale(&case.parameters),
+    };
     let mut run = Run {
+        scene,
+        facts,
         sim: Some(sim),
         stop: None,
         budget: *budget,
@@ -1258,6 +1859,8 @@ fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// A case being run: the simulator (gone once `with_initial_multipliers` has consumed it with
 /// an error), the stop time in force as the documentation defines it, and what was seen.
 struct Run<'s, 't, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    scene: &'s S,
+    facts: ContactFacts,
     sim: Option<Simulator<'s, S, N, Z>>,
     stop: Option<f64>,
     budget: Budget,
@@ -1304,6 +1907,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 Call::WithInitialMultipliers(lambda) => {
                     self.with_initial_multipliers(&name, lambda)?
                 }
+                Call::StepUntilImpact {
+                    max_steps,
+                    then_sample,
+                } => self.step_until_impact(&name, *max_steps, *then_sample)?,
             }
         }
         Ok(())
@@ -1379,44 +1986,149 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             if self.outcome.steps >= self.budget.steps {
                 break;
             }
-            let before = Snapshot::of(self.sim.as_mut().expect("a simulator"));
-            let result = self.sim.as_mut().expect("a simulator").step();
-            let stop = self.stop;
-            let sim = self.sim.as_mut().expect("a simulator");
-            let reason = match result {
-                Ok(reason) => reason,
-                Err(error) => {
-                    before.unchanged(sim, &call, &error)?;
-                    self.error(&call, &error);
-                    break;
-                }
-            };
-            self.outcome.steps += 1;
-            let options = (&before.options, S::POSITION_CONSTRAINTS);
-            check_step(&before.last, sim.last(), options, stop, &call)?;
-            check_time(sim, &call)?;
-            let landed = stop == Some(sim.time());
-            let expected = if landed {
-                StopReason::StopTimeReached
-            } else {
-                StopReason::StepTaken
-            };
-            if reason != expected {
-                return fail(
-                    FailureClass::ReportInconsistency,
-                    format!(
-                        "{call}: step() returned {reason:?} at t = {:e}, the stop time {stop:?}",
-                        sim.time()
-                    ),
-                );
-            }
-            if landed {
-                self.stop = None;
+            if self.checked_step(&call)?.is_none() {
+                break;
             }
         }
         let t = self.sim.as_mut().expect("a simulator").time();
         (self.trace)(format!("{call} ×{count}: t = {t:e}"));
         Ok(())
+    }
+
+    /// `step()` until it returns `Impact`, then a sample within the impact's report.
+    fn step_until_impact(&mut self, name: &str, max: u32, then_sample: Option<Time>) -> Check {
+        let call = format!("{name} (step until impact)");
+        let mut impact = false;
+        for _ in 0..max {
+            if self.outcome.steps >= self.budget.steps {
+                break;
+            }
+            match self.checked_step(&call)? {
+                Some(StopReason::Impact) => {
+                    impact = true;
+                    break;
+                }
+                Some(_) => {}
+                None => break,
+            }
+        }
+        let t = self.sim.as_mut().expect("a simulator").time();
+        (self.trace)(format!("{call}: impact {impact}, t = {t:e}"));
+        if let Some(time) = then_sample.filter(|_| impact) {
+            self.sample(&format!("{name} (sample after the impact)"), time)?;
+        }
+        Ok(())
+    }
+
+    /// One `step()`, checked; `None` after an error.
+    fn checked_step(&mut self, call: &str) -> Result<Option<StopReason>, Failure> {
+        let before = Snapshot::of(self.sim.as_mut().expect("a simulator"));
+        let result = self.sim.as_mut().expect("a simulator").step();
+        let stop = self.stop;
+        let sim = self.sim.as_mut().expect("a simulator");
+        let reason = match result {
+            Ok(reason) => reason,
+            Err(error) => {
+                before.unchanged(sim, call, &error)?;
+                self.error(call, &error);
+                return Ok(None);
+            }
+        };
+        self.outcome.steps += 1;
+        check_time(sim, call)?;
+        let report = *sim.last();
+        (self.trace)(format!(
+            "  {reason:?}: [{:e}, {:e}] q = {:?}, v = {:?}, closed {:?}",
+            report.start.t,
+            report.end.t,
+            report.end.q.as_slice(),
+            report.end.v.as_slice(),
+            sim.closed_gaps()
+        ));
+        let options = &before.options;
+        let (scene, facts) = (self.scene, self.facts);
+        let inconsistent = |what: &str| -> Result<Option<StopReason>, Failure> {
+            Err(Failure {
+                class: FailureClass::ReportInconsistency,
+                detail: format!(
+                    "{call}: step() returned {reason:?} at t = {:e} {what} (stop time {stop:?})",
+                    report.end.t
+                ),
+            })
+        };
+        match (change(&before.last, &report), reason) {
+            (Change::None, StopReason::Event { index, direction }) => {
+                // A later event found at the same step end, returned without a step.
+                check_event(scene, &report, (index, direction), call)?;
+                if sim.closed_gaps() != before.closed_gaps.expect("taken")
+                    || !same_impact(
+                        sim.last_impact(),
+                        before.last_impact.expect("taken").as_ref(),
+                    )
+                {
+                    return inconsistent("without a step, but the contacts changed");
+                }
+                return Ok(Some(reason));
+            }
+            (Change::None, _) => return inconsistent("without a step"),
+            (Change::ZeroLength, StopReason::Impact) => {
+                check_impact_report(scene, &before.last, &report, options, &facts, call)?;
+                check_last_impact(scene, sim.last_impact(), &report, &facts, call)?;
+                return Ok(Some(reason));
+            }
+            (Change::ZeroLength, _) => return inconsistent("with a step of zero length"),
+            (Change::Step, StopReason::Impact) => {
+                return Err(Failure {
+                    class: FailureClass::ImpactViolation,
+                    detail: format!(
+                        "{call}: step() returned Impact with a step from t = {:e} to {:e}: \
+                         last().start.t != last().end.t",
+                        report.start.t, report.end.t
+                    ),
+                });
+            }
+            (Change::Step, _) => {}
+        }
+        let landed = stop == Some(report.end.t);
+        let crossing = matches!(
+            reason,
+            StopReason::Event { .. }
+                | StopReason::ContactsOpened { .. }
+                | StopReason::TimeEventReached
+        ) || {
+            let open = GapSet::first(S::UNILATERAL_CONSTRAINTS)
+                .without(before.closed_gaps.expect("taken"));
+            ends_at_a_crossing(scene, &report, (options, open), &facts)
+        };
+        let rows = S::POSITION_CONSTRAINTS;
+        check_step(
+            &before.last,
+            &report,
+            (options, rows),
+            (stop, crossing),
+            call,
+        )?;
+        check_gaps(scene, &report, options, &facts, call)?;
+        let consistent = match reason {
+            StopReason::StepTaken => !landed,
+            StopReason::StopTimeReached => landed,
+            StopReason::TimeEventReached => !landed,
+            StopReason::Event { index, direction } => {
+                check_event(scene, &report, (index, direction), call)?;
+                true
+            }
+            StopReason::ContactsOpened { gaps } => {
+                !gaps.is_empty() && (0..S::UNILATERAL_CONSTRAINTS).any(|k| gaps.contains(k))
+            }
+            _ => false,
+        };
+        if !consistent {
+            return inconsistent("after a step");
+        }
+        if landed {
+            self.stop = None;
+        }
+        Ok(Some(reason))
     }
 
     fn set_stop_time(&mut self, call: &str, time: Time) -> Check {
@@ -1460,6 +2172,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             .steps_per_advance
             .min((self.budget.steps - self.outcome.steps) as u32)
             .max(1);
+        let (scene, facts) = (self.scene, self.facts);
         let sim = self.sim.as_mut().expect("a simulator");
         let before = Snapshot::of(sim);
         let t_end = target.resolve(sim.last());
@@ -1470,8 +2183,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             observed: 0,
             stopped: false,
             broken: None,
+            repeated: false,
+            impacts: 0,
+            impact_report: None,
         };
         let options = (&before.options, S::POSITION_CONSTRAINTS);
+        // The observer does not see why `step()` returned: a step shortened for a crossing
+        // cannot be told from one too short, so with gaps or events the lower bound is left to
+        // the `step()` calls.
+        let crossings = S::UNILATERAL_CONSTRAINTS + S::EVENTS > 0;
         let result = sim.advance_to(t_end, |step| {
             if seen.broken.is_some() {
                 step.stop();
@@ -1479,7 +2199,27 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             }
             seen.observed += 1;
             let report = *step.report();
-            let mut check = check_step(&seen.previous, &report, options, Some(t_end), &call);
+            let mut check = match change(&seen.previous, &report) {
+                // A later event at the same step end, returned without a step: advance_to
+                // returns it next.
+                Change::None => {
+                    seen.repeated = true;
+                    Ok(())
+                }
+                Change::ZeroLength => {
+                    seen.impacts += 1;
+                    seen.impact_report = Some(report);
+                    check_impact_report(scene, &seen.previous, &report, options.0, &facts, &call)
+                }
+                Change::Step => check_step(
+                    &seen.previous,
+                    &report,
+                    options,
+                    (Some(t_end), crossings),
+                    &call,
+                )
+                .and_then(|()| check_gaps(scene, &report, options.0, &facts, &call)),
+            };
             if check.is_ok() && observer.samples(seen.observed) {
                 let t = report.start.t + observer.sample_at * (report.end.t - report.start.t);
                 let sampled = step.sample(t);
@@ -1510,37 +2250,58 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             Ok(reason) => {
                 let t = sim.time();
                 (self.trace)(format!(
-                    "{call}: {reason:?} after {observed} steps, t = {t:e}"
+                    "{call}: {reason:?} after {observed} steps ({} impacts), t = {t:e}",
+                    seen.impacts
                 ));
                 check_time(sim, &call)?;
                 let expected = if seen.stopped {
-                    StopReason::ObserverStopped
+                    reason == StopReason::ObserverStopped
+                } else if seen.repeated {
+                    matches!(reason, StopReason::Event { .. })
                 } else {
-                    StopReason::StopTimeReached
+                    matches!(
+                        reason,
+                        StopReason::StopTimeReached | StopReason::Event { .. }
+                    )
                 };
-                let consistent = reason == expected
+                let consistent = expected
                     && (observed == 0 || same_report(sim.last(), &seen.previous))
                     && (reason != StopReason::StopTimeReached || t == t_end)
+                    && t <= t_end
                     && (observed > 0 || t_end == t_start);
                 if !consistent {
                     return fail(
                         FailureClass::ReportInconsistency,
                         format!(
                             "{call}: {reason:?} at t = {t:e} after {observed} steps (the \
-                             observer stopped it: {})",
-                            seen.stopped
+                             observer stopped it: {}; an observation without a step: {})",
+                            seen.stopped, seen.repeated
                         ),
                     );
                 }
+                if let StopReason::Event { index, direction } = reason {
+                    check_event(scene, sim.last(), (index, direction), &call)?;
+                }
+                if let Some(report) = &seen.impact_report {
+                    // The last impact: the one of the last zero-length report seen.
+                    check_last_impact(scene, sim.last_impact(), report, &facts, &call)?;
+                }
                 if observed > 0 {
-                    self.stop = None;
+                    // Cleared by the landing, by the observer's stop, or still ahead after an
+                    // event.
+                    let event_before = matches!(reason, StopReason::Event { .. }) && t < t_end;
+                    self.stop = event_before.then_some(t_end);
                 }
             }
             Err(error) => {
-                // The last accepted state is that of the last step the observer saw.
+                // The last accepted state is that of the last step the observer saw; an impact
+                // changes the start report and the last impact, a step the closed gaps.
                 let after = Snapshot {
                     last: seen.previous,
                     time: seen.previous.end.t,
+                    start_report: before.start_report.filter(|_| seen.impacts == 0),
+                    closed_gaps: before.closed_gaps.filter(|_| observed == 0),
+                    last_impact: before.last_impact.filter(|_| seen.impacts == 0),
                     ..before
                 };
                 after.unchanged(sim, &call, &error)?;
@@ -1587,10 +2348,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                         format!("{call}: set_options Ok but options() = {:?}", sim.options()),
                     );
                 }
-                if !same_report(sim.last(), &before.last) {
+                let contacts = before.closed_gaps == Some(sim.closed_gaps())
+                    && same_impact(
+                        sim.last_impact(),
+                        before.last_impact.expect("taken").as_ref(),
+                    );
+                if !same_report(sim.last(), &before.last) || !contacts {
                     return fail(
                         FailureClass::StateLoss,
-                        format!("{call}: set_options changed last()"),
+                        format!("{call}: set_options changed last() or the contacts"),
                     );
                 }
                 (self.trace)(format!("{call}: set_options: Ok"));
@@ -1667,6 +2433,11 @@ struct Seen<const N: usize, const Z: usize> {
     observed: u32,
     stopped: bool,
     broken: Option<Failure>,
+    /// An observation without a step (a pending event).
+    repeated: bool,
+    /// Zero-length reports (impacts) seen, and the last.
+    impacts: u32,
+    impact_report: Option<StepReport<N, Z>>,
 }
 
 /// Runs `case`: builds its scene from the parameters and executes the calls with the checks.
@@ -1813,6 +2584,34 @@ pub fn run(case: &Case, budget: &Budget, trace: &mut dyn FnMut(String)) -> Outco
                 g: p[3],
             };
             execute::<_, 3, 2>(&s, case, budget, trace)
+        }
+        SceneKind::Ball => {
+            let s = Ball {
+                m: p[0],
+                g: p[1],
+                e: p[2],
+            };
+            execute::<_, 1, 1>(&s, case, budget, trace)
+        }
+        SceneKind::WallPendulum => {
+            let s = WallPendulum {
+                m: p[0],
+                length: p[1],
+                g: p[2],
+                e: p[3],
+                height: p[4],
+            };
+            execute::<_, 2, 2>(&s, case, budget, trace)
+        }
+        SceneKind::FallingBar => {
+            let s = FallingBar {
+                m: p[0],
+                j: p[1],
+                a: p[2],
+                g: p[3],
+                e: p[4],
+            };
+            execute::<_, 3, 3>(&s, case, budget, trace)
         }
     }
 }
