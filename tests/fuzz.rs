@@ -28,26 +28,7 @@ const RUN_LIMIT: Duration = Duration::from_secs(20);
 /// `zeitner-runtime` not fixed yet, with the class of failure they must still show. Once the
 /// bug is fixed the seed passes and this test fails until it is removed here; from then on it
 /// guards the fix like every other seed.
-const KNOWN_RUNTIME_BUGS: &[(u64, FailureClass, &str)] = &[
-    (
-        106,
-        FailureClass::OptionViolation,
-        "after an impact that leaves a gap open at g <= 0, the next step is cut to \
-         time_tolerance / 2 (below min_step) by a crossing at its start",
-    ),
-    (
-        224,
-        FailureClass::OptionViolation,
-        "after an impact that leaves a gap open at g <= 0, the next step is cut to \
-         time_tolerance / 2 (below the fixed step) by a crossing at its start",
-    ),
-    (
-        185,
-        FailureClass::Penetration,
-        "the start's projection onto a closed gap moves another, open and approaching gap \
-         below zero, on its crossed side: it sinks a whole step deep before its impact",
-    ),
-];
+const KNOWN_RUNTIME_BUGS: &[(u64, FailureClass, &str)] = &[];
 
 /// One case in its own thread: its failure, if any, or `None` for a hang.
 fn run(seed: u64) -> Option<Option<(FailureClass, String)>> {
@@ -395,7 +376,7 @@ fn lowest_gap<const N: usize, const Z: usize, S: zeitner::ConstrainedSystem<N, Z
 /// whole step, deep in the floor. A ball on the floor leaving it at 1e-9 m/s (above the
 /// constraint tolerance, so the contact starts open) sinks to y = -1.4e-3 first.
 #[test]
-#[ignore = "runtime bug, not fixed yet"]
+
 fn a_ball_barely_leaving_the_floor_must_not_fall_through_it() {
     let ball = Ball {
         m: 1.0,
@@ -412,7 +393,7 @@ fn a_ball_barely_leaving_the_floor_must_not_fall_through_it() {
 /// crossed side from the start: no crossing is located, the bar's other end sinks to -3e-3
 /// before the impact at the end of the step.
 #[test]
-#[ignore = "runtime bug, not fixed yet"]
+
 fn a_bar_started_into_one_contact_must_not_sink_its_other_end() {
     let bar = FallingBar {
         m: 1.0,

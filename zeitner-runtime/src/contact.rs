@@ -141,7 +141,12 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
 }
 
 /// The impact of the gaps in `impacting` at `(q, v, t)`: the impulse, the velocities after it,
-/// and the contacts that stay closed, which it leaves set in the model.
+/// and the contacts that stay closed, which it leaves set in the model. The gaps bounce together
+/// (each with its own restitution) when one of them approaches faster than `rest_velocity`, and
+/// all stay closed otherwise: a slow contact beside a bouncing one takes part in the bounce, as
+/// mixing sticking and bouncing rows in one impulse can create energy. Where different
+/// restitutions would still create energy, the smallest serves them all (Newton's law with one
+/// coefficient is an `M`-orthogonal reflection scaled by it, which cannot).
 pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (&Vector<N>, &Vector<N>, f64),
@@ -149,28 +154,100 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
     rest_velocity: f64,
 ) -> Result<Impact<N, Z>, StepError> {
     let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
-    let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
     let rates = model.gap_rates(q, v, t)?;
+    let restitution = |k: usize| model.system.restitution(k);
+    let fast = impacting
+        .iter()
+        .any(|k| restitution(k) > 0.0 && -rates[k] > rest_velocity);
+    let mut coefficients = [0.0; MAX_GAPS];
+    if fast {
+        for k in impacting.iter() {
+            coefficients[k] = restitution(k);
+        }
+    }
+    let closed_before = all.without(model.open_gaps());
+    let energy = |model: &Model<'_, S, N, Z>, w: &Vector<N>| {
+        0.5 * w.dot(&model.system.mass_matrix(q, t).mul(w))
+    };
+    let before = energy(model, v);
+    let mut solved = impulse(
+        model,
+        (q, v, t),
+        (closed_before, impacting),
+        &coefficients,
+        &rates,
+    )?;
+    if energy(model, &solved.1) > before * (1.0 + 1e-12) {
+        let smallest = impacting
+            .iter()
+            .map(|k| coefficients[k])
+            .fold(f64::INFINITY, f64::min);
+        for k in impacting.iter() {
+            coefficients[k] = smallest;
+        }
+        model.set_open_gaps(all.without(closed_before));
+        solved = impulse(
+            model,
+            (q, v, t),
+            (closed_before, impacting),
+            &coefficients,
+            &rates,
+        )?;
+    }
+    let (impulse, after, active) = solved;
     let bouncing = {
         let mut set = GapSet::EMPTY;
-        for k in impacting.iter() {
-            if model.system.restitution(k) > 0.0 && -rates[k] > rest_velocity {
-                set.insert(k);
-            }
+        for k in impacting.iter().filter(|&k| coefficients[k] > 0.0) {
+            set.insert(k);
         }
         set
     };
-    let mut active = all.without(model.open_gaps()).union(impacting);
+    let closed = active.without(bouncing);
+    model.set_open_gaps(all.without(closed));
+    let energy_lost = before - energy(model, &after);
+    if !(after.iter().all(|x| x.is_finite()) && energy_lost.is_finite()) {
+        return Err(StepError::non_finite_state(t));
+    }
+    let dropped = all.without(active);
+    Ok(Impact {
+        t,
+        gaps: impacting.without(dropped),
+        persistent: impacting.without(bouncing).without(dropped),
+        impulse,
+        velocity_before: *v,
+        velocity_after: after,
+        gap_rate_before: rates,
+        gap_rate_after: model.gap_rates(q, &after, t)?,
+        energy_lost,
+    })
+}
+
+/// The impulse problem with the contacts `closed` (kept at `ġ = 0`) and `impacting` (sent to
+/// `ġ⁺ = -e ġ⁻` with the given coefficients), bilateral rows kept: a gap whose impulse would pull
+/// leaves the problem, which is solved again. Returns the impulse, the velocities after it and
+/// the gaps that took part.
+#[allow(clippy::type_complexity)]
+fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    (closed, impacting): (GapSet, GapSet),
+    coefficients: &[f64; MAX_GAPS],
+    rates: &[f64; MAX_GAPS],
+) -> Result<(Vector<Z>, Vector<N>, GapSet), StepError> {
+    let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
+    let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+    let mut active = closed.union(impacting);
     let mut impulse = Vector::<Z>::zeros();
     let mut after = *v;
     for _ in 0..=S::UNILATERAL_CONSTRAINTS {
         model.set_open_gaps(all.without(active));
         let directions = model.directions(q, v, t)?;
         let mut rhs = model.rate(q, v, t)?;
-        for k in bouncing.iter().filter(|&k| active.contains(k)) {
-            rhs[first + k] += model.system.restitution(k) * rates[k];
+        for k in impacting.iter().filter(|&k| active.contains(k)) {
+            rhs[first + k] += coefficients[k] * rates[k];
         }
-        impulse = solve_spd(&directions.gram(), &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+        let gram = directions.gram();
+        impulse = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
             StepError::RankDeficientConstraints {
                 t,
                 dependent_rows: rows,
@@ -183,23 +260,5 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
             None => break,
         }
     }
-    let persistent = impacting.without(bouncing);
-    let closed = active.without(bouncing);
-    model.set_open_gaps(all.without(closed));
-    let energy = |w: &Vector<N>| 0.5 * w.dot(&model.system.mass_matrix(q, t).mul(w));
-    let energy_lost = energy(v) - energy(&after);
-    if !(after.iter().all(|x| x.is_finite()) && energy_lost.is_finite()) {
-        return Err(StepError::non_finite_state(t));
-    }
-    Ok(Impact {
-        t,
-        gaps: impacting.without(all.without(active)),
-        persistent: persistent.without(all.without(active)),
-        impulse,
-        velocity_before: *v,
-        velocity_after: after,
-        gap_rate_before: rates,
-        gap_rate_after: model.gap_rates(q, &after, t)?,
-        energy_lost,
-    })
+    Ok((impulse, after, active))
 }

@@ -174,6 +174,8 @@ pub enum InvalidOption {
     Events,
     /// A system with more gaps or event functions than the runtime holds (32 each).
     TooManyEvents,
+    /// A coefficient of restitution outside `0..=1` (or NaN).
+    Restitution,
 }
 
 impl fmt::Display for InvalidOption {
@@ -222,6 +224,10 @@ impl fmt::Display for InvalidOption {
             InvalidOption::TooManyEvents => f.write_str(
                 "the system has more than 32 gaps or more than 32 event functions; split them or \
                  combine several into one event function",
+            ),
+            InvalidOption::Restitution => f.write_str(
+                "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
+                 1: elastic); above 1 an impact would create energy",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,

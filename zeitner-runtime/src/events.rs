@@ -9,6 +9,7 @@
 //! crosses twice within one step is not seen: bound `max_step` where that matters.
 
 use crate::consistency::consistent_point;
+use crate::contact::GapSet;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::output::{interpolate, Point};
@@ -52,28 +53,83 @@ impl Watched {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Values {
     pub events: [f64; MAX_EVENTS],
-    /// `g_u` of open gaps, `λ` of closed ones.
+    /// `g_u` above its level for open gaps, `λ` for closed ones.
     pub gaps: [f64; MAX_GAPS],
 }
 
-/// Which side of zero each watched function is on (`value > 0`), by bit.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Sides {
+/// What is known of the watched functions at the current state: the side of zero of each event
+/// function (by bit, `1` where positive), and for each open gap the level below which it closes:
+/// zero, or for a gap that starts at or below zero (it just opened, or the start put it there
+/// while it separates) its value less the constraint tolerance, so that only a deeper approach
+/// counts. A closed gap's multiplier is watched for rising through zero.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Watch {
     events: u32,
-    gaps: u32,
+    levels: [f64; MAX_GAPS],
 }
 
-impl Sides {
-    /// The sides of the first `events` event functions and `gaps` gaps.
-    pub fn of(values: &Values, (events, gaps): (usize, usize)) -> Sides {
-        let bits = |xs: &[f64]| {
-            xs.iter()
-                .enumerate()
-                .fold(0u32, |bits, (i, &x)| bits | (u32::from(x > 0.0) << i))
+impl Default for Watch {
+    fn default() -> Self {
+        Watch {
+            events: 0,
+            levels: [0.0; MAX_GAPS],
+        }
+    }
+}
+
+impl Watch {
+    /// The watch at a point, with the model's current contacts.
+    pub fn at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+        model: &mut Model<'_, S, N, Z>,
+        point: &Point<N, Z>,
+        tolerance: f64,
+    ) -> Result<Watch, StepError> {
+        let events = if S::EVENTS > 0 {
+            model.events(&point.q, &point.v, point.t)?
+        } else {
+            [0.0; MAX_EVENTS]
         };
-        Sides {
-            events: bits(&values.events[..events]),
-            gaps: bits(&values.gaps[..gaps]),
+        let gaps = if S::UNILATERAL_CONSTRAINTS > 0 {
+            model.gaps(&point.q, &point.v, point.t)?
+        } else {
+            [0.0; MAX_GAPS]
+        };
+        Ok(Watch::from_values(&events, &gaps, S::EVENTS, tolerance))
+    }
+
+    /// The watch at a step end whose values were taken with `self`.
+    pub fn after(
+        &self,
+        values: &Values,
+        (events, gaps): (usize, usize),
+        open: GapSet,
+        tolerance: f64,
+    ) -> Watch {
+        let mut distances = [0.0; MAX_GAPS];
+        for k in open.iter().filter(|&k| k < gaps) {
+            distances[k] = values.gaps[k] + self.levels[k];
+        }
+        let mut watch = Watch::from_values(&values.events, &distances, events, tolerance);
+        for k in (0..gaps).filter(|&k| !open.contains(k)) {
+            watch.levels[k] = 0.0;
+        }
+        watch
+    }
+
+    fn from_values(
+        events: &[f64; MAX_EVENTS],
+        gaps: &[f64; MAX_GAPS],
+        count: usize,
+        tolerance: f64,
+    ) -> Watch {
+        let sides = events[..count]
+            .iter()
+            .enumerate()
+            .fold(0u32, |bits, (i, &x)| bits | (u32::from(x > 0.0) << i));
+        let levels = gaps.map(|g| if g > 0.0 { 0.0 } else { g - tolerance });
+        Watch {
+            events: sides,
+            levels,
         }
     }
 
@@ -81,17 +137,13 @@ impl Sides {
         self.events & (1 << i) != 0
     }
 
-    pub fn gap(&self, k: usize) -> bool {
-        self.gaps & (1 << k) != 0
+    pub fn level(&self, k: usize) -> f64 {
+        self.levels[k]
     }
 
-    /// Sets the side of one watched function.
-    pub fn set(&mut self, watched: Watched, positive: bool) {
-        let (bits, i) = match watched {
-            Watched::Event(i) => (&mut self.events, i),
-            Watched::Gap(k) | Watched::Contact(k) => (&mut self.gaps, k),
-        };
-        *bits = (*bits & !(1 << i)) | (u32::from(positive) << i);
+    /// The event sides as bits.
+    pub fn event_bits(&self) -> u32 {
+        self.events
     }
 }
 
@@ -99,6 +151,7 @@ impl Sides {
 pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     point: &Point<N, Z>,
+    watch: &Watch,
 ) -> Result<Values, StepError> {
     let events = if S::EVENTS > 0 {
         model.events(&point.q, &point.v, point.t)?
@@ -112,7 +165,7 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
         for (k, gap) in gaps.iter_mut().enumerate().take(S::UNILATERAL_CONSTRAINTS) {
             *gap = if open.contains(k) {
-                distances[k]
+                distances[k] - watch.level(k)
             } else {
                 point.lambda[first + k]
             };
@@ -126,10 +179,11 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     which: Watched,
     point: &Point<N, Z>,
+    watch: &Watch,
 ) -> Result<f64, StepError> {
     Ok(match which {
         Watched::Event(i) => model.events(&point.q, &point.v, point.t)?[i],
-        Watched::Gap(k) => model.gaps(&point.q, &point.v, point.t)?[k],
+        Watched::Gap(k) => model.gaps(&point.q, &point.v, point.t)?[k] - watch.level(k),
         Watched::Contact(k) => {
             // The interpolated multipliers are only linear: recompute them at the state.
             let consistent = consistent_point(model, point.t, point.q, point.v)?;
@@ -147,25 +201,26 @@ pub(crate) struct Crossing {
     pub t: f64,
 }
 
-/// The earliest crossing of interest between the step's start (whose sides are `sides`) and
+/// The earliest crossing of interest between the step's start (as `watch` has it) and
 /// its end (whose values are `end_values`), located on the dense output between `start` and
 /// `end`.
 pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (start, end): (&Point<N, Z>, &Point<N, Z>),
-    sides: &Sides,
+    watch: &Watch,
     end_values: &Values,
     time_tolerance: f64,
 ) -> Result<Option<Crossing>, StepError> {
     let open = model.open_gaps();
-    let events = (0..S::EVENTS).map(|i| (Watched::Event(i), sides.event(i), end_values.events[i]));
+    let events = (0..S::EVENTS).map(|i| (Watched::Event(i), watch.event(i), end_values.events[i]));
+    // An open gap is above its level and a closed one pushes, by construction.
     let gaps = (0..S::UNILATERAL_CONSTRAINTS).map(|k| {
         let watched = if open.contains(k) {
             Watched::Gap(k)
         } else {
             Watched::Contact(k)
         };
-        (watched, sides.gap(k), end_values.gaps[k])
+        (watched, open.contains(k), end_values.gaps[k])
     });
     let mut earliest: Option<Crossing> = None;
     for (watched, was_positive, value) in events.chain(gaps) {
@@ -181,13 +236,8 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
             continue;
         }
         let before = earliest.map_or(end.t, |c| c.t);
-        let t = locate(
-            model,
-            watched,
-            (start, end),
-            (was_positive, value),
-            time_tolerance,
-        )?;
+        let sides = (was_positive, value);
+        let t = locate(model, (watched, watch), (start, end), sides, time_tolerance)?;
         if t < before || earliest.is_none() {
             earliest = Some(Crossing {
                 watched,
@@ -204,14 +254,14 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
 /// bracket is a quarter of `time_tolerance` wide.
 fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    watched: Watched,
+    (watched, watch): (Watched, &Watch),
     (start, end): (&Point<N, Z>, &Point<N, Z>),
     (was_positive, end_value): (bool, f64),
     time_tolerance: f64,
 ) -> Result<f64, StepError> {
     // The start's value, on its recorded side even where rounding put it at or across zero.
     let tiny = f64::MIN_POSITIVE;
-    let start_value = value_of(model, watched, start)?;
+    let start_value = value_of(model, watched, start, watch)?;
     let mut fa = if was_positive {
         start_value.max(tiny)
     } else {
@@ -230,7 +280,7 @@ fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         } else {
             0.5 * (a + b)
         };
-        let ft = value_of(model, watched, &interpolate(start, end, t))?;
+        let ft = value_of(model, watched, &interpolate(start, end, t), watch)?;
         if (ft > 0.0) == (fb > 0.0) {
             (b, fb) = (t, ft);
             if retained == -1 {

@@ -9,7 +9,7 @@ use crate::control::{
     bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller,
 };
 use crate::error::{InvalidOption, RowSet, StepError};
-use crate::events::{self, Crossing, Direction, Sides, Values, Watched};
+use crate::events::{self, Crossing, Direction, Values, Watch};
 use crate::method::{AnyMethod, Method, Start, StepEnd};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::StepPolynomial;
@@ -59,8 +59,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     last: StepReport<N, Z>,
     start_report: StartReport<N, Z>,
     statistics: Statistics,
-    /// The side of zero of every watched function at the current state.
-    sides: Sides,
+    /// The event functions' sides and the open gaps' levels at the current state.
+    watch: Watch,
     /// What the next [`Simulator::step`] reports before it integrates.
     pending: Pending,
     last_impact: Option<Impact<N, Z>>,
@@ -77,7 +77,7 @@ struct Pending {
 
 /// How many times a step is integrated again to end nearer a crossing before it is taken as it
 /// is (the next step finds the crossing again, from much nearer).
-const RELOCATIONS: u32 = 8;
+const RELOCATIONS: u32 = 16;
 
 /// A step whose constraints hold and whose error is within tolerance.
 struct Accepted<const N: usize, const Z: usize> {
@@ -121,10 +121,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !fits {
             return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
         }
+        if (0..S::UNILATERAL_CONSTRAINTS).any(|k| !(0.0..=1.0).contains(&system.restitution(k))) {
+            return Err(StepError::InvalidOption(InvalidOption::Restitution));
+        }
         let mut model = Model::new(system);
         let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
         let point = last.end;
-        let sides = sides_at(&mut model, &point)?;
+        let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         Ok(Simulator {
             model,
             method: AnyMethod::new(options.method),
@@ -142,7 +145,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             last,
             start_report,
             statistics: Statistics::default(),
-            sides,
+            watch,
             pending: Pending::default(),
             last_impact: None,
         })
@@ -179,13 +182,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         t: f64,
     ) -> Result<StartReport<N, Z>, StepError> {
         let open = self.model.open_gaps();
+        let tolerance = self.options.constraint_tolerance;
         let started =
             start_point(&mut self.model, (q, v, t), &self.options).and_then(|(last, report, _)| {
-                Ok((last, report, sides_at(&mut self.model, &last.end)?))
+                Ok((
+                    last,
+                    report,
+                    watch_at(&mut self.model, &last.end, tolerance)?,
+                ))
             });
-        let (last, report, sides) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
+        let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = last.end;
-        self.sides = sides;
+        self.watch = watch;
         self.pending = Pending::default();
         self.last = last;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
@@ -334,18 +342,24 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             t: t_end,
             ..step.point
         };
-        let values = events::values(&mut self.model, &end)?;
-        let tolerance = self.options.events.time_tolerance;
+        let values = events::values(&mut self.model, &end, &self.watch)?;
+        let tolerance = self.time_tolerance();
         let start = self.last.end;
         let ends = (&start, &end);
-        let crossing = events::earliest(&mut self.model, ends, &self.sides, &values, tolerance)?;
+        let crossing = events::earliest(&mut self.model, ends, &self.watch, &values, tolerance)?;
         Ok((Some(values), crossing))
+    }
+
+    /// The events' time tolerance, or what the time's resolution allows where it is coarser.
+    fn time_tolerance(&self) -> f64 {
+        let resolution = 8.0 * f64::EPSILON * self.time().abs();
+        self.options.events.time_tolerance.max(resolution)
     }
 
     /// Where a step with a crossing should end instead of `t_end`: half the time tolerance
     /// beyond it (before it for a gap), or nowhere new if `t_end` is that already.
     fn aim(&self, crossing: Crossing, t_end: f64) -> Option<f64> {
-        let half = 0.5 * self.options.events.time_tolerance;
+        let half = 0.5 * self.time_tolerance();
         let offset = if crossing.watched.lands_before() {
             -half
         } else {
@@ -390,32 +404,26 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// ones kept for the next calls), contacts whose force would pull (opened now), gaps
     /// closing (their impact kept for the next call).
     fn resolve_crossings(&mut self, values: &Values) -> Result<Option<StopReason>, StepError> {
-        let before = self.sides;
-        let mut sides = Sides::of(values, (S::EVENTS, S::UNILATERAL_CONSTRAINTS));
-        let mut events = 0u32;
-        for i in (0..S::EVENTS).filter(|&i| sides.event(i) != before.event(i)) {
-            events |= 1 << i;
-        }
-        self.pending.rising = sides_bits(&sides, S::EVENTS);
         let open = self.model.open_gaps();
+        let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS);
+        let watch = self
+            .watch
+            .after(values, counts, open, self.options.constraint_tolerance);
+        let events = (0..S::EVENTS)
+            .filter(|&i| watch.event(i) != self.watch.event(i))
+            .fold(0u32, |bits, i| bits | (1 << i));
         let mut releasing = GapSet::EMPTY;
         for k in (0..S::UNILATERAL_CONSTRAINTS).filter(|&k| !open.contains(k)) {
-            if sides.gap(k) && !before.gap(k) {
+            if values.gaps[k] > 0.0 {
                 releasing.insert(k);
             }
         }
         let closing = self.closing_gaps(values)?;
-        for k in closing.iter() {
-            // Until the impact, the gap counts as open and not yet crossed.
-            sides.set(Watched::Gap(k), true);
-        }
+        self.watch = watch;
         if !releasing.is_empty() {
             self.open_contacts(releasing)?;
-            for k in releasing.iter() {
-                sides.set(Watched::Gap(k), true);
-            }
         }
-        self.sides = sides;
+        self.pending.rising = watch.event_bits();
         self.pending.events = events;
         self.pending.impact = closing;
         if let Some(reason) = self.next_event() {
@@ -425,22 +433,20 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// Open gaps at the current end that close now: approaching, and within the time tolerance
-    /// (or the constraint tolerance) of zero, or past it.
+    /// (or the constraint tolerance) of their level, or past it.
     fn closing_gaps(&mut self, values: &Values) -> Result<GapSet, StepError> {
         let mut closing = GapSet::EMPTY;
         let open = self.model.open_gaps();
-        if open.is_empty() {
-            return Ok(closing);
-        }
-        let near = |k: usize| values.gaps[k] <= self.options.constraint_tolerance.max(0.0);
-        if !open.iter().any(|k| k < S::UNILATERAL_CONSTRAINTS) {
+        let near = self.options.constraint_tolerance;
+        let candidates = || open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS);
+        if candidates().next().is_none() {
             return Ok(closing);
         }
         let end = self.last.end;
         let rates = self.model.gap_rates(&end.q, &end.v, end.t)?;
-        let window = 2.0 * self.options.events.time_tolerance;
-        for k in open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS) {
-            if rates[k] < 0.0 && (near(k) || values.gaps[k] <= -rates[k] * window) {
+        let window = 2.0 * self.time_tolerance();
+        for k in candidates() {
+            if rates[k] < 0.0 && (values.gaps[k] <= near || values.gaps[k] <= -rates[k] * window) {
                 closing.insert(k);
             }
         }
@@ -452,9 +458,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let open = self.model.open_gaps();
         self.model.set_open_gaps(open.union(gaps));
         let end = self.last.end;
-        let point = consistent_point(&mut self.model, end.t, end.q, end.v)
-            .inspect_err(|_| self.model.set_open_gaps(open))?;
-        self.last.end = point;
+        let tolerance = self.options.constraint_tolerance;
+        let settled = consistent_point(&mut self.model, end.t, end.q, end.v)
+            .and_then(|point| Ok((point, watch_at(&mut self.model, &point, tolerance)?)));
+        let (point, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
+        (self.last.end, self.watch) = (point, watch);
         self.lambda = point.lambda;
         self.restart_predictors();
         Ok(())
@@ -491,6 +499,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let before = self.last.end;
         let open = self.model.open_gaps();
         let rest = self.options.events.rest_velocity;
+        let tolerance = self.options.constraint_tolerance;
         let resolved = contact::impact(
             &mut self.model,
             (&before.q, &before.v, before.t),
@@ -502,16 +511,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let (mut last, report, _) = start_point(&mut self.model, state, &self.options)?;
             contact::open_pulling(&mut self.model, &mut last.end)?;
             let last = end_report(&mut self.model, before, last.end, last.end.lambda, 0, None)?;
-            Ok((impact, last, report, sides_at(&mut self.model, &last.end)?))
+            let watch = watch_at(&mut self.model, &last.end, tolerance)?;
+            Ok((impact, last, report, watch))
         });
-        let (impact, last, report, mut sides) =
+        let (impact, last, report, watch) =
             resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
-        for k in gaps.iter().filter(|&k| self.model.open_gaps().contains(k)) {
-            sides.set(Watched::Gap(k), true);
-        }
         let point = last.end;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        (self.last, self.start_report, self.sides) = (last, report, sides);
+        (self.last, self.start_report, self.watch) = (last, report, watch);
         self.last_impact = Some(impact);
         self.t_carry = 0.0;
         self.restart_predictors();
@@ -844,29 +851,39 @@ fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         model.set_open_gaps(GapSet::first(S::UNILATERAL_CONSTRAINTS).without(closed));
     }
     let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
-    if S::UNILATERAL_CONSTRAINTS > 0 && !contact::open_pulling(model, &mut point)?.is_empty() {
-        report.multipliers = point.lambda;
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        // The projection may push an open gap through: close it too and project again.
+        for _ in 0..S::UNILATERAL_CONSTRAINTS {
+            let gaps = model.gaps(&point.q, &point.v, t)?;
+            let open = model.open_gaps();
+            let through = open
+                .iter()
+                .find(|&k| k < S::UNILATERAL_CONSTRAINTS && gaps[k] < -tolerance);
+            let Some(k) = through else { break };
+            let mut closing = open;
+            closing.remove(k);
+            model.set_open_gaps(closing);
+            (point, report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+        }
+        if !contact::open_pulling(model, &mut point)?.is_empty() {
+            report.multipliers = point.lambda;
+        }
     }
     let jacobian = model.jacobian(&point.q, &point.v, t)?;
     let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
     Ok((last, report, jacobian))
 }
 
-/// The sides of the watched functions at a point.
-fn sides_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+/// The watch of events and gaps at a point.
+fn watch_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     point: &Point<N, Z>,
-) -> Result<Sides, StepError> {
+    tolerance: f64,
+) -> Result<Watch, StepError> {
     if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
-        return Ok(Sides::default());
+        return Ok(Watch::default());
     }
-    let values = events::values(model, point)?;
-    Ok(Sides::of(&values, (S::EVENTS, S::UNILATERAL_CONSTRAINTS)))
-}
-
-/// The event sides as bits (`1` where positive), for the directions of crossings.
-fn sides_bits(sides: &Sides, events: usize) -> u32 {
-    (0..events).fold(0, |bits, i| bits | (u32::from(sides.event(i)) << i))
+    Watch::at(model, point, tolerance)
 }
 
 /// Whether a run to `t_end` from `now` has nothing to do; an error when `t_end` is not a
