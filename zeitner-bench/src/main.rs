@@ -10,6 +10,7 @@ mod figure;
 mod fuzz;
 mod fuzz_command;
 mod hand_written;
+mod impacts;
 mod measure;
 mod peers;
 mod scaling;
@@ -77,11 +78,33 @@ struct StabilityArgs {
     /// Markdown report.
     #[arg(long, default_value = "docs/stability.md")]
     report: PathBuf,
+    /// Run only the impacts and replace their section of the report.
+    #[arg(long)]
+    impacts_only: bool,
 }
 
 fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error>> {
     let progress = ProgressBar::new_spinner();
     let clock = std::time::Instant::now();
+    let impacts = impacts::markdown(|method| {
+        progress.set_message(format!(
+            "impacts, {method} [{:.0} s]",
+            clock.elapsed().as_secs_f64()
+        ));
+        progress.tick();
+    });
+    if args.impacts_only {
+        progress.finish_and_clear();
+        let report = std::fs::read_to_string(&args.report)?;
+        let kept = report.split("\n## Impacts\n").next().unwrap_or(&report);
+        std::fs::write(&args.report, format!("{}\n{impacts}", kept.trim_end()))?;
+        println!(
+            "wrote the impacts section of {} in {:.1} s",
+            args.report.display(),
+            clock.elapsed().as_secs_f64()
+        );
+        return Ok(());
+    }
     let cases = stability::all_cases(args.long_steps, |scene| {
         progress.set_message(format!("{scene} [{:.0} s]", clock.elapsed().as_secs_f64()));
         progress.tick();
@@ -91,7 +114,8 @@ fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error
         std::fs::create_dir_all(parent)?;
     }
     std::fs::write(&args.csv, stability::csv(&cases))?;
-    std::fs::write(&args.report, stability::markdown(&cases, args.long_steps))?;
+    let report = stability::markdown(&cases, args.long_steps);
+    std::fs::write(&args.report, format!("{}\n{impacts}", report.trim_end()))?;
     let stable = cases.iter().filter(|c| c.outcome.stable()).count();
     println!(
         "{} runs, {stable} stable, {} stopped with a typed error; wrote {} and {} in {:.1} s",
