@@ -445,3 +445,31 @@ fn the_steam_generator_s_strut_engages_when_its_free_flight_says() {
     );
     assert!(first.impulse[2] < 0.0);
 }
+
+#[test]
+fn time_events_given_by_the_user_are_landed_on_in_any_order() {
+    let ball = GeneratedBall {
+        m: 1.0,
+        g: 9.81,
+        e: 0.5,
+    };
+    let mut sim = Simulator::new(
+        &ball,
+        Vector::from([1.0]),
+        Vector::zeros(),
+        0.0,
+        Options::default(),
+    )
+    .unwrap();
+    let times = [0.3, 0.1, 0.2];
+    sim.set_time_events(&times).unwrap();
+    let mut landed = Vec::new();
+    sim.advance_to(0.35, |step| {
+        if step.reason() == StopReason::TimeEventReached {
+            landed.push(step.end.t);
+        }
+    })
+    .unwrap();
+    assert_eq!(landed, [0.1, 0.2, 0.3]);
+    assert!(sim.set_time_events(&[f64::NAN]).is_err());
+}

@@ -150,6 +150,9 @@ pub enum StopReason {
         index: usize,
         direction: crate::Direction,
     },
+    /// A step landed just before gaps close (within the time tolerance): the next
+    /// [`Simulator::step`] applies the impact. `advance_to` goes on.
+    GapsClosing { gaps: crate::GapSet },
     /// Gaps closed: the velocities jumped by an impulse ([`Simulator::last_impact`]), a step of
     /// zero length whose report has the velocities before and after. `advance_to` goes on.
     Impact,

@@ -64,6 +64,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     /// What the next [`Simulator::step`] reports before it integrates.
     pending: Pending,
     last_impact: Option<Impact<N, Z>>,
+    /// Times the user asked steps to land on, besides the model's time events.
+    time_events: &'s [f64],
 }
 
 /// Events found at the last step end and not yet returned, and gaps to close by an impact.
@@ -148,7 +150,30 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             watch,
             pending: Pending::default(),
             last_impact: None,
+            time_events: &[],
         })
+    }
+
+    /// Times at which steps land exactly, besides the model's own time events (a switch, a
+    /// change of load made from outside), in any order; the multipliers' predictor and the
+    /// step-size controller start afresh at each, as at the model's
+    /// ([`StopReason::TimeEventReached`]). Refused (and nothing changed) if one is not finite.
+    pub fn set_time_events(&mut self, times: &'s [f64]) -> Result<(), StepError> {
+        if !times.iter().all(|t| t.is_finite()) {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        self.time_events = times;
+        Ok(())
+    }
+
+    /// The first time event, the model's or the user's, after the current time.
+    fn next_time_event(&self) -> Option<f64> {
+        let now = self.time();
+        let given = self.time_events.iter().copied().filter(|&t| t > now);
+        let model = self.model.system.time_event_after(now).filter(|&t| t > now);
+        given
+            .chain(model)
+            .fold(None, |next, t| Some(next.map_or(t, |n: f64| n.min(t))))
     }
 
     /// Starts from the given multipliers instead of those of the acceleration-level system: the
@@ -283,7 +308,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Ok(reason);
         }
         let stop = self.stop_time.unwrap_or(f64::INFINITY);
-        let time_event = self.model.system.time_event_after(self.time());
+        let time_event = self.next_time_event();
         let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
         let (min_step, max_step) = bounds(self.options.step);
         let mut h = self
@@ -428,6 +453,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.pending.impact = closing;
         if let Some(reason) = self.next_event() {
             return Ok(Some(reason));
+        }
+        if !closing.is_empty() {
+            return Ok(Some(StopReason::GapsClosing { gaps: closing }));
         }
         Ok((!releasing.is_empty()).then_some(StopReason::ContactsOpened { gaps: releasing }))
     }

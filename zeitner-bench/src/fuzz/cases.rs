@@ -1607,6 +1607,18 @@ fn check_gaps<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     Ok(())
 }
 
+/// Whether `step()` says it ended a step early on purpose: at a time event, an event, a
+/// contact opening or just before gaps close.
+fn landed_on_purpose(reason: StopReason) -> bool {
+    matches!(
+        reason,
+        StopReason::Event { .. }
+            | StopReason::ContactsOpened { .. }
+            | StopReason::GapsClosing { .. }
+            | StopReason::TimeEventReached
+    )
+}
+
 /// Whether a step was shortened to end at a zero crossing, as far as the fuzzer can tell from
 /// outside: a gap open at its start (`open`) approaching zero and ending near it (or below),
 /// or an event function ending near zero or across it — near: within 5 % of its change over
@@ -2094,6 +2106,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             reason,
             StopReason::Event { .. }
                 | StopReason::ContactsOpened { .. }
+                | StopReason::GapsClosing { .. }
                 | StopReason::TimeEventReached
         ) || {
             let open = GapSet::first(S::UNILATERAL_CONSTRAINTS)
@@ -2188,9 +2201,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             impact_report: None,
         };
         let options = (&before.options, S::POSITION_CONSTRAINTS);
-        // The observer does not see why `step()` returned: a step shortened for a crossing
-        // cannot be told from one too short, so with gaps or events the lower bound is left to
-        // the `step()` calls.
+        // The observer sees why `step()` returned, but a step shortened to aim at a crossing
+        // that its next integration did not yet reach says nothing: with gaps or events the
+        // lower bound is left to the `step()` calls.
         let crossings = S::UNILATERAL_CONSTRAINTS + S::EVENTS > 0;
         let result = sim.advance_to(t_end, |step| {
             if seen.broken.is_some() {
@@ -2215,7 +2228,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                     &seen.previous,
                     &report,
                     options,
-                    (Some(t_end), crossings),
+                    (Some(t_end), crossings || landed_on_purpose(step.reason())),
                     &call,
                 )
                 .and_then(|()| check_gaps(scene, &report, options.0, &facts, &call)),
