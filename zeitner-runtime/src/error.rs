@@ -168,7 +168,7 @@ pub enum InvalidOption {
     AdaptiveNeedsErrorEstimate,
     /// [`crate::sparse::SparseSimulator`] does not run this yet.
     NotForSparseSimulator(&'static str),
-    /// RK4 `substeps × max_newton_iterations` above 100 000: one step would do too much work.
+    /// RK4 `substeps × max_newton_iterations` above 20 000: one step would do too much work.
     StepWork,
     /// An [`crate::EventSettings`] value out of range.
     Events,
@@ -214,7 +214,7 @@ impl fmt::Display for InvalidOption {
                  `Esdirk32`, or `StepControl::Fixed` with this method",
             ),
             InvalidOption::StepWork => f.write_str(
-                "RK4 `substeps` times `max_newton_iterations` must not exceed 100 000: one step \
+                "RK4 `substeps` times `max_newton_iterations` must not exceed 20 000: one step \
                  would integrate that many substeps; take smaller steps or fewer Newton sweeps",
             ),
             InvalidOption::Events => f.write_str(

@@ -49,11 +49,15 @@ impl Watched {
     }
 }
 
+/// A closed contact opens where its multiplier pulls by more than this share of the forces at
+/// work.
+const RELEASE: f64 = 1e-12;
+
 /// The values of every watched function at one point.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Values {
     pub events: [f64; MAX_EVENTS],
-    /// `g_u` above its level for open gaps, `λ` for closed ones.
+    /// `g_u` above its level for open gaps, `λ` above its release level for closed ones.
     pub gaps: [f64; MAX_GAPS],
 }
 
@@ -61,7 +65,9 @@ pub(crate) struct Values {
 /// function (by bit, `1` where positive), and for each open gap the level below which it closes:
 /// zero, or for a gap that starts at or below zero (it just opened, or the start put it there
 /// while it separates) its value less the constraint tolerance, so that only a deeper approach
-/// counts. A closed gap's multiplier is watched for rising through zero.
+/// counts. A closed gap's multiplier is watched for rising above a level of 1e-12 of the
+/// forces at work, so that a contact carrying no load (a pendulum hanging against a wall) does
+/// not open and close on rounding.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Watch {
     events: u32,
@@ -94,7 +100,22 @@ impl Watch {
         } else {
             [0.0; MAX_GAPS]
         };
-        Ok(Watch::from_values(&events, &gaps, S::EVENTS, tolerance))
+        let mut watch = Watch::from_values(&events, &gaps, S::EVENTS, tolerance);
+        let closed = GapSet::first(S::UNILATERAL_CONSTRAINTS).without(model.open_gaps());
+        if !closed.is_empty() {
+            let force = model.force(&point.q, &point.v, point.t)?.amax();
+            let jacobian = model.jacobian(&point.q, &point.v, point.t)?;
+            let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+            for k in closed.iter() {
+                let reach = jacobian.row(first + k).norm();
+                let scale = point
+                    .lambda
+                    .amax()
+                    .max(if reach > 0.0 { force / reach } else { 0.0 });
+                watch.levels[k] = RELEASE * scale;
+            }
+        }
+        Ok(watch)
     }
 
     /// The watch at a step end whose values were taken with `self`.
@@ -111,7 +132,7 @@ impl Watch {
         }
         let mut watch = Watch::from_values(&values.events, &distances, events, tolerance);
         for k in (0..gaps).filter(|&k| !open.contains(k)) {
-            watch.levels[k] = 0.0;
+            watch.levels[k] = self.levels[k];
         }
         watch
     }
@@ -167,7 +188,7 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
             *gap = if open.contains(k) {
                 distances[k] - watch.level(k)
             } else {
-                point.lambda[first + k]
+                point.lambda[first + k] - watch.level(k)
             };
         }
     }
@@ -187,7 +208,8 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         Watched::Contact(k) => {
             // The interpolated multipliers are only linear: recompute them at the state.
             let consistent = consistent_point(model, point.t, point.q, point.v)?;
-            consistent.lambda[S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS + k]
+            let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+            consistent.lambda[first + k] - watch.level(k)
         }
     })
 }

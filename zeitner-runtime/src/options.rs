@@ -242,9 +242,9 @@ impl Default for Options {
 pub const MAX_NEWTON_ITERATIONS: u32 = 1000;
 pub const MAX_SUBSTEPS: u32 = 10_000;
 /// The most RK4 substeps one step may integrate over all its Newton sweeps
-/// (`substeps × max_newton_iterations`): a bound on the work of one step, about a second on a
+/// (`substeps × max_newton_iterations`): a bound on the work of one step, tens of milliseconds on a
 /// scene of Andrews' size.
-pub const MAX_SUBSTEPS_PER_STEP: u32 = 100_000;
+pub const MAX_SUBSTEPS_PER_STEP: u32 = 20_000;
 
 impl Options {
     /// The paper's method as published: RK4 inner step with fixed `step`, the paper's sensitivity

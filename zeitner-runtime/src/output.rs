@@ -150,6 +150,10 @@ pub enum StopReason {
         index: usize,
         direction: crate::Direction,
     },
+    /// A step was shortened to end at a zero crossing located on the dense output, but the
+    /// crossing lies a little beyond its end: the next step goes on from nearer. `advance_to`
+    /// goes on.
+    CrossingAhead,
     /// A step landed just before gaps close (within the time tolerance): the next
     /// [`Simulator::step`] applies the impact. `advance_to` goes on.
     GapsClosing { gaps: crate::GapSet },

@@ -307,6 +307,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if let Some(reason) = self.pending_stop()? {
             return Ok(reason);
         }
+        if self.stop_time == Some(self.time()) {
+            // Reached by a step that stopped for an event as well.
+            self.stop_time = None;
+            return Ok(StopReason::StopTimeReached);
+        }
         let stop = self.stop_time.unwrap_or(f64::INFINITY);
         let time_event = self.next_time_event();
         let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
@@ -331,8 +336,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                         }
                     }
                     let landed = landing && target.is_none_or(|aim| aim == t_end);
+                    let aimed = landing && target == Some(t_end);
                     self.accept(step, t_end, (h_try, planned.max(h)), landed)?;
-                    return self.after_step(values, t_end, (landing, time_event));
+                    return self.after_step(values, t_end, (landing, time_event), aimed);
                 }
                 Attempt::Rejected { factor, cause } => {
                     self.statistics.rejected_steps += 1;
@@ -401,12 +407,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         values: Option<Values>,
         t_end: f64,
         (landing, time_event): (bool, Option<f64>),
+        aimed: bool,
     ) -> Result<StopReason, StepError> {
         if let Some(values) = values {
+            // A stop time reached here as well is reported by the next call.
             if let Some(reason) = self.resolve_crossings(&values)? {
-                if landing && self.stop_time == Some(t_end) {
-                    self.stop_time = None;
-                }
                 return Ok(reason);
             }
         }
@@ -421,6 +426,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if landing && self.stop_time == Some(t_end) {
             self.stop_time = None;
             return Ok(StopReason::StopTimeReached);
+        }
+        if aimed {
+            return Ok(StopReason::CrossingAhead);
         }
         Ok(StopReason::StepTaken)
     }

@@ -1615,6 +1615,7 @@ fn landed_on_purpose(reason: StopReason) -> bool {
         StopReason::Event { .. }
             | StopReason::ContactsOpened { .. }
             | StopReason::GapsClosing { .. }
+            | StopReason::CrossingAhead
             | StopReason::TimeEventReached
     )
 }
@@ -2082,6 +2083,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 }
                 return Ok(Some(reason));
             }
+            (Change::None, StopReason::StopTimeReached) if stop == Some(report.end.t) => {
+                // Reached by a step that returned an event or a landing before gaps close.
+                self.stop = None;
+                return Ok(Some(reason));
+            }
             (Change::None, _) => return inconsistent("without a step"),
             (Change::ZeroLength, StopReason::Impact) => {
                 check_impact_report(scene, &before.last, &report, options, &facts, call)?;
@@ -2107,6 +2113,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             StopReason::Event { .. }
                 | StopReason::ContactsOpened { .. }
                 | StopReason::GapsClosing { .. }
+                | StopReason::CrossingAhead
                 | StopReason::TimeEventReached
         ) || {
             let open = GapSet::first(S::UNILATERAL_CONSTRAINTS)
@@ -2130,15 +2137,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 check_event(scene, &report, (index, direction), call)?;
                 true
             }
-            StopReason::ContactsOpened { gaps } => {
+            StopReason::ContactsOpened { gaps } | StopReason::GapsClosing { gaps } => {
                 !gaps.is_empty() && (0..S::UNILATERAL_CONSTRAINTS).any(|k| gaps.contains(k))
             }
+            StopReason::CrossingAhead => S::UNILATERAL_CONSTRAINTS + S::EVENTS > 0 && !landed,
             _ => false,
         };
         if !consistent {
             return inconsistent("after a step");
         }
-        if landed {
+        if landed && reason == StopReason::StopTimeReached {
             self.stop = None;
         }
         Ok(Some(reason))
@@ -2270,7 +2278,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 let expected = if seen.stopped {
                     reason == StopReason::ObserverStopped
                 } else if seen.repeated {
-                    matches!(reason, StopReason::Event { .. })
+                    // A later event at a step end, or the stop time reached by a step that
+                    // stopped for a crossing too: both come without a step.
+                    matches!(
+                        reason,
+                        StopReason::Event { .. } | StopReason::StopTimeReached
+                    )
                 } else {
                     matches!(
                         reason,
