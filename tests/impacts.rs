@@ -113,6 +113,12 @@ fn a_ball_bounces_at_the_closed_form_times() {
 mod common;
 use common::contact::{Ball as GeneratedBall, FallingBar, WallPendulum};
 
+/// A generated ball dropped from 1 m at rest, default options.
+fn dropped(ball: &GeneratedBall) -> Simulator<'_, GeneratedBall, 1, 1> {
+    let start = (Vector::from([1.0]), Vector::zeros());
+    Simulator::new(ball, start.0, start.1, 0.0, Options::default()).unwrap()
+}
+
 #[test]
 fn the_generated_ball_bounces_like_the_hand_written_one() {
     let ball = GeneratedBall {
@@ -120,14 +126,7 @@ fn the_generated_ball_bounces_like_the_hand_written_one() {
         g: 9.81,
         e: 1.0,
     };
-    let mut sim = Simulator::new(
-        &ball,
-        Vector::from([1.0]),
-        Vector::zeros(),
-        0.0,
-        Options::default(),
-    )
-    .unwrap();
+    let mut sim = dropped(&ball);
     sim.set_stop_time(1.0).unwrap();
     let mut impacts = 0;
     while sim.step().unwrap() != StopReason::StopTimeReached {
@@ -453,14 +452,7 @@ fn time_events_given_by_the_user_are_landed_on_in_any_order() {
         g: 9.81,
         e: 0.5,
     };
-    let mut sim = Simulator::new(
-        &ball,
-        Vector::from([1.0]),
-        Vector::zeros(),
-        0.0,
-        Options::default(),
-    )
-    .unwrap();
+    let mut sim = dropped(&ball);
     let times = [0.3, 0.1, 0.2];
     sim.set_time_events(&times).unwrap();
     let mut landed = Vec::new();

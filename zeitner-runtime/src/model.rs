@@ -181,20 +181,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
     ) -> Result<[f64; MAX_GAPS], StepError> {
         self.evaluations.constraint_residuals += 1;
-        let g = finite(
-            self.system.constraint_residual(q, v, t),
-            t,
-            ModelFunction::ConstraintResidual,
-        )?;
-        let mut values = [0.0; MAX_GAPS];
-        for (k, value) in values
-            .iter_mut()
-            .enumerate()
-            .take(S::UNILATERAL_CONSTRAINTS)
-        {
-            *value = g[self.open.first + k];
-        }
-        Ok(values)
+        let g = self.system.constraint_residual(q, v, t);
+        Ok(self.gap_rows(&finite(g, t, ModelFunction::ConstraintResidual)?))
     }
 
     /// Every gap's rate `ġ_u`, open or closed.
@@ -205,20 +193,21 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
     ) -> Result<[f64; MAX_GAPS], StepError> {
         self.evaluations.constraint_rates += 1;
-        let w = finite(
-            self.system.constraint_rate(q, v, t),
-            t,
-            ModelFunction::ConstraintRate,
-        )?;
+        let w = self.system.constraint_rate(q, v, t);
+        Ok(self.gap_rows(&finite(w, t, ModelFunction::ConstraintRate)?))
+    }
+
+    /// The gap rows of a vector of all rows, by gap index.
+    fn gap_rows(&self, rows: &Vector<Z>) -> [f64; MAX_GAPS] {
         let mut values = [0.0; MAX_GAPS];
-        for (k, value) in values
+        let gaps = values
             .iter_mut()
             .enumerate()
-            .take(S::UNILATERAL_CONSTRAINTS)
-        {
-            *value = w[self.open.first + k];
+            .take(S::UNILATERAL_CONSTRAINTS);
+        for (k, value) in gaps {
+            *value = rows[self.open.first + k];
         }
-        Ok(values)
+        values
     }
 
     /// The event functions at a state.

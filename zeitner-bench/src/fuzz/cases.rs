@@ -1578,9 +1578,16 @@ fn check_gaps<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         if !(after.is_finite() && before.is_finite() && allowed.is_finite()) {
             continue;
         }
+        // A gap that starts at or below zero is watched from its start less ε (it just
+        // opened there, or a start left it there while it separates).
+        let level = if before > 0.0 {
+            0.0
+        } else {
+            before - options.constraint_tolerance
+        };
         let crossed = before >= -allowed;
-        let deeper = after < before - allowed;
-        if after < -allowed && (crossed || deeper) {
+        let deeper = after < level - allowed;
+        if after < level.min(0.0) - allowed && (crossed || deeper) {
             let how = if crossed {
                 "went through zero"
             } else {
@@ -2121,11 +2128,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             ends_at_a_crossing(scene, &report, (options, open), &facts)
         };
         let rows = S::POSITION_CONSTRAINTS;
+        // A time event is landed on like the stop time (stretched by the landing fraction).
+        let stop_or_event = match reason {
+            StopReason::TimeEventReached => Some(report.end.t),
+            _ => stop,
+        };
         check_step(
             &before.last,
             &report,
             (options, rows),
-            (stop, crossing),
+            (stop_or_event, crossing),
             call,
         )?;
         check_gaps(scene, &report, options, &facts, call)?;
