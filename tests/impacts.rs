@@ -465,3 +465,35 @@ fn time_events_given_by_the_user_are_landed_on_in_any_order() {
     assert_eq!(landed, [0.1, 0.2, 0.3]);
     assert!(sim.set_time_events(&[f64::NAN]).is_err());
 }
+
+#[test]
+fn the_sparse_simulator_refuses_gaps_and_events_typed() {
+    let ball = GeneratedBall {
+        m: 1.0,
+        g: 9.81,
+        e: 0.5,
+    };
+    let start = (Vector::from([1.0]), Vector::zeros());
+    let refused = zeitner::SparseSimulator::new(&ball, start.0, start.1, 0.0, Options::default());
+    assert!(matches!(
+        refused.err(),
+        Some(zeitner::StepError::InvalidOption(
+            zeitner::InvalidOption::NotForSparseSimulator(_)
+        ))
+    ));
+}
+
+#[test]
+fn a_restitution_outside_zero_to_one_is_refused_typed() {
+    for e in [-0.1, 1.5, f64::NAN] {
+        let ball = GeneratedBall { m: 1.0, g: 9.81, e };
+        let start = (Vector::from([1.0]), Vector::zeros());
+        let refused = Simulator::new(&ball, start.0, start.1, 0.0, Options::default());
+        assert_eq!(
+            refused.err(),
+            Some(zeitner::StepError::InvalidOption(
+                zeitner::InvalidOption::Restitution
+            ))
+        );
+    }
+}

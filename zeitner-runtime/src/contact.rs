@@ -63,7 +63,12 @@ impl GapSet {
 
     /// The gaps, in increasing order.
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        (0..MAX_GAPS).filter(|&k| self.contains(k))
+        let mut bits = self.0;
+        core::iter::from_fn(move || {
+            let k = bits.trailing_zeros() as usize;
+            bits &= bits.wrapping_sub(1);
+            (k < MAX_GAPS).then_some(k)
+        })
     }
 }
 
@@ -145,8 +150,8 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
 /// (each with its own restitution) when one of them approaches faster than `rest_velocity`, and
 /// all stay closed otherwise: a slow contact beside a bouncing one takes part in the bounce, as
 /// mixing sticking and bouncing rows in one impulse can create energy. Where different
-/// restitutions would still create energy, the smallest serves them all (Newton's law with one
-/// coefficient is an `M`-orthogonal reflection scaled by it, which cannot).
+/// restitutions (or a bounce beside a contact already closed) would still create energy, the
+/// impact is made inelastic: an `M`-orthogonal projection, which cannot.
 pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (&Vector<N>, &Vector<N>, f64),
@@ -178,13 +183,8 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         &rates,
     )?;
     if energy(model, &solved.1) > before * (1.0 + 1e-12) {
-        let smallest = impacting
-            .iter()
-            .map(|k| coefficients[k])
-            .fold(f64::INFINITY, f64::min);
-        for k in impacting.iter() {
-            coefficients[k] = smallest;
-        }
+        // Inelastic: the impulse is then an M-orthogonal projection, which cannot add energy.
+        coefficients = [0.0; MAX_GAPS];
         model.set_open_gaps(all.without(closed_before));
         solved = impulse(
             model,

@@ -65,6 +65,7 @@ pub(crate) struct ConstraintDirections<F, const N: usize, const Z: usize> {
 impl<F, const N: usize, const Z: usize> ConstraintDirections<F, N, Z> {
     /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite; a unit diagonal in the rows of open gaps,
     /// so that their multipliers solve to zero.
+    #[inline(always)]
     pub fn gram(&self) -> Matrix<Z, Z> {
         let mut gram = self.jacobian * self.m_inv_gt;
         self.open.regularise(&mut gram);
@@ -102,6 +103,9 @@ impl OpenRows {
     /// are zero, of the size of the largest other diagonal entry (so that pivot tests relative
     /// to it do not take these rows for dependent ones).
     pub fn regularise<const Z: usize>(&self, m: &mut Matrix<Z, Z>) {
+        if self.open.is_empty() {
+            return;
+        }
         let scale = (0..Z)
             .filter(|&j| !(j >= self.first && self.open.contains(j - self.first)))
             .map(|j| m[(j, j)].abs())
@@ -270,6 +274,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         finite(force, t, ModelFunction::AppliedForce)
     }
 
+    #[inline(always)]
     pub fn residual(
         &mut self,
         q: &Vector<N>,
@@ -281,6 +286,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok(self.mask(finite(g, t, ModelFunction::ConstraintResidual)?))
     }
 
+    #[inline(always)]
     pub fn jacobian(
         &mut self,
         q: &Vector<N>,
@@ -315,12 +321,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok((position, velocity))
     }
 
+    #[inline(always)]
     pub fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_rates += 1;
         let w = self.system.constraint_rate(q, v, t);
         Ok(self.mask(finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
+    #[inline(always)]
     pub fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
         self.evaluations.acceleration_biases += 1;
         let b = self.system.constraint_acceleration_bias(q, v, t);

@@ -43,6 +43,7 @@ impl<const Z: usize, const K: usize> Multipliers<Z, K> {
     }
 
     /// The same multipliers as plain coefficients of `1, s, s²`, with the step size.
+    #[inline]
     pub fn polynomial(&self, h: f64) -> StepPolynomial<Z> {
         let mut c = [self.base, Vector::zeros(), Vector::zeros()];
         for (k, coefficient) in self.coefficients.iter().enumerate() {

@@ -100,7 +100,7 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
 
 /// The report of a step from its end point, with the constraint forces and residuals there;
 /// `jacobian` is `G` at the end point if the caller has it already.
-#[inline]
+#[inline(always)]
 pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: Point<N, Z>,

@@ -66,6 +66,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     last_impact: Option<Impact<N, Z>>,
     /// Times the user asked steps to land on, besides the model's time events.
     time_events: &'s [f64],
+    /// The first time event ahead, the model's or the user's (found again once reached).
+    next_time_event: Option<f64>,
 }
 
 /// Events found at the last step end and not yet returned, and gaps to close by an impact.
@@ -78,8 +80,12 @@ struct Pending {
 }
 
 /// How many times a step is integrated again to end nearer a crossing before it is taken as it
-/// is (the next step finds the crossing again, from much nearer).
-const RELOCATIONS: u32 = 16;
+/// is (the next step finds the crossing again, from much nearer): first aimed at the crossing
+/// located on the dense output, then by halving, which converges on the exact trajectory
+/// however poor the dense output.
+const RELOCATIONS: u32 = 64;
+/// How many of those aim at the crossing located on the dense output; the rest halve the step.
+const AIMED_RELOCATIONS: u32 = 8;
 
 /// A step whose constraints hold and whose error is within tolerance.
 struct Accepted<const N: usize, const Z: usize> {
@@ -151,7 +157,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             pending: Pending::default(),
             last_impact: None,
             time_events: &[],
-        })
+            next_time_event: None,
+        }
+        .with_next_time_event())
+    }
+
+    /// Finds the first time event ahead.
+    fn with_next_time_event(mut self) -> Self {
+        self.next_time_event = self.find_time_event();
+        self
     }
 
     /// Times at which steps land exactly, besides the model's own time events (a switch, a
@@ -163,11 +177,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
         self.time_events = times;
+        self.next_time_event = self.find_time_event();
         Ok(())
     }
 
     /// The first time event, the model's or the user's, after the current time.
-    fn next_time_event(&self) -> Option<f64> {
+    fn find_time_event(&self) -> Option<f64> {
         let now = self.time();
         let given = self.time_events.iter().copied().filter(|&t| t > now);
         let model = self.model.system.time_event_after(now).filter(|&t| t > now);
@@ -228,6 +243,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
         self.stop_time = self.stop_time.filter(|&stop| stop > t);
+        self.next_time_event = self.find_time_event();
         self.start_report = report;
         Ok(report)
     }
@@ -313,7 +329,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Ok(StopReason::StopTimeReached);
         }
         let stop = self.stop_time.unwrap_or(f64::INFINITY);
-        let time_event = self.next_time_event();
+        let time_event = self.next_time_event.filter(|&t| t > self.time());
         let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
         let (min_step, max_step) = bounds(self.options.step);
         let mut h = self
@@ -328,7 +344,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             match self.attempt(h_try, t_end)? {
                 Attempt::Accepted(step) => {
                     let (values, crossing) = self.crossing(&step, t_end)?;
-                    if let Some(aim) = crossing.and_then(|c| self.aim(c, t_end)) {
+                    // Where the dense output is too poor to aim by, halve the step instead.
+                    let aim = match crossing {
+                        Some(c) if relocations < AIMED_RELOCATIONS => self.aim(c, t_end),
+                        Some(_) => self.halve(t_end),
+                        None => None,
+                    };
+                    if let Some(aim) = aim {
                         if relocations < RELOCATIONS {
                             (relocations, target, h) =
                                 (relocations + 1, Some(aim), aim - self.time());
@@ -338,7 +360,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                     let landed = landing && target.is_none_or(|aim| aim == t_end);
                     let aimed = landing && target == Some(t_end);
                     self.accept(step, t_end, (h_try, planned.max(h)), landed)?;
-                    return self.after_step(values, t_end, (landing, time_event), aimed);
+                    return self.after_step(values.as_ref(), t_end, (landing, time_event), aimed);
                 }
                 Attempt::Rejected { factor, cause } => {
                     self.statistics.rejected_steps += 1;
@@ -401,21 +423,31 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (aim < t_end && t_end - aim > 0.25 * half && aim > now).then_some(aim)
     }
 
+    /// The middle of a step with a crossing, unless the step is within the time tolerance.
+    fn halve(&self, t_end: f64) -> Option<f64> {
+        let now = self.time();
+        let middle = now + 0.5 * (t_end - now);
+        let wide = t_end - now > 0.5 * self.time_tolerance();
+        (wide && middle > now && middle < t_end).then_some(middle)
+    }
+
     /// What a step that was just accepted stopped for.
+    #[inline]
     fn after_step(
         &mut self,
-        values: Option<Values>,
+        values: Option<&Values>,
         t_end: f64,
         (landing, time_event): (bool, Option<f64>),
         aimed: bool,
     ) -> Result<StopReason, StepError> {
         if let Some(values) = values {
             // A stop time reached here as well is reported by the next call.
-            if let Some(reason) = self.resolve_crossings(&values)? {
+            if let Some(reason) = self.resolve_crossings(values)? {
                 return Ok(reason);
             }
         }
         if landing && time_event == Some(t_end) {
+            self.next_time_event = self.find_time_event();
             self.restart_predictors();
             if self.stop_time == Some(t_end) {
                 self.stop_time = None;

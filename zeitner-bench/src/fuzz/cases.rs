@@ -2248,7 +2248,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                     &seen.previous,
                     &report,
                     options,
-                    (Some(t_end), crossings || landed_on_purpose(step.reason())),
+                    (
+                        // A time event is landed on like the stop time.
+                        Some(if step.reason() == StopReason::TimeEventReached {
+                            report.end.t
+                        } else {
+                            t_end
+                        }),
+                        crossings || landed_on_purpose(step.reason()),
+                    ),
                     &call,
                 )
                 .and_then(|()| check_gaps(scene, &report, options.0, &facts, &call)),

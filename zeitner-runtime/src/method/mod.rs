@@ -108,6 +108,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         }
     }
 
+    #[inline]
     fn embedded_order(&self) -> Option<u32> {
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z>::embedded_order(m),

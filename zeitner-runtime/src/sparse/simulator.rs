@@ -678,6 +678,9 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     ) {
         return refuse("a full mass matrix");
     }
+    if S::UNILATERAL_CONSTRAINTS > 0 || S::EVENTS > 0 {
+        return refuse("gaps or event functions");
+    }
     if !matches!(
         options.method,
         InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54
