@@ -292,6 +292,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// are invalid or do not suit the system.
     pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
         options.validate()?;
+        // The gaps' levels are set off by the constraint tolerance.
+        let tolerance = options.constraint_tolerance;
+        self.watch = match tolerance == self.options.constraint_tolerance {
+            true => self.watch,
+            false => watch_at(&mut self.model, &self.last.end, tolerance)?,
+        };
         let (min, max) = bounds(options.step);
         self.planned_step = match options.step {
             StepControl::Fixed { step } => step,

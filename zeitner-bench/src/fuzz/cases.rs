@@ -1553,7 +1553,12 @@ fn penetration_allowed(options: &Options, speed: f64, p: (f64, f64), scale: f64)
     let (q_size, t) = p;
     let rounding =
         64.0 * f64::EPSILON * (1.0 + q_size) * scale + 4.0 * f64::EPSILON * t.abs() * speed;
-    2.0 * options.events.time_tolerance * speed + options.constraint_tolerance.max(0.0) + rounding
+    // The runtime's time tolerance is never below what the time's resolution allows.
+    let time_tolerance = options
+        .events
+        .time_tolerance
+        .max(8.0 * f64::EPSILON * t.abs());
+    2.0 * time_tolerance * speed + options.constraint_tolerance.max(0.0) + rounding
 }
 
 /// No gap at the end of `report` is below zero by more than allowed, unless it already was at
