@@ -452,18 +452,17 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 return Ok(reason);
             }
         }
-        if landing && time_event == Some(t_end) {
+        let time_event_reached = landing && time_event == Some(t_end);
+        if time_event_reached {
             self.next_time_event = self.find_time_event();
             self.restart_predictors();
-            if self.stop_time == Some(t_end) {
-                self.stop_time = None;
-                return Ok(StopReason::StopTimeReached);
-            }
-            return Ok(StopReason::TimeEventReached);
         }
         if landing && self.stop_time == Some(t_end) {
             self.stop_time = None;
             return Ok(StopReason::StopTimeReached);
+        }
+        if time_event_reached {
+            return Ok(StopReason::TimeEventReached);
         }
         if aimed {
             return Ok(StopReason::CrossingAhead);
@@ -512,14 +511,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut closing = GapSet::EMPTY;
         let open = self.model.open_gaps();
         let near = self.options.constraint_tolerance;
-        let candidates = || open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS);
-        if candidates().next().is_none() {
+        if open.is_empty() {
             return Ok(closing);
         }
         let end = self.last.end;
         let rates = self.model.gap_rates(&end.q, &end.v, end.t)?;
         let window = 2.0 * self.time_tolerance();
-        for k in candidates() {
+        for k in open.iter() {
             if rates[k] < 0.0 && (values.gaps[k] <= near || values.gaps[k] <= -rates[k] * window) {
                 closing.insert(k);
             }

@@ -2120,14 +2120,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             (Change::Step, _) => {}
         }
         let landed = stop == Some(report.end.t);
-        let crossing = matches!(
-            reason,
-            StopReason::Event { .. }
-                | StopReason::ContactsOpened { .. }
-                | StopReason::GapsClosing { .. }
-                | StopReason::CrossingAhead
-                | StopReason::TimeEventReached
-        ) || {
+        let crossing = landed_on_purpose(reason) || {
             let open = GapSet::first(S::UNILATERAL_CONSTRAINTS)
                 .without(before.closed_gaps.expect("taken"));
             ends_at_a_crossing(scene, &report, (options, open), &facts)
