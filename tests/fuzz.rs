@@ -349,6 +349,24 @@ fn step_ends_meet_their_velocity_rows_after_hostile_starts() {
     }
 }
 
+/// Seeds of the contact scenes' 10⁵-case run: a step tried without end (seed 52045: a first
+/// step of 1e300 that each Newton failure shrank by 0.999 — now `TooManyAttempts` after 1000
+/// tries); a tighter tolerance set on a state consistent only to the looser one, whose first
+/// step then pushed an open gap deeper (48833 — `set_options` now makes it consistent again);
+/// a report whose residual and contact force were those of contacts that had just opened
+/// (2574); a gap spinning through zero within one time tolerance, faster inside the step than
+/// at its ends (80758 — the fuzzer now bounds the gap's speed by its mean speed too).
+#[test]
+fn contact_scene_seeds_of_the_long_run() {
+    for seed in [52045, 48833, 2574, 80758] {
+        match run(seed) {
+            Some(None) => {}
+            Some(Some((class, detail))) => panic!("seed {seed}: {}: {detail}", class.name()),
+            None => panic!("seed {seed}: hang"),
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Contact scenes: gaps that must not be passed through. Both fail today (not fixed yet).
 

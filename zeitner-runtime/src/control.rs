@@ -152,17 +152,30 @@ pub(crate) fn plan_step(
     Ok((h_try, t_end, landing))
 }
 
-/// The step after a rejection at time `t`, or the error that ends the run: fixed steps cannot
-/// shrink, adaptive ones not below `min_step` nor below what still moves the time.
+/// How many times one step is tried before the run stops: with the default factors a step
+/// shrinks from the largest step (1e300) to 1e-12 in 519 tries, so this only bounds the work
+/// of one call when the options make the controller shrink too slowly.
+pub(crate) const MAX_ATTEMPTS: u32 = 1000;
+
+/// The step after the `attempts`-th rejection at time `t`, or the error that ends the run: fixed
+/// steps cannot shrink, adaptive ones not below `min_step`, nor below what still moves the
+/// time, nor more than [`MAX_ATTEMPTS`] times.
 pub(crate) fn retry_step(
     step: StepControl,
     t: f64,
-    h: f64,
+    (h, attempts): (f64, u32),
     cause: StepError,
 ) -> Result<f64, StepError> {
     let StepControl::Adaptive { min_step, .. } = step else {
         return Err(cause);
     };
+    if attempts >= MAX_ATTEMPTS {
+        return Err(StepError::TooManyAttempts {
+            t,
+            step: h,
+            attempts,
+        });
+    }
     // Written to also stop on a NaN step.
     if h >= min_step && h > f64::EPSILON * t.abs() && h.is_finite() {
         return Ok(h);
@@ -365,5 +378,43 @@ mod tests {
             ),
             0.0
         );
+    }
+}
+
+#[cfg(test)]
+mod retry_tests {
+    use super::*;
+    use crate::simulator::LARGEST_STEP;
+
+    const ADAPTIVE: StepControl = StepControl::Adaptive {
+        initial_step: 1e-3,
+        min_step: 0.0,
+        max_step: 1.0,
+        rtol: 1e-6,
+        atol: 1e-9,
+    };
+
+    #[test]
+    fn a_step_is_tried_at_most_max_attempts_times() {
+        let cause = StepError::StageDidNotConverge { t: 0.0, step: 0.5 };
+        assert_eq!(
+            retry_step(ADAPTIVE, 0.0, (0.5, MAX_ATTEMPTS - 1), cause),
+            Ok(0.5)
+        );
+        assert_eq!(
+            retry_step(ADAPTIVE, 0.0, (0.5, MAX_ATTEMPTS), cause),
+            Err(StepError::TooManyAttempts {
+                t: 0.0,
+                step: 0.5,
+                attempts: MAX_ATTEMPTS
+            })
+        );
+    }
+
+    #[test]
+    fn the_default_factors_shrink_the_largest_step_to_a_tiny_one_within_the_attempts() {
+        let factor = ControllerSettings::default().newton_failure_factor;
+        let tries = (1e-12 / LARGEST_STEP).ln() / factor.ln();
+        assert!(tries.ceil() < f64::from(MAX_ATTEMPTS), "{tries}");
     }
 }

@@ -261,6 +261,8 @@ pub enum StepError {
     StageDidNotConverge { t: f64, step: f64 },
     /// Adaptive stepping needed a step below the minimum, or one that no longer moves the time.
     StepSizeTooSmall { t: f64, step: f64 },
+    /// One step was rejected this many times (the step-size controller shrinks too slowly).
+    TooManyAttempts { t: f64, step: f64, attempts: u32 },
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
     InconsistentStart { worst_row: Row, residual: f64 },
@@ -318,6 +320,12 @@ impl fmt::Display for StepError {
                 f,
                 "the step size fell to {step:e} at t = {t}, below `min_step` or below what moves \
                  the time: loosen `rtol`/`atol`, or look for a singularity or discontinuity there"
+            ),
+            StepError::TooManyAttempts { t, step, attempts } => write!(
+                f,
+                "a step from t = {t} was rejected {attempts} times (the last try was {step:e}): \
+                 shrink it faster after a rejection (smaller `newton_failure_factor` or \
+                 `min_factor`) or start from a smaller `initial_step`"
             ),
             StepError::InconsistentStart {
                 worst_row,

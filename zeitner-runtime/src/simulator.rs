@@ -288,10 +288,23 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         &self.options
     }
 
-    /// Changes the options; the state is kept. Refused (and nothing changed) when the options
-    /// are invalid or do not suit the system.
+    /// Changes the options; the state is kept, unless a tighter `constraint_tolerance` than it
+    /// meets makes it consistent again as [`Simulator::reinitialise`] does (see
+    /// [`Simulator::start_report`]). Refused (and nothing changed) when the options are invalid
+    /// or do not suit the system.
     pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
         options.validate()?;
+        let tolerance = options.constraint_tolerance;
+        if tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)? {
+            // Consistent only to the looser tolerance: made consistent again, as at a restart,
+            // so that no step starts off its constraints (an open gap's level included).
+            let previous = core::mem::replace(&mut self.options, options);
+            let end = self.last.end;
+            if let Err(error) = self.reinitialise(end.q, end.v, end.t) {
+                self.options = previous;
+                return Err(error);
+            }
+        }
         // The gaps' levels are set off by the constraint tolerance.
         let tolerance = options.constraint_tolerance;
         self.watch = match tolerance == self.options.constraint_tolerance {
@@ -310,6 +323,22 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         self.options = options;
         Ok(())
+    }
+
+    /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
+    /// below its level.
+    fn state_within(&mut self, tolerance: f64) -> Result<bool, StepError> {
+        if self.last.residual.amax() > tolerance {
+            return Ok(false);
+        }
+        let open = self.model.open_gaps();
+        if open.is_empty() {
+            return Ok(true);
+        }
+        let end = self.last.end;
+        let gaps = self.model.gaps(&end.q, &end.v, end.t)?;
+        let mut open_gaps = open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS);
+        Ok(open_gaps.all(|k| gaps[k] >= -tolerance))
     }
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports
@@ -343,7 +372,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .clamp(min_step, max_step)
             .min(LARGEST_STEP);
         let planned = h;
-        let (mut retry, mut target, mut relocations) = (false, None::<f64>, 0);
+        let (mut retry, mut target, mut relocations, mut attempts) = (false, None::<f64>, 0, 0);
         loop {
             let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
             retry = true;
@@ -370,7 +399,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 }
                 Attempt::Rejected { factor, cause } => {
                     self.statistics.rejected_steps += 1;
-                    h = self.retry(h_try * factor, cause)?;
+                    attempts += 1;
+                    h = self.retry((h_try * factor, attempts), cause)?;
                     target = target.filter(|&aim| self.time() + h >= aim);
                 }
             }
@@ -525,16 +555,22 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         Ok(closing)
     }
 
-    /// Opens the contacts of `gaps` at the current end: multipliers recomputed without them.
+    /// Opens the contacts of `gaps` at the current end: multipliers, and the report made from
+    /// them, recomputed without them.
     fn open_contacts(&mut self, gaps: GapSet) -> Result<(), StepError> {
         let open = self.model.open_gaps();
         self.model.set_open_gaps(open.union(gaps));
-        let end = self.last.end;
+        let last = &self.last;
+        let (start, end) = (last.start, last.end);
+        let step = (last.step_multipliers, last.newton_iterations);
         let tolerance = self.options.constraint_tolerance;
-        let settled = consistent_point(&mut self.model, end.t, end.q, end.v)
-            .and_then(|point| Ok((point, watch_at(&mut self.model, &point, tolerance)?)));
-        let (point, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
-        (self.last.end, self.watch) = (point, watch);
+        let settled = consistent_point(&mut self.model, end.t, end.q, end.v).and_then(|point| {
+            let report = end_report(&mut self.model, start, point, step.0, step.1, None)?;
+            Ok((report, watch_at(&mut self.model, &point, tolerance)?))
+        });
+        let (report, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
+        let point = report.end;
+        (self.last, self.watch) = (report, watch);
         self.lambda = point.lambda;
         self.restart_predictors();
         Ok(())
@@ -649,8 +685,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// The step after a rejection, or the error when there is none.
-    fn retry(&mut self, h: f64, cause: StepError) -> Result<f64, StepError> {
-        match retry_step(self.options.step, self.time(), h, cause) {
+    fn retry(&mut self, rejected: (f64, u32), cause: StepError) -> Result<f64, StepError> {
+        match retry_step(self.options.step, self.time(), rejected, cause) {
             Ok(h) => Ok(h),
             Err(cause) => Err(self.singular_configuration()?.unwrap_or(cause)),
         }

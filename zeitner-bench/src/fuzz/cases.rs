@@ -22,7 +22,8 @@
 //! the calls `step` until an impact (then `sample` on its zero-length report) and
 //! `reinitialise` into contact, and the checks:
 //! - after an `Err`, `closed_gaps()` and `last_impact()` are unchanged too;
-//! - no gap is below `-(2 · time_tolerance · |ġ| + ε)` at a step end unless it already was at
+//! - no gap is below `-(2 · time_tolerance · |ġ| + ε)` at a step end (`|ġ|` the largest of its
+//!   speeds at the ends and its mean speed over the step) unless it already was at
 //!   the step's start and went no deeper ([`FailureClass::Penetration`]): nothing tunnels;
 //! - `StopReason::Impact` comes with a zero-length report starting at the last end, a finite
 //!   `last_impact()` at that time, and no energy gained (`energy_lost ≥ -1e-9 ×` the kinetic
@@ -1531,6 +1532,19 @@ fn kinetic_energy<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     0.5 * v.dot(&scene.mass_matrix(q, t).mul(v))
 }
 
+/// Whether the state of `before` meets `tolerance` (the runtime's rule for when a tighter
+/// tolerance makes it consistent again): its residuals, and its open gaps not below their level.
+fn state_within<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    before: &Snapshot<N, Z>,
+    tolerance: f64,
+) -> bool {
+    let (gaps, _) = gaps_at(scene, &before.last.end);
+    let closed = before.closed_gaps.unwrap_or(GapSet::EMPTY);
+    let open_ok = (0..gaps.len()).all(|k| closed.contains(k) || gaps[k] >= -tolerance);
+    before.last.residual.amax() <= tolerance && open_ok
+}
+
 /// The gap values and rates (by gap index) at a point, unmasked: open or closed.
 fn gaps_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
@@ -1544,6 +1558,18 @@ fn gaps_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         rows.clone().map(|j| g[j]).collect(),
         rows.map(|j| w[j]).collect(),
     )
+}
+
+/// A lower bound of a gap's largest speed over a step: the speeds at its ends and its mean
+/// speed (a gap whose speed changes within the step — a body spinning fast — moves faster
+/// inside it than at either end).
+fn largest_gap_speed((g0, g1): (f64, f64), (w0, w1): (f64, f64), (t0, t1): (f64, f64)) -> f64 {
+    let mean = if t1 > t0 {
+        (g1 - g0).abs() / (t1 - t0)
+    } else {
+        0.0
+    };
+    w0.abs().max(w1.abs()).max(mean)
 }
 
 /// How far below zero a gap may be at a step end: the event time tolerance times the gap's
@@ -1576,8 +1602,9 @@ fn check_gaps<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let (g0, w0) = gaps_at(scene, &report.start);
     let (g1, w1) = gaps_at(scene, &report.end);
     let q_size = report.start.q.amax().max(report.end.q.amax());
+    let span = (report.start.t, report.end.t);
     for k in 0..S::UNILATERAL_CONSTRAINTS {
-        let speed = w0[k].abs().max(w1[k].abs());
+        let speed = largest_gap_speed((g0[k], g1[k]), (w0[k], w1[k]), span);
         let allowed = penetration_allowed(options, speed, (q_size, report.end.t), facts.gap_scale);
         let (before, after) = (g0[k], g1[k]);
         if !(after.is_finite() && before.is_finite() && allowed.is_finite()) {
@@ -1649,8 +1676,9 @@ fn ends_at_a_crossing<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize
         let (g0, w0) = gaps_at(scene, &report.start);
         let (g1, w1) = gaps_at(scene, &report.end);
         let q_size = report.end.q.amax();
+        let span = (report.start.t, report.end.t);
         let gap = (0..S::UNILATERAL_CONSTRAINTS).any(|k| {
-            let speed = w0[k].abs().max(w1[k].abs());
+            let speed = largest_gap_speed((g0[k], g1[k]), (w0[k], w1[k]), span);
             let allowed =
                 penetration_allowed(options, speed, (q_size, report.end.t), facts.gap_scale);
             open.contains(k) && g1[k] < g0[k] && (g1[k] <= 0.0 || near(g0[k], g1[k], allowed))
@@ -2384,6 +2412,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
     fn set_options(&mut self, call: &str, options: &Options) -> Check {
         let sim = self.sim.as_mut().expect("a simulator");
         let before = Snapshot::of(sim);
+        let tolerance = options.constraint_tolerance;
+        let made_consistent = tolerance < before.options.constraint_tolerance
+            && !state_within(self.scene, &before, tolerance);
         match sim.set_options(*options) {
             Ok(()) => {
                 if sim.options() != options {
@@ -2397,7 +2428,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                         sim.last_impact(),
                         before.last_impact.expect("taken").as_ref(),
                     );
-                if !same_report(sim.last(), &before.last) || !contacts {
+                if made_consistent {
+                    // Made consistent again at the same time, as `reinitialise` does.
+                    let residual = sim.last().residual.amax();
+                    if sim.time() != before.time || !(residual <= tolerance) {
+                        return fail(
+                            FailureClass::StateLoss,
+                            format!(
+                                "{call}: set_options with a tighter tolerance moved the time or \
+                                 left a residual of {residual:e}"
+                            ),
+                        );
+                    }
+                } else if !same_report(sim.last(), &before.last) || !contacts {
                     return fail(
                         FailureClass::StateLoss,
                         format!("{call}: set_options changed last() or the contacts"),

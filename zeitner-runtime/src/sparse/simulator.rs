@@ -314,7 +314,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             .planned_step
             .clamp(min_step, max_step)
             .min(LARGEST_STEP);
-        let mut retry = false;
+        let (mut retry, mut attempts) = (false, 0);
         loop {
             let sliver = (!retry).then_some(self.options.controller.landing_fraction);
             let (h_try, t_end, landing) = plan_step((self.time(), self.t_carry), h, limit, sliver)?;
@@ -334,7 +334,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
                 }
                 Err((factor, cause)) => {
                     self.statistics.rejected_steps += 1;
-                    h = retry_step(self.options.step, self.time(), h_try * factor, cause)?;
+                    attempts += 1;
+                    let rejected = (h_try * factor, attempts);
+                    h = retry_step(self.options.step, self.time(), rejected, cause)?;
                 }
             }
         }
