@@ -193,3 +193,14 @@ fn convergence_orders_esdirk32() {
         [3.0, 2.0, 3.0, 1.0, 3.0],
     );
 }
+
+#[test]
+fn convergence_orders_esdirk43() {
+    assert_orders(
+        "ESDIRK4(3)",
+        InnerMethod::Esdirk43,
+        Sensitivity::Exact,
+        [50, 100],
+        [4.0, 2.0, 4.0, 1.0, 4.0],
+    );
+}

@@ -245,6 +245,20 @@ fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<M
             })
             .collect()
     };
+    // An adaptive implicit method with quadratic multipliers, down to `rtol_floor`.
+    let implicit = |method: InnerMethod, rtol_floor: f64| -> Vec<(String, Options)> {
+        adaptive(
+            Sensitivity::Exact,
+            VelocityProjection::Output,
+            MultiplierModel::Quadratic,
+        )
+        .into_iter()
+        .filter(|(_, options)| {
+            matches!(options.step, StepControl::Adaptive { rtol, .. } if rtol >= rtol_floor)
+        })
+        .map(|(setting, options)| (setting, Options { method, ..options }))
+        .collect()
+    };
     vec![
         Method {
             name: "zeitner-constant-lambda-rk4-paperQ-raw",
@@ -293,21 +307,12 @@ fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<M
         },
         Method {
             name: "zeitner-quadratic-lambda-esdirk32-exactQ",
-            settings: adaptive(
-                Sensitivity::Exact,
-                VelocityProjection::Output,
-                MultiplierModel::Quadratic,
-            )
-            .into_iter()
             // Order 3: below 1e-10 the steps get too many for a benchmark run.
-            .filter(|(_, options)| {
-                matches!(options.step, StepControl::Adaptive { rtol, .. } if rtol >= 1e-10)
-            })
-            .map(|(setting, options)| {
-                let method = InnerMethod::Esdirk32;
-                (setting, Options { method, ..options })
-            })
-            .collect(),
+            settings: implicit(InnerMethod::Esdirk32, 1e-10),
+        },
+        Method {
+            name: "zeitner-quadratic-lambda-esdirk43-exactQ",
+            settings: implicit(InnerMethod::Esdirk43, 0.0),
         },
         Method {
             name: "zeitner-constant-lambda-sdirk2-exactQ",

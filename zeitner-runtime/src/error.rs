@@ -164,7 +164,8 @@ pub enum InvalidOption {
     SampleTime,
     /// Given initial multipliers that are not finite.
     InitialMultipliers,
-    /// Adaptive steps need an error estimate: `DormandPrince54` and `Esdirk32` have one.
+    /// Adaptive steps need an error estimate: `DormandPrince54`, `Esdirk32` and `Esdirk43` have
+    /// one.
     AdaptiveNeedsErrorEstimate,
     /// [`crate::sparse::SparseSimulator`] does not run this yet.
     NotForSparseSimulator(&'static str),
@@ -210,8 +211,8 @@ impl fmt::Display for InvalidOption {
                 f.write_str("the given initial multipliers must be finite")
             }
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
-                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54` or \
-                 `Esdirk32`, or `StepControl::Fixed` with this method",
+                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, \
+                 `Esdirk32` or `Esdirk43`, or `StepControl::Fixed` with this method",
             ),
             InvalidOption::StepWork => f.write_str(
                 "RK4 `substeps` times `max_newton_iterations` must not exceed 20 000: one step \

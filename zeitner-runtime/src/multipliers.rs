@@ -168,10 +168,13 @@ pub(crate) struct NewtonSettings {
     /// `steady_velocity_tolerance`.
     pub tolerance: f64,
     /// Whether the velocity-level tolerance must not grow as steps shrink: with an embedded
-    /// solution of order below 3 (ESDIRK 3(2)). What `w` is left at a step end, the next
-    /// step's multipliers undo within that step, as a polynomial whose `s²` term such an
-    /// embedded solution does not integrate exactly; left at `ε / τ`, its estimate then stays
-    /// at the size of `w` however short the step, and the steps shrank without end.
+    /// solution of order below 3 (ESDIRK 3(2)), and with the stiff methods. What `w` is left at
+    /// a step end, the next step's multipliers undo within that step, as a polynomial whose
+    /// `s²` term such an embedded solution does not integrate exactly; left at `ε / τ`, its
+    /// estimate then stays at the size of `w` however short the step, and the steps shrank
+    /// without end. A stiff member answers the same velocity jump with a transient the
+    /// estimate sees: ESDIRK 4(3) on the spring-supported pendulum at rtol 1e-9 took steps of
+    /// 1e-10 s from 1 ms on, and 315 steps in all with the steady tolerance.
     pub steady_velocity_tolerance: bool,
     pub max_iterations: u32,
     /// The exact sensitivity of the method's step map, or else the paper's estimate.
@@ -572,7 +575,10 @@ mod tests {
         let mut model = Model::new(&PENDULUM);
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
-        let mut method = AnyMethod::<2>::new(InnerMethod::DormandPrince54);
+        let mut method = AnyMethod::<2>::new(
+            InnerMethod::DormandPrince54,
+            StepControl::Fixed { step: 0.01 },
+        );
         let start = Start::<2, 1, 1>::at(0.0, q, v);
         let guess = Multipliers {
             base: Vector::zeros(),

@@ -25,14 +25,20 @@ pub enum InnerMethod {
     /// Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
     Esdirk32,
+    /// Kennedy & Carpenter's ESDIRK 4(3)6L[2]SA: order 4, L-stable and stiffly accurate, with an
+    /// embedded order-3 solution for adaptive steps; for stiff models at tight tolerances, where
+    /// an order-3 method needs too many steps. Same Jacobians and reuse policy as `Esdirk32`.
+    /// Needs the `implicit` feature.
+    #[cfg(feature = "implicit")]
+    Esdirk43,
 }
 
 impl InnerMethod {
-    /// Whether the method is the one for stiff models (`Esdirk32`), for which the automatic
-    /// multiplier model is the quadratic one.
+    /// Whether the method is one for stiff models (`Esdirk32`, `Esdirk43`), for which the
+    /// automatic multiplier model is the quadratic one.
     pub fn is_stiff(self) -> bool {
         #[cfg(feature = "implicit")]
-        if self == InnerMethod::Esdirk32 {
+        if matches!(self, InnerMethod::Esdirk32 | InnerMethod::Esdirk43) {
             return true;
         }
         false
@@ -43,7 +49,7 @@ impl InnerMethod {
         match self {
             InnerMethod::DormandPrince54 => true,
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk32 => true,
+            InnerMethod::Esdirk32 | InnerMethod::Esdirk43 => true,
             _ => false,
         }
     }

@@ -138,7 +138,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         Ok(Simulator {
             model,
-            method: AnyMethod::new(options.method),
+            method: AnyMethod::new(options.method, options.step),
             options,
             controller: Controller::new(),
             predictor: Predictor::default(),
@@ -319,7 +319,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if options.method != self.options.method {
             let factorizations = Method::<N, Z>::factorizations(&self.method);
             self.statistics.iteration_matrix_factorizations += factorizations;
-            self.method = AnyMethod::new(options.method);
+            self.method = AnyMethod::new(options.method, options.step);
+        } else {
+            self.method.use_step_control(options.step);
         }
         self.options = options;
         Ok(())
@@ -774,7 +776,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
         let embedded_order = Method::<N, Z>::embedded_order(&self.method);
         let settings = NewtonSettings {
-            steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3),
+            steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3)
+                || self.options.method.is_stiff(),
             tolerance: self.options.constraint_tolerance,
             max_iterations: self.options.max_newton_iterations,
             exact: self.options.exact(),

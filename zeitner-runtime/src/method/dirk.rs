@@ -12,6 +12,7 @@ use crate::error::StepError;
 use crate::linalg::Lu;
 use crate::model::{Acceleration, FactorOf, Model};
 use crate::multipliers::Multipliers;
+use crate::options::StepControl;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A stiffly accurate DIRK tableau with `S` stages: the step end is the last stage.
@@ -74,6 +75,65 @@ pub(crate) const KVAERNO3: DirkTableau<4> = DirkTableau {
     embedded_order: Some(2),
 };
 
+/// Kennedy & Carpenter's ESDIRK 4(3)6L[2]SA, the implicit part of their ARK4(3)6L[2]SA (C. A.
+/// Kennedy, M. H. Carpenter, Appl. Numer. Math. 44 (2003) 139–181; "KenCarp4"): 6 stages with an
+/// explicit first one, `γ = 1/4`, `c = (0, 1/2, 83/250, 31/50, 17/20, 1)`, order 4, stage order
+/// 2, L-stable and stiffly accurate, with an embedded order-3 solution that is A-stable but not
+/// L-stable (`R̂(-∞) = -3/20`, which the filtered estimate of [`Dirk::end`] repairs). The
+/// coefficients are the published rationals (checked exactly against SUNDIALS'
+/// `ARK436L2SA_DIRK_6_3_4`, OrdinaryDiffEq.jl's `KenCarp4Tableau`, PETSc's `TSARKIMEX4` and
+/// diffrax's `kencarp4.py`; the quotients round correctly to the nearest `f64`).
+pub(crate) const KENNEDY_CARPENTER4: DirkTableau<6> = DirkTableau {
+    a: [
+        [0.0; 6],
+        [0.25, 0.25, 0.0, 0.0, 0.0, 0.0],
+        [8611.0 / 62500.0, -1743.0 / 31250.0, 0.25, 0.0, 0.0, 0.0],
+        [
+            5012029.0 / 34652500.0,
+            -654441.0 / 2922500.0,
+            174375.0 / 388108.0,
+            0.25,
+            0.0,
+            0.0,
+        ],
+        [
+            15267082809.0 / 155376265600.0,
+            -71443401.0 / 120774400.0,
+            730878875.0 / 902184768.0,
+            2285395.0 / 8070912.0,
+            0.25,
+            0.0,
+        ],
+        [
+            82889.0 / 524892.0,
+            0.0,
+            15625.0 / 83664.0,
+            69875.0 / 102672.0,
+            -2260.0 / 8211.0,
+            0.25,
+        ],
+    ],
+    gamma: 0.25,
+    embedded: Some([
+        4586570599.0 / 29645900160.0,
+        0.0,
+        178811875.0 / 945068544.0,
+        814220225.0 / 1159782912.0,
+        -3700637.0 / 11593932.0,
+        61727.0 / 225920.0,
+    ]),
+    order: 4,
+    embedded_order: Some(3),
+};
+
+/// The tolerances stage equations are solved against: those of adaptive steps.
+fn tolerances(step: StepControl) -> Option<(f64, f64)> {
+    match step {
+        StepControl::Adaptive { rtol, atol, .. } => Some((rtol, atol)),
+        StepControl::Fixed { .. } => None,
+    }
+}
+
 /// Stage Newton sweeps before the stage counts as not converged.
 const STAGE_ITERATIONS: usize = 25;
 /// A stage that needs more sweeps than this with a kept iteration matrix refreshes it.
@@ -85,6 +145,9 @@ const STEP_RATIO_KEPT: f64 = 1.25;
 /// for.
 pub(crate) struct Dirk<const S: usize, const N: usize> {
     tableau: &'static DirkTableau<S>,
+    /// `(rtol, atol)` of adaptive steps, which the stage equations are solved against; fixed
+    /// steps solve them to rounding.
+    tolerances: Option<(f64, f64)>,
     /// The step it was formed for, its factor, and `∂a/∂q` it was formed from (for filtering
     /// the error estimate).
     iteration: Option<(f64, Lu<N>, Matrix<N, N>)>,
@@ -102,12 +165,17 @@ struct Stages<const S: usize, const N: usize, const Z: usize, const K: usize> {
 }
 
 impl<const S: usize, const N: usize> Dirk<S, N> {
-    pub fn new(tableau: &'static DirkTableau<S>) -> Self {
+    pub fn new(tableau: &'static DirkTableau<S>, step: StepControl) -> Self {
         Dirk {
             tableau,
+            tolerances: tolerances(step),
             iteration: None,
             factorizations: 0,
         }
+    }
+
+    pub fn use_step_control(&mut self, step: StepControl) {
+        self.tolerances = tolerances(step);
     }
 
     /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
@@ -239,7 +307,7 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
                 (q_known, v_known),
                 guess,
                 (t, hg, lambda),
-                limit,
+                (limit, self.tolerances),
             ) {
                 let v = v?;
                 let q = q_known + hg * v;
@@ -333,8 +401,17 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
     }
 }
 
+/// The fraction of the error tolerance a stage's last Newton correction must fall below: that of
+/// Hairer & Wanner's RADAU5 (`FNEWT`, *Solving ODEs II*, IV.8), `max(10 u / rtol, min(0.03,
+/// √rtol))`, so that the stage equations' error stays well below the step's.
+fn stage_fraction(rtol: f64) -> f64 {
+    (10.0 * f64::EPSILON / rtol).max(0.03f64.min(libm::sqrt(rtol)))
+}
+
 /// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
-/// `None` when it does not converge within them.
+/// `None` when it does not converge within them. With `tolerances`, converged once the last
+/// correction is below [`stage_fraction`] of `atol + rtol·|v|` in each component; otherwise, and
+/// always when it gets there first, at rounding.
 #[inline]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
@@ -342,11 +419,20 @@ fn solve_stage<Sys, const N: usize, const Z: usize>(
     (q_known, v_known): (Vector<N>, Vector<N>),
     mut v: Vector<N>,
     (t, hg, lambda): (f64, f64, &Vector<Z>),
-    limit: usize,
+    (limit, tolerances): (usize, Option<(f64, f64)>),
 ) -> Option<Result<Vector<N>, StepError>>
 where
     Sys: ConstrainedSystem<N, Z>,
 {
+    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>| {
+        tolerances.is_some_and(|(rtol, atol)| {
+            let fraction = stage_fraction(rtol);
+            (0..N).all(|i| {
+                let scale = atol + rtol * v[i].abs().max(v_known[i].abs());
+                delta[i].abs() <= fraction * scale
+            })
+        })
+    };
     let mut last_norm = f64::INFINITY;
     for _ in 0..limit {
         let q = q_known + hg * v;
@@ -360,7 +446,10 @@ where
         let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
         // Converged; or stalled at the rounding floor, which stiff forces raise well above the
         // velocities' own precision (k·x is rounded before it is divided back down).
-        if norm <= 1e-12 * scale || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm) {
+        if within_tolerance(&delta, &v)
+            || norm <= 1e-12 * scale
+            || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
+        {
             return Some(Ok(v));
         }
         if !norm.is_finite() || norm > 1e3 * last_norm {

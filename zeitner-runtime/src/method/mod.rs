@@ -12,7 +12,7 @@ pub(crate) mod explicit;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::multipliers::Multipliers;
-use crate::options::InnerMethod;
+use crate::options::{InnerMethod, StepControl};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
@@ -77,10 +77,13 @@ pub(crate) enum AnyMethod<const N: usize> {
     Dirk2(dirk::Dirk<2, N>),
     #[cfg(feature = "implicit")]
     Dirk4(dirk::Dirk<4, N>),
+    #[cfg(feature = "implicit")]
+    Dirk6(dirk::Dirk<6, N>),
 }
 
 impl<const N: usize> AnyMethod<N> {
-    pub fn new(method: InnerMethod) -> Self {
+    /// The method, its stage equations solved against the tolerances of adaptive `step`s.
+    pub fn new(method: InnerMethod, step: StepControl) -> Self {
         match method {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps))
@@ -89,9 +92,29 @@ impl<const N: usize> AnyMethod<N> {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
             }
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(&dirk::SDIRK2)),
+            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(&dirk::SDIRK2, step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(&dirk::KVAERNO3)),
+            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(&dirk::KVAERNO3, step)),
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk43 => {
+                AnyMethod::Dirk6(dirk::Dirk::new(&dirk::KENNEDY_CARPENTER4, step))
+            }
+        }
+    }
+}
+
+impl<const N: usize> AnyMethod<N> {
+    /// Solves stage equations against the tolerances of `step` from now on (a change of
+    /// options that keeps the method keeps its workspace).
+    pub fn use_step_control(&mut self, step: StepControl) {
+        match self {
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => {}
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk2(m) => m.use_step_control(step),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk4(m) => m.use_step_control(step),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk6(m) => m.use_step_control(step),
         }
     }
 }
@@ -105,6 +128,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk2(m) => Method::<N, Z>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk4(m) => Method::<N, Z>::order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk6(m) => Method::<N, Z>::order(m),
         }
     }
 
@@ -117,6 +142,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk2(m) => Method::<N, Z>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk4(m) => Method::<N, Z>::embedded_order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk6(m) => Method::<N, Z>::embedded_order(m),
         }
     }
 
@@ -136,6 +163,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk4(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk6(m) => m.integrate(model, start, h, multipliers, sensitivity),
         }
     }
 
@@ -146,6 +175,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk2(m) => Method::<N, Z>::factorizations(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk4(m) => Method::<N, Z>::factorizations(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk6(m) => Method::<N, Z>::factorizations(m),
         }
     }
 }
@@ -164,7 +195,7 @@ mod tests {
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, K>::at(0.0, q, v);
         let h = 0.05;
-        let mut stepper = AnyMethod::<2>::new(method);
+        let mut stepper = AnyMethod::<2>::new(method, StepControl::Fixed { step: h });
         let end = stepper
             .integrate(&mut model, &start, h, &multipliers, true)
             .unwrap();
@@ -193,7 +224,7 @@ mod tests {
         }
     }
 
-    fn methods() -> [InnerMethod; 5] {
+    fn methods() -> [InnerMethod; 6] {
         [
             InnerMethod::Rk4 { substeps: 1 },
             InnerMethod::Rk4 { substeps: 3 },
@@ -202,6 +233,10 @@ mod tests {
             InnerMethod::Sdirk2,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk32,
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk43,
+            #[cfg(not(feature = "implicit"))]
+            InnerMethod::DormandPrince54,
             #[cfg(not(feature = "implicit"))]
             InnerMethod::DormandPrince54,
             #[cfg(not(feature = "implicit"))]
@@ -235,10 +270,13 @@ mod tests {
         }
     }
 
+    const FIXED: StepControl = StepControl::Fixed { step: 0.01 };
+
     #[test]
     fn orders_are_those_of_the_tableaux() {
-        let order = |m: InnerMethod| Method::<2, 1>::order(&AnyMethod::<2>::new(m));
-        let embedded = |m: InnerMethod| Method::<2, 1>::embedded_order(&AnyMethod::<2>::new(m));
+        let order = |m: InnerMethod| Method::<2, 1>::order(&AnyMethod::<2>::new(m, FIXED));
+        let embedded =
+            |m: InnerMethod| Method::<2, 1>::embedded_order(&AnyMethod::<2>::new(m, FIXED));
         assert_eq!(order(InnerMethod::Rk4 { substeps: 1 }), 4);
         assert_eq!(embedded(InnerMethod::Rk4 { substeps: 1 }), None);
         assert_eq!(order(InnerMethod::DormandPrince54), 5);
@@ -247,6 +285,8 @@ mod tests {
         {
             assert_eq!(order(InnerMethod::Esdirk32), 3);
             assert_eq!(embedded(InnerMethod::Esdirk32), Some(2));
+            assert_eq!(order(InnerMethod::Esdirk43), 4);
+            assert_eq!(embedded(InnerMethod::Esdirk43), Some(3));
         }
     }
 }
