@@ -176,6 +176,8 @@ pub enum InvalidOption {
     TooManyEvents,
     /// A coefficient of restitution outside `0..=1` (or NaN).
     Restitution,
+    /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
+    SpectralRadius,
 }
 
 impl fmt::Display for InvalidOption {
@@ -228,6 +230,11 @@ impl fmt::Display for InvalidOption {
             InvalidOption::Restitution => f.write_str(
                 "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
                  1: elastic); above 1 an impact would create energy",
+            ),
+            InvalidOption::SpectralRadius => f.write_str(
+                "generalised-α's `rho_inf`, its spectral radius at infinite frequency, must lie \
+                 in 0..=1: 1 damps no frequency (the trapezoidal rule), 0 annihilates the highest \
+                 in one step; 0.5 to 0.9 are usual",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,
@@ -368,5 +375,7 @@ mod tests {
         assert!(atol.contains("atol = 0"), "{atol}");
         let iterations = StepError::InvalidOption(InvalidOption::IterationLimit).to_string();
         assert!(iterations.contains("between 1 and 1000"), "{iterations}");
+        let rho = StepError::InvalidOption(InvalidOption::SpectralRadius).to_string();
+        assert!(rho.contains("`rho_inf`") && rho.contains("0..=1"), "{rho}");
     }
 }

@@ -136,7 +136,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
         let point = last.end;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
-        Ok(Simulator {
+        let mut simulator = Simulator {
             model,
             method: AnyMethod::new(options.method),
             options,
@@ -159,7 +159,20 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             time_events: &[],
             next_time_event: None,
         }
-        .with_next_time_event())
+        .with_next_time_event();
+        simulator.restart_method()?;
+        Ok(simulator)
+    }
+
+    /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
+    /// the acceleration at the current state with the consistent multipliers there (evaluated
+    /// only for a method with memory).
+    fn restart_method(&mut self) -> Result<(), StepError> {
+        let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
+        let model = &mut self.model;
+        Method::<N, Z>::restart(&mut self.method, || {
+            Ok(model.acceleration(&q, &v, t, &lambda)?.a)
+        })
     }
 
     /// Finds the first time event ahead.
@@ -208,6 +221,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.lambda = lambda;
         self.start_report.multipliers = lambda;
         self.start_report.multipliers_given = true;
+        self.restart_method()?;
         Ok(self)
     }
 
@@ -233,6 +247,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = last.end;
+        // The consistent start's acceleration: nothing left that could fail.
+        Method::<N, Z>::restart(&mut self.method, || Ok(point.a))?;
         self.watch = watch;
         self.pending = Pending::default();
         self.last = last;
@@ -294,20 +310,26 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         options.validate()?;
         // The gaps' levels are set off by the constraint tolerance.
         let tolerance = options.constraint_tolerance;
-        self.watch = match tolerance == self.options.constraint_tolerance {
+        let watch = match tolerance == self.options.constraint_tolerance {
             true => self.watch,
             false => watch_at(&mut self.model, &self.last.end, tolerance)?,
         };
+        if options.method != self.options.method {
+            let method = AnyMethod::new(options.method);
+            let previous = core::mem::replace(&mut self.method, method);
+            if let Err(error) = self.restart_method() {
+                self.method = previous;
+                return Err(error);
+            }
+            let factorizations = Method::<N, Z>::factorizations(&previous);
+            self.statistics.iteration_matrix_factorizations += factorizations;
+        }
+        self.watch = watch;
         let (min, max) = bounds(options.step);
         self.planned_step = match options.step {
             StepControl::Fixed { step } => step,
             StepControl::Adaptive { .. } => self.planned_step.clamp(min, max),
         };
-        if options.method != self.options.method {
-            let factorizations = Method::<N, Z>::factorizations(&self.method);
-            self.statistics.iteration_matrix_factorizations += factorizations;
-            self.method = AnyMethod::new(options.method);
-        }
         self.options = options;
         Ok(())
     }
@@ -455,7 +477,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let time_event_reached = landing && time_event == Some(t_end);
         if time_event_reached {
             self.next_time_event = self.find_time_event();
-            self.restart_predictors();
+            self.restart_predictors()?;
         }
         if landing && self.stop_time == Some(t_end) {
             self.stop_time = None;
@@ -536,7 +558,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (point, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
         (self.last.end, self.watch) = (point, watch);
         self.lambda = point.lambda;
-        self.restart_predictors();
+        self.restart_predictors()?;
         Ok(())
     }
 
@@ -593,16 +615,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (self.last, self.start_report, self.watch) = (last, report, watch);
         self.last_impact = Some(impact);
         self.t_carry = 0.0;
-        self.restart_predictors();
+        self.restart_predictors()?;
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
         Ok(())
     }
 
-    /// After a discontinuity the multipliers' history says nothing about what follows.
-    fn restart_predictors(&mut self) {
+    /// After a discontinuity the multipliers' history, and the inner method's memory, say
+    /// nothing about what follows.
+    fn restart_predictors(&mut self) -> Result<(), StepError> {
         self.predictor.reset();
         self.state_gram = None;
+        self.restart_method()
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the
@@ -865,6 +889,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         } else {
             (h_used + self.t_carry) - (t_end - self.time())
         };
+        Method::<N, Z>::accepted(&mut self.method, &step.v);
         self.q = step.q;
         self.v = match self.options.velocity_projection {
             VelocityProjection::State => step.point.v,
