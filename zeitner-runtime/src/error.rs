@@ -178,6 +178,8 @@ pub enum InvalidOption {
     Restitution,
     /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
     SpectralRadius,
+    /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`.
+    MultipliersForMethod,
 }
 
 impl fmt::Display for InvalidOption {
@@ -235,6 +237,11 @@ impl fmt::Display for InvalidOption {
                 "generalised-α's `rho_inf`, its spectral radius at infinite frequency, must lie \
                  in 0..=1: 1 damps no frequency (the trapezoidal rule), 0 annihilates the highest \
                  in one step; 0.5 to 0.9 are usual",
+            ),
+            InvalidOption::MultipliersForMethod => f.write_str(
+                "generalised-α evaluates the multipliers only at the step's ends, where the two \
+                 coefficients of `MultiplierModel::Quadratic` act alike: use `Constant` or \
+                 `Automatic` with it, or another inner method with quadratic multipliers",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,

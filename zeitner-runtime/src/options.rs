@@ -48,6 +48,17 @@ impl InnerMethod {
         false
     }
 
+    /// Whether the method evaluates the multipliers only at the step's ends (generalised-α), so
+    /// that a multiplier model with more than one coefficient per row is singular.
+    #[cfg(feature = "quadratic-multipliers")]
+    fn ends_only(self) -> bool {
+        #[cfg(feature = "implicit")]
+        if let InnerMethod::GeneralizedAlpha { .. } = self {
+            return true;
+        }
+        false
+    }
+
     /// Whether the method has an embedded error estimate, which adaptive steps need.
     pub fn has_error_estimate(self) -> bool {
         match self {
@@ -96,15 +107,17 @@ pub enum MultiplierModel {
     /// method at order 2) and with the stiff method `Esdirk32` (constant multipliers jump from
     /// step to step, and a stiff part of the model answers every jump with a transient the
     /// error estimate sees: on the spring-supported pendulum, 3 618 805 steps at rtol 1e-5
-    /// instead of 66), `Constant` otherwise; `Constant` without the `quadratic-multipliers` feature. The
-    /// default.
+    /// instead of 66), `Constant` otherwise, and always with `GeneralizedAlpha` (which sees the
+    /// multipliers only at the step's ends); `Constant` without the `quadratic-multipliers`
+    /// feature. The default.
     Automatic,
     /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end.
     Constant,
     /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces each
     /// row and its time derivative at the step end (`g`, `ġ`): order 5 with Dormand–Prince on
-    /// position-level rows, order 4 with velocity-level rows. Needs the `quadratic-multipliers`
-    /// feature.
+    /// position-level rows, order 4 with velocity-level rows. Not with `GeneralizedAlpha`, which
+    /// sees the multipliers only at the step's ends, where both coefficients act alike. Needs
+    /// the `quadratic-multipliers` feature.
     #[cfg(feature = "quadratic-multipliers")]
     Quadratic,
 }
@@ -122,7 +135,9 @@ impl MultiplierModel {
         let _ = (method, position_rows, rows);
         match self {
             #[cfg(feature = "quadratic-multipliers")]
-            MultiplierModel::Automatic if rows > position_rows || method.is_stiff() => {
+            MultiplierModel::Automatic
+                if (rows > position_rows || method.is_stiff()) && !method.ends_only() =>
+            {
                 MultiplierModel::Quadratic
             }
             MultiplierModel::Automatic => MultiplierModel::Constant,
@@ -304,6 +319,10 @@ impl Options {
         if let InnerMethod::GeneralizedAlpha { rho_inf } = self.method {
             if !(0.0..=1.0).contains(&rho_inf) {
                 return refuse(InvalidOption::SpectralRadius);
+            }
+            #[cfg(feature = "quadratic-multipliers")]
+            if self.multipliers == MultiplierModel::Quadratic {
+                return refuse(InvalidOption::MultipliersForMethod);
             }
         }
         let events = self.events;
