@@ -5,6 +5,7 @@
 
 mod common;
 
+use common::contact::Ball;
 use common::pendulum::Pendulum;
 use common::reference::{pendulum_released_horizontally, spring_supported_pendulum};
 use common::relative_error;
@@ -299,4 +300,57 @@ fn the_linearly_corrected_step_end_commits_its_algorithmic_acceleration() {
     let difference = (q - q_integrated).amax().max((v - v_integrated).amax());
     eprintln!("linearised update against integrated: {difference:.2e}");
     assert!(difference < 1e-12, "{difference:e}");
+}
+
+/// A ball with restitution 1/2 bounces on a floor and comes to rest on it. Free flight is a
+/// constant acceleration, which the method integrates exactly, so the impacts come at the
+/// closed-form times; once the contact stays closed the acceleration drops from `-g` to 0,
+/// and the method's memory must restart there — carried over, the stale `ā = -g` would ring
+/// on (at ρ∞ = 0.9 barely damped) in the raw velocity and the floor's force, which this run
+/// reports (`VelocityProjection::Off`).
+#[test]
+fn a_ball_bounces_at_the_closed_form_times_and_comes_to_rest() {
+    let ball = Ball {
+        m: 1.5,
+        g: 9.81,
+        e: 0.5,
+    };
+    let (h0, step) = (1.0, 1e-3);
+    let fall = (2.0 * h0 / ball.g).sqrt();
+    let rest_time = fall * (1.0 + 2.0 * ball.e / (1.0 - ball.e));
+    let options = Options {
+        velocity_projection: zeitner::VelocityProjection::Off,
+        ..fixed(0.9, MultiplierModel::Automatic, step)
+    };
+    let mut sim = Simulator::new(&ball, Vector::from([h0]), Vector::zeros(), 0.0, options).unwrap();
+    let mut impacts = Vec::new();
+    sim.advance_to(rest_time + 0.05, |report| {
+        if let Some(impact) = report.impact() {
+            impacts.push(*impact);
+        }
+    })
+    .unwrap();
+    let mut expected_t = fall;
+    for (n, impact) in impacts.iter().enumerate() {
+        assert!(
+            (impact.t - expected_t).abs() < 1e-9,
+            "impact {n} at {}, expected {expected_t}",
+            impact.t
+        );
+        expected_t += 2.0 * ball.e * (-impact.velocity_before[0]) / ball.g;
+    }
+    assert!(impacts.last().unwrap().persistent.contains(0));
+    let end = sim.last().end;
+    eprintln!(
+        "ball at rest, {} impacts: y {:.1e}, y' {:.1e}, λ + m g {:.1e}",
+        impacts.len(),
+        end.q[0],
+        end.v[0],
+        end.lambda[0] + ball.m * ball.g
+    );
+    assert!(end.q[0].abs() < 1e-10 && end.v[0].abs() < 1e-10);
+    // The raw step multiplier: Newton leaves `|y| ≤ ε`, which a multiplier off by `δ` makes
+    // `h² δ / 2 m` at the step end.
+    let slack = 2.0 * ball.m * options.constraint_tolerance / (step * step);
+    assert!((end.lambda[0] + ball.m * ball.g).abs() < slack);
 }
