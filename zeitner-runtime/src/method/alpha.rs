@@ -332,20 +332,17 @@ fn start_sensitivity<
     (lambda, at): (&Vector<Z>, &Acceleration<FactorOf<Sys, N, Z>, N, Z>),
 ) -> Result<[Matrix<N, Z>; K], StepError> {
     let depends = |m: &[Matrix<N, Z>; K]| m.iter().any(|m| m.iter().any(|&x| x != 0.0));
-    let mut da0 = [Matrix::<N, Z>::zeros(); K];
+    let weight = |k: usize| multipliers.weight(k, 0.0);
     if depends(&start.dq_dc) || depends(&start.dv_dc) {
         let jac = model.acceleration_jacobians(&start.q, &start.v, start.t, lambda, at)?;
-        for k in 0..K {
-            da0[k] = jac.dq * start.dq_dc[k]
-                + jac.dv * start.dv_dc[k]
-                + multipliers.weight(k, 0.0) * jac.dp;
-        }
-    } else if (0..K).any(|k| multipliers.weight(k, 0.0) != 0.0) {
-        // `∂a/∂λ = -M⁻¹Gᵀ` from what the acceleration has already: no Jacobian needed.
-        let dp: Matrix<N, Z> = -at.factor.solve(&at.jacobian.transpose());
-        for k in 0..K {
-            da0[k] = multipliers.weight(k, 0.0) * dp;
-        }
+        return Ok(core::array::from_fn(|k| {
+            jac.dq * start.dq_dc[k] + jac.dv * start.dv_dc[k] + weight(k) * jac.dp
+        }));
     }
-    Ok(da0)
+    if (0..K).all(|k| weight(k) == 0.0) {
+        return Ok([Matrix::zeros(); K]);
+    }
+    // `∂a/∂λ = -M⁻¹Gᵀ` from what the acceleration has already: no Jacobian needed.
+    let dp: Matrix<N, Z> = -at.factor.solve(&at.jacobian.transpose());
+    Ok(core::array::from_fn(|k| weight(k) * dp))
 }
