@@ -305,6 +305,11 @@ fn what_it_does_not_run_is_refused_typed_and_a_failed_step_keeps_the_state() {
             ..Options::default()
         },
         Options {
+            method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+            step: StepControl::Fixed { step: 1e-3 },
+            ..Options::default()
+        },
+        Options {
             multipliers: MultiplierModel::Quadratic,
             ..Options::default()
         },

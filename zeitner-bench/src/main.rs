@@ -323,6 +323,15 @@ fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<M
                 ..Options::default()
             }),
         },
+        Method {
+            name: "zeitner-constant-lambda-gen-alpha-0.5-exactQ",
+            settings: fixed(|h| Options {
+                method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+                multipliers: MultiplierModel::Constant,
+                step: StepControl::Fixed { step: h },
+                ..Options::default()
+            }),
+        },
     ]
 }
 

@@ -165,16 +165,25 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
                 ..base
             },
         ),
+        (
+            "gen-alpha-0.5",
+            Options {
+                method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+                step: StepControl::Fixed { step: h },
+                ..base
+            },
+        ),
     ]
 }
 
 /// The methods of the report, in its columns' order.
-const METHODS: [&str; 5] = [
+const METHODS: [&str; 6] = [
     "rk4-paperQ",
     "rk4-exactQ",
     "dopri5-adaptive",
     "sdirk2-exactQ",
     "esdirk32-adaptive",
+    "gen-alpha-0.5",
 ];
 
 #[allow(clippy::too_many_arguments)]
@@ -695,7 +704,8 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          typed error, named here, and the simulator keeps its last accepted state. Methods: \
          `rk4-paperQ` (the paper as published), `rk4-exactQ`, `dopri5-adaptive` (rtol 1e-6, the step \
          below is the initial one), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
-         (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers); \
+         (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers), \
+         `gen-alpha-0.5` (generalised-α with ρ∞ = 0.5, fixed steps, constant multipliers); \
          the exact Q and projected outputs unless named.\n"
     );
     let _ = writeln!(out, "## Summary\n");

@@ -177,6 +177,10 @@ pub enum InvalidOption {
     TooManyEvents,
     /// A coefficient of restitution outside `0..=1` (or NaN).
     Restitution,
+    /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
+    SpectralRadius,
+    /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`.
+    MultipliersForMethod,
 }
 
 impl fmt::Display for InvalidOption {
@@ -229,6 +233,16 @@ impl fmt::Display for InvalidOption {
             InvalidOption::Restitution => f.write_str(
                 "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
                  1: elastic); above 1 an impact would create energy",
+            ),
+            InvalidOption::SpectralRadius => f.write_str(
+                "generalised-α's `rho_inf`, its spectral radius at infinite frequency, must lie \
+                 in 0..=1: 1 damps no frequency (the trapezoidal rule), 0 annihilates the highest \
+                 in one step; 0.5 to 0.9 are usual",
+            ),
+            InvalidOption::MultipliersForMethod => f.write_str(
+                "generalised-α evaluates the multipliers only at the step's ends, where the two \
+                 coefficients of `MultiplierModel::Quadratic` act alike: use `Constant` or \
+                 `Automatic` with it, or another inner method with quadratic multipliers",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,
@@ -377,5 +391,7 @@ mod tests {
         assert!(atol.contains("atol = 0"), "{atol}");
         let iterations = StepError::InvalidOption(InvalidOption::IterationLimit).to_string();
         assert!(iterations.contains("between 1 and 1000"), "{iterations}");
+        let rho = StepError::InvalidOption(InvalidOption::SpectralRadius).to_string();
+        assert!(rho.contains("`rho_inf`") && rho.contains("0..=1"), "{rho}");
     }
 }

@@ -31,6 +31,16 @@ pub enum InnerMethod {
     /// Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
     Esdirk43,
+    /// The generalised-α method of Chung & Hulbert (1993), in the form for second-order systems
+    /// of Arnold & Brüls (2007): the structural engineer's method. One implicit equation per
+    /// step (for the algorithmic acceleration, which it carries from step to step), and
+    /// numerical damping of the high frequencies set by `rho_inf`, the spectral radius at
+    /// infinite frequency, in `0..=1`: 1 damps nothing (the trapezoidal rule), 0 annihilates
+    /// them in one step, 0.5 to 0.9 are usual; the low frequencies are damped least for that.
+    /// It gives up order (2), adaptive steps and any error estimate: fixed steps only. Uses
+    /// `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
+    #[cfg(feature = "implicit")]
+    GeneralizedAlpha { rho_inf: f64 },
 }
 
 impl InnerMethod {
@@ -39,6 +49,17 @@ impl InnerMethod {
     pub fn is_stiff(self) -> bool {
         #[cfg(feature = "implicit")]
         if matches!(self, InnerMethod::Esdirk32 | InnerMethod::Esdirk43) {
+            return true;
+        }
+        false
+    }
+
+    /// Whether the method evaluates the multipliers only at the step's ends (generalised-α), so
+    /// that a multiplier model with more than one coefficient per row is singular.
+    #[cfg(feature = "quadratic-multipliers")]
+    fn ends_only(self) -> bool {
+        #[cfg(feature = "implicit")]
+        if let InnerMethod::GeneralizedAlpha { .. } = self {
             return true;
         }
         false
@@ -92,15 +113,17 @@ pub enum MultiplierModel {
     /// method at order 2) and with the stiff method `Esdirk32` (constant multipliers jump from
     /// step to step, and a stiff part of the model answers every jump with a transient the
     /// error estimate sees: on the spring-supported pendulum, 3 618 805 steps at rtol 1e-5
-    /// instead of 66), `Constant` otherwise; `Constant` without the `quadratic-multipliers` feature. The
-    /// default.
+    /// instead of 66), `Constant` otherwise, and always with `GeneralizedAlpha` (which sees the
+    /// multipliers only at the step's ends); `Constant` without the `quadratic-multipliers`
+    /// feature. The default.
     Automatic,
     /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end.
     Constant,
     /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces each
     /// row and its time derivative at the step end (`g`, `ġ`): order 5 with Dormand–Prince on
-    /// position-level rows, order 4 with velocity-level rows. Needs the `quadratic-multipliers`
-    /// feature.
+    /// position-level rows, order 4 with velocity-level rows. Not with `GeneralizedAlpha`, which
+    /// sees the multipliers only at the step's ends, where both coefficients act alike. Needs
+    /// the `quadratic-multipliers` feature.
     #[cfg(feature = "quadratic-multipliers")]
     Quadratic,
 }
@@ -118,7 +141,9 @@ impl MultiplierModel {
         let _ = (method, position_rows, rows);
         match self {
             #[cfg(feature = "quadratic-multipliers")]
-            MultiplierModel::Automatic if rows > position_rows || method.is_stiff() => {
+            MultiplierModel::Automatic
+                if (rows > position_rows || method.is_stiff()) && !method.ends_only() =>
+            {
                 MultiplierModel::Quadratic
             }
             MultiplierModel::Automatic => MultiplierModel::Constant,
@@ -294,6 +319,16 @@ impl Options {
                 > u64::from(MAX_SUBSTEPS_PER_STEP)
             {
                 return refuse(InvalidOption::StepWork);
+            }
+        }
+        #[cfg(feature = "implicit")]
+        if let InnerMethod::GeneralizedAlpha { rho_inf } = self.method {
+            if !(0.0..=1.0).contains(&rho_inf) {
+                return refuse(InvalidOption::SpectralRadius);
+            }
+            #[cfg(feature = "quadratic-multipliers")]
+            if self.multipliers == MultiplierModel::Quadratic {
+                return refuse(InvalidOption::MultipliersForMethod);
             }
         }
         let events = self.events;

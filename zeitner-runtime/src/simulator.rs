@@ -136,7 +136,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
         let point = last.end;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
-        Ok(Simulator {
+        let mut simulator = Simulator {
             model,
             method: AnyMethod::new(options.method, options.step),
             options,
@@ -159,7 +159,20 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             time_events: &[],
             next_time_event: None,
         }
-        .with_next_time_event())
+        .with_next_time_event();
+        simulator.restart_method()?;
+        Ok(simulator)
+    }
+
+    /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
+    /// the acceleration at the current state with the consistent multipliers there (evaluated
+    /// only for a method with memory).
+    fn restart_method(&mut self) -> Result<(), StepError> {
+        let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
+        let model = &mut self.model;
+        Method::<N, Z>::restart(&mut self.method, || {
+            Ok(model.acceleration(&q, &v, t, &lambda)?.a)
+        })
     }
 
     /// Finds the first time event ahead.
@@ -208,6 +221,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.lambda = lambda;
         self.start_report.multipliers = lambda;
         self.start_report.multipliers_given = true;
+        self.restart_method()?;
         Ok(self)
     }
 
@@ -233,6 +247,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = last.end;
+        // The consistent start's acceleration: nothing left that could fail.
+        Method::<N, Z>::restart(&mut self.method, || Ok(point.a))?;
         self.watch = watch;
         self.pending = Pending::default();
         self.last = last;
@@ -295,35 +311,49 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
         options.validate()?;
         let tolerance = options.constraint_tolerance;
-        if tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)? {
-            // Consistent only to the looser tolerance: made consistent again, as at a restart,
-            // so that no step starts off its constraints (an open gap's level included).
-            let previous = core::mem::replace(&mut self.options, options);
-            let end = self.last.end;
-            if let Err(error) = self.reinitialise(end.q, end.v, end.t) {
-                self.options = previous;
+        // Consistent only to a looser tolerance: made consistent again, as at a restart, so
+        // that no step starts off its constraints (an open gap's level included).
+        let reproject =
+            tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)?;
+        let new_method = options.method != self.options.method;
+        let previous_method = new_method.then(|| {
+            let method = AnyMethod::new(options.method, options.step);
+            core::mem::replace(&mut self.method, method)
+        });
+        let previous_options = core::mem::replace(&mut self.options, options);
+        let end = self.last.end;
+        let changed = match (reproject, new_method) {
+            (true, _) => self.reinitialise(end.q, end.v, end.t).map(|_| ()),
+            (false, true) => self.restart_method(),
+            (false, false) => Ok(()),
+        };
+        // The gaps' levels are set off by the constraint tolerance (`reinitialise` did).
+        let same_levels = reproject || tolerance == previous_options.constraint_tolerance;
+        let watch = changed.and_then(|()| match same_levels {
+            true => Ok(self.watch),
+            false => watch_at(&mut self.model, &self.last.end, tolerance),
+        });
+        let watch = match watch {
+            Ok(watch) => watch,
+            Err(error) => {
+                self.options = previous_options;
+                if let Some(method) = previous_method {
+                    self.method = method;
+                }
                 return Err(error);
             }
-        }
-        // The gaps' levels are set off by the constraint tolerance.
-        let tolerance = options.constraint_tolerance;
-        self.watch = match tolerance == self.options.constraint_tolerance {
-            true => self.watch,
-            false => watch_at(&mut self.model, &self.last.end, tolerance)?,
         };
+        if let Some(method) = previous_method {
+            let factorizations = Method::<N, Z>::factorizations(&method);
+            self.statistics.iteration_matrix_factorizations += factorizations;
+        }
+        self.method.use_step_control(options.step);
+        self.watch = watch;
         let (min, max) = bounds(options.step);
         self.planned_step = match options.step {
             StepControl::Fixed { step } => step,
             StepControl::Adaptive { .. } => self.planned_step.clamp(min, max),
         };
-        if options.method != self.options.method {
-            let factorizations = Method::<N, Z>::factorizations(&self.method);
-            self.statistics.iteration_matrix_factorizations += factorizations;
-            self.method = AnyMethod::new(options.method, options.step);
-        } else {
-            self.method.use_step_control(options.step);
-        }
-        self.options = options;
         Ok(())
     }
 
@@ -487,7 +517,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let time_event_reached = landing && time_event == Some(t_end);
         if time_event_reached {
             self.next_time_event = self.find_time_event();
-            self.restart_predictors();
+            self.restart_predictors()?;
         }
         if landing && self.stop_time == Some(t_end) {
             self.stop_time = None;
@@ -574,7 +604,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let point = report.end;
         (self.last, self.watch) = (report, watch);
         self.lambda = point.lambda;
-        self.restart_predictors();
+        self.restart_predictors()?;
         Ok(())
     }
 
@@ -631,16 +661,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (self.last, self.start_report, self.watch) = (last, report, watch);
         self.last_impact = Some(impact);
         self.t_carry = 0.0;
-        self.restart_predictors();
+        self.restart_predictors()?;
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
         Ok(())
     }
 
-    /// After a discontinuity the multipliers' history says nothing about what follows.
-    fn restart_predictors(&mut self) {
+    /// After a discontinuity the multipliers' history, and the inner method's memory, say
+    /// nothing about what follows.
+    fn restart_predictors(&mut self) -> Result<(), StepError> {
         self.predictor.reset();
         self.state_gram = None;
+        self.restart_method()
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the
@@ -904,6 +936,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         } else {
             (h_used + self.t_carry) - (t_end - self.time())
         };
+        Method::<N, Z>::accepted(&mut self.method, &step.v);
         self.q = step.q;
         self.v = match self.options.velocity_projection {
             VelocityProjection::State => step.point.v,

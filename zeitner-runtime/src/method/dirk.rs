@@ -135,11 +135,11 @@ fn tolerances(step: StepControl) -> Option<(f64, f64)> {
 }
 
 /// Stage Newton sweeps before the stage counts as not converged.
-const STAGE_ITERATIONS: usize = 25;
+pub(super) const STAGE_ITERATIONS: usize = 25;
 /// A stage that needs more sweeps than this with a kept iteration matrix refreshes it.
-const SLOW_STAGE: usize = 6;
+pub(super) const SLOW_STAGE: usize = 6;
 /// A kept iteration matrix serves steps within this ratio of the step it was formed for.
-const STEP_RATIO_KEPT: f64 = 1.25;
+pub(super) const STEP_RATIO_KEPT: f64 = 1.25;
 
 /// The method and its workspace: the factorised iteration matrix and the step it was formed
 /// for.

@@ -3,8 +3,13 @@
 //! the exact sensitivity of the step end to the multipliers' coefficients.
 //!
 //! A method is a value that owns its workspace ([`Method`]); explicit Runge–Kutta methods are
-//! tableaux ([`explicit`]), the implicit one keeps its factorised iteration matrix ([`sdirk`]).
+//! tableaux ([`explicit`]), the implicit ones keep their factorised iteration matrix ([`dirk`],
+//! [`alpha`]). Generalised-α also carries a value from step to step, its algorithmic
+//! acceleration: the simulator restarts it ([`Method::restart`]) and commits it when it accepts
+//! a step ([`Method::accepted`]); the other methods have no memory.
 
+#[cfg(feature = "implicit")]
+pub(crate) mod alpha;
 #[cfg(feature = "implicit")]
 pub(crate) mod dirk;
 pub(crate) mod explicit;
@@ -55,6 +60,9 @@ pub(crate) trait Method<const N: usize, const Z: usize> {
     /// The order of the embedded solution the error estimate compares with, if there is one.
     fn embedded_order(&self) -> Option<u32>;
     /// Integrates one step of size `h` from `start`; with `sensitivity`, also `∂(q, q')/∂c`.
+    /// A method with memory reads the value it committed last (a fixed value: it does not
+    /// depend on this step's coefficients) and keeps what this step would commit as a
+    /// candidate, which the next integration replaces.
     fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
@@ -66,6 +74,24 @@ pub(crate) trait Method<const N: usize, const Z: usize> {
     /// Factorisations of an iteration matrix so far (implicit methods).
     fn factorizations(&self) -> u64 {
         0
+    }
+    /// Starts the method's memory afresh at the current state — at the start, after a
+    /// re-initialisation, a change of method, and wherever the trajectory is discontinuous
+    /// (events, impacts, contacts opening) — from the true acceleration there, which only a
+    /// method with memory asks `acceleration` for.
+    fn restart(
+        &mut self,
+        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
+    ) -> Result<(), StepError> {
+        let _ = acceleration;
+        Ok(())
+    }
+    /// The step of the last integration is accepted, with step-end velocities `v` (the raw
+    /// ones: the Newton on the multipliers may have corrected the integrated end linearly):
+    /// commits its candidate. Until then, and after a failed or rejected step, the memory is
+    /// that of the last accepted step.
+    fn accepted(&mut self, v: &Vector<N>) {
+        let _ = v;
     }
 }
 
@@ -79,6 +105,8 @@ pub(crate) enum AnyMethod<const N: usize> {
     Dirk4(dirk::Dirk<4, N>),
     #[cfg(feature = "implicit")]
     Dirk6(dirk::Dirk<6, N>),
+    #[cfg(feature = "implicit")]
+    Alpha(alpha::GeneralizedAlpha<N>),
 }
 
 impl<const N: usize> AnyMethod<N> {
@@ -99,6 +127,10 @@ impl<const N: usize> AnyMethod<N> {
             InnerMethod::Esdirk43 => {
                 AnyMethod::Dirk6(dirk::Dirk::new(&dirk::KENNEDY_CARPENTER4, step))
             }
+            #[cfg(feature = "implicit")]
+            InnerMethod::GeneralizedAlpha { rho_inf } => {
+                AnyMethod::Alpha(alpha::GeneralizedAlpha::new(rho_inf))
+            }
         }
     }
 }
@@ -115,6 +147,8 @@ impl<const N: usize> AnyMethod<N> {
             AnyMethod::Dirk4(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => m.use_step_control(step),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(_) => {}
         }
     }
 }
@@ -130,6 +164,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => Method::<N, Z>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(m) => Method::<N, Z>::order(m),
         }
     }
 
@@ -144,6 +180,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => Method::<N, Z>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::embedded_order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(m) => Method::<N, Z>::embedded_order(m),
         }
     }
 
@@ -165,6 +203,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(m) => m.integrate(model, start, h, multipliers, sensitivity),
         }
     }
 
@@ -177,7 +217,31 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => Method::<N, Z>::factorizations(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::factorizations(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(m) => Method::<N, Z>::factorizations(m),
         }
+    }
+
+    fn restart(
+        &mut self,
+        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
+    ) -> Result<(), StepError> {
+        match self {
+            #[cfg(feature = "implicit")]
+            AnyMethod::Alpha(m) => Method::<N, Z>::restart(m, acceleration),
+            _ => {
+                let _ = acceleration;
+                Ok(())
+            }
+        }
+    }
+
+    fn accepted(&mut self, v: &Vector<N>) {
+        #[cfg(feature = "implicit")]
+        if let AnyMethod::Alpha(m) = self {
+            Method::<N, Z>::accepted(m, v);
+        }
+        let _ = v;
     }
 }
 
@@ -190,12 +254,24 @@ mod tests {
     /// The exact sensitivity of a method's step map against central differences of the map,
     /// for every coefficient of the multipliers.
     fn check_sensitivity<const K: usize>(method: InnerMethod, multipliers: Multipliers<1, K>) {
+        check_sensitivity_with(method, multipliers, None);
+    }
+
+    /// The same, for a method with memory restarted at `memory` (else not restarted).
+    fn check_sensitivity_with<const K: usize>(
+        method: InnerMethod,
+        multipliers: Multipliers<1, K>,
+        memory: Option<Vector<2>>,
+    ) {
         let mut model = Model::new(&PENDULUM);
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, K>::at(0.0, q, v);
         let h = 0.05;
         let mut stepper = AnyMethod::<2>::new(method, StepControl::Fixed { step: h });
+        if let Some(memory) = memory {
+            Method::<2, 1>::restart(&mut stepper, || Ok(memory)).unwrap();
+        }
         let end = stepper
             .integrate(&mut model, &start, h, &multipliers, true)
             .unwrap();
@@ -272,6 +348,66 @@ mod tests {
 
     const FIXED: StepControl = StepControl::Fixed { step: 0.01 };
 
+    /// Generalised-α with `ā₀` from a restart (a fixed value) and without one (`ā₀ = a₀`, which
+    /// depends on the coefficients where `λ(t₀)` does), for constant and quadratic multipliers.
+    #[test]
+    #[cfg(all(feature = "exact-sensitivity", feature = "implicit"))]
+    fn exact_sensitivity_of_generalized_alpha_matches_central_differences() {
+        let constant = Multipliers {
+            base: Vector::zeros(),
+            coefficients: [Vector::from([-6.0])],
+            first_power: 0,
+        };
+        let quadratic = Multipliers {
+            base: Vector::from([-6.0]),
+            coefficients: [Vector::from([0.4]), Vector::from([-0.2])],
+            first_power: 1,
+        };
+        for rho_inf in [0.0, 0.5, 0.9, 1.0] {
+            let method = InnerMethod::GeneralizedAlpha { rho_inf };
+            for memory in [None, Some(Vector::from([0.7, -8.5]))] {
+                check_sensitivity_with(method, constant, memory);
+                check_sensitivity_with(method, quadratic, memory);
+            }
+        }
+    }
+
+    /// Generalised-α commits its `ā₁` only when told the step is accepted: integrating again
+    /// without that repeats the step exactly, and after it the next step differs.
+    #[test]
+    #[cfg(feature = "implicit")]
+    fn generalized_alpha_commits_only_accepted_steps() {
+        let mut model = Model::new(&PENDULUM);
+        let (q, v) = swinging();
+        model.prepare(&q, 0.0).unwrap();
+        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let multipliers = Multipliers {
+            base: Vector::zeros(),
+            coefficients: [Vector::from([-6.0])],
+            first_power: 0,
+        };
+        let mut stepper =
+            AnyMethod::<2>::new(InnerMethod::GeneralizedAlpha { rho_inf: 0.6 }, FIXED);
+        let a0 = model
+            .acceleration(&q, &v, 0.0, &Vector::from([-6.0]))
+            .unwrap()
+            .a;
+        Method::<2, 1>::restart(&mut stepper, || Ok(a0)).unwrap();
+        let mut step = |stepper: &mut AnyMethod<2>, h: f64| {
+            stepper
+                .integrate(&mut model, &start, h, &multipliers, false)
+                .unwrap()
+        };
+        let first = step(&mut stepper, 0.05);
+        // A rejected try with another step, then the first again: nothing was committed.
+        step(&mut stepper, 0.02);
+        let again = step(&mut stepper, 0.05);
+        assert_eq!((first.q, first.v), (again.q, again.v));
+        Method::<2, 1>::accepted(&mut stepper, &again.v);
+        let after = step(&mut stepper, 0.05);
+        assert!((after.v - first.v).amax() > 1e-6, "{} {}", after.v, first.v);
+    }
+
     #[test]
     fn orders_are_those_of_the_tableaux() {
         let order = |m: InnerMethod| Method::<2, 1>::order(&AnyMethod::<2>::new(m, FIXED));
@@ -287,6 +423,8 @@ mod tests {
             assert_eq!(embedded(InnerMethod::Esdirk32), Some(2));
             assert_eq!(order(InnerMethod::Esdirk43), 4);
             assert_eq!(embedded(InnerMethod::Esdirk43), Some(3));
+            let alpha = InnerMethod::GeneralizedAlpha { rho_inf: 0.8 };
+            assert_eq!((order(alpha), embedded(alpha)), (2, None));
         }
     }
 }

@@ -1,0 +1,348 @@
+//! The generalised-α method of Chung & Hulbert (J. Appl. Mech. 60 (1993) 371–375) for
+//! `q'' = a(q, q', t, λ(t))` with the multipliers prescribed over the step, in the form for
+//! second-order systems of Arnold & Brüls (Multibody Syst. Dyn. 18 (2007) 185–202):
+//!
+//! ```text
+//! q₁ = q₀ + h v₀ + h²(1/2 − β) ā₀ + h² β ā₁
+//! v₁ = v₀ + h(1 − γ) ā₀ + h γ ā₁
+//! (1 − α_m) ā₁ + α_m ā₀ = (1 − α_f) a₁ + α_f a₀
+//! ```
+//!
+//! with `a₀ = a(q₀, v₀, t₀, λ(t₀))`, `a₁ = a(q₁, v₁, t₁, λ(t₁))` and the algorithmic
+//! acceleration `ā`, which the method carries from step to step: its memory. One implicit
+//! equation per step, for `ā₁`, solved by a simplified Newton whose iteration matrix
+//! `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)` is kept across sweeps and steps while it
+//! converges fast, as the DIRK engine keeps its own.
+
+use super::dirk::{SLOW_STAGE, STAGE_ITERATIONS, STEP_RATIO_KEPT};
+use super::{Method, Start, StepEnd};
+use crate::error::StepError;
+use crate::linalg::Lu;
+use crate::mass::MassFactor;
+use crate::model::{Acceleration, FactorOf, Model};
+use crate::multipliers::Multipliers;
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+/// The method's four parameters, from the spectral radius `ρ∞` at infinite frequency
+/// (Chung & Hulbert's optimal choice: second order, unconditionally stable for linear
+/// problems, the high-frequency damping controlled by `ρ∞` alone and the low-frequency
+/// damping least).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Parameters {
+    pub alpha_m: f64,
+    pub alpha_f: f64,
+    pub gamma: f64,
+    pub beta: f64,
+}
+
+impl Parameters {
+    /// `α_m = (2ρ∞ − 1)/(ρ∞ + 1)`, `α_f = ρ∞/(ρ∞ + 1)`, `γ = 1/2 + α_f − α_m`,
+    /// `β = (γ + 1/2)²/4`; `ρ∞` in `0..=1` (the options refuse others).
+    pub fn new(rho_inf: f64) -> Self {
+        let alpha_m = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
+        let alpha_f = rho_inf / (rho_inf + 1.0);
+        let gamma = 0.5 + alpha_f - alpha_m;
+        let beta = 0.25 * (gamma + 0.5) * (gamma + 0.5);
+        Parameters {
+            alpha_m,
+            alpha_f,
+            gamma,
+            beta,
+        }
+    }
+}
+
+/// `ā₁` of the last integration, with the velocities it gave and `hγ`: what
+/// [`Method::accepted`] commits.
+#[derive(Clone, Copy, Debug)]
+struct Candidate<const N: usize> {
+    abar: Vector<N>,
+    v: Vector<N>,
+    hg: f64,
+}
+
+/// The method, its memory and its workspace.
+pub(crate) struct GeneralizedAlpha<const N: usize> {
+    parameters: Parameters,
+    /// `ā` at the current state: the last accepted step's `ā₁`, or the true acceleration after
+    /// a restart. `None` before the first restart; a step then takes `ā₀ = a₀`.
+    committed: Option<Vector<N>>,
+    /// What the last integration would commit; a failed or rejected step never commits it.
+    candidate: Option<Candidate<N>>,
+    /// The step the iteration matrix was formed for and its factor.
+    iteration: Option<(f64, Lu<N>)>,
+    factorizations: u64,
+}
+
+/// What one step knows before `ā₁`: the parts of `q₁`, `v₁` and of the right-hand side
+/// `(1 − α_m) ā₁ − (1 − α_f) a₁ = α_f a₀ − α_m ā₀` that do not depend on it.
+struct Known<'m, const N: usize, const Z: usize> {
+    q: Vector<N>,
+    v: Vector<N>,
+    rhs: Vector<N>,
+    t: f64,
+    lambda: &'m Vector<Z>,
+    /// `h² β`, `h γ`.
+    hhb: f64,
+    hg: f64,
+}
+
+impl<const N: usize> GeneralizedAlpha<N> {
+    pub fn new(rho_inf: f64) -> Self {
+        GeneralizedAlpha {
+            parameters: Parameters::new(rho_inf),
+            committed: None,
+            candidate: None,
+            iteration: None,
+            factorizations: 0,
+        }
+    }
+
+    /// `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)`, factorised and kept for steps near
+    /// `h`.
+    fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
+        let p = self.parameters;
+        let (hg, hhb) = (h * p.gamma, h * h * p.beta);
+        let matrix = (1.0 - p.alpha_m) * Matrix::<N, N>::identity()
+            - (1.0 - p.alpha_f) * (hg * dv + hhb * dq);
+        self.factorizations += 1;
+        let lu = Lu::new(matrix)?;
+        self.iteration = Some((h, lu));
+        Some(lu)
+    }
+
+    /// The kept iteration matrix if it was formed for a step near `h`.
+    fn kept(&self, h: f64) -> Option<Lu<N>> {
+        let (formed_for, lu) = self.iteration?;
+        let ratio = h / formed_for;
+        (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT)
+            .contains(&ratio)
+            .then_some(lu)
+    }
+}
+
+impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
+    fn order(&self) -> u32 {
+        2
+    }
+
+    fn embedded_order(&self) -> Option<u32> {
+        None
+    }
+
+    fn factorizations(&self) -> u64 {
+        self.factorizations
+    }
+
+    fn restart(
+        &mut self,
+        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
+    ) -> Result<(), StepError> {
+        self.committed = Some(acceleration()?);
+        self.candidate = None;
+        Ok(())
+    }
+
+    fn accepted(&mut self, v: &Vector<N>) {
+        // The Newton on the multipliers may have moved the integrated step end linearly, by
+        // `∂v₁/∂c Δc = hγ ∂ā₁/∂c Δc` (the start does not depend on `c`): `ā₁` moves with it.
+        if let Some(candidate) = self.candidate.take() {
+            self.committed = Some(candidate.abar + (v - candidate.v) / candidate.hg);
+        }
+    }
+
+    fn integrate<Sys: ConstrainedSystem<N, Z>, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        start: &Start<N, Z, K>,
+        h: f64,
+        multipliers: &Multipliers<Z, K>,
+        sensitivity: bool,
+    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
+        self.candidate = None;
+        let p = self.parameters;
+        let lambda_start = multipliers.at(0.0);
+        let at_start = model.acceleration(&start.q, &start.v, start.t, &lambda_start)?;
+        let (a0, abar0) = (at_start.a, self.committed.unwrap_or(at_start.a));
+        let lambda = multipliers.at(1.0);
+        let known = Known {
+            q: start.q + h * start.v + (h * h * (0.5 - p.beta)) * abar0,
+            v: start.v + (h * (1.0 - p.gamma)) * abar0,
+            rhs: p.alpha_f * a0 - p.alpha_m * abar0,
+            t: start.t + h,
+            lambda: &lambda,
+            hhb: h * h * p.beta,
+            hg: h * p.gamma,
+        };
+        let stall = StepError::StageDidNotConverge {
+            t: start.t,
+            step: h,
+        };
+        let abar = self.solve(model, &known, abar0, h)?.ok_or(stall)?;
+        let mut end = StepEnd {
+            q: known.q + known.hhb * abar,
+            v: known.v + known.hg * abar,
+            dq_dc: start.dq_dc,
+            dv_dc: start.dv_dc,
+            error: None,
+        };
+        if sensitivity {
+            let da0 = start_sensitivity(model, start, multipliers, (&lambda_start, &at_start))?;
+            // `ā₀` is a value of the steps before unless it is `a₀` itself.
+            let dabar0 = if self.committed.is_some() {
+                [Matrix::zeros(); K]
+            } else {
+                da0
+            };
+            self.end_sensitivity(model, &mut end, (start, h), multipliers, (&da0, &dabar0))
+                .ok_or(stall)??;
+        }
+        self.candidate = Some(Candidate {
+            abar,
+            v: end.v,
+            hg: known.hg,
+        });
+        Ok(end)
+    }
+}
+
+impl<const N: usize> GeneralizedAlpha<N> {
+    /// Solves for `ā₁` from the guess `ā₀`: the kept iteration matrix gets a few sweeps, a fresh
+    /// one (formed at the guess) all of them, once. `None` when it does not converge.
+    fn solve<Sys: ConstrainedSystem<N, Z>, const Z: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        known: &Known<'_, N, Z>,
+        guess: Vector<N>,
+        h: f64,
+    ) -> Result<Option<Vector<N>>, StepError> {
+        let mut kept = self.kept(h);
+        loop {
+            let (lu, fresh) = match kept.take() {
+                Some(lu) => (lu, false),
+                None => {
+                    let (q, v) = (known.q + known.hhb * guess, known.v + known.hg * guess);
+                    let at = model.acceleration(&q, &v, known.t, known.lambda)?;
+                    let jac = model.acceleration_jacobians(&q, &v, known.t, known.lambda, &at)?;
+                    let Some(lu) = self.refresh(h, (&jac.dq, &jac.dv)) else {
+                        return Ok(None);
+                    };
+                    (lu, true)
+                }
+            };
+            let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
+            if let Some(abar) = self.sweeps(model, &lu, known, guess, limit) {
+                return abar.map(Some);
+            }
+            if fresh {
+                return Ok(None);
+            }
+        }
+    }
+
+    /// Newton on `ā₁` with the given iteration matrix, at most `limit` sweeps; `None` when it
+    /// does not converge within them.
+    fn sweeps<Sys: ConstrainedSystem<N, Z>, const Z: usize>(
+        &self,
+        model: &mut Model<'_, Sys, N, Z>,
+        lu: &Lu<N>,
+        known: &Known<'_, N, Z>,
+        mut abar: Vector<N>,
+        limit: usize,
+    ) -> Option<Result<Vector<N>, StepError>> {
+        let p = self.parameters;
+        let mut last_norm = f64::INFINITY;
+        for _ in 0..limit {
+            let (q, v) = (known.q + known.hhb * abar, known.v + known.hg * abar);
+            let a = match model.acceleration(&q, &v, known.t, known.lambda) {
+                Ok(acceleration) => acceleration.a,
+                Err(error) => return Some(Err(error)),
+            };
+            let residual = (1.0 - p.alpha_m) * abar - (1.0 - p.alpha_f) * a - known.rhs;
+            let delta = lu.solve(&residual);
+            abar -= delta;
+            let norm = delta.amax();
+            let scale = abar.amax() + known.rhs.amax() + f64::MIN_POSITIVE;
+            // Converged; or stalled at the rounding floor, which stiff forces raise well above
+            // the accelerations' own precision (as in the DIRK stages).
+            if norm <= 1e-12 * scale || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm) {
+                return Some(Ok(abar));
+            }
+            if !norm.is_finite() || norm > 1e3 * last_norm {
+                return None;
+            }
+            last_norm = norm;
+        }
+        None
+    }
+
+    /// `∂(q₁, v₁)/∂c_k` from the derivative of the converged equation for `ā₁`, with a fresh
+    /// Jacobian and factorisation at the step end (which then serves as the next iteration
+    /// matrix). `da0`, `dabar0`: the sensitivities of `a₀` and `ā₀`. `None` when the matrix is
+    /// singular.
+    #[allow(clippy::type_complexity)]
+    fn end_sensitivity<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+        &mut self,
+        model: &mut Model<'_, Sys, N, Z>,
+        end: &mut StepEnd<N, Z, K>,
+        (start, h): (&Start<N, Z, K>, f64),
+        multipliers: &Multipliers<Z, K>,
+        (da0, dabar0): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
+    ) -> Option<Result<(), StepError>> {
+        let p = self.parameters;
+        let (t, lambda) = (start.t + h, multipliers.at(1.0));
+        let jacobians = model
+            .acceleration(&end.q, &end.v, t, &lambda)
+            .and_then(|at| model.acceleration_jacobians(&end.q, &end.v, t, &lambda, &at));
+        let jac = match jacobians {
+            Ok(jac) => jac,
+            Err(error) => return Some(Err(error)),
+        };
+        let lu = self.refresh(h, (&jac.dq, &jac.dv))?;
+        let (hg, hhb) = (h * p.gamma, h * h * p.beta);
+        for k in 0..K {
+            let (dq0, dv0) = (start.dq_dc[k], start.dv_dc[k]);
+            let dq_known = dq0 + h * dv0 + (h * h * (0.5 - p.beta)) * dabar0[k];
+            let dv_known = dv0 + (h * (1.0 - p.gamma)) * dabar0[k];
+            let w = multipliers.weight(k, 1.0);
+            let forced = jac.dq * dq_known + jac.dv * dv_known + w * jac.dp;
+            let rhs = (1.0 - p.alpha_f) * forced + p.alpha_f * da0[k] - p.alpha_m * dabar0[k];
+            let dabar = lu.solve(&rhs);
+            end.dq_dc[k] = dq_known + hhb * dabar;
+            end.dv_dc[k] = dv_known + hg * dabar;
+        }
+        Some(Ok(()))
+    }
+}
+
+/// `∂a₀/∂c_k` of the start's acceleration `a₀ = a(q₀, v₀, t₀, λ(t₀))`: through `λ(t₀)` when
+/// the multipliers' value there depends on the coefficients (constant ones), and through the
+/// start's own sensitivity when it has one.
+#[allow(clippy::type_complexity)]
+fn start_sensitivity<
+    Sys: ConstrainedSystem<N, Z>,
+    const N: usize,
+    const Z: usize,
+    const K: usize,
+>(
+    model: &mut Model<'_, Sys, N, Z>,
+    start: &Start<N, Z, K>,
+    multipliers: &Multipliers<Z, K>,
+    (lambda, at): (&Vector<Z>, &Acceleration<FactorOf<Sys, N, Z>, N, Z>),
+) -> Result<[Matrix<N, Z>; K], StepError> {
+    let depends = |m: &[Matrix<N, Z>; K]| m.iter().any(|m| m.iter().any(|&x| x != 0.0));
+    let weight = |k: usize| multipliers.weight(k, 0.0);
+    if depends(&start.dq_dc) || depends(&start.dv_dc) {
+        let jac = model.acceleration_jacobians(&start.q, &start.v, start.t, lambda, at)?;
+        return Ok(core::array::from_fn(|k| {
+            jac.dq * start.dq_dc[k] + jac.dv * start.dv_dc[k] + weight(k) * jac.dp
+        }));
+    }
+    if (0..K).all(|k| weight(k) == 0.0) {
+        return Ok([Matrix::zeros(); K]);
+    }
+    // `∂a/∂λ = -M⁻¹Gᵀ` from what the acceleration has already: no Jacobian needed.
+    let dp: Matrix<N, Z> = -at.factor.solve(&at.jacobian.transpose());
+    Ok(core::array::from_fn(|k| weight(k) * dp))
+}
