@@ -736,13 +736,35 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
             InnerMethod::Rk4 { substeps }
         }
         1 => InnerMethod::DormandPrince54,
-        _ => InnerMethod::Sdirk2,
+        _ => implicit_method(rng, wild),
+    }
+}
+
+/// One of the implicit methods, drawn from a copy of `rng`: the cases of the seeds drawn before
+/// ESDIRK 4(3) and generalised-α were fuzzed stay the same but for their implicit method.
+fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
+    let mut side = rng.clone();
+    match side.random_range(0..4) {
+        0 => InnerMethod::Sdirk2,
+        1 => InnerMethod::Esdirk32,
+        2 => InnerMethod::Esdirk43,
+        _ => {
+            let rho_inf = match side.random_range(0..10) {
+                0..=7 => side.random_range(0.0..=1.0),
+                8 => [0.0, 1.0][side.random_range(0..2)],
+                _ if wild => hostile(&mut side),
+                _ => 0.8,
+            };
+            InnerMethod::GeneralizedAlpha { rho_inf }
+        }
     }
 }
 
 fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
     let adaptive = match method {
-        InnerMethod::DormandPrince54 => rng.random_bool(0.75),
+        InnerMethod::DormandPrince54 | InnerMethod::Esdirk32 | InnerMethod::Esdirk43 => {
+            rng.random_bool(0.75)
+        }
         _ => rng.random_bool(0.05),
     };
     if !adaptive {
@@ -876,7 +898,7 @@ pub fn options(rng: &mut Rng) -> Options {
             3 => o.sensitivity = Sensitivity::Paper,
             4 => o.velocity_projection = VelocityProjection::State,
             _ => {
-                o.method = InnerMethod::Sdirk2;
+                o.method = implicit_method(rng, false);
                 o.step = StepControl::Fixed {
                     step: log_uniform(rng, -4.0, -1.0),
                 };
