@@ -194,76 +194,45 @@ fn dense_output_keeps_the_order_between_steps() {
     assert_order("dense output", coarse, fine, 2.0, 5.0);
 }
 
-#[test]
-fn esdirk_with_quadratic_multipliers_converges_at_its_order_3() {
+/// The errors of `method` with quadratic multipliers at `n` fixed steps over 1 s of the pendulum
+/// released horizontally, against its reference: q, q', λ.
+fn quadratic_errors(method: InnerMethod, n: u32) -> [f64; 3] {
     let scene = Pendulum {
         m: 1.0,
         length: 1.0,
         g: 9.81,
     };
     let reference = pendulum_released_horizontally(&scene, 1.0);
-    let errors = |n: u32| {
-        let options = Options {
-            method: InnerMethod::Esdirk32,
-            ..quadratic(
-                StepControl::Fixed {
-                    step: 1.0 / f64::from(n),
-                },
-                1e-14,
-            )
-        };
-        let q0 = Vector::<2>::new(1.0, 0.0);
-        let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
-        sim.advance_to(1.0, |_| {}).unwrap();
-        let end = sim.last().end;
-        [
-            relative_error(end.q.as_slice(), &reference.q),
-            relative_error(end.v.as_slice(), &reference.v),
-            relative_error(end.lambda.as_slice(), &reference.lambda),
-        ]
+    let options = Options {
+        method,
+        ..quadratic(
+            StepControl::Fixed {
+                step: 1.0 / f64::from(n),
+            },
+            1e-14,
+        )
     };
-    assert_order_within(
-        "ESDIRK3(2), quadratic",
-        (errors(100), errors(200)),
-        2.0,
-        3.0,
-        0.3,
-    );
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+    sim.advance_to(1.0, |_| {}).unwrap();
+    let end = sim.last().end;
+    [
+        relative_error(end.q.as_slice(), &reference.q),
+        relative_error(end.v.as_slice(), &reference.v),
+        relative_error(end.lambda.as_slice(), &reference.lambda),
+    ]
+}
+
+#[test]
+fn esdirk_with_quadratic_multipliers_converges_at_its_order_3() {
+    let errors = |n| quadratic_errors(InnerMethod::Esdirk32, n);
+    let fixed = (errors(100), errors(200));
+    assert_order_within("ESDIRK3(2), quadratic", fixed, 2.0, 3.0, 0.3);
 }
 
 #[test]
 fn esdirk43_with_quadratic_multipliers_converges_at_its_order_4() {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
-    let reference = pendulum_released_horizontally(&scene, 1.0);
-    let errors = |n: u32| {
-        let options = Options {
-            method: InnerMethod::Esdirk43,
-            ..quadratic(
-                StepControl::Fixed {
-                    step: 1.0 / f64::from(n),
-                },
-                1e-14,
-            )
-        };
-        let q0 = Vector::<2>::new(1.0, 0.0);
-        let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
-        sim.advance_to(1.0, |_| {}).unwrap();
-        let end = sim.last().end;
-        [
-            relative_error(end.q.as_slice(), &reference.q),
-            relative_error(end.v.as_slice(), &reference.v),
-            relative_error(end.lambda.as_slice(), &reference.lambda),
-        ]
-    };
-    assert_order_within(
-        "ESDIRK4(3), quadratic",
-        (errors(50), errors(100)),
-        2.0,
-        4.0,
-        0.3,
-    );
+    let errors = |n| quadratic_errors(InnerMethod::Esdirk43, n);
+    let fixed = (errors(50), errors(100));
+    assert_order_within("ESDIRK4(3), quadratic", fixed, 2.0, 4.0, 0.3);
 }
