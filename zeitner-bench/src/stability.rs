@@ -697,7 +697,7 @@ fn which_method_where(cases: &[Case]) -> String {
          1/ω (for the cost, see the spring-supported pendulum in `docs/performance.md`).\n\
          - **Non-stiff scenes** (pendulums, mechanisms, the steam generator): Dormand–Prince, with \
          quadratic multipliers for accuracy (order 5), or RK4 with fixed steps where the step is \
-         known; ESDIRK 4(3) works there too, at 3–5× the cost (`docs/performance.md`).\n\
+         known; ESDIRK 4(3) works there too, at 2.4–5.9× the cost (`docs/performance.md`).\n\
          - **Singular configurations and redundant equations** stop every method with \
          `RankDeficientConstraints`; redundant but consistent rows run with `SparseSimulator`.\n",
     );
