@@ -20,7 +20,7 @@ pub enum InnerMethod {
     #[cfg(feature = "implicit")]
     Sdirk2,
     /// Kværnø's ESDIRK 3(2): order 3, L-stable and stiffly accurate, with an embedded order-2
-    /// solution for adaptive steps; the stiff method. Uses `∂F/∂q`, `∂F/∂q'`; keeps its
+    /// solution for adaptive steps; for stiff models at loose tolerances. Uses `∂F/∂q`, `∂F/∂q'`; keeps its
     /// factorised iteration matrix across stages, sweeps and steps while it converges fast.
     /// Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
@@ -110,7 +110,7 @@ pub enum VelocityProjection {
 #[non_exhaustive]
 pub enum MultiplierModel {
     /// `Quadratic` for a scene with velocity-level rows (where constant multipliers cap every
-    /// method at order 2) and with the stiff method `Esdirk32` (constant multipliers jump from
+    /// method at order 2) and with the stiff methods `Esdirk32`, `Esdirk43` (constant multipliers jump from
     /// step to step, and a stiff part of the model answers every jump with a transient the
     /// error estimate sees: on the spring-supported pendulum, 3 618 805 steps at rtol 1e-5
     /// instead of 66), `Constant` otherwise, and always with `GeneralizedAlpha` (which sees the

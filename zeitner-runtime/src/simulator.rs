@@ -305,9 +305,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// Changes the options; the state is kept, unless a tighter `constraint_tolerance` than it
-    /// meets makes it consistent again as [`Simulator::reinitialise`] does (see
-    /// [`Simulator::start_report`]). Refused (and nothing changed) when the options are invalid
-    /// or do not suit the system.
+    /// meets makes it consistent again, with the contacts as they are (see
+    /// [`Simulator::start_report`]; `StartPolicy::Refuse` refuses that with `InconsistentStart`).
+    /// Refused (and nothing changed) when the options are invalid or do not suit the system.
     pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
         options.validate()?;
         let tolerance = options.constraint_tolerance;
@@ -321,13 +321,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             core::mem::replace(&mut self.method, method)
         });
         let previous_options = core::mem::replace(&mut self.options, options);
-        let end = self.last.end;
         let changed = match (reproject, new_method) {
-            (true, _) => self.reinitialise(end.q, end.v, end.t).map(|_| ()),
+            (true, _) => self.reproject(),
             (false, true) => self.restart_method(),
             (false, false) => Ok(()),
         };
-        // The gaps' levels are set off by the constraint tolerance (`reinitialise` did).
+        // The gaps' levels are set off by the constraint tolerance (`reproject` did).
         let same_levels = reproject || tolerance == previous_options.constraint_tolerance;
         let watch = changed.and_then(|()| match same_levels {
             true => Ok(self.watch),
@@ -355,6 +354,24 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             StepControl::Adaptive { .. } => self.planned_step.clamp(min, max),
         };
         Ok(())
+    }
+
+    /// Makes the current state consistent to the options' tolerance, tighter than the one it
+    /// was made for, with the contacts as they are: pending events and impacts, the stop time
+    /// and the step-size controller stay; the predictors restart (the state moved). On an error
+    /// nothing changed.
+    fn reproject(&mut self) -> Result<(), StepError> {
+        let end = self.last.end;
+        let (tolerance, policy) = (self.options.constraint_tolerance, self.options.start);
+        let model = &mut self.model;
+        model.prepare(&end.q, end.t)?;
+        let (point, report) = consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
+        let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
+        let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
+        let watch = watch_at(model, &last.end, tolerance)?;
+        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
+        (self.last, self.start_report, self.watch) = (last, report, watch);
+        self.restart_predictors()
     }
 
     /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
@@ -508,16 +525,17 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (landing, time_event): (bool, Option<f64>),
         aimed: bool,
     ) -> Result<StopReason, StepError> {
+        // A time event landed on is passed even where a crossing is reported first.
+        let time_event_reached = landing && time_event == Some(t_end);
+        if time_event_reached {
+            self.next_time_event = self.find_time_event();
+            self.restart_predictors()?;
+        }
         if let Some(values) = values {
             // A stop time reached here as well is reported by the next call.
             if let Some(reason) = self.resolve_crossings(values)? {
                 return Ok(reason);
             }
-        }
-        let time_event_reached = landing && time_event == Some(t_end);
-        if time_event_reached {
-            self.next_time_event = self.find_time_event();
-            self.restart_predictors()?;
         }
         if landing && self.stop_time == Some(t_end) {
             self.stop_time = None;
@@ -668,7 +686,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// After a discontinuity the multipliers' history, and the inner method's memory, say
-    /// nothing about what follows.
+    /// nothing about what follows. Cold: kept out of the step's hot path.
+    #[cold]
     fn restart_predictors(&mut self) -> Result<(), StepError> {
         self.predictor.reset();
         self.state_gram = None;

@@ -138,7 +138,11 @@ impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
         &mut self,
         acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
     ) -> Result<(), StepError> {
-        self.committed = Some(acceleration()?);
+        // Where the acceleration cannot be evaluated the step start's own serves (`None`): a
+        // restart never fails after the state it follows has been committed.
+        self.committed = acceleration()
+            .ok()
+            .filter(|a| a.iter().all(|x| x.is_finite()));
         self.candidate = None;
         Ok(())
     }
@@ -147,7 +151,12 @@ impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
         // The Newton on the multipliers may have moved the integrated step end linearly, by
         // `∂v₁/∂c Δc = hγ ∂ā₁/∂c Δc` (the start does not depend on `c`): `ā₁` moves with it.
         if let Some(candidate) = self.candidate.take() {
-            self.committed = Some(candidate.abar + (v - candidate.v) / candidate.hg);
+            let moved = *v != candidate.v && candidate.hg > 0.0;
+            let corrected = candidate.abar + (v - candidate.v) / candidate.hg;
+            self.committed = match moved && corrected.iter().all(|x| x.is_finite()) {
+                true => Some(corrected),
+                false => Some(candidate.abar),
+            };
         }
     }
 

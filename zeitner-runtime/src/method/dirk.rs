@@ -405,12 +405,13 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
 /// Hairer & Wanner's RADAU5 (`FNEWT`, *Solving ODEs II*, IV.8), `max(10 u / rtol, min(0.03,
 /// √rtol))`, so that the stage equations' error stays well below the step's.
 fn stage_fraction(rtol: f64) -> f64 {
-    (10.0 * f64::EPSILON / rtol).max(0.03f64.min(libm::sqrt(rtol)))
+    // Never above RADAU5's cap of 0.03, which `10 u / rtol` passes below rtol ≈ 7e-14.
+    (10.0 * f64::EPSILON / rtol).max(libm::sqrt(rtol)).min(0.03)
 }
 
 /// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
 /// `None` when it does not converge within them. With `tolerances`, converged once the last
-/// correction is below [`stage_fraction`] of `atol + rtol·|v|` in each component; otherwise, and
+/// correction is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component; otherwise, and
 /// always when it gets there first, at rounding.
 #[inline]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
@@ -429,7 +430,7 @@ where
             let fraction = stage_fraction(rtol);
             (0..N).all(|i| {
                 let scale = atol + rtol * v[i].abs().max(v_known[i].abs());
-                delta[i].abs() <= fraction * scale
+                delta[i].is_finite() && delta[i].abs() <= fraction * scale
             })
         })
     };
