@@ -25,7 +25,7 @@ pub enum InnerMethod {
     /// Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
     Esdirk32,
-    /// Kennedy & Carpenter's ESDIRK 4(3)6L[2]SA: order 4, L-stable and stiffly accurate, with an
+    /// Kennedy & Carpenter's ESDIRK 4(3)6L\[2\]SA: order 4, L-stable and stiffly accurate, with an
     /// embedded order-3 solution for adaptive steps; for stiff models at tight tolerances, where
     /// an order-3 method needs too many steps. Same Jacobians and reuse policy as `Esdirk32`.
     /// Needs the `implicit` feature.

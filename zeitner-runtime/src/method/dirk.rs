@@ -75,7 +75,7 @@ pub(crate) const KVAERNO3: DirkTableau<4> = DirkTableau {
     embedded_order: Some(2),
 };
 
-/// Kennedy & Carpenter's ESDIRK 4(3)6L[2]SA, the implicit part of their ARK4(3)6L[2]SA (C. A.
+/// Kennedy & Carpenter's ESDIRK 4(3)6L\[2\]SA, the implicit part of their ARK4(3)6L\[2\]SA (C. A.
 /// Kennedy, M. H. Carpenter, Appl. Numer. Math. 44 (2003) 139–181; "KenCarp4"): 6 stages with an
 /// explicit first one, `γ = 1/4`, `c = (0, 1/2, 83/250, 31/50, 17/20, 1)`, order 4, stage order
 /// 2, L-stable and stiffly accurate, with an embedded order-3 solution that is A-stable but not
