@@ -160,19 +160,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             next_time_event: None,
         }
         .with_next_time_event();
-        simulator.restart_method()?;
+        simulator.restart_method();
         Ok(simulator)
     }
 
     /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
     /// the acceleration at the current state with the consistent multipliers there (evaluated
     /// only for a method with memory).
-    fn restart_method(&mut self) -> Result<(), StepError> {
+    fn restart_method(&mut self) {
         let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
         let model = &mut self.model;
         Method::<N, Z>::restart(&mut self.method, || {
             Ok(model.acceleration(&q, &v, t, &lambda)?.a)
-        })
+        });
     }
 
     /// Finds the first time event ahead.
@@ -221,7 +221,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.lambda = lambda;
         self.start_report.multipliers = lambda;
         self.start_report.multipliers_given = true;
-        self.restart_method()?;
+        self.restart_method();
         Ok(self)
     }
 
@@ -247,8 +247,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = last.end;
-        // The consistent start's acceleration: nothing left that could fail.
-        Method::<N, Z>::restart(&mut self.method, || Ok(point.a))?;
+        // The consistent start's acceleration.
+        Method::<N, Z>::restart(&mut self.method, || Ok(point.a));
         self.watch = watch;
         self.pending = Pending::default();
         self.last = last;
@@ -323,7 +323,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let previous_options = core::mem::replace(&mut self.options, options);
         let changed = match (reproject, new_method) {
             (true, _) => self.reproject(),
-            (false, true) => self.restart_method(),
+            (false, true) => {
+                self.restart_method();
+                Ok(())
+            }
             (false, false) => Ok(()),
         };
         // The gaps' levels are set off by the constraint tolerance (`reproject` did).
@@ -371,7 +374,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let watch = watch_at(model, &last.end, tolerance)?;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
         (self.last, self.start_report, self.watch) = (last, report, watch);
-        self.restart_predictors()
+        self.restart_predictors();
+        Ok(())
     }
 
     /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
@@ -386,8 +390,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         let end = self.last.end;
         let gaps = self.model.gaps(&end.q, &end.v, end.t)?;
-        let mut open_gaps = open.iter().filter(|&k| k < S::UNILATERAL_CONSTRAINTS);
-        Ok(open_gaps.all(|k| gaps[k] >= -tolerance))
+        let within = open.iter().all(|k| gaps[k] >= -tolerance);
+        Ok(within)
     }
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports
@@ -529,7 +533,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let time_event_reached = landing && time_event == Some(t_end);
         if time_event_reached {
             self.next_time_event = self.find_time_event();
-            self.restart_predictors()?;
+            self.restart_predictors();
         }
         if let Some(values) = values {
             // A stop time reached here as well is reported by the next call.
@@ -622,7 +626,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let point = report.end;
         (self.last, self.watch) = (report, watch);
         self.lambda = point.lambda;
-        self.restart_predictors()?;
+        self.restart_predictors();
         Ok(())
     }
 
@@ -679,7 +683,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (self.last, self.start_report, self.watch) = (last, report, watch);
         self.last_impact = Some(impact);
         self.t_carry = 0.0;
-        self.restart_predictors()?;
+        self.restart_predictors();
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
         Ok(())
@@ -688,10 +692,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// After a discontinuity the multipliers' history, and the inner method's memory, say
     /// nothing about what follows. Cold: kept out of the step's hot path.
     #[cold]
-    fn restart_predictors(&mut self) -> Result<(), StepError> {
+    fn restart_predictors(&mut self) {
         self.predictor.reset();
         self.state_gram = None;
-        self.restart_method()
+        self.restart_method();
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the

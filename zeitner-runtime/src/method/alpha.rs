@@ -14,7 +14,7 @@
 //! `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)` is kept across sweeps and steps while it
 //! converges fast, as the DIRK engine keeps its own.
 
-use super::dirk::{SLOW_STAGE, STAGE_ITERATIONS, STEP_RATIO_KEPT};
+use super::dirk::{serves_step, SLOW_STAGE, STAGE_ITERATIONS};
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::linalg::Lu;
@@ -114,10 +114,7 @@ impl<const N: usize> GeneralizedAlpha<N> {
     /// The kept iteration matrix if it was formed for a step near `h`.
     fn kept(&self, h: f64) -> Option<Lu<N>> {
         let (formed_for, lu) = self.iteration?;
-        let ratio = h / formed_for;
-        (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT)
-            .contains(&ratio)
-            .then_some(lu)
+        serves_step(formed_for, h).then_some(lu)
     }
 }
 
@@ -134,17 +131,12 @@ impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
         self.factorizations
     }
 
-    fn restart(
-        &mut self,
-        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
-    ) -> Result<(), StepError> {
-        // Where the acceleration cannot be evaluated the step start's own serves (`None`): a
-        // restart never fails after the state it follows has been committed.
+    fn restart(&mut self, acceleration: impl FnOnce() -> Result<Vector<N>, StepError>) {
+        // Where the acceleration cannot be evaluated the step start's own serves (`None`).
         self.committed = acceleration()
             .ok()
             .filter(|a| a.iter().all(|x| x.is_finite()));
         self.candidate = None;
-        Ok(())
     }
 
     fn accepted(&mut self, v: &Vector<N>) {

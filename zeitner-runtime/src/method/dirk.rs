@@ -139,7 +139,12 @@ pub(super) const STAGE_ITERATIONS: usize = 25;
 /// A stage that needs more sweeps than this with a kept iteration matrix refreshes it.
 pub(super) const SLOW_STAGE: usize = 6;
 /// A kept iteration matrix serves steps within this ratio of the step it was formed for.
-pub(super) const STEP_RATIO_KEPT: f64 = 1.25;
+const STEP_RATIO_KEPT: f64 = 1.25;
+
+/// Whether an iteration matrix formed for a step `formed_for` serves a step `h`.
+pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
+    (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT).contains(&(h / formed_for))
+}
 
 /// The method and its workspace: the factorised iteration matrix and the step it was formed
 /// for.
@@ -191,10 +196,7 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
     /// The kept iteration matrix if it was formed for a step near `h`.
     fn kept(&self, h: f64) -> Option<Lu<N>> {
         let (formed_for, lu, _) = self.iteration?;
-        let ratio = h / formed_for;
-        (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT)
-            .contains(&ratio)
-            .then_some(lu)
+        serves_step(formed_for, h).then_some(lu)
     }
 }
 

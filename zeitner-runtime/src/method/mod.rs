@@ -78,13 +78,10 @@ pub(crate) trait Method<const N: usize, const Z: usize> {
     /// Starts the method's memory afresh at the current state — at the start, after a
     /// re-initialisation, a change of method, and wherever the trajectory is discontinuous
     /// (events, impacts, contacts opening) — from the true acceleration there, which only a
-    /// method with memory asks `acceleration` for.
-    fn restart(
-        &mut self,
-        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
-    ) -> Result<(), StepError> {
+    /// method with memory asks `acceleration` for. It cannot fail: it follows a state already
+    /// committed, so where the acceleration cannot be had the method must do without.
+    fn restart(&mut self, acceleration: impl FnOnce() -> Result<Vector<N>, StepError>) {
         let _ = acceleration;
-        Ok(())
     }
     /// The step of the last integration is accepted, with step-end velocities `v` (the raw
     /// ones: the Newton on the multipliers may have corrected the integrated end linearly):
@@ -222,18 +219,12 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         }
     }
 
-    fn restart(
-        &mut self,
-        acceleration: impl FnOnce() -> Result<Vector<N>, StepError>,
-    ) -> Result<(), StepError> {
-        match self {
-            #[cfg(feature = "implicit")]
-            AnyMethod::Alpha(m) => Method::<N, Z>::restart(m, acceleration),
-            _ => {
-                let _ = acceleration;
-                Ok(())
-            }
+    fn restart(&mut self, acceleration: impl FnOnce() -> Result<Vector<N>, StepError>) {
+        #[cfg(feature = "implicit")]
+        if let AnyMethod::Alpha(m) = self {
+            return Method::<N, Z>::restart(m, acceleration);
         }
+        let _ = acceleration;
     }
 
     fn accepted(&mut self, v: &Vector<N>) {
@@ -270,7 +261,7 @@ mod tests {
         let h = 0.05;
         let mut stepper = AnyMethod::<2>::new(method, StepControl::Fixed { step: h });
         if let Some(memory) = memory {
-            Method::<2, 1>::restart(&mut stepper, || Ok(memory)).unwrap();
+            Method::<2, 1>::restart(&mut stepper, || Ok(memory));
         }
         let end = stepper
             .integrate(&mut model, &start, h, &multipliers, true)
@@ -392,7 +383,7 @@ mod tests {
             .acceleration(&q, &v, 0.0, &Vector::from([-6.0]))
             .unwrap()
             .a;
-        Method::<2, 1>::restart(&mut stepper, || Ok(a0)).unwrap();
+        Method::<2, 1>::restart(&mut stepper, || Ok(a0));
         let mut step = |stepper: &mut AnyMethod<2>, h: f64| {
             stepper
                 .integrate(&mut model, &start, h, &multipliers, false)
