@@ -3,15 +3,21 @@
 Differential states x = (q, v), algebraic z = lambda:
     q' = v,  v' = M^-1 (F - G^T lambda),  0 = G v' + b  (the acceleration-level constraint).
 The position constraints are not enforced (index-1 drift); max_g reports how far they drift.
-Functions are CasADi SX expressions run by its virtual machine (no C code generation).
+Functions are CasADi SX expressions, evaluated in one of two modes:
+    vm       CasADi's SX virtual machine (the default);
+    codegen  the integrator's own JIT: CasADi generates C for the functions IDAS calls (the DAE
+             residual daeF and its Jacobian jacF), gcc -O3 compiles them into a .so it loads.
 
-Usage: python casadi_idas.py SCENE T_END RTOL [RTOL ...]
-Prints one line per tolerance:
+Usage: python casadi_idas.py [vm|codegen] SCENE T_END RTOL [RTOL ...]
+Prints once SETUP,<wall_seconds> (model and integrators built, in codegen mode including the C
+generation and the gcc runs; not part of any row's cpu_seconds), then one line per tolerance:
     ROW,<setting>,<steps>,<cpu_seconds>,<max_g>,<q...>,<v...>,<lambda...>
 or  FAIL,<setting>,<message>
 """
 import math
+import os
 import sys
+import tempfile
 import time
 
 import casadi as ca
@@ -98,8 +104,29 @@ def andrews():
 SCENES = {"pendulum": pendulum, "steam_generator": steam_generator, "andrews": andrews}
 
 
+# Integrator options per mode. With "jit" the integrator generates one C file holding the
+# functions it calls and compiles it with the "shell" plugin, here gcc -O3 (CasADi's default
+# command line adds only -fPIC).
+MODES = {
+    "vm": {},
+    "codegen": {"jit": True, "compiler": "shell",
+                # The temporary directory removes the files; CasADi's own cleanup would run
+                # after it and warn that they are gone.
+                "jit_cleanup": False,
+                "jit_options": {"compiler": "gcc", "flags": ["-O3"], "cleanup": False}},
+}
+
+
 def main():
-    scene, t_end, rtols = sys.argv[1], float(sys.argv[2]), [float(r) for r in sys.argv[3:]]
+    args = sys.argv[1:]
+    mode = args.pop(0) if args[0] in MODES else "vm"
+    scene, t_end, rtols = args[0], float(args[1]), [float(r) for r in args[2:]]
+    if mode == "codegen":
+        # The generated .c is written to the working directory: keep it and the .o/.so out of
+        # the repository, in a directory removed at exit.
+        work = tempfile.TemporaryDirectory(prefix="casadi_idas_")
+        os.chdir(work.name)
+    setup_start = time.perf_counter()
     q, v, t, M, F, gq, q0, v0 = SCENES[scene]()
     n, z = q.shape[0], gq.shape[0]
     lam = ca.SX.sym("lam", z)
@@ -113,11 +140,22 @@ def main():
     lam0 = lam0_fun(q0, v0, 0.0)
     g_fun = ca.Function("g", [q], [gq])
     grid = [t_end * k / 100.0 for k in range(1, 101)]
+    # All integrators are built (and in codegen mode compiled, once per tolerance, since the
+    # tolerances are integrator options) before any is timed, so SETUP stays out of the rows.
+    integrators = {}
+    for rtol in rtols:
+        opts = {"abstol": rtol * 1e-2, "reltol": rtol, "max_num_steps": 10**7, "calc_ic": True, "suppress_algebraic": True}
+        try:
+            integrators[rtol] = ca.integrator("F", "idas", dae, 0.0, grid, {**opts, **MODES[mode]})
+        except Exception as error:
+            integrators[rtol] = error
+    print(f"SETUP,{time.perf_counter() - setup_start:.6e}", flush=True)
     for rtol in rtols:
         setting = f"rtol={rtol:.0e}"
         try:
-            opts = {"abstol": rtol * 1e-2, "reltol": rtol, "max_num_steps": 10**7, "calc_ic": True, "suppress_algebraic": True}
-            integrator = ca.integrator("F", "idas", dae, 0.0, grid, opts)
+            integrator = integrators[rtol]
+            if isinstance(integrator, Exception):
+                raise integrator
             args = {"x0": ca.vertcat(*q0, *v0), "z0": lam0}
             result = integrator(**args)  # warm-up
             times = []

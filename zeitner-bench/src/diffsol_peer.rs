@@ -9,8 +9,9 @@
 use diffsol::{
     NalgebraLU, NalgebraMat, OdeBuilder, OdeSolverMethod, OdeSolverStopReason, Vector as _,
 };
-use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Options, Simulator, Vector};
+use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Vector};
 
+use crate::in_process::{consistent_start, timed_runs};
 use crate::measure::cpu_seconds;
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -43,55 +44,11 @@ pub fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     t_end: f64,
     rtols: &[f64],
 ) -> Vec<PeerRun> {
-    // The consistent start, from Zeitner's projection (the same for every method).
-    let consistent = match Simulator::new(scene, start.0, start.1, 0.0, Options::default()) {
-        Ok(sim) => sim.last().end,
-        Err(error) => {
-            return vec![PeerRun {
-                setting: "all".into(),
-                outcome: Err(error.to_string()),
-            }]
-        }
+    let y0 = match consistent_start(scene, start) {
+        Ok(y0) => y0,
+        Err(failure) => return vec![failure],
     };
-    let mut y0: Vec<f64> = consistent
-        .q
-        .iter()
-        .chain(consistent.v.iter())
-        .chain(consistent.lambda.iter())
-        .copied()
-        .collect();
-    y0.shrink_to_fit();
-    let n = 2 * N + Z;
-    rtols
-        .iter()
-        .map(|&rtol| {
-            let setting = format!("rtol={rtol:.0e}");
-            let mut times = Vec::new();
-            let mut last = None;
-            for repeat in 0..6 {
-                match integrate(scene, &y0, n, t_end, rtol) {
-                    Ok((end, cpu)) => {
-                        if repeat > 0 {
-                            times.push(cpu);
-                        }
-                        last = Some(end);
-                    }
-                    Err(message) => {
-                        return PeerRun {
-                            setting,
-                            outcome: Err(message),
-                        }
-                    }
-                }
-            }
-            let mut end = last.expect("six runs");
-            end.cpu_seconds = crate::measure::median(times);
-            PeerRun {
-                setting,
-                outcome: Ok(end),
-            }
-        })
-        .collect()
+    timed_runs(rtols, |rtol| integrate(scene, &y0, 2 * N + Z, t_end, rtol))
 }
 
 fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
@@ -100,7 +57,7 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     n: usize,
     t_end: f64,
     rtol: f64,
-) -> Result<(PeerEnd, f64), String> {
+) -> Result<PeerEnd, String> {
     let init = y0.to_vec();
     let problem = OdeBuilder::<NalgebraMat<f64>>::new()
         .rtol(rtol)
@@ -165,13 +122,10 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     let cpu = cpu_seconds() - before;
     let values = solver.state().y.clone_as_vec();
-    Ok((
-        PeerEnd {
-            steps,
-            cpu_seconds: cpu,
-            max_g,
-            values,
-        },
-        cpu,
-    ))
+    Ok(PeerEnd {
+        steps,
+        cpu_seconds: cpu,
+        max_g,
+        values,
+    })
 }

@@ -3,14 +3,19 @@
 //!
 //! `cargo run --release -p zeitner-bench -- work-precision` (`--quick` for a smoke run).
 
+#[cfg(feature = "differential-equations")]
+mod de_peer;
 #[cfg(feature = "diffsol")]
 mod diffsol_peer;
 #[path = "../../examples/support/figure.rs"]
 mod figure;
+mod first_result;
 mod fuzz;
 mod fuzz_command;
 mod hand_written;
 mod impacts;
+#[cfg(any(feature = "diffsol", feature = "differential-equations"))]
+mod in_process;
 mod measure;
 mod peers;
 mod scaling;
@@ -437,23 +442,45 @@ fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 
 /// Runs one configuration: `(method, setting, options, repeats)`.
 type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
-/// Runs the in-process peer (diffsol) for these relative tolerances; nothing without the feature.
-type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<peers::PeerRun>>;
+/// Runs the in-process peers for these relative tolerances: `(method, run)` for each peer
+/// built (`--features diffsol`, `--features differential-equations`).
+type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<(&'static str, peers::PeerRun)>>;
 
-fn diffsol_runner<S: ConstrainedSystem<N, Z> + 'static, const N: usize, const Z: usize>(
+/// The in-process peers on `scene`; `X = 2N` and `Y = 2N + Z` size the peers' state arrays.
+fn rust_peers<
+    S: ConstrainedSystem<N, Z> + 'static,
+    const N: usize,
+    const Z: usize,
+    const X: usize,
+    const Y: usize,
+>(
     scene: S,
     start: (Vector<N>, Vector<N>),
     t_end: f64,
 ) -> PeerRunner {
-    #[cfg(feature = "diffsol")]
-    {
-        Box::new(move |rtols: &[f64]| diffsol_peer::run(&scene, start, t_end, rtols))
-    }
-    #[cfg(not(feature = "diffsol"))]
-    {
-        let _ = (scene, start, t_end);
-        Box::new(|_: &[f64]| Vec::new())
-    }
+    Box::new(move |rtols: &[f64]| {
+        let mut runs: Vec<(&'static str, peers::PeerRun)> = Vec::new();
+        let mut add = |name: &'static str, results: Vec<peers::PeerRun>| {
+            runs.extend(results.into_iter().map(|run| (name, run)));
+        };
+        #[cfg(feature = "diffsol")]
+        add(
+            "peer-diffsol-bdf",
+            diffsol_peer::run(&scene, start, t_end, rtols),
+        );
+        #[cfg(feature = "differential-equations")]
+        {
+            use de_peer::Index;
+            let radau3 = de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Three, rtols);
+            add("peer-de-radau5-index3", radau3);
+            let radau2 = de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Two, rtols);
+            add("peer-de-radau5-index2", radau2);
+            let dop853 = de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols);
+            add("peer-de-dop853-projected", dop853);
+        }
+        let _ = (&mut add, &scene, start, t_end, rtols);
+        runs
+    })
 }
 
 /// A scene: how to run one configuration of it.
@@ -468,7 +495,7 @@ struct Scene {
     /// The reference end state, flattened: q, then v, then λ; and the sizes N, Z.
     reference: (Vec<f64>, usize, usize),
     run: Runner,
-    run_diffsol: PeerRunner,
+    run_rust_peers: PeerRunner,
 }
 
 fn pendulum_scene() -> Scene {
@@ -486,7 +513,7 @@ fn pendulum_scene() -> Scene {
         constraint_tolerance: 1e-12,
         tightest_rtol: 0.0,
         reference: flattened(&reference),
-        run_diffsol: diffsol_runner(
+        run_rust_peers: rust_peers::<_, 2, 1, 4, 5>(
             Pendulum {
                 m: 1.0,
                 length: 1.0,
@@ -523,7 +550,7 @@ fn steam_generator_scene() -> Scene {
         constraint_tolerance: 1e-10,
         tightest_rtol: 0.0,
         reference: flattened(&reference),
-        run_diffsol: diffsol_runner(
+        run_rust_peers: rust_peers::<_, 3, 2, 6, 8>(
             SteamGenerator::paper(),
             (Vector::<3>::zeros(), Vector::zeros()),
             t_end,
@@ -583,7 +610,7 @@ fn knife_edge_scene() -> Scene {
         constraint_tolerance: 1e-12,
         tightest_rtol: 0.0,
         reference: flattened(&reference),
-        run_diffsol: diffsol_runner(KnifeEdge::PAPER, start, t_end),
+        run_rust_peers: rust_peers::<_, 3, 1, 6, 7>(KnifeEdge::PAPER, start, t_end),
         run: Box::new(move |method, setting, options, repeats| {
             measure(
                 "knife_edge",
@@ -614,7 +641,7 @@ fn spring_support_scene() -> Scene {
         // Beyond, Dormand–Prince's steps are bound by the support (millions per second).
         tightest_rtol: 1e-9,
         reference: flattened(&reference),
-        run_diffsol: diffsol_runner(SpringSupportedPendulum::STIFF, start, t_end),
+        run_rust_peers: rust_peers::<_, 4, 1, 8, 9>(SpringSupportedPendulum::STIFF, start, t_end),
         run: Box::new(move |method, setting, options, repeats| {
             measure(
                 "spring_support",
@@ -685,7 +712,7 @@ fn andrews_scene() -> Result<Scene, String> {
         constraint_tolerance: 1e-12,
         tightest_rtol: 0.0,
         reference: flattened(&reference),
-        run_diffsol: diffsol_runner(
+        run_rust_peers: rust_peers::<_, 7, 6, 14, 20>(
             Andrews::published(),
             (Vector::from(Andrews::Q0), Vector::zeros()),
             t_end,
@@ -722,8 +749,9 @@ fn flattened<const N: usize, const Z: usize>(state: &State<N, Z>) -> (Vec<f64>, 
     )
 }
 
-/// The peers' rows for every scene they model; a peer that is unavailable is said so once.
-fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
+/// The peers' rows for every scene they model, and the setup times they reported as
+/// `(scene, peer, seconds)`; a peer that is unavailable is said so once.
+fn peer_rows(scenes: &[Scene], args: &Args) -> (Vec<Row>, Vec<(&'static str, &'static str, f64)>) {
     let rtols: &[f64] = if args.quick {
         &[1e-5, 1e-8]
     } else {
@@ -736,6 +764,7 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
         &[1e-2, 3e-3, 1e-3, 3e-4, 1e-4]
     };
     let mut rows = Vec::new();
+    let mut setups = Vec::new();
     match peers::python(&args.output_dir) {
         Ok(python) => {
             for peer in &peers::PEERS {
@@ -748,7 +777,7 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
                     } else {
                         rtols.to_vec()
                     };
-                    let runs = peers::run(
+                    let (runs, setup) = peers::run(
                         &python,
                         peer,
                         scene.name,
@@ -757,23 +786,28 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> Vec<Row> {
                         scene.reference.0.len(),
                     );
                     rows.extend(runs.into_iter().map(|run| peer_row(scene, peer.name, run)));
+                    setups.extend(setup.map(|seconds| (scene.name, peer.name, seconds)));
                 }
             }
         }
         Err(reason) => println!("Python peers unavailable: {reason}"),
     }
-    if cfg!(feature = "diffsol") {
-        for scene in scenes {
-            rows.extend(
-                (scene.run_diffsol)(rtols)
-                    .into_iter()
-                    .map(|run| peer_row(scene, "peer-diffsol-bdf", run)),
-            );
-        }
-    } else {
+    for scene in scenes {
+        rows.extend(
+            (scene.run_rust_peers)(rtols)
+                .into_iter()
+                .map(|(name, run)| peer_row(scene, name, run)),
+        );
+    }
+    if !cfg!(feature = "diffsol") {
         println!("peer-diffsol-bdf not built: add --features diffsol");
     }
-    rows
+    if !cfg!(feature = "differential-equations") {
+        println!(
+            "the differential-equations peers not built: add --features differential-equations"
+        );
+    }
+    (rows, setups)
 }
 
 /// A peer's run as a row, its errors measured against the scene's reference.
@@ -901,8 +935,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     progress.finish_and_clear();
     std::fs::create_dir_all(&args.output_dir)?;
+    let mut first_results = String::new();
     if args.peers {
-        rows.extend(peer_rows(&scenes, &args));
+        let (peer_rows, setups) = peer_rows(&scenes, &args);
+        rows.extend(peer_rows);
+        let names: Vec<&str> = scenes.iter().map(|s| s.name).collect();
+        first_results =
+            first_result::markdown(&names, &setups, &args.output_dir.join("first_result"));
     }
 
     for scene in &scenes {
@@ -947,6 +986,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let scaling = chain_scaling(repeats, &args.output_dir)?;
     let mut summary = summary_markdown(&scenes, &rows, repeats);
+    summary.push_str(&first_results);
     summary.push_str(&scaling);
     print!("{summary}");
     if !args.quick {

@@ -29,11 +29,18 @@ pub struct Peer {
     pub fixed_steps: bool,
 }
 
-pub const PEERS: [Peer; 3] = [
+pub const PEERS: [Peer; 4] = [
     Peer {
         name: "peer-casadi-idas",
         script: "casadi_idas.py",
-        leading_args: &[],
+        leading_args: &["vm"],
+        scenes: &["pendulum", "steam_generator", "andrews"],
+        fixed_steps: false,
+    },
+    Peer {
+        name: "peer-casadi-idas-c",
+        script: "casadi_idas.py",
+        leading_args: &["codegen"],
         scenes: &["pendulum", "steam_generator", "andrews"],
         fixed_steps: false,
     },
@@ -99,7 +106,8 @@ pub fn python(dir: &Path) -> Result<PathBuf, String> {
     }
 }
 
-/// Runs `peer` on `scene` for each setting (a relative tolerance or a step count).
+/// Runs `peer` on `scene` for each setting (a relative tolerance or a step count); also the
+/// wall seconds of its setup (model, integrators, code generation), where the script says.
 pub fn run(
     python: &Path,
     peer: &Peer,
@@ -107,7 +115,7 @@ pub fn run(
     t_end: f64,
     settings: &[f64],
     values: usize,
-) -> Vec<PeerRun> {
+) -> (Vec<PeerRun>, Option<f64>) {
     let script = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("peers")
         .join(peer.script);
@@ -121,13 +129,18 @@ pub fn run(
     let output = match output {
         Ok(output) => output,
         Err(error) => {
-            return vec![PeerRun {
+            let failure = PeerRun {
                 setting: "all".into(),
                 outcome: Err(format!("could not run {}: {error}", peer.script)),
-            }]
+            };
+            return (vec![failure], None);
         }
     };
-    String::from_utf8_lossy(&output.stdout)
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let setup = stdout
+        .lines()
+        .find_map(|line| line.strip_prefix("SETUP,")?.trim().parse().ok());
+    let runs = stdout
         .lines()
         .filter_map(|line| {
             let fields: Vec<&str> = line.split(',').collect();
@@ -154,5 +167,6 @@ pub fn run(
                 _ => None,
             }
         })
-        .collect()
+        .collect();
+    (runs, setup)
 }

@@ -1,0 +1,407 @@
+//! Peers: the `differential-equations` crate (0.7), in process, calling the scenes' generated
+//! functions, so that model evaluation costs the same as for Zeitner.
+//!
+//! - **Radau5** (Hairer–Wanner's RADAU5) on the index-3 formulation, y = (q, q', λ) with the
+//!   DAE mass matrix diag(I, I, 0):  q' = v,  v' = M⁻¹(F − Gᵀλ),  0 = g(q, q', t);
+//!   and on the index-2 formulation, whose position rows are replaced by their rates
+//!   ġ = G q' + ∂g/∂t. The variables' indices are declared as RADAU5 asks (q index 1; v index 2
+//!   where there are position rows; λ index 3 for position rows, 2 for velocity rows), and the
+//!   Jacobian is exact, from the scene's generated derivatives. The one term the scenes do not
+//!   generate, ∂(∂g/∂t)/∂q of rheonomic rows in the index-2 form, is a forward difference.
+//! - **DOP853** on the index-1 ODE y = (q, q'), with v' from [M Gᵀ; G 0](v', λ) = (F, −b),
+//!   projected back onto g = 0 and ġ = 0 (M-orthogonally) when a step leaves them by more than
+//!   the absolute tolerance; the crate restarts the method from a projected state.
+//!
+//! Fixed sizes: the state arrays `[f64; Y]` with `Y = 2N + Z` (Radau5) and `[f64; X]` with
+//! `X = 2N` (DOP853), given by each scene.
+
+use differential_equations::prelude::*;
+use differential_equations::solout::Solout;
+use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Vector};
+
+use crate::in_process::{consistent_start, timed_runs};
+use crate::measure::cpu_seconds;
+use crate::peers::{PeerEnd, PeerRun};
+
+/// Which constraint rows the DAE holds: the constraints themselves, or their rates.
+#[derive(Clone, Copy, PartialEq)]
+pub enum Index {
+    Three,
+    Two,
+}
+
+struct Dae<'s, S, const N: usize, const Z: usize> {
+    scene: &'s S,
+    index: Index,
+}
+
+/// `(q, v, λ)` of a stacked state.
+fn split<const N: usize, const Z: usize>(y: &[f64]) -> (Vector<N>, Vector<N>, Vector<Z>) {
+    (
+        Vector::from_column_slice(&y[..N]),
+        Vector::from_column_slice(&y[N..2 * N]),
+        Vector::from_column_slice(&y[2 * N..2 * N + Z]),
+    )
+}
+
+/// `M⁻¹(F − Gᵀλ)`, or `None` where the mass matrix is singular.
+fn acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v, lambda): (&Vector<N>, &Vector<N>, &Vector<Z>),
+    t: f64,
+) -> Option<Vector<N>> {
+    let factor = scene.mass_matrix(q, t).factor()?;
+    let g = scene.constraint_jacobian(q, v, t);
+    Some(factor.solve(&(scene.applied_force(q, v, t) - g.tr_mul(lambda))))
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize> DAE<f64, [f64; Y]>
+    for Dae<'_, S, N, Z>
+{
+    fn diff(&self, t: f64, y: &[f64; Y], f: &mut [f64; Y]) {
+        let (q, v, lambda) = split::<N, Z>(y);
+        let Some(a) = acceleration(self.scene, (&q, &v, &lambda), t) else {
+            f.fill(f64::NAN);
+            return;
+        };
+        let algebraic = match self.index {
+            Index::Three => self.scene.constraint_residual(&q, &v, t),
+            Index::Two => self.scene.constraint_rate(&q, &v, t),
+        };
+        f[..N].copy_from_slice(v.as_slice());
+        f[N..2 * N].copy_from_slice(a.as_slice());
+        f[2 * N..].copy_from_slice(algebraic.as_slice());
+    }
+
+    fn mass(&self, m: &mut differential_equations::linalg::Matrix<f64>) {
+        for i in 0..2 * N {
+            m[(i, i)] = 1.0;
+        }
+    }
+
+    fn jacobian(&self, t: f64, y: &[f64; Y], j: &mut differential_equations::linalg::Matrix<f64>) {
+        let scene = self.scene;
+        let (q, v, lambda) = split::<N, Z>(y);
+        let mut full = Matrix::<Y, Y>::zeros();
+        let Some(factor) = scene.mass_matrix(&q, t).factor() else {
+            (0..Y).for_each(|r| (0..Y).for_each(|c| j[(r, c)] = f64::NAN));
+            return;
+        };
+        let g = scene.constraint_jacobian(&q, &v, t);
+        let a = factor.solve(&(scene.applied_force(&q, &v, t) - g.tr_mul(&lambda)));
+        let (force_q, force_v) = scene.force_jacobians(&q, &v, t);
+        let (reaction_q, reaction_v) = scene.constraint_force_jacobians(&q, &v, t, &lambda);
+        let inertia_q = scene.mass_jacobian_product(&q, t, &a);
+        // q' = v
+        full.view_mut((0, N), (N, N)).fill_with_identity();
+        // v' = M⁻¹(F − Gᵀλ): ∂/∂q, ∂/∂v, ∂/∂λ
+        let dq = factor.solve(&(force_q - reaction_q - inertia_q));
+        let dv = factor.solve(&(force_v - reaction_v));
+        let dlambda = -factor.solve(&g.transpose());
+        full.view_mut((N, 0), (N, N)).copy_from(&dq);
+        full.view_mut((N, N), (N, N)).copy_from(&dv);
+        full.view_mut((N, 2 * N), (N, Z)).copy_from(&dlambda);
+        // The algebraic rows.
+        let positions = S::POSITION_CONSTRAINTS;
+        let (rows_q, rows_v) = match self.index {
+            Index::Three => {
+                let mut rows_v = g;
+                rows_v.rows_mut(0, positions).fill(0.0);
+                (scene.constraint_position_partials(&q, &v, t), rows_v)
+            }
+            Index::Two => (rate_position_partials(scene, &q, &v, t), g),
+        };
+        full.view_mut((2 * N, 0), (Z, N)).copy_from(&rows_q);
+        full.view_mut((2 * N, N), (Z, N)).copy_from(&rows_v);
+        for r in 0..Y {
+            for c in 0..Y {
+                j[(r, c)] = full[(r, c)];
+            }
+        }
+    }
+}
+
+/// `∂ġ/∂q` of the index-2 form: `∂(G q')/∂q` exact from the generated `∂(Gᵀλ)/∂q` with λ the
+/// unit vectors; the rest (`∂(∂g/∂t)/∂q`, zero for scleronomic rows) a forward difference.
+/// Velocity rows: `∂g/∂q`, generated.
+fn rate_position_partials<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    q: &Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+) -> Matrix<Z, N> {
+    let mut rows = scene.constraint_position_partials(q, v, t);
+    let time_part =
+        |q: &Vector<N>| scene.constraint_rate(q, v, t) - scene.constraint_jacobian(q, v, t) * v;
+    let base = time_part(q);
+    for r in 0..S::POSITION_CONSTRAINTS {
+        let unit = Vector::<Z>::from_fn(|k, _| if k == r { 1.0 } else { 0.0 });
+        let (hessian, _) = scene.constraint_force_jacobians(q, v, t, &unit);
+        rows.set_row(r, &(v.transpose() * hessian));
+    }
+    for c in 0..N {
+        let step = f64::EPSILON.sqrt() * q[c].abs().max(1.0);
+        let mut shifted = *q;
+        shifted[c] += step;
+        let column = (time_part(&shifted) - base) / step;
+        for r in 0..S::POSITION_CONSTRAINTS {
+            rows[(r, c)] += column[r];
+        }
+    }
+    rows
+}
+
+/// Keeps the last state and the largest constraint residual over the accepted steps; with
+/// `project`, moves a state that left the constraints by more than `tolerance` back onto them.
+struct EndState<'s, 'r, S, const N: usize, const Z: usize, const Y: usize> {
+    scene: &'s S,
+    record: &'r mut Record<Y>,
+    projection: Option<f64>,
+}
+
+struct Record<const Y: usize> {
+    last: [f64; Y],
+    max_g: f64,
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
+    Solout<f64, [f64; Y]> for EndState<'_, '_, S, N, Z, Y>
+{
+    fn solout<I>(
+        &mut self,
+        t: f64,
+        _t_prev: f64,
+        y: &[f64; Y],
+        _y_prev: &[f64; Y],
+        _interpolator: &mut I,
+        _solution: &mut Solution<f64, [f64; Y]>,
+    ) -> ControlFlag<f64, [f64; Y]>
+    where
+        I: Interpolation<f64, [f64; Y]> + ?Sized,
+    {
+        self.record.last = *y;
+        let q = Vector::<N>::from_column_slice(&y[..N]);
+        let v = Vector::<N>::from_column_slice(&y[N..2 * N]);
+        let position = self.scene.constraint_residual(&q, &v, t);
+        let residual = position.rows(0, S::POSITION_CONSTRAINTS).amax();
+        self.record.max_g = self.record.max_g.max(residual);
+        let Some(tolerance) = self.projection else {
+            return ControlFlag::Continue;
+        };
+        if residual <= tolerance && self.scene.constraint_rate(&q, &v, t).amax() <= tolerance {
+            return ControlFlag::Continue;
+        }
+        match project(self.scene, q, v, t) {
+            Some((q, v)) => {
+                let mut projected = *y;
+                projected[..N].copy_from_slice(q.as_slice());
+                projected[N..2 * N].copy_from_slice(v.as_slice());
+                self.record.last = projected;
+                ControlFlag::ModifyState(t, projected)
+            }
+            None => ControlFlag::Terminate,
+        }
+    }
+}
+
+/// The M-orthogonal projection onto `g = 0` (position rows, Newton with a frozen matrix) and
+/// then onto `ġ = 0` (all rows, linear in v); `None` where a matrix is singular.
+fn project<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    mut q: Vector<N>,
+    mut v: Vector<N>,
+    t: f64,
+) -> Option<(Vector<N>, Vector<N>)> {
+    let positions = S::POSITION_CONSTRAINTS;
+    let factor = scene.mass_matrix(&q, t).factor()?;
+    let g = scene.constraint_jacobian(&q, &v, t);
+    let directions = factor.solve(&g.transpose());
+    if positions > 0 {
+        // The Gram matrix with the velocity rows' corrections zeroed: only positions move.
+        let mut residual_rows = Matrix::<Z, Z>::identity();
+        for r in positions..Z {
+            residual_rows[(r, r)] = 0.0;
+        }
+        let mut gram = g * directions;
+        for r in positions..Z {
+            gram.row_mut(r).fill(0.0);
+            gram.column_mut(r).fill(0.0);
+            gram[(r, r)] = 1.0;
+        }
+        let gram = gram.cholesky()?;
+        for _ in 0..4 {
+            let residual = residual_rows * scene.constraint_residual(&q, &v, t);
+            q -= directions * gram.solve(&residual);
+        }
+    }
+    let g = scene.constraint_jacobian(&q, &v, t);
+    let factor = scene.mass_matrix(&q, t).factor()?;
+    let directions = factor.solve(&g.transpose());
+    let multipliers = (g * directions)
+        .cholesky()?
+        .solve(&scene.constraint_rate(&q, &v, t));
+    v -= directions * multipliers;
+    Some((q, v))
+}
+
+/// The index-1 ODE of DOP853: y = (q, v).
+struct Index1<'s, S, const N: usize, const Z: usize> {
+    scene: &'s S,
+}
+
+/// The multipliers of the index-1 form at `(q, v)`: `G M⁻¹Gᵀ λ = G M⁻¹F + b`.
+fn index1_multipliers<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    q: &Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+) -> Option<Vector<Z>> {
+    let factor = scene.mass_matrix(q, t).factor()?;
+    let g = scene.constraint_jacobian(q, v, t);
+    let free = factor.solve(&scene.applied_force(q, v, t));
+    let gram = g * factor.solve(&g.transpose());
+    Some(
+        gram.cholesky()?
+            .solve(&(g * free + scene.constraint_acceleration_bias(q, v, t))),
+    )
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const X: usize> ODE<f64, [f64; X]>
+    for Index1<'_, S, N, Z>
+{
+    fn diff(&self, t: f64, y: &[f64; X], f: &mut [f64; X]) {
+        let q = Vector::<N>::from_column_slice(&y[..N]);
+        let v = Vector::<N>::from_column_slice(&y[N..]);
+        let a = index1_multipliers(self.scene, &q, &v, t)
+            .and_then(|lambda| acceleration(self.scene, (&q, &v, &lambda), t));
+        match a {
+            Some(a) => {
+                f[..N].copy_from_slice(v.as_slice());
+                f[N..].copy_from_slice(a.as_slice());
+            }
+            None => f.fill(f64::NAN),
+        }
+    }
+}
+
+/// The absolute tolerance used with `rtol`, as for the other peers; the multipliers are left
+/// out of the error test where the method allows (RADAU5 scales them by the index instead).
+fn atol(rtol: f64) -> f64 {
+    rtol * 1e-2
+}
+
+/// Radau5 on the index-3 or index-2 formulation, for each relative tolerance.
+pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>(
+    scene: &S,
+    start: (Vector<N>, Vector<N>),
+    t_end: f64,
+    index: Index,
+    rtols: &[f64],
+) -> Vec<PeerRun> {
+    assert_eq!(Y, 2 * N + Z, "Radau5's state is (q, v, λ)");
+    let y0 = match consistent_start(scene, start) {
+        Ok(y0) => y0,
+        Err(failure) => return vec![failure],
+    };
+    let mut start = [0.0; Y];
+    start.copy_from_slice(&y0);
+    let dae = Dae { scene, index };
+    let positions = S::POSITION_CONSTRAINTS;
+    let (velocity_index, position_lambda_index) = match index {
+        Index::Three => (if positions > 0 { 2 } else { 1 }, 3),
+        Index::Two => (1, 2),
+    };
+    let by_index = |wanted: usize| -> Vec<usize> {
+        (N..Y)
+            .filter(|&i| {
+                let index = match i {
+                    i if i < 2 * N => velocity_index,
+                    i if i - 2 * N < positions => position_lambda_index,
+                    _ => 2,
+                };
+                index == wanted
+            })
+            .collect()
+    };
+    timed_runs(rtols, |rtol| {
+        let mut end = Record {
+            last: start,
+            max_g: 0.0,
+        };
+        let solout = EndState::<S, N, Z, Y> {
+            scene,
+            record: &mut end,
+            projection: None,
+        };
+        // Per-component tolerances: 0.7.0 rescales a scalar tolerance once per component
+        // (RADAU5's rtol → 0.1·rtol^(2/3), n times over), which pins it near 1e-3.
+        let method = ImplicitRungeKutta::radau5()
+            .rtol([rtol; Y])
+            .atol([atol(rtol); Y])
+            .index2_equations(by_index(2))
+            .index3_equations(by_index(3))
+            .max_steps(10_000_000);
+        let before = cpu_seconds();
+        let solution = IVP::dae(&dae, 0.0, t_end, start)
+            .method(method)
+            .solout(solout)
+            .solve()
+            .map_err(|e| format!("{e:?}"))?;
+        let cpu = cpu_seconds() - before;
+        Ok(PeerEnd {
+            steps: solution.steps.accepted as u64,
+            cpu_seconds: cpu,
+            max_g: end.max_g,
+            values: end.last.to_vec(),
+        })
+    })
+}
+
+/// DOP853 on the index-1 ODE with projection, for each relative tolerance.
+pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const X: usize>(
+    scene: &S,
+    start: (Vector<N>, Vector<N>),
+    t_end: f64,
+    rtols: &[f64],
+) -> Vec<PeerRun> {
+    assert_eq!(X, 2 * N, "DOP853's state is (q, v)");
+    let y0 = match consistent_start(scene, start) {
+        Ok(y0) => y0,
+        Err(failure) => return vec![failure],
+    };
+    let mut start = [0.0; X];
+    start.copy_from_slice(&y0[..X]);
+    let ode = Index1 { scene };
+    timed_runs(rtols, |rtol| {
+        let mut end = Record {
+            last: start,
+            max_g: 0.0,
+        };
+        let solout = EndState::<S, N, Z, X> {
+            scene,
+            record: &mut end,
+            projection: Some(atol(rtol)),
+        };
+        let method = ExplicitRungeKutta::dop853()
+            .rtol(rtol)
+            .atol(atol(rtol))
+            .max_steps(10_000_000);
+        let before = cpu_seconds();
+        let solution = IVP::ode(&ode, 0.0, t_end, start)
+            .method(method)
+            .solout(solout)
+            .solve()
+            .map_err(|e| format!("{e:?}"))?;
+        let cpu = cpu_seconds() - before;
+        let q = Vector::<N>::from_column_slice(&end.last[..N]);
+        let v = Vector::<N>::from_column_slice(&end.last[N..]);
+        let lambda = index1_multipliers(scene, &q, &v, t_end)
+            .ok_or("the multipliers at the end are singular")?;
+        Ok(PeerEnd {
+            steps: solution.steps.accepted as u64,
+            cpu_seconds: cpu,
+            max_g: end.max_g,
+            values: end.last.iter().chain(lambda.iter()).copied().collect(),
+        })
+    })
+}

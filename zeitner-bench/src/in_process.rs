@@ -1,0 +1,68 @@
+//! What the in-process Rust peers share: the consistent start and the timed repeats.
+
+use zeitner::{ConstrainedSystem, Options, Simulator, Vector};
+
+use crate::measure::median;
+use crate::peers::{PeerEnd, PeerRun};
+
+/// The consistent start `(q, v, λ)` from Zeitner's projection, the same for every method; a
+/// failure as the peer's one result.
+pub fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    start: (Vector<N>, Vector<N>),
+) -> Result<Vec<f64>, PeerRun> {
+    match Simulator::new(scene, start.0, start.1, 0.0, Options::default()) {
+        Ok(sim) => {
+            let end = sim.last().end;
+            Ok(end
+                .q
+                .iter()
+                .chain(end.v.iter())
+                .chain(end.lambda.iter())
+                .copied()
+                .collect())
+        }
+        Err(error) => Err(PeerRun {
+            setting: "all".into(),
+            outcome: Err(error.to_string()),
+        }),
+    }
+}
+
+/// Runs an in-process peer six times per relative tolerance and keeps the median CPU time of
+/// the last five (`integrate` times its integration alone, setup excluded, in `cpu_seconds`).
+pub fn timed_runs(
+    rtols: &[f64],
+    mut integrate: impl FnMut(f64) -> Result<PeerEnd, String>,
+) -> Vec<PeerRun> {
+    rtols
+        .iter()
+        .map(|&rtol| {
+            let setting = format!("rtol={rtol:.0e}");
+            let mut times = Vec::new();
+            let mut last = None;
+            for repeat in 0..6 {
+                match integrate(rtol) {
+                    Ok(end) => {
+                        if repeat > 0 {
+                            times.push(end.cpu_seconds);
+                        }
+                        last = Some(end);
+                    }
+                    Err(message) => {
+                        return PeerRun {
+                            setting,
+                            outcome: Err(message),
+                        }
+                    }
+                }
+            }
+            let mut end = last.expect("six runs");
+            end.cpu_seconds = median(times);
+            PeerRun {
+                setting,
+                outcome: Ok(end),
+            }
+        })
+        .collect()
+}
