@@ -19,7 +19,7 @@ use differential_equations::prelude::*;
 use differential_equations::solout::Solout;
 use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Vector};
 
-use crate::in_process::{consistent_start, timed_runs};
+use crate::in_process::{acceleration_jacobians, consistent_start, timed_runs};
 use crate::measure::cpu_seconds;
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -83,21 +83,14 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
         let scene = self.scene;
         let (q, v, lambda) = split::<N, Z>(y);
         let mut full = Matrix::<Y, Y>::zeros();
-        let Some(factor) = scene.mass_matrix(&q, t).factor() else {
+        let Some((dq, dv, dlambda, _)) = acceleration_jacobians(scene, (&q, &v, &lambda), t)
+        else {
             (0..Y).for_each(|r| (0..Y).for_each(|c| j[(r, c)] = f64::NAN));
             return;
         };
         let g = scene.constraint_jacobian(&q, &v, t);
-        let a = factor.solve(&(scene.applied_force(&q, &v, t) - g.tr_mul(&lambda)));
-        let (force_q, force_v) = scene.force_jacobians(&q, &v, t);
-        let (reaction_q, reaction_v) = scene.constraint_force_jacobians(&q, &v, t, &lambda);
-        let inertia_q = scene.mass_jacobian_product(&q, t, &a);
         // q' = v
         full.view_mut((0, N), (N, N)).fill_with_identity();
-        // v' = M⁻¹(F − Gᵀλ): ∂/∂q, ∂/∂v, ∂/∂λ
-        let dq = factor.solve(&(force_q - reaction_q - inertia_q));
-        let dv = factor.solve(&(force_v - reaction_v));
-        let dlambda = -factor.solve(&g.transpose());
         full.view_mut((N, 0), (N, N)).copy_from(&dq);
         full.view_mut((N, N), (N, N)).copy_from(&dv);
         full.view_mut((N, 2 * N), (N, Z)).copy_from(&dlambda);
@@ -404,4 +397,65 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
             values: end.last.iter().chain(lambda.iter()).copied().collect(),
         })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenes::andrews::Andrews;
+    use crate::scenes::knife_edge::KnifeEdge;
+    use crate::scenes::spring_support::SpringSupportedPendulum;
+
+    /// Radau5's Jacobian, both forms, against central differences of its `f` at a consistent
+    /// start set moving.
+    fn check<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>(
+        scene: &S,
+        start: (Vector<N>, Vector<N>),
+    ) {
+        let Ok(start) = consistent_start(scene, start) else {
+            panic!("a consistent start")
+        };
+        let mut y = [0.0; Y];
+        y.copy_from_slice(&start);
+        y.iter_mut()
+            .enumerate()
+            .skip(N)
+            .for_each(|(i, x)| *x += 0.1 * (i as f64 + 1.0).sin());
+        let t = 0.01;
+        for index in [Index::Three, Index::Two] {
+            let dae = Dae { scene, index };
+            let mut j = differential_equations::linalg::Matrix::zeros(Y, Y);
+            dae.jacobian(t, &y, &mut j);
+            for c in 0..Y {
+                let h = 1e-6 * y[c].abs().max(1.0);
+                let (mut up, mut down) = (y, y);
+                up[c] += h;
+                down[c] -= h;
+                let (mut f_up, mut f_down) = ([0.0; Y], [0.0; Y]);
+                dae.diff(t, &up, &mut f_up);
+                dae.diff(t, &down, &mut f_down);
+                for r in 0..Y {
+                    let difference = (f_up[r] - f_down[r]) / (2.0 * h);
+                    let scale = difference.abs().max(j[(r, c)].abs()).max(1.0);
+                    assert!(
+                        (difference - j[(r, c)]).abs() <= 1e-5 * scale,
+                        "∂f{r}/∂y{c}: {} against {difference}",
+                        j[(r, c)]
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn jacobians_match_central_differences() {
+        let spring = SpringSupportedPendulum::STIFF;
+        check::<_, 4, 1, 9>(&spring, (Vector::from(spring.start()), Vector::zeros()));
+        check::<_, 7, 6, 20>(
+            &Andrews::published(),
+            (Vector::from(Andrews::Q0), Vector::zeros()),
+        );
+        let knife = KnifeEdge::PAPER;
+        check::<_, 3, 1, 7>(&knife, (Vector::zeros(), Vector::<3>::new(0.0, 0.0, 2.0)));
+    }
 }

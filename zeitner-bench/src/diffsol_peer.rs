@@ -1,17 +1,22 @@
-//! Peer: diffsol's BDF (variable order, NDF formulas) on the index-1 formulation, in-process.
+//! Peers: diffsol's BDF (variable order, NDF formulas), ESDIRK 3(4) and TR-BDF2 on the index-1
+//! formulation, in process.
 //!
 //! State y = (q, q', λ) with the mass matrix diag(I, I, 0):
 //!   q' = v,  v' = M⁻¹(F - Gᵀλ),  0 = G v' + b (the acceleration-level constraint).
 //! The right-hand side calls the scene's generated functions, so model evaluation costs the same
-//! as for Zeitner; diffsol's Jacobian-vector products are directional finite differences of it.
+//! as for Zeitner; the Jacobian-vector products multiply by the Jacobian of [`jacobian`].
 //! The position constraints drift (index 1); `max_g` says how far.
 
+use std::cell::RefCell;
+
 use diffsol::{
-    NalgebraLU, NalgebraMat, OdeBuilder, OdeSolverMethod, OdeSolverStopReason, Vector as _,
+    DiffsolError, NalgebraLU, NalgebraMat, NalgebraVec, OdeBuilder, OdeEquationsImplicit,
+    OdeSolverMethod, OdeSolverStopReason, Vector as _,
 };
+use zeitner::__private::nalgebra::DMatrix;
 use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Vector};
 
-use crate::in_process::{consistent_start, timed_runs};
+use crate::in_process::{acceleration_jacobians, consistent_start, timed_runs};
 use crate::measure::cpu_seconds;
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -37,28 +42,89 @@ fn rhs<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     out[2 * N..].copy_from_slice(algebraic.as_slice());
 }
 
-/// Runs diffsol's BDF on `scene` from its consistent start to `t_end` for each tolerance.
+/// The diffsol method.
+#[derive(Clone, Copy)]
+pub enum Method {
+    Bdf,
+    Esdirk34,
+    TrBdf2,
+}
+
+/// The Jacobian of `f` at one point, exact from the scene's generated derivatives except for
+/// `∂b/∂(q, v)` in the algebraic rows `G a + b` (third derivatives of `g`, which the scenes do
+/// not generate; forward differences of `b`, which is small beside `G a`). Kept while diffsol
+/// multiplies by its columns.
+fn jacobian<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    y: &[f64],
+    t: f64,
+) -> DMatrix<f64> {
+    let n = 2 * N + Z;
+    let q = Vector::<N>::from_column_slice(&y[..N]);
+    let v = Vector::<N>::from_column_slice(&y[N..2 * N]);
+    let lambda = Vector::<Z>::from_column_slice(&y[2 * N..]);
+    let mut j = DMatrix::<f64>::zeros(n, n);
+    let Some((dq, dv, dlambda, a)) = acceleration_jacobians(scene, (&q, &v, &lambda), t) else {
+        return DMatrix::from_element(n, n, f64::NAN);
+    };
+    let g = scene.constraint_jacobian(&q, &v, t);
+    j.view_mut((0, N), (N, N)).fill_with_identity();
+    j.view_mut((N, 0), (N, N)).copy_from(&dq);
+    j.view_mut((N, N), (N, N)).copy_from(&dv);
+    j.view_mut((N, 2 * N), (N, Z)).copy_from(&dlambda);
+    j.view_mut((2 * N, 0), (Z, N)).copy_from(&(g * dq));
+    j.view_mut((2 * N, N), (Z, N)).copy_from(&(g * dv));
+    j.view_mut((2 * N, 2 * N), (Z, Z)).copy_from(&(g * dlambda));
+    // ∂(G a)/∂(q, v) at fixed a, row by row: the generated ∂(Gᵀλ)/∂(q, v) with λ = e_r.
+    for r in 0..Z {
+        let unit = Vector::<Z>::from_fn(|k, _| if k == r { 1.0 } else { 0.0 });
+        let (row_q, row_v) = scene.constraint_force_jacobians(&q, &v, t, &unit);
+        for c in 0..N {
+            j[(2 * N + r, c)] += row_q.column(c).dot(&a);
+            j[(2 * N + r, N + c)] += row_v.column(c).dot(&a);
+        }
+    }
+    // ∂b/∂(q, v): b holds second derivatives of g, its derivatives third ones, not generated.
+    let bias = |q: &Vector<N>, v: &Vector<N>| scene.constraint_acceleration_bias(q, v, t);
+    let base = bias(&q, &v);
+    for c in 0..2 * N {
+        let (mut q, mut v) = (q, v);
+        let x = if c < N { &mut q[c] } else { &mut v[c - N] };
+        let step = f64::EPSILON.sqrt() * x.abs().max(1.0);
+        *x += step;
+        let column = (bias(&q, &v) - base) / step;
+        for r in 0..Z {
+            j[(2 * N + r, c)] += column[r];
+        }
+    }
+    j
+}
+
+/// Runs diffsol's `method` on `scene` from its consistent start to `t_end` for each tolerance.
 pub fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     start: (Vector<N>, Vector<N>),
     t_end: f64,
+    method: Method,
     rtols: &[f64],
 ) -> Vec<PeerRun> {
     let y0 = match consistent_start(scene, start) {
         Ok(y0) => y0,
         Err(failure) => return vec![failure],
     };
-    timed_runs(rtols, |rtol| integrate(scene, &y0, 2 * N + Z, t_end, rtol))
+    timed_runs(rtols, |rtol| integrate(scene, &y0, t_end, method, rtol))
 }
 
 fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     y0: &[f64],
-    n: usize,
     t_end: f64,
+    method: Method,
     rtol: f64,
 ) -> Result<PeerEnd, String> {
+    let n = 2 * N + Z;
     let init = y0.to_vec();
+    let kept: RefCell<Option<(Vec<f64>, f64, DMatrix<f64>)>> = RefCell::new(None);
     let problem = OdeBuilder::<NalgebraMat<f64>>::new()
         .rtol(rtol)
         // The multipliers are left out of the error test, as for IDAS (suppress_algebraic).
@@ -71,21 +137,14 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         .rhs_implicit(
             |x: &[f64], _p: &[f64], t: f64, y: &mut [f64]| rhs(scene, x, t, y),
             |x: &[f64], _p: &[f64], t: f64, v: &[f64], y: &mut [f64]| {
-                // Directional finite difference of the right-hand side.
-                let norm = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-                if norm == 0.0 {
-                    y.iter_mut().for_each(|x| *x = 0.0);
-                    return;
+                let mut kept = kept.borrow_mut();
+                if !matches!(&*kept, Some((at, time, _)) if at.as_slice() == x && *time == t) {
+                    *kept = Some((x.to_vec(), t, jacobian(scene, x, t)));
                 }
-                let scale = x.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-                let eps = f64::EPSILON.sqrt() * scale / norm;
-                let shifted: Vec<f64> = x.iter().zip(v).map(|(x, v)| x + eps * v).collect();
-                let mut base = vec![0.0; x.len()];
-                rhs(scene, x, t, &mut base);
-                rhs(scene, &shifted, t, y);
-                y.iter_mut()
-                    .zip(&base)
-                    .for_each(|(y, b)| *y = (*y - b) / eps);
+                let (_, _, j) = kept.as_ref().expect("just kept");
+                for (r, y) in y.iter_mut().enumerate() {
+                    *y = (0..n).map(|c| j[(r, c)] * v[c]).sum();
+                }
             },
         )
         .mass(
@@ -103,29 +162,99 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         .build()
         .map_err(|e| e.to_string())?;
     let before = cpu_seconds();
-    let mut solver = problem
-        .bdf::<NalgebraLU<f64>>()
-        .map_err(|e| e.to_string())?;
-    solver.set_stop_time(t_end).map_err(|e| e.to_string())?;
-    let mut steps = 0u64;
-    let mut max_g = 0.0f64;
-    loop {
-        let reason = solver.step().map_err(|e| e.to_string())?;
-        steps += 1;
-        let y = solver.state().y.clone_as_vec();
-        let q = Vector::<N>::from_column_slice(&y[..N]);
-        let t = solver.state().t;
-        max_g = max_g.max(scene.constraint_residual(&q, &Vector::zeros(), t).amax());
-        if matches!(reason, OdeSolverStopReason::TstopReached) {
-            break;
-        }
-    }
+    let (steps, max_g, values) = match method {
+        Method::Bdf => march::<S, _, N, Z>(scene, problem.bdf::<NalgebraLU<f64>>(), t_end),
+        Method::Esdirk34 => march::<S, _, N, Z>(scene, problem.esdirk34::<NalgebraLU<f64>>(), t_end),
+        Method::TrBdf2 => march::<S, _, N, Z>(scene, problem.tr_bdf2::<NalgebraLU<f64>>(), t_end),
+    }?;
     let cpu = cpu_seconds() - before;
-    let values = solver.state().y.clone_as_vec();
     Ok(PeerEnd {
         steps,
         cpu_seconds: cpu,
         max_g,
         values,
     })
+}
+
+/// Steps `solver` to `t_end`: the accepted steps, the largest position residual over them and
+/// the end state.
+fn march<'a, S, Eqn, const N: usize, const Z: usize>(
+    scene: &S,
+    solver: Result<impl OdeSolverMethod<'a, Eqn>, DiffsolError>,
+    t_end: f64,
+) -> Result<(u64, f64, Vec<f64>), String>
+where
+    S: ConstrainedSystem<N, Z>,
+    Eqn: OdeEquationsImplicit<T = f64, V = NalgebraVec<f64>> + 'a,
+{
+    let mut solver = solver.map_err(|e| e.to_string())?;
+    solver.set_stop_time(t_end).map_err(|e| e.to_string())?;
+    let mut steps = 0u64;
+    let mut max_g = 0.0f64;
+    loop {
+        let reason = solver.step().map_err(|e| e.to_string())?;
+        steps += 1;
+        let y = &solver.state().y;
+        let q = Vector::<N>::from_fn(|i, _| y.get_index(i));
+        let t = solver.state().t;
+        max_g = max_g.max(scene.constraint_residual(&q, &Vector::zeros(), t).amax());
+        if matches!(reason, OdeSolverStopReason::TstopReached) {
+            break;
+        }
+    }
+    Ok((steps, max_g, solver.state().y.clone_as_vec()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenes::andrews::Andrews;
+    use crate::scenes::spring_support::SpringSupportedPendulum;
+
+    /// The peer's Jacobian against central differences of `f` at a consistent start.
+    fn check<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+        scene: &S,
+        start: (Vector<N>, Vector<N>),
+    ) {
+        let Ok(mut y) = consistent_start(scene, start) else {
+            panic!("a consistent start")
+        };
+        // Moving, so that the velocity terms count (the positions stay consistent: off them,
+        // the stiff support's forces would drown the differences in rounding).
+        y.iter_mut()
+            .enumerate()
+            .skip(N)
+            .for_each(|(i, x)| *x += 0.1 * (i as f64 + 1.0).sin());
+        let n = y.len();
+        let t = 0.01;
+        let j = jacobian(scene, &y, t);
+        for c in 0..n {
+            let h = 1e-6 * y[c].abs().max(1.0);
+            let (mut up, mut down) = (y.clone(), y.clone());
+            up[c] += h;
+            down[c] -= h;
+            let (mut f_up, mut f_down) = (vec![0.0; n], vec![0.0; n]);
+            rhs(scene, &up, t, &mut f_up);
+            rhs(scene, &down, t, &mut f_down);
+            for r in 0..n {
+                let difference = (f_up[r] - f_down[r]) / (2.0 * h);
+                let scale = difference.abs().max(j[(r, c)].abs()).max(1.0);
+                assert!(
+                    (difference - j[(r, c)]).abs() <= 1e-5 * scale,
+                    "∂f{r}/∂y{c}: {} against {difference}",
+                    j[(r, c)]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn jacobian_matches_central_differences() {
+        let spring = SpringSupportedPendulum::STIFF;
+        check(&spring, (Vector::from(spring.start()), Vector::zeros()));
+        check(
+            &Andrews::published(),
+            (Vector::from(Andrews::Q0), Vector::zeros()),
+        );
+    }
 }

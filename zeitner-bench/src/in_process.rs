@@ -1,6 +1,6 @@
 //! What the in-process Rust peers share: the consistent start and the timed repeats.
 
-use zeitner::{ConstrainedSystem, Options, Simulator, Vector};
+use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, Vector};
 
 use crate::measure::median;
 use crate::peers::{PeerEnd, PeerRun};
@@ -65,4 +65,25 @@ pub fn timed_runs(
             }
         })
         .collect()
+}
+
+/// The rows `v' = M⁻¹(F − Gᵀλ)` of the DAE forms, linearised exactly from the scene's
+/// generated derivatives: `(∂v'/∂q, ∂v'/∂v, ∂v'/∂λ, v')`; `None` where `M` is singular.
+pub fn acceleration_jacobians<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v, lambda): (&Vector<N>, &Vector<N>, &Vector<Z>),
+    t: f64,
+) -> Option<(Matrix<N, N>, Matrix<N, N>, Matrix<N, Z>, Vector<N>)> {
+    let factor = scene.mass_matrix(q, t).factor()?;
+    let g = scene.constraint_jacobian(q, v, t);
+    let a = factor.solve(&(scene.applied_force(q, v, t) - g.tr_mul(lambda)));
+    let (force_q, force_v) = scene.force_jacobians(q, v, t);
+    let (reaction_q, reaction_v) = scene.constraint_force_jacobians(q, v, t, lambda);
+    let inertia_q = scene.mass_jacobian_product(q, t, &a);
+    Some((
+        factor.solve(&(force_q - reaction_q - inertia_q)),
+        factor.solve(&(force_v - reaction_v)),
+        -factor.solve(&g.transpose()),
+        a,
+    ))
 }

@@ -464,10 +464,17 @@ fn rust_peers<
             runs.extend(results.into_iter().map(|run| (name, run)));
         };
         #[cfg(feature = "diffsol")]
-        add(
-            "peer-diffsol-bdf",
-            diffsol_peer::run(&scene, start, t_end, rtols),
-        );
+        {
+            use diffsol_peer::Method;
+            let methods = [
+                ("peer-diffsol-bdf", Method::Bdf),
+                ("peer-diffsol-esdirk34", Method::Esdirk34),
+                ("peer-diffsol-tr-bdf2", Method::TrBdf2),
+            ];
+            for (name, method) in methods {
+                add(name, diffsol_peer::run(&scene, start, t_end, method, rtols));
+            }
+        }
         #[cfg(feature = "differential-equations")]
         {
             use de_peer::Index;
