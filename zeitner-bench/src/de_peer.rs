@@ -83,8 +83,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
         let scene = self.scene;
         let (q, v, lambda) = split::<N, Z>(y);
         let mut full = Matrix::<Y, Y>::zeros();
-        let Some((dq, dv, dlambda, _)) = acceleration_jacobians(scene, (&q, &v, &lambda), t)
-        else {
+        let Some((dq, dv, dlambda, _)) = acceleration_jacobians(scene, (&q, &v, &lambda), t) else {
             (0..Y).for_each(|r| (0..Y).for_each(|c| j[(r, c)] = f64::NAN));
             return;
         };

@@ -100,6 +100,9 @@ fn jacobian<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     j
 }
 
+/// The Jacobian of [`jacobian`] and the point `(y, t)` it was formed at.
+type KeptJacobian = (Vec<f64>, f64, DMatrix<f64>);
+
 /// Runs diffsol's `method` on `scene` from its consistent start to `t_end` for each tolerance.
 pub fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
@@ -124,7 +127,7 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 ) -> Result<PeerEnd, String> {
     let n = 2 * N + Z;
     let init = y0.to_vec();
-    let kept: RefCell<Option<(Vec<f64>, f64, DMatrix<f64>)>> = RefCell::new(None);
+    let kept: RefCell<Option<KeptJacobian>> = RefCell::new(None);
     let problem = OdeBuilder::<NalgebraMat<f64>>::new()
         .rtol(rtol)
         // The multipliers are left out of the error test, as for IDAS (suppress_algebraic).
@@ -164,7 +167,9 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let before = cpu_seconds();
     let (steps, max_g, values) = match method {
         Method::Bdf => march::<S, _, N, Z>(scene, problem.bdf::<NalgebraLU<f64>>(), t_end),
-        Method::Esdirk34 => march::<S, _, N, Z>(scene, problem.esdirk34::<NalgebraLU<f64>>(), t_end),
+        Method::Esdirk34 => {
+            march::<S, _, N, Z>(scene, problem.esdirk34::<NalgebraLU<f64>>(), t_end)
+        }
         Method::TrBdf2 => march::<S, _, N, Z>(scene, problem.tr_bdf2::<NalgebraLU<f64>>(), t_end),
     }?;
     let cpu = cpu_seconds() - before;

@@ -118,7 +118,7 @@ ladder!(Ladder32, 32);
 ladder!(Ladder64, 64);
 
 /// A chain released with every rod horizontal.
-fn horizontal_chain<const N: usize>() -> Vector<N> {
+pub fn horizontal_chain<const N: usize>() -> Vector<N> {
     Vector::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 })
 }
 
