@@ -3,9 +3,10 @@
 //! this size do not fit a stack). Their reference is our own sparse run at rtol 1e-12; the
 //! peers' tightest runs are an independent check of it (see the performance notes).
 
-use zeitner::{ConstrainedSystem, MultiplierModel, Options, SparseSimulator, StepControl, Vector};
+use zeitner::{ConstrainedSystem, Options, SparseSimulator, Vector};
 
 use crate::measure::{cpu_seconds, Allocations};
+use crate::scaling::reference_options;
 use crate::scaling::scenes::horizontal_chain;
 use crate::scenes::reference::State;
 use crate::{flattened, measure_runs, rust_peers, Outcome, Scene};
@@ -59,19 +60,7 @@ fn sparse_run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 fn reference<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
 ) -> Result<State<N, Z>, String> {
-    let options = Options {
-        step: StepControl::Adaptive {
-            initial_step: 1e-4,
-            min_step: 1e-12,
-            max_step: 0.01,
-            rtol: 1e-12,
-            atol: 1e-14,
-        },
-        constraint_tolerance: 1e-13,
-        multipliers: MultiplierModel::Constant,
-        ..Options::default()
-    };
-    let [q, v, lambda] = sparse_run(scene, options, &mut 0.0)?.end;
+    let [q, v, lambda] = sparse_run(scene, reference_options(), &mut 0.0)?.end;
     let array = |x: Vec<f64>| -> [f64; N] { x.try_into().expect("N entries") };
     Ok(State {
         q: array(q),

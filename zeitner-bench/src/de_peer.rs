@@ -10,7 +10,8 @@
 //!   generate, ∂(∂g/∂t)/∂q of rheonomic rows in the index-2 form, is a forward difference.
 //! - **DOP853** on the index-1 ODE y = (q, q'), with v' from [M Gᵀ; G 0](v', λ) = (F, −b),
 //!   projected back onto g = 0 and ġ = 0 (M-orthogonally) when a step leaves them by more than
-//!   the absolute tolerance; the crate restarts the method from a projected state.
+//!   the absolute tolerance; the crate restarts the method from a projected state (over the last
+//!   few first-step lengths, where it cannot restart, the end state alone is projected).
 //!
 //! Fixed sizes: the state arrays `[f64; Y]` with `Y = 2N + Z` (Radau5) and `[f64; X]` with
 //! `X = 2N` (DOP853), given by each scene.
@@ -148,7 +149,17 @@ fn rate_position_partials<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
 struct EndState<'s, 'r, S, const N: usize, const Z: usize, const Y: usize> {
     scene: &'s S,
     record: &'r mut Record<Y>,
-    projection: Option<f64>,
+    projection: Option<Projection>,
+}
+
+/// When to project, and where a restart is no longer possible.
+struct Projection {
+    tolerance: f64,
+    t_end: f64,
+    /// The first step taken: 0.7.0 restarts from its first initial step, and refuses one longer
+    /// than the rest of the interval (or an empty rest), so that the last stretch is projected
+    /// without a restart.
+    first_step: Option<f64>,
 }
 
 struct Record<const Y: usize> {
@@ -162,7 +173,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
     fn solout<I>(
         &mut self,
         t: f64,
-        _t_prev: f64,
+        t_prev: f64,
         y: &[f64; Y],
         _y_prev: &[f64; Y],
         _interpolator: &mut I,
@@ -177,21 +188,28 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
         let position = self.scene.constraint_residual(&q, &v, t);
         let residual = position.rows(0, S::POSITION_CONSTRAINTS).amax();
         self.record.max_g = self.record.max_g.max(residual);
-        let Some(tolerance) = self.projection else {
+        let Some(projection) = &mut self.projection else {
             return ControlFlag::Continue;
         };
+        if t > t_prev && projection.first_step.is_none() {
+            projection.first_step = Some(t - t_prev);
+        }
+        let tolerance = projection.tolerance;
         if residual <= tolerance && self.scene.constraint_rate(&q, &v, t).amax() <= tolerance {
             return ControlFlag::Continue;
         }
-        match project(self.scene, q, v, t) {
-            Some((q, v)) => {
-                let mut projected = *y;
-                projected[..N].copy_from_slice(q.as_slice());
-                projected[N..2 * N].copy_from_slice(v.as_slice());
-                self.record.last = projected;
-                ControlFlag::ModifyState(t, projected)
-            }
-            None => ControlFlag::Terminate,
+        let Some((q, v)) = project(self.scene, q, v, t) else {
+            return ControlFlag::Terminate;
+        };
+        let mut projected = *y;
+        projected[..N].copy_from_slice(q.as_slice());
+        projected[N..2 * N].copy_from_slice(v.as_slice());
+        self.record.last = projected;
+        let rest = projection.t_end - t;
+        if rest > 4.0 * projection.first_step.unwrap_or(f64::INFINITY) {
+            ControlFlag::ModifyState(t, projected)
+        } else {
+            ControlFlag::Continue
         }
     }
 }
@@ -372,7 +390,11 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
         let solout = EndState::<S, N, Z, X> {
             scene,
             record: &mut end,
-            projection: Some(atol(rtol)),
+            projection: Some(Projection {
+                tolerance: atol(rtol),
+                t_end,
+                first_step: None,
+            }),
         };
         let method = ExplicitRungeKutta::dop853()
             .rtol(rtol)
@@ -401,48 +423,35 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::in_process::{assert_central_differences, moving_start};
     use crate::scenes::andrews::Andrews;
     use crate::scenes::knife_edge::KnifeEdge;
     use crate::scenes::spring_support::SpringSupportedPendulum;
 
-    /// Radau5's Jacobian, both forms, against central differences of its `f` at a consistent
-    /// start set moving.
+    /// Radau5's Jacobian, both forms, against central differences of its `f`.
     fn check<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>(
         scene: &S,
         start: (Vector<N>, Vector<N>),
     ) {
-        let Ok(start) = consistent_start(scene, start) else {
-            panic!("a consistent start")
-        };
-        let mut y = [0.0; Y];
-        y.copy_from_slice(&start);
-        y.iter_mut()
-            .enumerate()
-            .skip(N)
-            .for_each(|(i, x)| *x += 0.1 * (i as f64 + 1.0).sin());
+        let y = moving_start(scene, start);
         let t = 0.01;
         for index in [Index::Three, Index::Two] {
             let dae = Dae { scene, index };
             let mut j = differential_equations::linalg::Matrix::zeros(Y, Y);
-            dae.jacobian(t, &y, &mut j);
-            for c in 0..Y {
-                let h = 1e-6 * y[c].abs().max(1.0);
-                let (mut up, mut down) = (y, y);
-                up[c] += h;
-                down[c] -= h;
-                let (mut f_up, mut f_down) = ([0.0; Y], [0.0; Y]);
-                dae.diff(t, &up, &mut f_up);
-                dae.diff(t, &down, &mut f_down);
-                for r in 0..Y {
-                    let difference = (f_up[r] - f_down[r]) / (2.0 * h);
-                    let scale = difference.abs().max(j[(r, c)].abs()).max(1.0);
-                    assert!(
-                        (difference - j[(r, c)]).abs() <= 1e-5 * scale,
-                        "∂f{r}/∂y{c}: {} against {difference}",
-                        j[(r, c)]
-                    );
-                }
-            }
+            let mut at = [0.0; Y];
+            at.copy_from_slice(&y);
+            dae.jacobian(t, &at, &mut j);
+            assert_central_differences(
+                &y,
+                |r, c| j[(r, c)],
+                |x, f| {
+                    let mut state = [0.0; Y];
+                    state.copy_from_slice(x);
+                    let mut out = [0.0; Y];
+                    DAE::<f64, [f64; Y]>::diff(&dae, t, &state, &mut out);
+                    f.copy_from_slice(&out);
+                },
+            );
         }
     }
 

@@ -213,44 +213,19 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::in_process::{assert_central_differences, moving_start};
     use crate::scenes::andrews::Andrews;
     use crate::scenes::spring_support::SpringSupportedPendulum;
 
-    /// The peer's Jacobian against central differences of `f` at a consistent start.
+    /// The peer's Jacobian against central differences of `f`.
     fn check<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         scene: &S,
         start: (Vector<N>, Vector<N>),
     ) {
-        let Ok(mut y) = consistent_start(scene, start) else {
-            panic!("a consistent start")
-        };
-        // Moving, so that the velocity terms count (the positions stay consistent: off them,
-        // the stiff support's forces would drown the differences in rounding).
-        y.iter_mut()
-            .enumerate()
-            .skip(N)
-            .for_each(|(i, x)| *x += 0.1 * (i as f64 + 1.0).sin());
-        let n = y.len();
+        let y = moving_start(scene, start);
         let t = 0.01;
         let j = jacobian(scene, &y, t);
-        for c in 0..n {
-            let h = 1e-6 * y[c].abs().max(1.0);
-            let (mut up, mut down) = (y.clone(), y.clone());
-            up[c] += h;
-            down[c] -= h;
-            let (mut f_up, mut f_down) = (vec![0.0; n], vec![0.0; n]);
-            rhs(scene, &up, t, &mut f_up);
-            rhs(scene, &down, t, &mut f_down);
-            for r in 0..n {
-                let difference = (f_up[r] - f_down[r]) / (2.0 * h);
-                let scale = difference.abs().max(j[(r, c)].abs()).max(1.0);
-                assert!(
-                    (difference - j[(r, c)]).abs() <= 1e-5 * scale,
-                    "∂f{r}/∂y{c}: {} against {difference}",
-                    j[(r, c)]
-                );
-            }
-        }
+        assert_central_differences(&y, |r, c| j[(r, c)], |x, f| rhs(scene, x, t, f));
     }
 
     #[test]

@@ -92,3 +92,49 @@ pub fn acceleration_jacobians<S: ConstrainedSystem<N, Z>, const N: usize, const 
         a,
     ))
 }
+
+/// A moving state near a consistent start, for checking Jacobians: the start with its
+/// velocities and multipliers shifted (the positions stay consistent: off them, the stiff
+/// support's forces would drown the differences in rounding).
+#[cfg(test)]
+pub fn moving_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    start: (Vector<N>, Vector<N>),
+) -> Vec<f64> {
+    let Ok(mut y) = consistent_start(scene, start) else {
+        panic!("a consistent start")
+    };
+    y.iter_mut()
+        .enumerate()
+        .skip(N)
+        .for_each(|(i, x)| *x += 0.1 * (i as f64 + 1.0).sin());
+    y
+}
+
+/// Asserts that `jacobian(r, c)` is `∂f_r/∂y_c` at `y` to 1e-5, against central differences.
+#[cfg(test)]
+pub fn assert_central_differences(
+    y: &[f64],
+    jacobian: impl Fn(usize, usize) -> f64,
+    mut f: impl FnMut(&[f64], &mut [f64]),
+) {
+    let n = y.len();
+    for c in 0..n {
+        let h = 1e-6 * y[c].abs().max(1.0);
+        let (mut up, mut down) = (y.to_vec(), y.to_vec());
+        up[c] += h;
+        down[c] -= h;
+        let (mut f_up, mut f_down) = (vec![0.0; n], vec![0.0; n]);
+        f(&up, &mut f_up);
+        f(&down, &mut f_down);
+        for r in 0..n {
+            let difference = (f_up[r] - f_down[r]) / (2.0 * h);
+            let exact = jacobian(r, c);
+            let scale = difference.abs().max(exact.abs()).max(1.0);
+            assert!(
+                (difference - exact).abs() <= 1e-5 * scale,
+                "∂f{r}/∂y{c}: {exact} against {difference}"
+            );
+        }
+    }
+}

@@ -227,7 +227,15 @@ fn reference<S: ConstrainedSystem<N, Z> + Sync, const N: usize, const Z: usize>(
     scene: &S,
     q0: Vector<N>,
 ) -> Option<Vec<f64>> {
-    let options = Options {
+    let mut sim =
+        SparseSimulator::new(scene, q0, Vector::zeros(), 0.0, reference_options()).ok()?;
+    sim.advance_to(END, |_| {}).ok()?;
+    Some(sim.last().end.q.as_slice().to_vec())
+}
+
+/// The options of the chains' references: the sparse simulator at rtol 1e-12.
+pub fn reference_options() -> Options {
+    Options {
         step: StepControl::Adaptive {
             initial_step: 1e-4,
             min_step: 1e-12,
@@ -238,10 +246,7 @@ fn reference<S: ConstrainedSystem<N, Z> + Sync, const N: usize, const Z: usize>(
         constraint_tolerance: 1e-13,
         multipliers: zeitner::MultiplierModel::Constant,
         ..Options::default()
-    };
-    let mut sim = SparseSimulator::new(scene, q0, Vector::zeros(), 0.0, options).ok()?;
-    sim.advance_to(END, |_| {}).ok()?;
-    Some(sim.last().end.q.as_slice().to_vec())
+    }
 }
 
 /// `max |q - reference|`.
