@@ -34,14 +34,26 @@ pub const PEERS: [Peer; 4] = [
         name: "peer-casadi-idas",
         script: "casadi_idas.py",
         leading_args: &["vm"],
-        scenes: &["pendulum", "steam_generator", "andrews"],
+        scenes: &[
+            "pendulum",
+            "steam_generator",
+            "andrews",
+            "knife_edge",
+            "spring_support",
+        ],
         fixed_steps: false,
     },
     Peer {
         name: "peer-casadi-idas-c",
         script: "casadi_idas.py",
         leading_args: &["codegen"],
-        scenes: &["pendulum", "steam_generator", "andrews"],
+        scenes: &[
+            "pendulum",
+            "steam_generator",
+            "andrews",
+            "knife_edge",
+            "spring_support",
+        ],
         fixed_steps: false,
     },
     Peer {
