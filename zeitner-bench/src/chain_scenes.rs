@@ -1,11 +1,13 @@
 //! Chains of 32 and 128 pendulums (64 and 256 coordinates) in the work-precision run: released
-//! with every rod horizontal, 1 s, integrated by `SparseSimulator` (the dense workspaces of
-//! this size do not fit a stack). Their reference is our own sparse run at rtol 1e-12; the
+//! with every rod horizontal, 1 s, integrated by `SparseSimulator` (the dense `Simulator`'s
+//! fixed-size blocks of this size need hundreds of MiB of stack and cubic time; the scaling
+//! report measures it up to 64 coordinates). Their reference is our own sparse run at rtol 1e-12; the
 //! peers' tightest runs are an independent check of it (see the performance notes).
 
 use zeitner::{ConstrainedSystem, Options, SparseSimulator, Vector};
 
 use crate::measure::{cpu_seconds, Allocations};
+use crate::peers::PeerRun;
 use crate::scaling::reference_options;
 use crate::scaling::scenes::horizontal_chain;
 use crate::scenes::reference::State;
@@ -19,15 +21,16 @@ pub const METHODS: [&str; 2] = [
     "zeitner-constant-lambda-dopri5-exactQ",
 ];
 
-/// Runs `work` on a thread with a stack large enough for fixed-size blocks of this size.
-fn on_large_stack<T: Send>(work: impl FnOnce() -> T + Send) -> T {
+/// Runs `work` on a thread with a stack large enough for the peers' fixed-size blocks of this
+/// size; a panic becomes an error.
+fn on_large_stack<T: Send>(work: impl FnOnce() -> T + Send) -> Result<T, String> {
     std::thread::scope(|scope| {
         std::thread::Builder::new()
             .stack_size(512 << 20)
             .spawn_scoped(scope, work)
-            .expect("a thread")
+            .map_err(|e| e.to_string())?
             .join()
-            .expect("the run does not panic")
+            .map_err(|_| "the run panicked".to_string())
     })
 }
 
@@ -61,11 +64,11 @@ fn reference<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
 ) -> Result<State<N, Z>, String> {
     let [q, v, lambda] = sparse_run(scene, reference_options(), &mut 0.0)?.end;
-    let array = |x: Vec<f64>| -> [f64; N] { x.try_into().expect("N entries") };
+    let sizes = || "the end state's sizes".to_string();
     Ok(State {
-        q: array(q),
-        v: array(v),
-        lambda: lambda.try_into().expect("Z entries"),
+        q: q.try_into().map_err(|_| sizes())?,
+        v: v.try_into().map_err(|_| sizes())?,
+        lambda: lambda.try_into().map_err(|_| sizes())?,
     })
 }
 
@@ -82,7 +85,7 @@ pub fn chain_scene<
     title: &'static str,
     make: fn() -> S,
 ) -> Result<Scene, String> {
-    let reference = on_large_stack(|| reference(&make()))?;
+    let reference = on_large_stack(|| reference(&make()))??;
     let flat = flattened(&reference);
     Ok(Scene {
         name,
@@ -98,11 +101,22 @@ pub fn chain_scene<
                 let run = |max_g: &mut f64| sparse_run(&scene, options, max_g);
                 measure_runs((name, method, setting), &reference, repeats, run)
             })
+            .unwrap_or_else(|failure| panic!("{name} {method} {setting}: {failure}"))
         }),
         run_rust_peers: Box::new(move |rtols: &[f64]| {
             on_large_stack(|| {
                 let start = (horizontal_chain(), Vector::zeros());
                 rust_peers::<S, N, Z, X, Y>(make(), start, END)(rtols)
+            })
+            .unwrap_or_else(|failure| {
+                let outcome = Err(failure);
+                vec![(
+                    "peers",
+                    PeerRun {
+                        setting: "all".into(),
+                        outcome,
+                    },
+                )]
             })
         }),
     })

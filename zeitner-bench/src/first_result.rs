@@ -130,6 +130,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
 pub fn markdown(scenes: &[&str], peer_setups: &[(&str, &str, f64)], work: &Path) -> String {
     use std::fmt::Write as _;
     let mut peers: Vec<&str> = peer_setups.iter().map(|(_, peer, _)| *peer).collect();
+    peers.sort_unstable();
     peers.dedup();
     let mut out = String::from(
         "\n## Time to the first result\n\n\
@@ -139,8 +140,8 @@ pub fn markdown(scenes: &[&str], peer_setups: &[(&str, &str, f64)], work: &Path)
          the link; the runtime built before), then run. Peers: the setup their script reports \
          (model and integrators built; for `-c`, CasADi's C code generation and gcc -O3 of each \
          tolerance's integrator, all tolerances of the run together). The in-process Rust peers \
-         (diffsol, differential-equations) are compiled once with the bench and construct their \
-         solvers in microseconds.\n\n",
+         (diffsol, differential-equations) build with the bench, which an edited scene rebuilds as \
+         it does Zeitner's, and construct their solvers in microseconds.\n\n",
     );
     let _ = write!(out, "| scene | Zeitner rebuild | Zeitner run |");
     peers.iter().for_each(|p| {

@@ -5,13 +5,17 @@ use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simula
 use crate::measure::median;
 use crate::peers::{PeerEnd, PeerRun};
 
-/// The consistent start `(q, v, λ)` from Zeitner's projection, the same for every method; a
-/// failure as the peer's one result.
+/// The consistent start `(q, v, λ)` from Zeitner's projection to 1e-12, the same for every
+/// method; a failure as the peer's one result.
 pub fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     start: (Vector<N>, Vector<N>),
 ) -> Result<Vec<f64>, PeerRun> {
-    match Simulator::new(scene, start.0, start.1, 0.0, Options::default()) {
+    let options = Options {
+        constraint_tolerance: 1e-12,
+        ..Options::default()
+    };
+    match Simulator::new(scene, start.0, start.1, 0.0, options) {
         Ok(sim) => {
             let end = sim.last().end;
             Ok(end
