@@ -29,31 +29,28 @@ pub struct Peer {
     pub fixed_steps: bool,
 }
 
+/// The scenes `casadi_idas.py` models, in both of its modes.
+const CASADI_SCENES: &[&str] = &[
+    "pendulum",
+    "steam_generator",
+    "andrews",
+    "knife_edge",
+    "spring_support",
+];
+
 pub const PEERS: [Peer; 4] = [
     Peer {
         name: "peer-casadi-idas",
         script: "casadi_idas.py",
         leading_args: &["vm"],
-        scenes: &[
-            "pendulum",
-            "steam_generator",
-            "andrews",
-            "knife_edge",
-            "spring_support",
-        ],
+        scenes: CASADI_SCENES,
         fixed_steps: false,
     },
     Peer {
         name: "peer-casadi-idas-c",
         script: "casadi_idas.py",
         leading_args: &["codegen"],
-        scenes: &[
-            "pendulum",
-            "steam_generator",
-            "andrews",
-            "knife_edge",
-            "spring_support",
-        ],
+        scenes: CASADI_SCENES,
         fixed_steps: false,
     },
     Peer {
