@@ -20,7 +20,9 @@ use differential_equations::prelude::*;
 use differential_equations::solout::Solout;
 use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Vector};
 
-use crate::in_process::{acceleration_jacobians, consistent_start, timed_runs};
+use crate::in_process::{
+    acceleration, acceleration_jacobians, consistent_start, split, timed_runs,
+};
 use crate::measure::cpu_seconds;
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -34,26 +36,6 @@ pub enum Index {
 struct Dae<'s, S, const N: usize, const Z: usize> {
     scene: &'s S,
     index: Index,
-}
-
-/// `(q, v, λ)` of a stacked state.
-fn split<const N: usize, const Z: usize>(y: &[f64]) -> (Vector<N>, Vector<N>, Vector<Z>) {
-    (
-        Vector::from_column_slice(&y[..N]),
-        Vector::from_column_slice(&y[N..2 * N]),
-        Vector::from_column_slice(&y[2 * N..2 * N + Z]),
-    )
-}
-
-/// `M⁻¹(F − Gᵀλ)`, or `None` where the mass matrix is singular.
-fn acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    scene: &S,
-    (q, v, lambda): (&Vector<N>, &Vector<N>, &Vector<Z>),
-    t: f64,
-) -> Option<Vector<N>> {
-    let factor = scene.mass_matrix(q, t).factor()?;
-    let g = scene.constraint_jacobian(q, v, t);
-    Some(factor.solve(&(scene.applied_force(q, v, t) - g.tr_mul(lambda))))
 }
 
 impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize> DAE<f64, [f64; Y]>
@@ -364,16 +346,12 @@ pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
             .index2_equations(by_index(2))
             .index3_equations(by_index(3))
             .max_steps(10_000_000);
-        let before = cpu_seconds();
-        let solution = IVP::dae(&dae, 0.0, t_end, start)
-            .method(method)
-            .solout(solout)
-            .solve()
-            .map_err(|e| format!("{e:?}"))?;
-        let cpu = cpu_seconds() - before;
-        if !matches!(solution.status, Status::Complete) {
-            return Err(format!("stopped before the end: {:?}", solution.status));
-        }
+        let (solution, cpu) = solved(|| {
+            IVP::dae(&dae, 0.0, t_end, start)
+                .method(method)
+                .solout(solout)
+                .solve()
+        })?;
         Ok(PeerEnd {
             steps: solution.steps.accepted as u64,
             cpu_seconds: cpu,
@@ -381,6 +359,20 @@ pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
             values: end.last.to_vec(),
         })
     })
+}
+
+/// Runs `solve` under the CPU clock: the solution and its CPU seconds, or why it failed or
+/// stopped before the end.
+fn solved<Y: differential_equations::traits::State<f64>>(
+    solve: impl FnOnce() -> Result<Solution<f64, Y>, Error<f64, Y>>,
+) -> Result<(Solution<f64, Y>, f64), String> {
+    let before = cpu_seconds();
+    let solution = solve().map_err(|e| format!("{e:?}"))?;
+    let cpu = cpu_seconds() - before;
+    match solution.status {
+        Status::Complete => Ok((solution, cpu)),
+        ref status => Err(format!("stopped before the end: {status:?}")),
+    }
 }
 
 /// DOP853 on the index-1 ODE with projection, for each relative tolerance.
@@ -416,16 +408,12 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
             .rtol(rtol)
             .atol(atol(rtol))
             .max_steps(10_000_000);
-        let before = cpu_seconds();
-        let solution = IVP::ode(&ode, 0.0, t_end, start)
-            .method(method)
-            .solout(solout)
-            .solve()
-            .map_err(|e| format!("{e:?}"))?;
-        let cpu = cpu_seconds() - before;
-        if !matches!(solution.status, Status::Complete) {
-            return Err(format!("stopped before the end: {:?}", solution.status));
-        }
+        let (solution, cpu) = solved(|| {
+            IVP::ode(&ode, 0.0, t_end, start)
+                .method(method)
+                .solout(solout)
+                .solve()
+        })?;
         let q = Vector::<N>::from_column_slice(&end.last[..N]);
         let v = Vector::<N>::from_column_slice(&end.last[N..]);
         let (_, lambda) = index1_acceleration(scene, &q, &v, t_end)

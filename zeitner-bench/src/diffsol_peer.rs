@@ -14,9 +14,11 @@ use diffsol::{
     OdeSolverMethod, OdeSolverStopReason, Vector as _,
 };
 use zeitner::__private::nalgebra::{DMatrix, DVectorView, DVectorViewMut};
-use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Vector};
+use zeitner::{ConstrainedSystem, Vector};
 
-use crate::in_process::{acceleration_jacobians, consistent_start, timed_runs};
+use crate::in_process::{
+    acceleration, acceleration_jacobians, consistent_start, split, timed_runs,
+};
 use crate::measure::cpu_seconds;
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -27,16 +29,13 @@ fn rhs<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     t: f64,
     out: &mut [f64],
 ) {
-    let q = Vector::<N>::from_column_slice(&y[..N]);
-    let v = Vector::<N>::from_column_slice(&y[N..2 * N]);
-    let lambda = Vector::<Z>::from_column_slice(&y[2 * N..]);
-    let Some(factor) = scene.mass_matrix(&q, t).factor() else {
+    let (q, v, lambda) = split::<N, Z>(y);
+    let Some(a) = acceleration(scene, (&q, &v, &lambda), t) else {
         out.iter_mut().for_each(|x| *x = f64::NAN);
         return;
     };
-    let g = scene.constraint_jacobian(&q, &v, t);
-    let a = factor.solve(&(scene.applied_force(&q, &v, t) - g.tr_mul(&lambda)));
-    let algebraic = g * a + scene.constraint_acceleration_bias(&q, &v, t);
+    let algebraic =
+        scene.constraint_jacobian(&q, &v, t) * a + scene.constraint_acceleration_bias(&q, &v, t);
     out[..N].copy_from_slice(v.as_slice());
     out[N..2 * N].copy_from_slice(a.as_slice());
     out[2 * N..].copy_from_slice(algebraic.as_slice());
@@ -60,9 +59,7 @@ fn jacobian<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     t: f64,
 ) -> DMatrix<f64> {
     let n = 2 * N + Z;
-    let q = Vector::<N>::from_column_slice(&y[..N]);
-    let v = Vector::<N>::from_column_slice(&y[N..2 * N]);
-    let lambda = Vector::<Z>::from_column_slice(&y[2 * N..]);
+    let (q, v, lambda) = split::<N, Z>(y);
     let mut j = DMatrix::<f64>::zeros(n, n);
     let Some((dq, dv, dlambda, a)) = acceleration_jacobians(scene, (&q, &v, &lambda), t) else {
         return DMatrix::from_element(n, n, f64::NAN);

@@ -76,6 +76,26 @@ pub fn timed_runs(
         .collect()
 }
 
+/// `(q, v, λ)` of a stacked state.
+pub fn split<const N: usize, const Z: usize>(y: &[f64]) -> (Vector<N>, Vector<N>, Vector<Z>) {
+    (
+        Vector::from_column_slice(&y[..N]),
+        Vector::from_column_slice(&y[N..2 * N]),
+        Vector::from_column_slice(&y[2 * N..2 * N + Z]),
+    )
+}
+
+/// `M⁻¹(F − Gᵀλ)`, or `None` where the mass matrix is singular.
+pub fn acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v, lambda): (&Vector<N>, &Vector<N>, &Vector<Z>),
+    t: f64,
+) -> Option<Vector<N>> {
+    let factor = scene.mass_matrix(q, t).factor()?;
+    let g = scene.constraint_jacobian(q, v, t);
+    Some(factor.solve(&(scene.applied_force(q, v, t) - g.tr_mul(lambda))))
+}
+
 /// The rows `v' = M⁻¹(F − Gᵀλ)` of the DAE forms, linearised exactly from the scene's
 /// generated derivatives: `(∂v'/∂q, ∂v'/∂v, ∂v'/∂λ, v')`; `None` where `M` is singular.
 pub fn acceleration_jacobians<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
