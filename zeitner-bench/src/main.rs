@@ -29,7 +29,9 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use scaling::scenes::{Chain128, Chain32};
+use scaling::scenes::{
+    ladder_span, Chain128, Chain32, IndependentLadder16, IndependentLadder64, Ladder16, Ladder64,
+};
 use scenes::andrews::Andrews;
 use scenes::knife_edge::KnifeEdge;
 use scenes::pendulum::Pendulum;
@@ -138,8 +140,7 @@ fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error
 #[derive(clap::Args)]
 struct Args {
     /// Scenes to run (pendulum, steam_generator, andrews, knife_edge, spring_support, chain_64,
-    /// chain_256); all by
-    /// default.
+    /// chain_256, ladder_64, ladder_256); all by default.
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
     /// Only methods whose name contains one of these words; all by default.
@@ -151,8 +152,9 @@ struct Args {
     /// Two settings per method and one repeat: a smoke run.
     #[arg(long)]
     quick: bool,
-    /// Also run the peers (CasADi's IDAS), installing them into a virtual environment under the
-    /// output folder on first use.
+    /// Also run the peers: CasADi's IDAS and Exudyn, installed into a virtual environment under
+    /// the output folder on first use, and the Rust peers built with `--features diffsol` and
+    /// `--features differential-equations`.
     #[arg(long)]
     peers: bool,
     /// Folder for the CSVs and plots.
@@ -832,6 +834,7 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> (Vec<Row>, Vec<(&'static str, &'s
         Ok(python) => {
             for peer in &peers::PEERS {
                 for scene in scenes.iter().filter(|s| peer.scenes.contains(&s.name)) {
+                    let (rtols, step_sizes) = large_settings(scene, rtols, step_sizes);
                     let settings: Vec<f64> = if peer.fixed_steps {
                         step_sizes
                             .iter()
@@ -856,12 +859,7 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> (Vec<Row>, Vec<(&'static str, &'s
         Err(reason) => println!("Python peers unavailable: {reason}"),
     }
     for scene in scenes {
-        // The large scenes' dense peers cost seconds a run: the loosest five tolerances only.
-        let rtols = if scene.large && rtols.len() > 5 {
-            &rtols[..5]
-        } else {
-            rtols
-        };
+        let (rtols, _) = large_settings(scene, rtols, step_sizes);
         rows.extend(
             (scene.run_rust_peers)(rtols)
                 .into_iter()
@@ -877,6 +875,20 @@ fn peer_rows(scenes: &[Scene], args: &Args) -> (Vec<Row>, Vec<(&'static str, &'s
         );
     }
     (rows, setups)
+}
+
+/// The peers' settings on `scene`: on the large scenes, whose peers cost seconds a run, the
+/// loosest five tolerances and three step sizes only.
+fn large_settings<'a>(
+    scene: &Scene,
+    rtols: &'a [f64],
+    step_sizes: &'a [f64],
+) -> (&'a [f64], &'a [f64]) {
+    if scene.large {
+        (&rtols[..rtols.len().min(5)], &step_sizes[..step_sizes.len().min(3)])
+    } else {
+        (rtols, step_sizes)
+    }
 }
 
 /// A peer's run as a row, its errors measured against the scene's reference.
@@ -956,6 +968,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if wanted("spring_support") {
         scenes.push(spring_support_scene());
     }
+    use chain_scenes::{large_scene, Large};
     if wanted("chain_64") {
         let title = "Chain of 32 pendulums (64 coordinates), released horizontally, 1 s";
         let make = || Chain32 {
@@ -963,8 +976,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             l: 1.0,
             g: 9.81,
         };
-        scenes.push(chain_scenes::chain_scene::<_, 64, 32, 128, 160>(
-            "chain_64", title, make,
+        scenes.push(large_scene::<_, _, 64, 32, 32, 128, 160, 32>(
+            "chain_64", title, (make, make), Large::chain(),
         )?);
     }
     if wanted("chain_256") {
@@ -974,10 +987,44 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             l: 1.0,
             g: 9.81,
         };
-        scenes.push(chain_scenes::chain_scene::<_, 256, 128, 512, 640>(
-            "chain_256",
-            title,
-            make,
+        scenes.push(large_scene::<_, _, 256, 128, 128, 512, 640, 128>(
+            "chain_256", title, (make, make), Large::chain(),
+        )?);
+    }
+    if wanted("ladder_64") {
+        let title = "Ladder of 2×16 nodes (64 coordinates) sagging between pinned ends, 1 s";
+        let make = || Ladder16 {
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
+            span: ladder_span(16),
+        };
+        let peer_model = || IndependentLadder16 {
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
+            span: ladder_span(16),
+        };
+        scenes.push(large_scene::<_, _, 64, 54, 51, 128, 179, 64>(
+            "ladder_64", title, (make, peer_model), Large::ladder(),
+        )?);
+    }
+    if wanted("ladder_256") {
+        let title = "Ladder of 2×64 nodes (256 coordinates) sagging between pinned ends, 1 s";
+        let make = || Ladder64 {
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
+            span: ladder_span(64),
+        };
+        let peer_model = || IndependentLadder64 {
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
+            span: ladder_span(64),
+        };
+        scenes.push(large_scene::<_, _, 256, 198, 195, 512, 707, 256>(
+            "ladder_256", title, (make, peer_model), Large::ladder(),
         )?);
     }
     let repeats = if args.quick { 1 } else { args.repeats };

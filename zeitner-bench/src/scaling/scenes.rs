@@ -47,6 +47,11 @@ macro_rules! chain {
 
 macro_rules! ladder {
     ($name:ident, $nodes:literal) => {
+        ladder!($name, $nodes, 8, [0, 1, 2, 3, 4, 5, 6, 7]);
+    };
+    // `$pins` of the eight pin rows, in that order: q[0], q[1], q[2], q[3] - l, then the same of
+    // the last pair.
+    ($name:ident, $nodes:literal, $count:literal, [$($pin:literal),*]) => {
         /// Bottom rail nodes `b_i` at coordinates `4i, 4i+1`, top rail nodes `t_i` at `4i+2,
         /// 4i+3`; rods of length `l` along both rails and as rungs `b_i t_i`; `b_0`, `t_0`
         /// pinned at `(0, 0)`, `(0, l)` and the last pair at `(span, 0)`, `(span, l)`.
@@ -73,8 +78,8 @@ macro_rules! ladder {
                 f
             }
 
-            fn constraints(&self, q: [f64; 4 * Self::NODES]) -> [f64; 3 * Self::NODES + 6] {
-                let mut g = [0.0; 3 * Self::NODES + 6];
+            fn constraints(&self, q: [f64; 4 * Self::NODES]) -> [f64; 3 * Self::NODES - 2 + $count] {
+                let mut g = [0.0; 3 * Self::NODES - 2 + $count];
                 for i in 0..Self::NODES - 1 {
                     // Both rails.
                     g[2 * i] = self.rod(q[4 * i], q[4 * i + 1], q[4 * i + 4], q[4 * i + 5]);
@@ -84,16 +89,22 @@ macro_rules! ladder {
                     g[2 * Self::NODES - 2 + i] =
                         self.rod(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
                 }
-                let pins = 3 * Self::NODES - 2;
                 let last = 4 * Self::NODES - 4;
-                g[pins] = q[0];
-                g[pins + 1] = q[1];
-                g[pins + 2] = q[2];
-                g[pins + 3] = q[3] - self.l;
-                g[pins + 4] = q[last] - self.span;
-                g[pins + 5] = q[last + 1];
-                g[pins + 6] = q[last + 2] - self.span;
-                g[pins + 7] = q[last + 3] - self.l;
+                let pinned = [
+                    q[0],
+                    q[1],
+                    q[2],
+                    q[3] - self.l,
+                    q[last] - self.span,
+                    q[last + 1],
+                    q[last + 2] - self.span,
+                    q[last + 3] - self.l,
+                ];
+                let mut row = 3 * Self::NODES - 2;
+                $(
+                    g[row] = pinned[$pin];
+                    row += 1;
+                )*
                 g
             }
 
@@ -116,6 +127,10 @@ ladder!(Ladder8, 8);
 ladder!(Ladder16, 16);
 ladder!(Ladder32, 32);
 ladder!(Ladder64, 64);
+// The peers' ladders: the three dependent pin rows that `SparseSimulator` reports removed, as
+// the dense formulations need.
+ladder!(IndependentLadder16, 16, 5, [0, 3, 4, 6, 7]);
+ladder!(IndependentLadder64, 64, 5, [0, 3, 4, 6, 7]);
 
 /// A chain released with every rod horizontal.
 pub fn horizontal_chain<const N: usize>() -> Vector<N> {
@@ -125,7 +140,7 @@ pub fn horizontal_chain<const N: usize>() -> Vector<N> {
 /// A ladder whose bottom rail sags in a V (rods at ±`ANGLE`, a level rod in the middle when
 /// their number is odd) with the top rail a rung above: consistent with its pins at
 /// `span = ladder_span(nodes)`.
-fn sagging_ladder<const N: usize>() -> Vector<N> {
+pub fn sagging_ladder<const N: usize>() -> Vector<N> {
     let nodes = N / 4;
     let rods = nodes - 1;
     let mut q = Vector::<N>::zeros();
@@ -150,7 +165,7 @@ fn sagging_ladder<const N: usize>() -> Vector<N> {
 
 const ANGLE: f64 = 0.3;
 
-fn ladder_span(nodes: usize) -> f64 {
+pub fn ladder_span(nodes: usize) -> f64 {
     let rods = nodes - 1;
     let level = if rods % 2 == 1 { 1.0 } else { 0.0 };
     (rods as f64 - level) * ANGLE.cos() + level
