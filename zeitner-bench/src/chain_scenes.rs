@@ -144,7 +144,9 @@ pub fn large_scene<
 ) -> Result<Scene, String> {
     let third = if large.redundant { N } else { Z };
     if L != third {
-        return Err(format!("{name}: the end states' third part has {third} values, not {L}"));
+        return Err(format!(
+            "{name}: the end states' third part has {third} values, not {L}"
+        ));
     }
     let reference = on_large_stack(|| reference::<S, N, Z, L>(&make(), large))??;
     let flat = flattened(&reference);

@@ -1,8 +1,7 @@
 //! What the in-process Rust peers share: the consistent start and the timed repeats.
 
 use zeitner::{
-    ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, SparseSimulator,
-    Vector,
+    ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, SparseSimulator, Vector,
 };
 
 use crate::measure::median;
