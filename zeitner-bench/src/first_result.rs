@@ -17,7 +17,7 @@ pub struct SceneCrate {
     pub t_end: f64,
 }
 
-pub const SCENES: [SceneCrate; 5] = [
+pub const SCENES: [SceneCrate; 6] = [
     SceneCrate {
         scene: "pendulum",
         file: "pendulum",
@@ -31,6 +31,15 @@ pub const SCENES: [SceneCrate; 5] = [
         construct: "scenes::steam_generator::SteamGenerator::paper()",
         start: "(Vector::<3>::zeros(), Vector::zeros())",
         t_end: 2.0,
+    },
+    SceneCrate {
+        // The file holds two more contact scenes, which this crate compiles too.
+        scene: "wall_pendulum",
+        file: "contact",
+        construct: "scenes::contact::WallPendulum { m: 1.0, length: 1.0, g: 9.81, e: 1.0, \
+                    height: -2.0 }",
+        start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
+        t_end: 10.0,
     },
     SceneCrate {
         scene: "andrews",
