@@ -2,7 +2,16 @@
 
 Differential states x = (q, v), algebraic z = lambda:
     q' = v,  v' = M^-1 (F - G^T lambda),  0 = G v' + b  (the acceleration-level constraint).
-The position constraints are not enforced (index-1 drift); max_g reports how far they drift.
+The position constraints are not enforced (index-1 drift); max_g reports how far they drift (the
+largest |g| over 100 output times; 0 on the knife edge, whose only row is velocity-level).
+Scenes: pendulum, steam_generator, andrews, knife_edge, spring_support; chain_64 and chain_256
+(32 / 128 pendulums hung from the origin, released horizontally) and ladder_64 and ladder_256
+(2x16 / 2x64 nodes, rods along both rails and as rungs, the ends pinned by 8 coordinate rows, 3
+of all rows redundant), as in zeitner-bench/src/scaling/scenes.rs. On the ladders the multipliers
+are not unique, and the lambda slot holds instead the N generalised constraint forces G^T lambda;
+IDAS fails there (its Newton matrices are singular, see REDUNDANT below), printing FAIL.
+On the chains and ladders a warm-up run over 1 CPU second is the only run and its time is
+reported; otherwise cpu_seconds is the median of 5 runs after the warm-up.
 Functions are CasADi SX expressions, evaluated in one of two modes:
     vm       CasADi's SX virtual machine (the default);
     codegen  the integrator's own JIT: CasADi generates C for the functions IDAS calls (the DAE
@@ -16,11 +25,13 @@ or  FAIL,<setting>,<message>
 """
 import math
 import os
+import re
 import sys
 import tempfile
 import time
 
 import casadi as ca
+import numpy as np
 
 
 def pendulum():
@@ -125,10 +136,88 @@ def knife_edge():
     return q, v, t, M, F, gv, [0.0, 0.0, 0.0], [0.0, 0.0, omega]
 
 
+def chain(links):
+    """scaling/scenes.rs's chain: m = l = 1, g = 9.81, from horizontal_chain() (x_i = i + 1) at rest."""
+    def scene():
+        m, L, g = 1.0, 1.0, 9.81
+        n = 2 * links
+        q = ca.SX.sym("q", n)
+        v = ca.SX.sym("v", n)
+        t = ca.SX.sym("t")
+        M = ca.diag(ca.SX([m] * n))
+        F = ca.vertcat(*[0 if i % 2 == 0 else -m * g for i in range(n)])
+        x = [0, *[q[2 * i] for i in range(links)]]
+        y = [0, *[q[2 * i + 1] for i in range(links)]]
+        gq = ca.vertcat(*[(x[i + 1] - x[i]) ** 2 + (y[i + 1] - y[i]) ** 2 - L * L for i in range(links)])
+        q0 = [float(i // 2 + 1) if i % 2 == 0 else 0.0 for i in range(n)]
+        return q, v, t, M, F, gq, q0, [0.0] * n
+    return scene
+
+
+ANGLE = 0.3
+
+
+def ladder_span(nodes):
+    rods = nodes - 1
+    level = 1.0 if rods % 2 == 1 else 0.0
+    return (rods - level) * math.cos(ANGLE) + level
+
+
+def sagging_ladder(nodes):
+    """The bottom rail in a V (rods at -+ANGLE, a level rod in the middle when their number is
+    odd), the top rail a rung above; node i's (bx, by, tx, ty) at 4i..4i+3."""
+    rods = nodes - 1
+    q = [0.0] * (4 * nodes)
+    x = y = 0.0
+    for i in range(nodes):
+        q[4 * i: 4 * i + 4] = [x, y, x, y + 1.0]
+        angle = -ANGLE if 2 * i + 1 < rods else (0.0 if 2 * i + 1 == rods else ANGLE)
+        x += math.cos(angle)
+        y += math.sin(angle)
+    return q
+
+
+def ladder(nodes):
+    """scaling/scenes.rs's ladder, rows in its order: m = l = 1, g = 9.81, span = ladder_span(nodes),
+    from sagging_ladder() at rest."""
+    def scene():
+        m, L, g = 1.0, 1.0, 9.81
+        span = ladder_span(nodes)
+        n = 4 * nodes
+        q = ca.SX.sym("q", n)
+        v = ca.SX.sym("v", n)
+        t = ca.SX.sym("t")
+        M = ca.diag(ca.SX([m] * n))
+        F = ca.vertcat(*[0 if i % 2 == 0 else -m * g for i in range(n)])
+
+        def rod(a, b):  # points a and b, b_i = 2i, t_i = 2i + 1
+            return (q[2 * b] - q[2 * a]) ** 2 + (q[2 * b + 1] - q[2 * a + 1]) ** 2 - L * L
+
+        rows = [rod(2 * i + rail, 2 * i + 2 + rail) for i in range(nodes - 1) for rail in (0, 1)]
+        rows += [rod(2 * i, 2 * i + 1) for i in range(nodes)]
+        last = n - 4
+        rows += [q[0], q[1], q[2], q[3] - L, q[last] - span, q[last + 1], q[last + 2] - span, q[last + 3] - L]
+        return q, v, t, M, F, ca.vertcat(*rows), sagging_ladder(nodes), [0.0] * n
+    return scene
+
+
 SCENES = {"pendulum": pendulum, "steam_generator": steam_generator, "andrews": andrews,
-          "spring_support": spring_support, "knife_edge": knife_edge}
+          "spring_support": spring_support, "knife_edge": knife_edge,
+          "chain_64": chain(32), "chain_256": chain(128), "ladder_64": ladder(16), "ladder_256": ladder(64)}
 # Scenes whose rows constrain velocities, g(q, v) = 0, linear in v.
 VELOCITY_ROWS = {"knife_edge"}
+# Scenes whose runs take seconds: a warm-up over LONG_RUN CPU seconds is their only run.
+LARGE = {"chain_64", "chain_256", "ladder_64", "ladder_256"}
+LONG_RUN = 1.0
+# Scenes with redundant rows, whose multipliers are not unique: their lambda slot holds instead
+# the generalised constraint forces G^T lambda (N values).
+# IDAS's Newton systems are solved by CasADi's default sparse QR. With redundant rows they are
+# singular: it fails in IDACalcIC (IDA_NO_RECOVERY), as do CasADi's other direct solvers (csparse,
+# lapacklu, mumps) and, without IDACalcIC, IDASolve (IDA_CONV_FAIL at t = 0). That failure is the
+# result: CasADi's iterative least-squares solver lsqr does resolve them, but too slowly to use
+# (ladder_64: 3 to 4 s a run at rtol 1e-4 to 1e-6, then at 1e-7 unfinished after 19 CPU minutes;
+# ladder_256 at 1e-4 unfinished after 16).
+REDUNDANT = {"ladder_64", "ladder_256"}
 
 
 # Integrator options per mode. With "jit" the integrator generates one C file holding the
@@ -168,9 +257,18 @@ def main():
     acc = ca.solve(M, F - G.T @ lam)
     x = ca.vertcat(q, v)
     dae = {"x": x, "z": lam, "t": t, "ode": ca.vertcat(v, acc), "alg": G @ acc + b}
-    # Consistent initial multipliers from the acceleration-level system.
-    lam0_fun = ca.Function("lam0", [q, v, t], [ca.solve(G @ ca.solve(M, G.T), G @ ca.solve(M, F) + b)])
-    lam0 = lam0_fun(q0, v0, 0.0)
+    # Consistent initial multipliers from the acceleration-level system; on the large scenes
+    # solved numerically, the least-squares solution of least norm where redundant rows make it
+    # singular.
+    if scene in LARGE:
+        system0 = ca.Function("system0", [q, v, t], [G @ ca.solve(M, G.T), G @ ca.solve(M, F) + b])
+        A0, r0 = (x.full() for x in system0(q0, v0, 0.0))
+        lam0 = np.linalg.lstsq(A0, r0, rcond=None)[0]
+    else:
+        lam0_fun = ca.Function("lam0", [q, v, t], [ca.solve(G @ ca.solve(M, G.T), G @ ca.solve(M, F) + b)])
+        lam0 = lam0_fun(q0, v0, 0.0)
+    # The reported multipliers: lambda, or on scenes with redundant rows G^T lambda.
+    report_fun = ca.Function("report", [q, v, lam], [G.T @ lam if scene in REDUNDANT else lam])
     # max_g: the position rows' drift (velocity rows have none to report).
     g_fun = ca.Function("g", [q], [ca.SX.zeros(1) if scene in VELOCITY_ROWS else gq])
     grid = [t_end * k / 100.0 for k in range(1, 101)]
@@ -191,9 +289,11 @@ def main():
             if isinstance(integrator, Exception):
                 raise integrator
             args = {"x0": ca.vertcat(*q0, *v0), "z0": lam0}
+            start = time.process_time()
             result = integrator(**args)  # warm-up
-            times = []
-            for _ in range(5):
+            warm_up = time.process_time() - start
+            times = [warm_up] if scene in LARGE and warm_up > LONG_RUN else []
+            for _ in range(0 if times else 5):
                 start = time.process_time()
                 result = integrator(**args)
                 times.append(time.process_time() - start)
@@ -203,11 +303,17 @@ def main():
             max_g = max(float(ca.mmax(ca.fabs(g_fun(xf[:n, k])))) for k in range(xf.shape[1]))
             stats = integrator.stats()
             steps = stats.get("nsteps", stats.get("n_steps", 0))
-            qe, ve, le = xf[:n, -1], xf[n:, -1], zf[:, -1]
+            qe, ve = xf[:n, -1], xf[n:, -1]
+            le = report_fun(qe, ve, zf[:, -1]).full().ravel()
             values = ",".join(f"{float(x):.17e}" for x in [*qe, *ve, *le])
             print(f"ROW,{setting},{int(steps)},{times[len(times) // 2]:.6e},{max_g:.6e},{values}", flush=True)
         except Exception as error:  # a peer that cannot reach an accuracy is a result
-            message = str(error).replace("\n", " ").replace(",", ";")[:200]
+            # CasADi's error without the call chain's prefixes ("Error in Function::call for 'F'
+            # [IdasInterface] at .../function.cpp:1655: ..."), which would fill the 200 characters.
+            message = re.sub(r"Error in Function::call for '[^']*' \[\w+\] at \S+:\s+|\.\.\./casadi/\S+:\s+", "", str(error))
+            if scene in REDUNDANT:
+                message = f"redundant rows: {message}"
+            message = message.replace("\n", " ").replace(",", ";")[:200]
             print(f"FAIL,{setting},{message}", flush=True)
 
 
