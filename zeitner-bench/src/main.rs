@@ -1279,8 +1279,10 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          index-1 formulation, in its SX virtual machine (`peer-casadi-idas`) and with its functions \
          generated as C and compiled by gcc -O3 (`peer-casadi-idas-c`); Exudyn 1.13.6's \
          generalised-α (index 3) and trapezoidal (index 2) solvers with fixed steps, built from its \
-         native objects (the steam generator's load through Python user functions; Andrews not \
-         modelled); in process, calling the scenes' generated functions and with the Jacobians of \
+         native objects (the steam generator's load and the knife edge's velocity-level row through \
+         Python user functions; the ladders with its dense full-pivoting LU, which passes over their \
+         dependent rows; Andrews and the wall pendulum, whose contact Exudyn models as a penalty \
+         spring, not modelled); in process, calling the scenes' generated functions and with the Jacobians of \
          their generated derivatives: with `--features diffsol`, diffsol 0.18's BDF, ESDIRK 3(4) and \
          TR-BDF2 on the index-1 formulation (the multipliers out of the error test); with \
          `--features differential-equations`, differential-equations 0.7's Radau5 on the index-3 and \
