@@ -3,7 +3,6 @@
 //!
 //! `cargo run --release -p zeitner-bench -- work-precision` (`--quick` for a smoke run).
 
-mod chain_scenes;
 #[cfg(feature = "differential-equations")]
 mod de_peer;
 #[cfg(feature = "diffsol")]
@@ -17,6 +16,7 @@ mod hand_written;
 mod impacts;
 #[cfg(any(feature = "diffsol", feature = "differential-equations"))]
 mod in_process;
+mod large_scenes;
 mod measure;
 mod peers;
 mod scaling;
@@ -987,6 +987,15 @@ fn peer_row(scene: &Scene, method: &str, run: peers::PeerRun) -> Row {
     row
 }
 
+/// A failure's message cut to its first 300 characters: Radau5's quote the whole state.
+fn shortened(message: &str) -> String {
+    const LIMIT: usize = 300;
+    match message.char_indices().nth(LIMIT) {
+        Some((end, _)) => format!("{} …", &message[..end]),
+        None => message.to_string(),
+    }
+}
+
 fn csv_line(row: &Row) -> String {
     format!(
         "{},{},{},{:e},{:e},{:e},{:e},{},{},{:e},{}",
@@ -1033,7 +1042,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if wanted("spring_support") {
         scenes.push(spring_support_scene());
     }
-    use chain_scenes::{large_scene, Large};
+    use large_scenes::{large_scene, Large};
     if wanted("chain_64") {
         let title = "Chain of 32 pendulums (64 coordinates), released horizontally, 1 s";
         let make = || Chain32 {
@@ -1128,7 +1137,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             }
             methods
                 .into_iter()
-                .filter(|m| !scene.large || chain_scenes::METHODS.contains(&m.name))
+                .filter(|m| !scene.large || large_scenes::METHODS.contains(&m.name))
                 .filter(|m| {
                     args.methods.is_empty()
                         || args.methods.iter().any(|w| m.name.contains(w.as_str()))
@@ -1360,7 +1369,7 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
                 "- `{}` {} failed: {}",
                 row.method,
                 row.setting,
-                row.failure.as_deref().unwrap_or("")
+                shortened(row.failure.as_deref().unwrap_or(""))
             );
         }
         let _ = writeln!(out);
