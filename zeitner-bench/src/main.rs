@@ -30,7 +30,7 @@ use std::path::PathBuf;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use scaling::scenes::{
-    ladder_span, Chain128, Chain32, IndependentLadder16, IndependentLadder64, Ladder16, Ladder64,
+    Chain128, Chain32, IndependentLadder16, IndependentLadder64, Ladder16, Ladder64,
 };
 use scenes::andrews::Andrews;
 use scenes::contact::WallPendulum;
@@ -1044,72 +1044,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     use large_scenes::{large_scene, Large};
     if wanted("chain_64") {
-        let title = "Chain of 32 pendulums (64 coordinates), released horizontally, 1 s";
-        let make = || Chain32 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-        };
         scenes.push(large_scene::<_, _, 64, 32, 32, 128, 160, 32>(
             "chain_64",
-            title,
-            (make, make),
+            "Chain of 32 pendulums (64 coordinates), released horizontally, 1 s",
+            (Chain32::standard, Chain32::standard),
             Large::chain(),
         )?);
     }
     if wanted("chain_256") {
-        let title = "Chain of 128 pendulums (256 coordinates), released horizontally, 1 s";
-        let make = || Chain128 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-        };
         scenes.push(large_scene::<_, _, 256, 128, 128, 512, 640, 128>(
             "chain_256",
-            title,
-            (make, make),
+            "Chain of 128 pendulums (256 coordinates), released horizontally, 1 s",
+            (Chain128::standard, Chain128::standard),
             Large::chain(),
         )?);
     }
     if wanted("ladder_64") {
-        let title = "Ladder of 2×16 nodes (64 coordinates) sagging between pinned ends, 1 s";
-        let make = || Ladder16 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-            span: ladder_span(16),
-        };
-        let peer_model = || IndependentLadder16 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-            span: ladder_span(16),
-        };
         scenes.push(large_scene::<_, _, 64, 54, 51, 128, 179, 64>(
             "ladder_64",
-            title,
-            (make, peer_model),
+            "Ladder of 2×16 nodes (64 coordinates) sagging between pinned ends, 1 s",
+            (Ladder16::standard, IndependentLadder16::standard),
             Large::ladder(),
         )?);
     }
     if wanted("ladder_256") {
-        let title = "Ladder of 2×64 nodes (256 coordinates) sagging between pinned ends, 1 s";
-        let make = || Ladder64 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-            span: ladder_span(64),
-        };
-        let peer_model = || IndependentLadder64 {
-            m: 1.0,
-            l: 1.0,
-            g: 9.81,
-            span: ladder_span(64),
-        };
         scenes.push(large_scene::<_, _, 256, 198, 195, 512, 707, 256>(
             "ladder_256",
-            title,
-            (make, peer_model),
+            "Ladder of 2×64 nodes (256 coordinates) sagging between pinned ends, 1 s",
+            (Ladder64::standard, IndependentLadder64::standard),
             Large::ladder(),
         )?);
     }
