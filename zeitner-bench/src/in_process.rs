@@ -1,8 +1,6 @@
 //! What the in-process Rust peers share: the consistent start and the timed repeats.
 
-use zeitner::{
-    ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, SparseSimulator, Vector,
-};
+use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, Vector};
 
 use crate::measure::median;
 use crate::peers::{PeerEnd, PeerRun};
@@ -17,26 +15,22 @@ pub fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
         constraint_tolerance: 1e-12,
         ..Options::default()
     };
-    // `SparseSimulator` takes the dependent rows the dense one refuses (the ladders').
-    let end = match Simulator::new(scene, start.0, start.1, 0.0, options) {
-        Ok(sim) => sim.last().end,
-        Err(dense) => match SparseSimulator::new(scene, start.0, start.1, 0.0, options) {
-            Ok(sim) => sim.last().end,
-            Err(_) => {
-                return Err(PeerRun {
-                    setting: "all".into(),
-                    outcome: Err(dense.to_string()),
-                })
-            }
-        },
-    };
-    Ok(end
-        .q
-        .iter()
-        .chain(end.v.iter())
-        .chain(end.lambda.iter())
-        .copied()
-        .collect())
+    match Simulator::new(scene, start.0, start.1, 0.0, options) {
+        Ok(sim) => {
+            let end = sim.last().end;
+            Ok(end
+                .q
+                .iter()
+                .chain(end.v.iter())
+                .chain(end.lambda.iter())
+                .copied()
+                .collect())
+        }
+        Err(error) => Err(PeerRun {
+            setting: "all".into(),
+            outcome: Err(error.to_string()),
+        }),
+    }
 }
 
 /// Runs an in-process peer six times per relative tolerance and keeps the median CPU time of
