@@ -1262,9 +1262,10 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          (over the last four first-step lengths, where the crate cannot restart, only the end \
          state is projected); on the pendulum against the wall DOP853 alone runs, its gap an event \
          located on the crate's dense output where Newton's impact law sets the velocities and the \
-         method restarts (Radau5 and diffsol's methods would hold the gap closed). The dense \
-         peers cannot take the ladders' three dependent rows: they run the ladder with those pin \
-         rows removed, which `SparseSimulator` names. The peers' absolute tolerances are 1e-2·rtol; their setup is outside \
+         method restarts (Radau5 and diffsol's methods would hold the gap closed). The \
+         in-process peers cannot take the ladders' three dependent rows: they run the ladder \
+         with those pin rows removed, the rows the dense `Simulator`'s rank check names; CasADi \
+         and Exudyn get every row. The peers' absolute tolerances are 1e-2·rtol; their setup is outside \
          the timing except differential-equations' initialisation, which its `solve` includes. On \
          the chains and ladders the peers run rtol 1e-4 … 1e-8 and steps of 10, 3 and 1 ms only (so \
          \"not reached\" at 1e-8 means not tried tighter), and runs of over a second are timed once. A peer failing or not reaching \

@@ -145,8 +145,8 @@ ladder!(Ladder8, 8);
 ladder!(Ladder16, 16);
 ladder!(Ladder32, 32);
 ladder!(Ladder64, 64);
-// The peers' ladders: the three dependent pin rows that `SparseSimulator` reports removed, as
-// the dense formulations need.
+// The in-process peers' ladders: without the three dependent pin rows that the dense
+// `Simulator`'s rank check names, as the dense formulations need.
 ladder!(IndependentLadder16, 16, 5, [0, 3, 4, 6, 7]);
 ladder!(IndependentLadder64, 64, 5, [0, 3, 4, 6, 7]);
 
