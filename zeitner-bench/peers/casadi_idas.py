@@ -27,6 +27,8 @@ import math
 import os
 import re
 import sys
+
+from ladder_geometry import ladder_span, sagging_ladder
 import tempfile
 import time
 
@@ -152,29 +154,6 @@ def chain(links):
         q0 = [float(i // 2 + 1) if i % 2 == 0 else 0.0 for i in range(n)]
         return q, v, t, M, F, gq, q0, [0.0] * n
     return scene
-
-
-ANGLE = 0.3
-
-
-def ladder_span(nodes):
-    rods = nodes - 1
-    level = 1.0 if rods % 2 == 1 else 0.0
-    return (rods - level) * math.cos(ANGLE) + level
-
-
-def sagging_ladder(nodes):
-    """The bottom rail in a V (rods at -+ANGLE, a level rod in the middle when their number is
-    odd), the top rail a rung above; node i's (bx, by, tx, ty) at 4i..4i+3."""
-    rods = nodes - 1
-    q = [0.0] * (4 * nodes)
-    x = y = 0.0
-    for i in range(nodes):
-        q[4 * i: 4 * i + 4] = [x, y, x, y + 1.0]
-        angle = -ANGLE if 2 * i + 1 < rods else (0.0 if 2 * i + 1 == rods else ANGLE)
-        x += math.cos(angle)
-        y += math.sin(angle)
-    return q
 
 
 def ladder(nodes):

@@ -41,6 +41,8 @@ ladders a warm-up over 1 s is the only run and its time is reported.
 """
 import math
 import sys
+
+from ladder_geometry import ladder_span, sagging_ladder
 import time
 
 import numpy as np
@@ -228,29 +230,6 @@ def chain(links):
         return state, residual
 
     return build
-
-
-ANGLE = 0.3
-
-
-def ladder_span(nodes):
-    rods = nodes - 1
-    level = 1.0 if rods % 2 == 1 else 0.0
-    return (rods - level) * math.cos(ANGLE) + level
-
-
-def sagging_ladder(nodes):
-    """The bottom rail in a V (rods at -+ANGLE, a level rod in the middle when their number is
-    odd), the top rail a rung above; node i's (bx, by, tx, ty) at 4i..4i+3."""
-    rods = nodes - 1
-    q = [0.0] * (4 * nodes)
-    x = y = 0.0
-    for i in range(nodes):
-        q[4 * i: 4 * i + 4] = [x, y, x, y + 1.0]
-        angle = -ANGLE if 2 * i + 1 < rods else (0.0 if 2 * i + 1 == rods else ANGLE)
-        x += math.cos(angle)
-        y += math.sin(angle)
-    return q
 
 
 def ladder_rows(nodes, span, L=1.0):
