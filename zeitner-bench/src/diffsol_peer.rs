@@ -6,12 +6,17 @@
 //! The right-hand side calls the scene's generated functions, so model evaluation costs the same
 //! as for Zeitner; the Jacobian-vector products multiply by the Jacobian of [`jacobian`].
 //! The position constraints drift (index 1); `max_g` says how far.
+//!
+//! Gaps (`peer_gaps`): an open gap's row holds its λ at 0. Where one closes, diffsol's root
+//! finding stops the step; the state is moved back to the root (`state_mut_back`), projected,
+//! given Newton's impact law, and the method continues from it (a root where a gap opens again
+//! is passed over).
 
 use std::cell::RefCell;
 
 use diffsol::{
     DiffsolError, NalgebraLU, NalgebraMat, NalgebraVec, OdeBuilder, OdeEquationsImplicit,
-    OdeSolverMethod, OdeSolverStopReason, Vector as _,
+    OdeSolverMethod, OdeSolverProblem, OdeSolverStopReason, StateRefMut, Vector as _,
 };
 use zeitner::__private::nalgebra::{DMatrix, DVectorView, DVectorViewMut};
 use zeitner::{ConstrainedSystem, Vector};
@@ -20,6 +25,9 @@ use crate::in_process::{
     acceleration, acceleration_jacobians, consistent_start, split, timed_runs,
 };
 use crate::measure::cpu_seconds;
+use crate::peer_gaps::{
+    gap_rows, impact, index1_acceleration, position_violation, project, release_gaps,
+};
 use crate::peers::{PeerEnd, PeerRun};
 
 /// `f(y)` of the index-1 formulation.
@@ -34,8 +42,9 @@ fn rhs<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         out.iter_mut().for_each(|x| *x = f64::NAN);
         return;
     };
-    let algebraic =
+    let mut algebraic =
         scene.constraint_jacobian(&q, &v, t) * a + scene.constraint_acceleration_bias(&q, &v, t);
+    release_gaps::<S, N, Z>(&mut algebraic, &lambda);
     out[..N].copy_from_slice(v.as_slice());
     out[N..2 * N].copy_from_slice(a.as_slice());
     out[2 * N..].copy_from_slice(algebraic.as_slice());
@@ -94,6 +103,11 @@ fn jacobian<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             j[(2 * N + r, c)] += column[r];
         }
     }
+    // The open gaps' rows: λ_r = 0.
+    for r in gap_rows::<S, N, Z>() {
+        j.row_mut(2 * N + r).fill(0.0);
+        j[(2 * N + r, 2 * N + r)] = 1.0;
+    }
     j
 }
 
@@ -125,7 +139,7 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let n = 2 * N + Z;
     let init = y0.to_vec();
     let kept: RefCell<Option<KeptJacobian>> = RefCell::new(None);
-    let problem = OdeBuilder::<NalgebraMat<f64>>::new()
+    let builder = OdeBuilder::<NalgebraMat<f64>>::new()
         .rtol(rtol)
         // The multipliers are left out of the error test, as for IDAS (suppress_algebraic).
         .atol(
@@ -157,16 +171,30 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         .init(
             move |_p: &[f64], _t: f64, y: &mut [f64]| y.copy_from_slice(&init),
             n,
+        );
+    // Roots where a gap closes, only on scenes with gaps.
+    let (steps, max_g, values, cpu) = if S::UNILATERAL_CONSTRAINTS > 0 {
+        let gaps = builder.root(
+            |x: &[f64], _p: &[f64], t: f64, y: &mut [f64]| {
+                let (q, v, _) = split::<N, Z>(x);
+                let values = scene.constraint_residual(&q, &v, t);
+                y.copy_from_slice(&values.as_slice()[gap_rows::<S, N, Z>()]);
+            },
+            S::UNILATERAL_CONSTRAINTS,
+        );
+        solve(
+            scene,
+            gaps.build().map_err(|e| e.to_string())?,
+            method,
+            t_end,
         )
-        .build()
-        .map_err(|e| e.to_string())?;
-    // Each solver is built (with its consistent initialisation) before `march` times it.
-    let (steps, max_g, values, cpu) = match method {
-        Method::Bdf => march::<S, _, N, Z>(scene, problem.bdf::<NalgebraLU<f64>>(), t_end),
-        Method::Esdirk34 => {
-            march::<S, _, N, Z>(scene, problem.esdirk34::<NalgebraLU<f64>>(), t_end)
-        }
-        Method::TrBdf2 => march::<S, _, N, Z>(scene, problem.tr_bdf2::<NalgebraLU<f64>>(), t_end),
+    } else {
+        solve(
+            scene,
+            builder.build().map_err(|e| e.to_string())?,
+            method,
+            t_end,
+        )
     }?;
     Ok(PeerEnd {
         steps,
@@ -176,7 +204,32 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     })
 }
 
-/// Steps `solver` to `t_end`: the accepted steps, the largest position residual over them, the
+/// Builds `method`'s solver for `problem` (with its consistent initialisation) and marches it.
+fn solve<S, Eqn, const N: usize, const Z: usize>(
+    scene: &S,
+    problem: OdeSolverProblem<Eqn>,
+    method: Method,
+    t_end: f64,
+) -> Result<(u64, f64, Vec<f64>, f64), String>
+where
+    S: ConstrainedSystem<N, Z>,
+    Eqn: OdeEquationsImplicit<
+        T = f64,
+        V = NalgebraVec<f64>,
+        M = NalgebraMat<f64>,
+        C = diffsol::NalgebraContext,
+    >,
+{
+    match method {
+        Method::Bdf => march::<S, _, N, Z>(scene, problem.bdf::<NalgebraLU<f64>>(), t_end),
+        Method::Esdirk34 => {
+            march::<S, _, N, Z>(scene, problem.esdirk34::<NalgebraLU<f64>>(), t_end)
+        }
+        Method::TrBdf2 => march::<S, _, N, Z>(scene, problem.tr_bdf2::<NalgebraLU<f64>>(), t_end),
+    }
+}
+
+/// Steps `solver` to `t_end`, with an impact wherever a gap closes: the accepted steps, the largest position residual over them, the
 /// end state and the CPU seconds of the stepping.
 fn march<'a, S, Eqn, const N: usize, const Z: usize>(
     scene: &S,
@@ -194,18 +247,53 @@ where
     let mut max_g = 0.0f64;
     loop {
         let reason = solver.step().map_err(|e| e.to_string())?;
+        if let OdeSolverStopReason::RootFound(t_root, root) = reason {
+            // A gap that opens again after its impact is also a root; only a closing one counts.
+            let y = solver.interpolate(t_root).map_err(|e| e.to_string())?;
+            let (q, v, _) = split::<N, Z>(&y.clone_as_vec());
+            let gap = gap_rows::<S, N, Z>().start + root;
+            if (scene.constraint_jacobian(&q, &v, t_root).row(gap) * v)[0] < 0.0 {
+                solver.state_mut_back(t_root).map_err(|e| e.to_string())?;
+                after_impact(scene, solver.state_mut(), gap)?;
+            }
+            continue;
+        }
         steps += 1;
         let y = &solver.state().y;
         let q = Vector::<N>::from_fn(|i, _| y.get_index(i));
         let t = solver.state().t;
-        let residual = scene.constraint_residual(&q, &Vector::zeros(), t);
-        max_g = max_g.max(residual.rows(0, S::POSITION_CONSTRAINTS).amax());
+        max_g = max_g.max(position_violation(scene, &q, &Vector::zeros(), t));
         if matches!(reason, OdeSolverStopReason::TstopReached) {
             break;
         }
     }
     let cpu = cpu_seconds() - before;
     Ok((steps, max_g, solver.state().y.clone_as_vec(), cpu))
+}
+
+/// Replaces the state at a gap's closing with the one just after its impact: projected onto
+/// the constraints, Newton's impact law, and the index-1 multipliers and derivatives there.
+fn after_impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    state: StateRefMut<'_, NalgebraVec<f64>>,
+    gap: usize,
+) -> Result<(), String> {
+    let t = *state.t;
+    let (q, v, _) = split::<N, Z>(&state.y.clone_as_vec());
+    let singular = || "a singular matrix at an impact".to_string();
+    let (q, v) = project(scene, q, v, t, 1e-14).ok_or_else(singular)?;
+    let v = impact(scene, &q, &v, t, gap).ok_or_else(singular)?;
+    let (a, lambda) = index1_acceleration(scene, &q, &v, t).ok_or_else(singular)?;
+    let y = q.iter().chain(v.iter()).chain(lambda.iter());
+    let dy = v
+        .iter()
+        .chain(a.iter())
+        .chain(core::iter::repeat_n(&0.0, Z));
+    for (i, (&y, &dy)) in y.zip(dy).enumerate() {
+        state.y.set_index(i, y);
+        state.dy.set_index(i, dy);
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -237,5 +325,21 @@ mod tests {
         );
         let knife = KnifeEdge::PAPER;
         check(&knife, (Vector::zeros(), Vector::<3>::new(0.0, 0.0, 2.0)));
+    }
+
+    /// Each method with its impacts (roots and a reset) against the free pendulum mirrored at
+    /// the wall (restitution 1).
+    #[test]
+    fn methods_bounce_off_the_wall_as_the_mirrored_pendulum() {
+        use crate::in_process::{mirrored_pendulum, wall_pendulum};
+        let (wall, start, t_end) = wall_pendulum();
+        for method in [Method::Bdf, Method::Esdirk34, Method::TrBdf2] {
+            let runs = run(&wall, start, t_end, method, &[1e-10]);
+            let end = runs[0].outcome.as_ref().expect("the peer runs");
+            for (got, want) in end.values.iter().zip(mirrored_pendulum(t_end)) {
+                assert!((got - want).abs() < 1e-5, "{got} against {want}");
+            }
+            assert!(end.max_g < 1e-6, "max_g {}", end.max_g);
+        }
     }
 }

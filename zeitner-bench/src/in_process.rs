@@ -135,6 +135,49 @@ pub fn moving_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     y
 }
 
+/// The gap scene of the peers' tests: the pendulum beside an elastic wall, released
+/// horizontally away from it, and an end time after two impacts.
+#[cfg(test)]
+pub fn wall_pendulum() -> (
+    crate::scenes::contact::WallPendulum,
+    (Vector<2>, Vector<2>),
+    f64,
+) {
+    let wall = crate::scenes::contact::WallPendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+        e: 1.0,
+        height: -2.0,
+    };
+    (wall, (Vector::<2>::new(1.0, 0.0), Vector::zeros()), 2.5)
+}
+
+/// The end state `(q, v, λ)` of [`wall_pendulum`] at `t_end`: with an elastic wall, the free
+/// pendulum's (reduced coordinates), mirrored at the wall, and no force in the open gap.
+#[cfg(test)]
+pub fn mirrored_pendulum(t_end: f64) -> [f64; 6] {
+    use crate::scenes::pendulum::Pendulum;
+    use crate::scenes::reference::pendulum_released_horizontally;
+    let free = pendulum_released_horizontally(
+        &Pendulum {
+            m: 1.0,
+            length: 1.0,
+            g: 9.81,
+        },
+        t_end,
+    );
+    let side = free.q[0].signum();
+    [
+        side * free.q[0],
+        free.q[1],
+        side * free.v[0],
+        free.v[1],
+        free.lambda[0],
+        0.0,
+    ]
+}
+
 /// Asserts that `jacobian(r, c)` is `∂f_r/∂y_c` at `y` to 1e-5, against central differences.
 #[cfg(test)]
 pub fn assert_central_differences(

@@ -18,6 +18,8 @@ mod impacts;
 mod in_process;
 mod large_scenes;
 mod measure;
+#[cfg(any(feature = "diffsol", feature = "differential-equations"))]
+mod peer_gaps;
 mod peers;
 mod scaling;
 #[path = "../../examples/scenes/mod.rs"]
@@ -515,10 +517,9 @@ fn rust_peers<
         let mut add = |name: &'static str, results: Vec<peers::PeerRun>| {
             runs.extend(results.into_iter().map(|run| (name, run)));
         };
-        // Only DOP853 models gaps (events, with an impact); the others would hold them closed.
-        let gaps = S::UNILATERAL_CONSTRAINTS > 0;
+        // Every peer models gaps with events and an impact (`peer_gaps`).
         #[cfg(feature = "diffsol")]
-        if !gaps {
+        {
             use diffsol_peer::Method;
             let methods = [
                 ("peer-diffsol-bdf", Method::Bdf),
@@ -532,17 +533,14 @@ fn rust_peers<
         #[cfg(feature = "differential-equations")]
         {
             use de_peer::Index;
-            if !gaps {
-                let radau3 =
-                    de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Three, rtols);
-                add("peer-de-radau5-index3", radau3);
-                let radau2 = de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Two, rtols);
-                add("peer-de-radau5-index2", radau2);
-            }
+            let radau3 = de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Three, rtols);
+            add("peer-de-radau5-index3", radau3);
+            let radau2 = de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Two, rtols);
+            add("peer-de-radau5-index2", radau2);
             let dop853 = de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols);
             add("peer-de-dop853-projected", dop853);
         }
-        let _ = (&mut add, &scene, start, t_end, rtols, gaps);
+        let _ = (&mut add, &scene, start, t_end, rtols);
         runs
     })
 }
