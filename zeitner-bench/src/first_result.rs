@@ -8,26 +8,35 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-/// One scene as a user's crate: its file in `examples/scenes/`, how to build it and its start.
+/// One scene as a user's crate: where its model is written, how to build it and its start.
 pub struct SceneCrate {
     pub scene: &'static str,
-    pub file: &'static str,
+    pub source: Source,
     pub construct: &'static str,
     pub start: &'static str,
     pub t_end: f64,
 }
 
-pub const SCENES: [SceneCrate; 6] = [
+/// Where a scene's model is written.
+pub enum Source {
+    /// A file of `examples/scenes/`, a module of the crate; the dense `Simulator` runs it.
+    Example(&'static str),
+    /// One invocation of the scaling families' macros (`zeitner-bench/src/scaling/families.rs`);
+    /// `SparseSimulator` runs it, as the work-precision run does.
+    Family(&'static str),
+}
+
+pub const SCENES: [SceneCrate; 10] = [
     SceneCrate {
         scene: "pendulum",
-        file: "pendulum",
+        source: Source::Example("pendulum"),
         construct: "scenes::pendulum::Pendulum { m: 1.0, length: 1.0, g: 9.81 }",
         start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
         t_end: 10.0,
     },
     SceneCrate {
         scene: "steam_generator",
-        file: "steam_generator",
+        source: Source::Example("steam_generator"),
         construct: "scenes::steam_generator::SteamGenerator::paper()",
         start: "(Vector::<3>::zeros(), Vector::zeros())",
         t_end: 2.0,
@@ -35,7 +44,7 @@ pub const SCENES: [SceneCrate; 6] = [
     SceneCrate {
         // The file holds two more contact scenes, which this crate compiles too.
         scene: "wall_pendulum",
-        file: "contact",
+        source: Source::Example("contact"),
         construct: "scenes::contact::WallPendulum { m: 1.0, length: 1.0, g: 9.81, e: 1.0, \
                     height: -2.0 }",
         start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
@@ -43,24 +52,52 @@ pub const SCENES: [SceneCrate; 6] = [
     },
     SceneCrate {
         scene: "andrews",
-        file: "andrews",
+        source: Source::Example("andrews"),
         construct: "scenes::andrews::Andrews::published()",
         start: "(Vector::from(scenes::andrews::Andrews::Q0), Vector::zeros())",
         t_end: 0.03,
     },
     SceneCrate {
         scene: "knife_edge",
-        file: "knife_edge",
+        source: Source::Example("knife_edge"),
         construct: "scenes::knife_edge::KnifeEdge::PAPER",
         start: "(Vector::<3>::zeros(), Vector::<3>::new(0.0, 0.0, 2.0))",
         t_end: 2.0,
     },
     SceneCrate {
         scene: "spring_support",
-        file: "spring_support",
+        source: Source::Example("spring_support"),
         construct: "scenes::spring_support::SpringSupportedPendulum::STIFF",
         start: "{ let s = scenes::spring_support::SpringSupportedPendulum::STIFF; \
                 (Vector::from(s.start()), Vector::zeros()) }",
+        t_end: 1.0,
+    },
+    SceneCrate {
+        scene: "chain_64",
+        source: Source::Family("chain!(Chain32, 32);"),
+        construct: "Chain32::standard()",
+        start: "(horizontal_chain::<64>(), Vector::zeros())",
+        t_end: 1.0,
+    },
+    SceneCrate {
+        scene: "chain_256",
+        source: Source::Family("chain!(Chain128, 128);"),
+        construct: "Chain128::standard()",
+        start: "(horizontal_chain::<256>(), Vector::zeros())",
+        t_end: 1.0,
+    },
+    SceneCrate {
+        scene: "ladder_64",
+        source: Source::Family("ladder!(Ladder16, 16);"),
+        construct: "Ladder16::standard()",
+        start: "(sagging_ladder::<64>(), Vector::zeros())",
+        t_end: 1.0,
+    },
+    SceneCrate {
+        scene: "ladder_256",
+        source: Source::Family("ladder!(Ladder64, 64);"),
+        construct: "Ladder64::standard()",
+        start: "(sagging_ladder::<256>(), Vector::zeros())",
         t_end: 1.0,
     },
 ];
@@ -82,16 +119,32 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
     std::fs::write(dir.join("Cargo.toml"), manifest).map_err(|e| e.to_string())?;
     // The workspace's lock file, so that the crate builds with the same dependencies.
     std::fs::copy(root.join("Cargo.lock"), dir.join("Cargo.lock")).map_err(|e| e.to_string())?;
+    let (model, simulator) = match scene.source {
+        Source::Example(file) => (
+            format!(
+                "#[allow(dead_code)]\nmod scenes {{\n    #[path = {path:?}]\n    pub mod {file};\n    \
+                 pub mod reference {{\n        pub struct State<const N: usize, const Z: usize> {{\n            \
+                 pub q: [f64; N],\n            pub v: [f64; N],\n            pub lambda: [f64; Z],\n        \
+                 }}\n    }}\n}}\n\nuse zeitner::{{Options, Simulator, Vector}};\n",
+                path = root.join("examples/scenes").join(format!("{file}.rs")),
+            ),
+            "Simulator",
+        ),
+        Source::Family(invocation) => (
+            format!(
+                "#[macro_use]\n#[allow(dead_code)]\n#[path = {path:?}]\nmod families;\n\n\
+                 #[allow(unused_imports)]\nuse families::{{horizontal_chain, ladder_span, sagging_ladder}};\n\
+                 use zeitner::{{constrained_system, Options, SparseSimulator, Vector}};\n\n{invocation}\n",
+                path = root.join("zeitner-bench/src/scaling/families.rs"),
+            ),
+            "SparseSimulator",
+        ),
+    };
     let main = format!(
-        "#[allow(dead_code)]\nmod scenes {{\n    #[path = {path:?}]\n    pub mod {file};\n    \
-         pub mod reference {{\n        pub struct State<const N: usize, const Z: usize> {{\n            \
-         pub q: [f64; N],\n            pub v: [f64; N],\n            pub lambda: [f64; Z],\n        \
-         }}\n    }}\n}}\n\nuse zeitner::{{Options, Simulator, Vector}};\n\nfn main() {{\n    \
-         let scene = {construct};\n    let (q0, v0) = {start};\n    let mut sim = \
-         Simulator::new(&scene, q0, v0, 0.0, Options::default()).expect(\"a consistent start\");\n    \
-         sim.advance_to({t_end:?}, |_| {{}}).expect(\"a run\");\n    println!(\"{{:?}}\", sim.last().end.q);\n}}\n",
-        path = root.join("examples/scenes").join(format!("{}.rs", scene.file)),
-        file = scene.file,
+        "{model}\nfn main() {{\n    let scene = {construct};\n    let (q0, v0) = {start};\n    \
+         let mut sim = {simulator}::new(&scene, q0, v0, 0.0, Options::default())\n        \
+         .expect(\"a consistent start\");\n    sim.advance_to({t_end:?}, |_| {{}}).expect(\"a run\");\n    \
+         println!(\"{{:?}}\", sim.last().end.q);\n}}\n",
         construct = scene.construct,
         start = scene.start,
         t_end = scene.t_end,
@@ -144,7 +197,8 @@ pub fn markdown(scenes: &[&str], peer_setups: &[(&str, &str, f64)], work: &Path)
     let mut out = String::from(
         "\n## Time to the first result\n\n\
          Wall seconds from an edited scene to its first result. Zeitner: a crate holding just the \
-         scene and one run of it (default options, to the scene's end time), rebuilt with \
+         scene and one run of it (default options, to the scene's end time; the chains and \
+         ladders one invocation of their family's macro, run by `SparseSimulator`), rebuilt with \
          `cargo build --release` after its source was touched (the macro's expansion, rustc and \
          the link; the runtime built before), then run. Peers: the setup their script reports \
          (model and integrators built; for `-c`, CasADi's C code generation and gcc -O3 of each \

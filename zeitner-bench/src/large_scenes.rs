@@ -13,8 +13,8 @@ use zeitner::{ConstrainedSystem, Options, SparseSimulator, Vector};
 
 use crate::measure::{cpu_seconds, Allocations};
 use crate::peers::PeerRun;
+use crate::scaling::families::{horizontal_chain, sagging_ladder};
 use crate::scaling::reference_options;
-use crate::scaling::scenes::{horizontal_chain, sagging_ladder};
 use crate::scenes::reference::State;
 use crate::{flattened, measure_runs, rust_peers, Outcome, Scene};
 

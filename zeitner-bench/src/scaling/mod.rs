@@ -4,6 +4,8 @@
 //! The stack each run needs is found by running it in a child process on threads of growing
 //! stack sizes.
 
+#[macro_use]
+pub mod families;
 mod floor;
 pub mod scenes;
 
