@@ -8,6 +8,11 @@ Scenes:
     steam_generator  a 2D rigid body on a coordinate constraint q1 = h3 q3 and a distance
                      constraint about A, a coordinate damper, and the load through Python user
                      functions;
+    andrews          Andrews' squeezing mechanism: one generic ODE2 object on a 7-coordinate node,
+                     the configuration-dependent mass matrix and the forces as Python user
+                     functions, the 6 loop-closure rows as one position-level coordinate-vector
+                     constraint whose equation and exact Jacobian dg/dq are Python user functions
+                     (at velocity level, G q', when the index-2 solver asks);
     knife_edge       a 2D rigid body (x, y, heading) on the incline, the blade's velocity-level
                      row -sin(th) x' + cos(th) y' = 0 as a velocityLevel coordinate-vector
                      constraint whose equation and Jacobian (d/dq') are Python user functions;
@@ -20,17 +25,16 @@ Scenes:
                      redundant), released from the sagging start. Exudyn resolves the redundant rows
                      as its solver hints advise: EigenDense with linearSolver.ignoreSingularJacobian
                      (Eigen's full-pivoting LU). Their sparse LU is used on the chains.
-Andrews' mechanism is not modelled.
 
 The multipliers are converted to this project's convention M q'' = F - G^T lambda (Exudyn's is
 the same, M q'' + C_q^T lambda = f, but some of its rows are scaled differently):
 Exudyn's distance constraint is |p - p0| - L = 0, ours |p - p0|^2 - L^2 = 0, so lambda = force / (2 L);
 its coordinate constraint multiplies the second marker's value by factor1 and subtracts the
 first, h3 q3 - q1 = 0, the negative of our g1 = q1 - h3 q3, so lambda1 = -force; the knife
-edge's row is ours, lambda = force. On the ladders, whose redundant rows' multipliers are not
-unique, the lambda slot holds instead the 4*nodes generalised constraint forces G^T lambda
-(unique, and the same in either scaling). max_g is max |g(q)| over the position rows at the end
-(none on the knife edge: 0).
+edge's and Andrews' rows are ours, lambda = force. On the ladders, whose redundant rows'
+multipliers are not unique, the lambda slot holds instead the 4*nodes generalised constraint
+forces G^T lambda (unique, and the same in either scaling). max_g is max |g(q)| over the
+position rows at the end (none on the knife edge: 0).
 
 Usage: python exudyn_ga.py SOLVER SCENE T_END STEPS [STEPS ...]
 Prints once SETUP,<wall_seconds> (the first model built and assembled), then per step count
@@ -58,12 +62,14 @@ from exudyn.itemInterface import (
     MarkerNodeCoordinates,
     MarkerNodePosition,
     MassPoint2D,
+    NodeGenericODE2,
     NodePoint2D,
     NodeRigidBody2D,
     ObjectConnectorCartesianSpringDamper,
     ObjectConnectorCoordinate,
     ObjectConnectorCoordinateSpringDamper,
     ObjectConnectorCoordinateVector,
+    ObjectGenericODE2,
     ObjectGround,
     ObjectRigidBody2D,
     NodePointGround,
@@ -162,6 +168,127 @@ def knife_edge(mbs):
         return []  # no position rows
 
     return state, residual
+
+
+class AndrewsModel:
+    """Andrews' squeezing mechanism as in examples/scenes/andrews.rs (the test set's parameters):
+    q = (beta, Theta, gamma, Phi, delta, Omega, epsilon), its mass matrix M(q), force f(q, q'),
+    the 6 loop-closure rows g(q) and their Jacobian G = dg/dq."""
+    m1, m2, m3, m4, m5, m6, m7 = 0.04325, 0.00365, 0.02373, 0.00706, 0.07050, 0.00706, 0.05498
+    i1, i2, i3, i4, i5, i6, i7 = 2.194e-6, 4.410e-7, 5.255e-6, 5.667e-7, 1.169e-5, 5.667e-7, 1.912e-5
+    xa, ya, xb, yb, xc, yc = -0.06934, -0.00227, -0.03635, 0.03273, 0.014, 0.072
+    c0, l0, mom = 4530.0, 0.07785, 0.033
+    d, da, e, ea, rr, ra, ss = 0.028, 0.0115, 0.02, 0.01421, 0.007, 0.00092, 0.035
+    sa, sb, sc, sd, ta, tb, u = 0.01874, 0.01043, 0.018, 0.02, 0.02308, 0.00916, 0.04
+    ua, ub, zf, zt, fa = 0.01228, 0.00449, 0.02, 0.04, 0.01421
+    Q0 = [-0.0617138900142764496358948458001, 0.0, 0.455279819163070380255912382449,
+          0.222668390165885884674473185609, 0.487364979543842550225598953530,
+          -0.222668390165885884674473185609, 1.23054744454982119249735015568]
+
+    def mass(self, q):
+        m2, m4, m6, da, rr, zt, u = self.m2, self.m4, self.m6, self.da, self.rr, self.zt, self.u
+        ee, zz = self.e - self.ea, self.zf - self.fa
+        th, ph, om = q[1], q[3], q[5]
+        M = np.zeros((7, 7))
+        M[0, 0] = self.m1 * self.ra**2 + m2 * (rr**2 - 2 * da * rr * math.cos(th) + da**2) + self.i1 + self.i2
+        M[0, 1] = M[1, 0] = m2 * (da**2 - da * rr * math.cos(th)) + self.i2
+        M[1, 1] = m2 * da**2 + self.i2
+        M[2, 2] = self.m3 * (self.sa**2 + self.sb**2) + self.i3
+        M[3, 3] = m4 * ee**2 + self.i4
+        M[3, 4] = M[4, 3] = m4 * (ee**2 + zt * ee * math.sin(ph)) + self.i4
+        M[4, 4] = (m4 * (zt**2 + 2 * zt * ee * math.sin(ph) + ee**2) + self.m5 * (self.ta**2 + self.tb**2)
+                   + self.i4 + self.i5)
+        M[5, 5] = m6 * zz**2 + self.i6
+        M[5, 6] = M[6, 5] = m6 * (zz**2 - u * zz * math.sin(om)) + self.i6
+        M[6, 6] = (m6 * (zz**2 - 2 * u * zz * math.sin(om) + u**2) + self.m7 * (self.ua**2 + self.ub**2)
+                   + self.i6 + self.i7)
+        return M
+
+    def force(self, q, v):
+        sc, sd, ga, th, ph, om = self.sc, self.sd, q[2], q[1], q[3], q[5]
+        ee, zz = self.e - self.ea, self.zf - self.fa
+        xd = sd * math.cos(ga) + sc * math.sin(ga) + self.xb
+        yd = sd * math.sin(ga) - sc * math.cos(ga) + self.yb
+        ls = math.hypot(xd - self.xc, yd - self.yc)
+        fs = -self.c0 * (ls - self.l0) / ls
+        fx, fy = fs * (xd - self.xc), fs * (yd - self.yc)
+        k2, k4, k6 = self.m2 * self.da * self.rr, self.m4 * self.zt * ee, self.m6 * self.u * zz
+        return np.array([
+            self.mom - k2 * v[1] * (v[1] + 2 * v[0]) * math.sin(th),
+            k2 * v[0] ** 2 * math.sin(th),
+            fx * (sc * math.cos(ga) - sd * math.sin(ga)) + fy * (sd * math.cos(ga) + sc * math.sin(ga)),
+            k4 * v[4] ** 2 * math.cos(ph),
+            -k4 * v[3] * (v[3] + 2 * v[4]) * math.cos(ph),
+            -k6 * v[6] ** 2 * math.cos(om),
+            k6 * v[5] * (v[5] + 2 * v[6]) * math.cos(om),
+        ])
+
+    def constraints(self, q):
+        be, th, ga, ph, de, om, ep = q
+        e, zt, zf, u = self.e, self.zt, self.zf, self.u
+        x = self.rr * math.cos(be) - self.d * math.cos(be + th)
+        y = self.rr * math.sin(be) - self.d * math.sin(be + th)
+        return np.array([
+            x - self.ss * math.sin(ga) - self.xb,
+            y + self.ss * math.cos(ga) - self.yb,
+            x - e * math.sin(ph + de) - zt * math.cos(de) - self.xa,
+            y + e * math.cos(ph + de) - zt * math.sin(de) - self.ya,
+            x - zf * math.cos(om + ep) - u * math.sin(ep) - self.xa,
+            y - zf * math.sin(om + ep) + u * math.cos(ep) - self.ya,
+        ])
+
+    def jacobian(self, q):
+        be, th, ga, ph, de, om, ep = q
+        e, zt, zf, u = self.e, self.zt, self.zf, self.u
+        s, c = self.d * math.sin(be + th), self.d * math.cos(be + th)
+        x_be, x_th = -self.rr * math.sin(be) + s, s  # d/dbeta, d/dTheta of x and y above
+        y_be, y_th = self.rr * math.cos(be) - c, -c
+        sp, cp = e * math.sin(ph + de), e * math.cos(ph + de)
+        so, co = zf * math.sin(om + ep), zf * math.cos(om + ep)
+        G = np.zeros((6, 7))
+        G[0::2, 0], G[0::2, 1], G[1::2, 0], G[1::2, 1] = x_be, x_th, y_be, y_th
+        G[0, 2], G[1, 2] = -self.ss * math.cos(ga), -self.ss * math.sin(ga)
+        G[2, 3], G[2, 4] = -cp, -cp + zt * math.sin(de)
+        G[3, 3], G[3, 4] = -sp, -sp - zt * math.cos(de)
+        G[4, 5], G[4, 6] = so, so - u * math.cos(ep)
+        G[5, 5], G[5, 6] = -co, -co - u * math.sin(ep)
+        return G
+
+
+def andrews(mbs):
+    """Andrews' squeezing mechanism: one ObjectGenericODE2 on a 7-coordinate node, its mass matrix
+    and force as Python user functions, and the 6 loop-closure rows as one position-level
+    coordinate-vector constraint with its exact Jacobian G."""
+    model = AndrewsModel()
+    # Reference 0, so displacements (what the ODE2 user functions see) are the angles themselves.
+    node = mbs.AddNode(NodeGenericODE2(referenceCoordinates=[0.0] * 7, initialCoordinates=model.Q0,
+                                       initialCoordinates_t=[0.0] * 7, numberOfODE2Coordinates=7))
+    mbs.AddObject(ObjectGenericODE2(
+        nodeNumbers=[node], massMatrix=model.mass(model.Q0),
+        massMatrixUserFunction=lambda mbs_, t, item, q, q_t: model.mass(q),
+        forceUserFunction=lambda mbs_, t, item, q, q_t: model.force(q, q_t)))
+    groundNode = mbs.AddNode(NodePointGround(referenceCoordinates=[0.0, 0.0, 0.0]))
+    ground = mbs.AddMarker(MarkerNodeCoordinates(nodeNumber=groundNode))
+    coordinates = mbs.AddMarker(MarkerNodeCoordinates(nodeNumber=node))
+
+    def loop(mbs_, t, item, q, q_t, velocity_level):
+        # The index-2 solver asks for the velocity rows G q' (and for G as their d/dq').
+        return model.jacobian(q) @ q_t if velocity_level else model.constraints(q)
+
+    def jacobian(mbs_, t, item, q, q_t, velocity_level):
+        return model.jacobian(q)
+
+    closure = mbs.AddObject(ObjectConnectorCoordinateVector(
+        markerNumbers=[ground, coordinates], scalingMarker0=np.zeros((6, 1)),
+        constraintUserFunction=loop, jacobianUserFunction=jacobian))
+
+    def state():
+        c = mbs.GetNodeOutput(node, exu.OutputVariableType.Coordinates)
+        cv = mbs.GetNodeOutput(node, exu.OutputVariableType.Coordinates_t)
+        q, v = [float(c[i]) for i in range(7)], [float(cv[i]) for i in range(7)]
+        return q, v, [float(f) for f in mbs.GetObjectOutput(closure, exu.OutputVariableType.Force)]
+
+    return state, lambda q: list(model.constraints(q))
 
 
 def spring_support(mbs):
@@ -294,9 +421,9 @@ def ladder(nodes):
     return build
 
 
-SCENES = {"pendulum": pendulum, "steam_generator": steam_generator, "knife_edge": knife_edge,
-          "spring_support": spring_support, "chain_64": chain(32), "chain_256": chain(128),
-          "ladder_64": ladder(16), "ladder_256": ladder(64)}
+SCENES = {"pendulum": pendulum, "steam_generator": steam_generator, "andrews": andrews,
+          "knife_edge": knife_edge, "spring_support": spring_support, "chain_64": chain(32),
+          "chain_256": chain(128), "ladder_64": ladder(16), "ladder_256": ladder(64)}
 # Scenes whose runs take seconds: a warm-up over LONG_RUN CPU seconds is their only run.
 LARGE = {"chain_64", "chain_256", "ladder_64", "ladder_256"}
 LONG_RUN = 1.0

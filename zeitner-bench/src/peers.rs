@@ -50,6 +50,7 @@ const CASADI_C_SCENES: &[&str] = CASADI_SCENES.split_at(CASADI_SCENES.len() - 2)
 const EXUDYN_SCENES: &[&str] = &[
     "pendulum",
     "steam_generator",
+    "andrews",
     "knife_edge",
     "spring_support",
     "chain_64",
