@@ -281,11 +281,13 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
             v_known += (h * a[i][j]) * stages.a[j];
         }
         let t = start.t + self.tableau.c(i) * h;
-        // Guess: the last stage's velocity, or the start's continued by its acceleration.
+        // Guess: the last stage's velocity continued by its acceleration to this stage's time
+        // (or the start's, for an implicit first stage).
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
         } else {
-            stages.v[i - 1]
+            let ahead = (self.tableau.c(i) - self.tableau.c(i - 1)) * h;
+            stages.v[i - 1] + ahead * stages.a[i - 1]
         };
         // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
         let mut kept = self.kept(h);
@@ -427,12 +429,21 @@ fn solve_stage<Sys, const N: usize, const Z: usize>(
 where
     Sys: ConstrainedSystem<N, Z>,
 {
-    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>| {
+    // After the first sweep, the corrections' contraction `θ` bounds what is left of the error
+    // by `θ/(1-θ)` times the last correction (RADAU5's test); before it, the correction itself
+    // must be small enough.
+    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>, (norm, last_norm): (f64, f64)| {
         tolerances.is_some_and(|(rtol, atol)| {
+            let theta = norm / last_norm;
+            let rest = if last_norm.is_finite() && theta < 1.0 {
+                theta / (1.0 - theta)
+            } else {
+                1.0
+            };
             let fraction = stage_fraction(rtol);
             (0..N).all(|i| {
                 let scale = atol + rtol * v[i].abs().max(v_known[i].abs());
-                delta[i].is_finite() && delta[i].abs() <= fraction * scale
+                delta[i].is_finite() && rest * delta[i].abs() <= fraction * scale
             })
         })
     };
@@ -449,7 +460,7 @@ where
         let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
         // Converged; or stalled at the rounding floor, which stiff forces raise well above the
         // velocities' own precision (k·x is rounded before it is divided back down).
-        if within_tolerance(&delta, &v)
+        if within_tolerance(&delta, &v, (norm, last_norm))
             || norm <= 1e-12 * scale
             || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
         {
