@@ -1248,19 +1248,24 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          index-1 formulation, in its SX virtual machine (`peer-casadi-idas`) and with its functions \
          generated as C and compiled by gcc -O3 (`peer-casadi-idas-c`); Exudyn 1.13.6's \
          generalised-α (index 3) and trapezoidal (index 2) solvers with fixed steps, built from its \
-         native objects (the steam generator's load and the knife edge's velocity-level row through \
-         Python user functions; the ladders with its dense full-pivoting LU, which passes over their \
-         dependent rows; Andrews and the wall pendulum, whose contact Exudyn models as a penalty \
-         spring, not modelled); in process, calling the scenes' generated functions and with the Jacobians of \
+         native objects (the steam generator's load, the knife edge's velocity-level row and \
+         Andrews' mass matrix, forces and loop closures through Python user functions; the ladders \
+         with its dense full-pivoting LU, which passes over their dependent rows; not the wall \
+         pendulum, whose contact Exudyn models as a penalty spring; its adaptiveStep left on, so a \
+         coarse setting whose Newton fails is run with shorter steps than it names); in process, calling the scenes' generated functions and with the Jacobians of \
          their generated derivatives: with `--features diffsol`, diffsol 0.18's BDF, ESDIRK 3(4) and \
          TR-BDF2 on the index-1 formulation (the multipliers out of the error test); with \
          `--features differential-equations`, differential-equations 0.7's Radau5 on the index-3 and \
          index-2 formulations (variables' indices declared as RADAU5 asks) and its DOP853 on the \
          index-1 ODE, projected back onto the constraints when it leaves them by more than atol \
          (over the last four first-step lengths, where the crate cannot restart, only the end \
-         state is projected); on the pendulum against the wall DOP853 alone runs, its gap an event \
-         located on the crate's dense output where Newton's impact law sets the velocities and the \
-         method restarts (Radau5 and diffsol's methods would hold the gap closed). The \
+         state is projected). On the pendulum against the wall every in-process peer runs with \
+         its gap free while open (its λ held at 0) and an event where it closes: Newton's impact \
+         law (M-orthogonal impulse, the gap's restitution) sets the velocities there and the method \
+         goes on from that state (diffsol: its root finding and `state_mut_back`; \
+         differential-equations: the crossing found on the crate's dense output, and a new solve \
+         from the impact, as 0.7.0's Radau5 keeps a zeroed Jacobian when restarted in place); \
+         CasADi's integrator has no events. The \
          in-process peers cannot take the ladders' three dependent rows: they run the ladder \
          with those pin rows removed, the rows the dense `Simulator`'s rank check names; CasADi \
          and Exudyn get every row. The peers' absolute tolerances are 1e-2·rtol; their setup is outside \
