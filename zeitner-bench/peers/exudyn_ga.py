@@ -466,6 +466,8 @@ def main():
                 settings.timeIntegration.endTime = t_end
                 settings.timeIntegration.numberOfSteps = steps
                 settings.timeIntegration.verboseMode = 0
+                # Fixed steps as named: by default a step whose Newton fails is silently split.
+                settings.timeIntegration.adaptiveStep = False
                 settings.timeIntegration.newton.relativeTolerance = 1e-12
                 settings.timeIntegration.newton.absoluteTolerance = 1e-12
                 settings.solution.file.write = False

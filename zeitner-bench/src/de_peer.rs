@@ -39,7 +39,8 @@ use crate::in_process::{
 };
 use crate::measure::cpu_seconds;
 use crate::peer_gaps::{
-    gap_rows, impact, index1_acceleration, position_violation, project, release_gaps, without_gaps,
+    after_impact, gap_rows, index1_acceleration, position_violation, project, release_gaps,
+    without_gaps,
 };
 use crate::peers::{PeerEnd, PeerRun};
 
@@ -152,22 +153,21 @@ fn rate_position_partials<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
     rows
 }
 
-/// Keeps the last state and the largest constraint residual over the accepted steps; with
-/// `restarts`, cuts a step at the first gap it closes and restarts after the impact, and (DOP853)
-/// moves a state that left the constraints back onto them.
+/// Keeps the last state and the largest constraint residual over the accepted steps; ends the
+/// solve at the first gap a step closes, with the state after the impact for the next one
+/// (`between_impacts`); with `projection` (DOP853), moves a state that left the constraints back
+/// onto them.
 struct EndState<'s, 'r, S, const N: usize, const Z: usize, const Y: usize> {
     scene: &'s S,
+    rtol: f64,
     record: &'r mut Record<Y>,
-    restarts: Option<Restarts>,
+    projection: Option<Projection>,
 }
 
-/// When to restart, and where a restart is no longer possible.
-struct Restarts {
-    /// The constraints' tolerance of the projections.
+/// When to project, and where a restart is no longer possible.
+struct Projection {
+    /// The constraints' tolerance: a step end off them by more is projected.
     tolerance: f64,
-    /// Project every step end that left the constraints by more than `tolerance` (DOP853, whose
-    /// index-1 form drifts), not only the state at an impact.
-    every_step: bool,
     t_end: f64,
     /// The first step taken: 0.7.0 restarts from its first initial step, and refuses one longer
     /// than the rest of the interval (or an empty rest), so that the last stretch is projected
@@ -178,8 +178,9 @@ struct Restarts {
 struct Record<const Y: usize> {
     last: [f64; Y],
     max_g: f64,
-    /// Where the piece ended at an impact, and the state just after it.
-    impact: Option<(f64, [f64; Y])>,
+    /// Where the solve ended at an impact, and the state just after it; or why the impact
+    /// failed.
+    impact: Option<Result<(f64, [f64; Y]), String>>,
 }
 
 impl<const Y: usize> Record<Y> {
@@ -208,42 +209,33 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
         I: Interpolation<f64, [f64; Y]> + ?Sized,
     {
         self.record.last = *y;
-        let (q, v) = split_state::<N, Y>(y);
-        let residual = position_violation(self.scene, &q, &v, t);
-        let Some(restarts) = &mut self.restarts else {
-            self.record.max_g = self.record.max_g.max(residual);
-            return ControlFlag::Continue;
-        };
-        if t > t_prev && restarts.first_step.is_none() {
-            restarts.first_step = Some(t - t_prev);
-        }
-        // 0.7.0 restarts with its first initial step, and refuses one longer than what is left.
-        let (t_end, first_step) = (restarts.t_end, restarts.first_step);
-        let can_restart = |from: f64| t_end - from > 4.0 * first_step.unwrap_or(f64::INFINITY);
-        let tolerance = restarts.tolerance;
         let closing = if S::UNILATERAL_CONSTRAINTS > 0 {
             first_closing::<S, N, Z, Y, I>(self.scene, (t_prev, y_prev), (t, y), interpolator)
         } else {
             None
         };
         if let Some((t_impact, before, gap)) = closing {
+            // The step is cut at the impact (its penetrating end does not count) and the solve
+            // ends there.
             let (q, v) = split_state::<N, Y>(&before);
-            // The dense output's state, back on the constraints, and the impact.
-            let after = project(self.scene, q, v, t_impact, 1e-2 * tolerance)
-                .and_then(|(q, v)| Some((q, impact(self.scene, &q, &v, t_impact, gap)?)));
-            // The step is cut at the impact (its penetrating end does not count) and the piece
-            // ends there; the next starts after the impact (`between_impacts`).
-            if let Some(restart) =
-                after.and_then(|(q, v)| restart_state(self.scene, &before, q, v, t_impact))
-            {
-                self.record.last = restart;
-                self.record.impact = Some((t_impact, restart));
-            }
+            let after = after_impact(self.scene, (q, v, t_impact), gap, self.rtol)
+                .and_then(|(q, v)| restart_state(self.scene, &before, q, v, t_impact))
+                .ok_or_else(|| format!("a singular matrix at the impact at t = {t_impact}"));
+            self.record.impact = Some(after.map(|state| (t_impact, state)));
             return ControlFlag::Terminate;
         }
+        let (q, v) = split_state::<N, Y>(y);
+        let residual = position_violation(self.scene, &q, &v, t);
         self.record.max_g = self.record.max_g.max(residual);
+        let Some(projection) = &mut self.projection else {
+            return ControlFlag::Continue;
+        };
+        if t > t_prev && projection.first_step.is_none() {
+            projection.first_step = Some(t - t_prev);
+        }
+        let tolerance = projection.tolerance;
         let rate = without_gaps::<S, N, Z>(self.scene.constraint_rate(&q, &v, t));
-        if !restarts.every_step || (residual <= tolerance && rate.amax() <= tolerance) {
+        if residual <= tolerance && rate.amax() <= tolerance {
             return ControlFlag::Continue;
         }
         let projected = project(self.scene, q, v, t, 1e-2 * tolerance)
@@ -252,7 +244,9 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const Y: usize>
             return ControlFlag::Terminate;
         };
         self.record.last = projected;
-        if can_restart(t) {
+        // 0.7.0 restarts with its first initial step, and refuses one longer than what is left.
+        let first_step = projection.first_step.unwrap_or(f64::INFINITY);
+        if projection.t_end - t > 4.0 * first_step {
             ControlFlag::ModifyState(t, projected)
         } else {
             ControlFlag::Continue
@@ -405,17 +399,13 @@ pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
     };
     timed_runs(rtols, |rtol| {
         let mut end = Record::new(start);
-        let (steps, cpu) = between_impacts(&mut end, start, |t0, y0, record| {
+        let (steps, cpu) = between_impacts(&mut end, (start, t_end), |t0, y0, record| {
+            // No projection: Radau5 holds the constraints itself.
             let solout = EndState::<S, N, Z, Y> {
                 scene,
+                rtol,
                 record,
-                // Only impacts stop Radau5: it holds the constraints itself.
-                restarts: (S::UNILATERAL_CONSTRAINTS > 0).then_some(Restarts {
-                    tolerance: atol(rtol),
-                    every_step: false,
-                    t_end,
-                    first_step: None,
-                }),
+                projection: None,
             };
             // Per-component tolerances: 0.7.0 rescales a scalar tolerance once per component
             // (RADAU5's rtol → 0.1·rtol^(2/3), n times over), which pins it near 1e-3.
@@ -447,12 +437,12 @@ type Piece<const Y: usize> = (Status<f64, [f64; Y]>, usize, f64);
 /// Integrates from `start` to the end in pieces between impacts: `solve(t0, y0, record)` runs
 /// one piece, which ends at the end time or where an impact is recorded, and the next piece is
 /// a new problem from the state after that impact. (A restart of the same problem through
-/// `ControlFlag::ModifyState` would leave 0.7.0's Radau5 on a zeroed Jacobian: its
-/// `initialize` clears the Jacobian without asking for a new one.) The steps and CPU seconds
-/// of all pieces.
+/// `ControlFlag::ModifyState` would leave 0.7.0's Radau5 on a zeroed Jacobian, as its
+/// `initialize` clears the Jacobian without asking for a new one, and would rescale its rtol
+/// once more at every restart.) The steps and CPU seconds of all pieces.
 fn between_impacts<const Y: usize>(
     record: &mut Record<Y>,
-    start: [f64; Y],
+    (start, t_end): ([f64; Y], f64),
     mut solve: impl FnMut(f64, [f64; Y], &mut Record<Y>) -> Result<Piece<Y>, String>,
 ) -> Result<(u64, f64), String> {
     let (mut t0, mut y0, mut steps, mut cpu) = (0.0, start, 0, 0.0);
@@ -461,7 +451,14 @@ fn between_impacts<const Y: usize>(
         steps += piece_steps as u64;
         cpu += piece_cpu;
         match (record.impact.take(), status) {
-            (Some((t, y)), _) => (t0, y0) = (t, y),
+            // Each piece must move on: impacts piling up at one time (Zeno) or at the end
+            // time leave nothing to solve.
+            (Some(Ok((t, y))), _) if t > t0 && t < t_end => {
+                record.last = y;
+                (t0, y0) = (t, y);
+            }
+            (Some(Ok((t, _))), _) => return Err(format!("impacts do not move on at t = {t}")),
+            (Some(Err(failure)), _) => return Err(failure),
             (None, Status::Complete) => return Ok((steps, cpu)),
             (None, status) => return Err(format!("stopped before the end: {status:?}")),
         }
@@ -496,13 +493,13 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
     let ode = Index1 { scene };
     timed_runs(rtols, |rtol| {
         let mut end = Record::new(start);
-        let (steps, cpu) = between_impacts(&mut end, start, |t0, y0, record| {
+        let (steps, cpu) = between_impacts(&mut end, (start, t_end), |t0, y0, record| {
             let solout = EndState::<S, N, Z, X> {
                 scene,
+                rtol,
                 record,
-                restarts: Some(Restarts {
+                projection: Some(Projection {
                     tolerance: atol(rtol),
-                    every_step: true,
                     t_end,
                     first_step: None,
                 }),
@@ -589,26 +586,26 @@ mod gap_tests {
     /// index-3 form, whose λ is off by 1e-4 … 1.3e-3 on the free pendulum at the same rtol.
     #[test]
     fn peers_bounce_off_the_wall_as_the_mirrored_pendulum() {
-        let (wall, start, t_end) = wall_pendulum();
-        let dop853 = dop853::<_, 2, 2, 4>(&wall, start, t_end, &[1e-10]);
-        let radau3 = radau5::<_, 2, 2, 6>(&wall, start, t_end, Index::Three, &[1e-10]);
-        let radau2 = radau5::<_, 2, 2, 6>(&wall, start, t_end, Index::Two, &[1e-10]);
-        let peers = [
-            ("DOP853", dop853, 1e-6),
-            ("Radau5 index 3", radau3, 3e-3),
-            ("Radau5 index 2", radau2, 1e-6),
-        ];
-        for (name, runs, lambda_tolerance) in peers {
-            let end = runs[0].outcome.as_ref().expect("the peer runs");
-            let expected = mirrored_pendulum(t_end);
-            for (i, (got, want)) in end.values.iter().zip(expected).enumerate() {
-                let tolerance = if i < 4 { 1e-6 } else { lambda_tolerance };
-                assert!(
-                    (got - want).abs() < tolerance,
-                    "{name}: {got} against {want}"
-                );
+        let (wall, start, t_ends) = wall_pendulum();
+        for t_end in t_ends {
+            let dop853 = dop853::<_, 2, 2, 4>(&wall, start, t_end, &[1e-10]);
+            let radau3 = radau5::<_, 2, 2, 6>(&wall, start, t_end, Index::Three, &[1e-10]);
+            let radau2 = radau5::<_, 2, 2, 6>(&wall, start, t_end, Index::Two, &[1e-10]);
+            let peers = [
+                ("DOP853", dop853, 1e-6),
+                ("Radau5 index 3", radau3, 3e-3),
+                ("Radau5 index 2", radau2, 1e-6),
+            ];
+            for (name, runs, lambda_tolerance) in peers {
+                let end = runs[0].outcome.as_ref().expect("the peer runs");
+                let expected = mirrored_pendulum(t_end);
+                for (i, (got, want)) in end.values.iter().zip(expected).enumerate() {
+                    let tolerance = if i < 4 { 1e-6 } else { lambda_tolerance };
+                    let error = (got - want).abs();
+                    assert!(error < tolerance, "{name} at {t_end}: {got} against {want}");
+                }
+                assert!(end.max_g < 1e-8, "{name} at {t_end}: max_g {}", end.max_g);
             }
-            assert!(end.max_g < 1e-8, "{name}: max_g {}", end.max_g);
         }
     }
 }

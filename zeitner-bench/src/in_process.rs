@@ -136,12 +136,13 @@ pub fn moving_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 }
 
 /// The gap scene of the peers' tests: the pendulum beside an elastic wall, released
-/// horizontally away from it, and an end time after two impacts.
+/// horizontally away from it; and end times after one impact (on the wall's side, where a peer
+/// that passed through the wall would be mirrored) and after two.
 #[cfg(test)]
 pub fn wall_pendulum() -> (
     crate::scenes::contact::WallPendulum,
     (Vector<2>, Vector<2>),
-    f64,
+    [f64; 2],
 ) {
     let wall = crate::scenes::contact::WallPendulum {
         m: 1.0,
@@ -150,7 +151,11 @@ pub fn wall_pendulum() -> (
         e: 1.0,
         height: -2.0,
     };
-    (wall, (Vector::<2>::new(1.0, 0.0), Vector::zeros()), 2.5)
+    (
+        wall,
+        (Vector::<2>::new(1.0, 0.0), Vector::zeros()),
+        [1.2, 2.5],
+    )
 }
 
 /// The end state `(q, v, λ)` of [`wall_pendulum`] at `t_end`: with an elastic wall, the free

@@ -1251,8 +1251,8 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          native objects (the steam generator's load, the knife edge's velocity-level row and \
          Andrews' mass matrix, forces and loop closures through Python user functions; the ladders \
          with its dense full-pivoting LU, which passes over their dependent rows; not the wall \
-         pendulum, whose contact Exudyn models as a penalty spring; its adaptiveStep left on, so a \
-         coarse setting whose Newton fails is run with shorter steps than it names); in process, calling the scenes' generated functions and with the Jacobians of \
+         pendulum, whose contact Exudyn models as a penalty spring; its adaptiveStep off, so a \
+         setting whose Newton fails is a failure, not silently shorter steps); in process, calling the scenes' generated functions and with the Jacobians of \
          their generated derivatives: with `--features diffsol`, diffsol 0.18's BDF, ESDIRK 3(4) and \
          TR-BDF2 on the index-1 formulation (the multipliers out of the error test); with \
          `--features differential-equations`, differential-equations 0.7's Radau5 on the index-3 and \

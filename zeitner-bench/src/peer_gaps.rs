@@ -169,3 +169,16 @@ pub fn position_violation<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
         .amax()
         .max(penetration)
 }
+
+/// The state just after gap row `gap` closes at `(q, v, t)`: projected onto the constraints to
+/// `1e-4·rtol` (the peers' absolute tolerance is `1e-2·rtol`), then Newton's impact law; `None`
+/// where a matrix is singular.
+pub fn after_impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v, t): (Vector<N>, Vector<N>, f64),
+    gap: usize,
+    rtol: f64,
+) -> Option<(Vector<N>, Vector<N>)> {
+    let (q, v) = project(scene, q, v, t, 1e-4 * rtol)?;
+    Some((q, impact(scene, &q, &v, t, gap)?))
+}
