@@ -281,14 +281,11 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
             v_known += (h * a[i][j]) * stages.a[j];
         }
         let t = start.t + self.tableau.c(i) * h;
-        // Guess: the last stage's velocity continued by its acceleration to this stage's time
-        // (or the start's, for an implicit first stage): first order in the stages' spacing,
-        // where the last velocity alone is zeroth, so Newton starts a sweep closer.
+        // Guess: the last stage's velocity, or the start's continued by its acceleration.
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
         } else {
-            let ahead = (self.tableau.c(i) - self.tableau.c(i - 1)) * h;
-            stages.v[i - 1] + ahead * stages.a[i - 1]
+            stages.v[i - 1]
         };
         // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
         let mut kept = self.kept(h);
@@ -406,49 +403,7 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
     }
 }
 
-/// The tolerance test of a stage's Newton, with what it remembers of the sweeps before.
-struct StageTest {
-    rtol: f64,
-    atol: f64,
-    fraction: f64,
-    /// The last correction in units of the tolerance; infinite before the first.
-    last: f64,
-    /// The last contraction ratio, from the third sweep on.
-    last_ratio: Option<f64>,
-}
-
-impl StageTest {
-    /// Whether what is left of the error after the correction `delta` to `v` is small enough.
-    fn met<const N: usize>(
-        &mut self,
-        delta: &Vector<N>,
-        v: &Vector<N>,
-        v_known: &Vector<N>,
-    ) -> bool {
-        let size = (0..N).fold(0.0_f64, |size, i| {
-            let scale = self.atol + self.rtol * v[i].abs().max(v_known[i].abs());
-            size.max(delta[i].abs() / scale)
-        });
-        let rest = if self.last.is_finite() {
-            let ratio = size / self.last;
-            let theta = self
-                .last_ratio
-                .map_or(ratio, |last| libm::sqrt(ratio * last));
-            self.last_ratio = Some(ratio);
-            if theta < 1.0 {
-                theta / (1.0 - theta)
-            } else {
-                1.0
-            }
-        } else {
-            1.0
-        };
-        self.last = size;
-        size.is_finite() && rest * size <= self.fraction
-    }
-}
-
-/// The fraction of the error tolerance what is left of a stage's Newton error must fall below: that of
+/// The fraction of the error tolerance a stage's last Newton correction must fall below: that of
 /// Hairer & Wanner's RADAU5 (`FNEWT`, *Solving ODEs II*, IV.8), `max(10 u / rtol, min(0.03,
 /// √rtol))`, so that the stage equations' error stays well below the step's.
 fn stage_fraction(rtol: f64) -> f64 {
@@ -457,12 +412,9 @@ fn stage_fraction(rtol: f64) -> f64 {
 }
 
 /// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
-/// `None` when it does not converge within them. With `tolerances`, converged once what is left
-/// of the error is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each
-/// component: the first correction itself, later ones times `θ/(1-θ)`, `θ` their contraction
-/// in that scaled norm (RADAU5's test, *Solving ODEs II*, IV.8: the last ratio on the second
-/// sweep, the geometric mean of the last two after it). Otherwise, and always when it gets there
-/// first, at rounding.
+/// `None` when it does not converge within them. With `tolerances`, converged once the last
+/// correction is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component; otherwise, and
+/// always when it gets there first, at rounding.
 #[inline]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
@@ -475,13 +427,15 @@ fn solve_stage<Sys, const N: usize, const Z: usize>(
 where
     Sys: ConstrainedSystem<N, Z>,
 {
-    let mut test = tolerances.map(|(rtol, atol)| StageTest {
-        rtol,
-        atol,
-        fraction: stage_fraction(rtol),
-        last: f64::INFINITY,
-        last_ratio: None,
-    });
+    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>| {
+        tolerances.is_some_and(|(rtol, atol)| {
+            let fraction = stage_fraction(rtol);
+            (0..N).all(|i| {
+                let scale = atol + rtol * v[i].abs().max(v_known[i].abs());
+                delta[i].is_finite() && delta[i].abs() <= fraction * scale
+            })
+        })
+    };
     let mut last_norm = f64::INFINITY;
     for _ in 0..limit {
         let q = q_known + hg * v;
@@ -495,9 +449,7 @@ where
         let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
         // Converged; or stalled at the rounding floor, which stiff forces raise well above the
         // velocities' own precision (k·x is rounded before it is divided back down).
-        if test
-            .as_mut()
-            .is_some_and(|test| test.met(&delta, &v, &v_known))
+        if within_tolerance(&delta, &v)
             || norm <= 1e-12 * scale
             || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
         {
