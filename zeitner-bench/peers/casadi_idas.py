@@ -28,6 +28,7 @@ import os
 import re
 import sys
 
+import andrews_parameters as A
 from ladder_geometry import ladder_span, sagging_ladder
 import tempfile
 import time
@@ -60,13 +61,13 @@ def steam_generator():
 
 
 def andrews():
-    m1, m2, m3, m4, m5, m6, m7 = 0.04325, 0.00365, 0.02373, 0.00706, 0.07050, 0.00706, 0.05498
-    i1, i2, i3, i4, i5, i6, i7 = 2.194e-6, 4.410e-7, 5.255e-6, 5.667e-7, 1.169e-5, 5.667e-7, 1.912e-5
-    xa, ya, xb, yb, xc, yc = -0.06934, -0.00227, -0.03635, 0.03273, 0.014, 0.072
-    c0, l0, mom = 4530.0, 0.07785, 0.033
-    d, da, e, ea, rr, ra, ss = 0.028, 0.0115, 0.02, 0.01421, 0.007, 0.00092, 0.035
-    sa, sb, sc, sd, ta, tb, u = 0.01874, 0.01043, 0.018, 0.02, 0.02308, 0.00916, 0.04
-    ua, ub, zf, zt, fa = 0.01228, 0.00449, 0.02, 0.04, 0.01421
+    m1, m2, m3, m4, m5, m6, m7 = A.M
+    i1, i2, i3, i4, i5, i6, i7 = A.I
+    xa, ya, xb, yb, xc, yc = A.XA, A.YA, A.XB, A.YB, A.XC, A.YC
+    c0, l0, mom = A.C0, A.L0, A.MOM
+    d, da, e, ea, rr, ra, ss = A.D, A.DA, A.E, A.EA, A.RR, A.RA, A.SS
+    sa, sb, sc, sd, ta, tb, u = A.SA, A.SB, A.SC, A.SD, A.TA, A.TB, A.U
+    ua, ub, zf, zt, fa = A.UA, A.UB, A.ZF, A.ZT, A.FA
     q = ca.SX.sym("q", 7)
     v = ca.SX.sym("v", 7)
     t = ca.SX.sym("t")

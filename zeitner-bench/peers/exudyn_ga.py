@@ -46,6 +46,7 @@ ladders a warm-up over 1 s is the only run and its time is reported.
 import math
 import sys
 
+import andrews_parameters as A
 from ladder_geometry import ladder_span, sagging_ladder
 import time
 
@@ -174,13 +175,13 @@ class AndrewsModel:
     """Andrews' squeezing mechanism as in examples/scenes/andrews.rs (the test set's parameters):
     q = (beta, Theta, gamma, Phi, delta, Omega, epsilon), its mass matrix M(q), force f(q, q'),
     the 6 loop-closure rows g(q) and their Jacobian G = dg/dq."""
-    m1, m2, m3, m4, m5, m6, m7 = 0.04325, 0.00365, 0.02373, 0.00706, 0.07050, 0.00706, 0.05498
-    i1, i2, i3, i4, i5, i6, i7 = 2.194e-6, 4.410e-7, 5.255e-6, 5.667e-7, 1.169e-5, 5.667e-7, 1.912e-5
-    xa, ya, xb, yb, xc, yc = -0.06934, -0.00227, -0.03635, 0.03273, 0.014, 0.072
-    c0, l0, mom = 4530.0, 0.07785, 0.033
-    d, da, e, ea, rr, ra, ss = 0.028, 0.0115, 0.02, 0.01421, 0.007, 0.00092, 0.035
-    sa, sb, sc, sd, ta, tb, u = 0.01874, 0.01043, 0.018, 0.02, 0.02308, 0.00916, 0.04
-    ua, ub, zf, zt, fa = 0.01228, 0.00449, 0.02, 0.04, 0.01421
+    m1, m2, m3, m4, m5, m6, m7 = A.M
+    i1, i2, i3, i4, i5, i6, i7 = A.I
+    xa, ya, xb, yb, xc, yc = A.XA, A.YA, A.XB, A.YB, A.XC, A.YC
+    c0, l0, mom = A.C0, A.L0, A.MOM
+    d, da, e, ea, rr, ra, ss = A.D, A.DA, A.E, A.EA, A.RR, A.RA, A.SS
+    sa, sb, sc, sd, ta, tb, u = A.SA, A.SB, A.SC, A.SD, A.TA, A.TB, A.U
+    ua, ub, zf, zt, fa = A.UA, A.UB, A.ZF, A.ZT, A.FA
     Q0 = [-0.0617138900142764496358948458001, 0.0, 0.455279819163070380255912382449,
           0.222668390165885884674473185609, 0.487364979543842550225598953530,
           -0.222668390165885884674473185609, 1.23054744454982119249735015568]

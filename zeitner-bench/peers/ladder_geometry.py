@@ -1,4 +1,4 @@
-"""The ladder of zeitner-bench/src/scaling/scenes.rs: its pinned span and sagging start, shared
+"""The ladder of zeitner-bench/src/scaling/families.rs: its pinned span and sagging start, shared
 by the peer scripts."""
 import math
 
