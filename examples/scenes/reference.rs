@@ -1,6 +1,7 @@
 //! Independent references, derived by hand in reduced coordinates and integrated far below
 //! any tolerance the tests use.
 
+use super::contact::WallPendulum;
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
 use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
@@ -124,6 +125,26 @@ pub fn pendulum_released_horizontally(p: &Pendulum, t: f64) -> State<2, 1> {
         q: [l * sin, -l * cos],
         v: [l * w * cos, l * w * sin],
         lambda: [m * (l * w * w + g * cos) / (2.0 * l)],
+    }
+}
+
+/// The pendulum beside an elastic wall (`e = 1`) released horizontally away from it: the free
+/// pendulum mirrored at the wall (`x` and `x'` reflected where the free one has crossed), and no
+/// force in the open gap.
+pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: f64) -> State<2, 2> {
+    let free = pendulum_released_horizontally(
+        &Pendulum {
+            m: p.m,
+            length: p.length,
+            g: p.g,
+        },
+        t,
+    );
+    let side = free.q[0].signum();
+    State {
+        q: [side * free.q[0], free.q[1]],
+        v: [side * free.v[0], free.v[1]],
+        lambda: [free.lambda[0], 0.0],
     }
 }
 

@@ -158,29 +158,15 @@ pub fn wall_pendulum() -> (
     )
 }
 
-/// The end state `(q, v, λ)` of [`wall_pendulum`] at `t_end`: with an elastic wall, the free
-/// pendulum's (reduced coordinates), mirrored at the wall, and no force in the open gap.
+/// The end state `(q, v, λ)` of [`wall_pendulum`] at `t_end`, flattened.
 #[cfg(test)]
 pub fn mirrored_pendulum(t_end: f64) -> [f64; 6] {
-    use crate::scenes::pendulum::Pendulum;
-    use crate::scenes::reference::pendulum_released_horizontally;
-    let free = pendulum_released_horizontally(
-        &Pendulum {
-            m: 1.0,
-            length: 1.0,
-            g: 9.81,
-        },
-        t_end,
-    );
-    let side = free.q[0].signum();
-    [
-        side * free.q[0],
-        free.q[1],
-        side * free.v[0],
-        free.v[1],
-        free.lambda[0],
-        0.0,
-    ]
+    let (wall, _, _) = wall_pendulum();
+    let end = crate::scenes::reference::wall_pendulum_released_horizontally(&wall, t_end);
+    [end.q, end.v, end.lambda]
+        .concat()
+        .try_into()
+        .expect("2 + 2 + 2 values")
 }
 
 /// Asserts that `jacobian(r, c)` is `∂f_r/∂y_c` at `y` to 1e-5, against central differences.

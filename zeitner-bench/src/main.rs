@@ -617,20 +617,7 @@ fn wall_pendulum_scene() -> Scene {
         // Below the bob's reach: the event never fires.
         height: -2.0,
     };
-    let free = reference::pendulum_released_horizontally(
-        &Pendulum {
-            m: scene.m,
-            length: scene.length,
-            g: scene.g,
-        },
-        t_end,
-    );
-    let side = free.q[0].signum();
-    let reference = State {
-        q: [side * free.q[0], free.q[1]],
-        v: [side * free.v[0], free.v[1]],
-        lambda: [free.lambda[0], 0.0],
-    };
+    let reference = reference::wall_pendulum_released_horizontally(&scene, t_end);
     let start = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
     Scene {
         name: "wall_pendulum",
