@@ -204,7 +204,8 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     })
 }
 
-/// Builds `method`'s solver for `problem` (with its consistent initialisation) and marches it.
+/// Builds `method`'s solver for `problem` (with its consistent initialisation) and marches it
+/// to `t_end` (`end`: `(t_end, rtol)`, as [`march`] takes them).
 fn solve<S, Eqn, const N: usize, const Z: usize>(
     scene: &S,
     problem: OdeSolverProblem<Eqn>,
