@@ -3,9 +3,9 @@
 //! when the state is re-initialised.
 
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{keep_leading_rows, max_abs, solve_spd};
+use crate::linalg::{all_finite, keep_leading_rows, max_abs, solve_spd};
 use crate::mass::MassFactor;
-use crate::model::Model;
+use crate::model::{ConstraintDirections, FactorOf, Model};
 use crate::options::StartPolicy;
 use crate::output::Point;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
@@ -134,27 +134,25 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
             dependent_rows: rows,
         })?;
         q -= directions.m_inv_gt * mu;
-        if !q.iter().all(|x| x.is_finite()) {
+        if !all_finite(&q) {
             return Err(inconsistent);
         }
     }
 }
 
 /// Newton sweeps onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the
-/// mass metric (one is exact when `w` is linear in `q'`): at most `max_sweeps`, ending early once
-/// the `w` a sweep starts from is `settled`. Returns the velocities and `G` of the last sweep.
+/// mass metric (one is exact when `w` is linear in `q'`): at least one and at most
+/// `max_sweeps`, ending early once the `w` a later sweep starts from is `settled`. Returns the
+/// velocities and the directions (`G`, `M⁻¹Gᵀ`) of the last sweep.
 fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, mut v, t): (&Vector<N>, Vector<N>, f64),
     max_sweeps: u32,
     settled: impl Fn(&Vector<Z>) -> bool,
-) -> Result<(Vector<N>, Matrix<Z, N>), StepError> {
-    let mut jacobian = Matrix::zeros();
-    for sweep in 0..max_sweeps {
-        let w = model.rate(q, &v, t)?;
-        if sweep > 0 && settled(&w) {
-            break;
-        }
+) -> Result<(Vector<N>, ConstraintDirections<FactorOf<S, N, Z>, N, Z>), StepError> {
+    let mut w = model.rate(q, &v, t)?;
+    let mut sweeps = 0;
+    let directions = loop {
         let directions = model.directions(q, &v, t)?;
         let mu = solve_spd(&directions.gram(), &w, S::POSITION_CONSTRAINTS).map_err(|rows| {
             StepError::RankDeficientConstraints {
@@ -163,12 +161,19 @@ fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             }
         })?;
         v -= directions.m_inv_gt * mu;
-        jacobian = directions.jacobian;
-    }
-    if !v.iter().all(|x| x.is_finite()) {
+        sweeps += 1;
+        if sweeps >= max_sweeps {
+            break directions;
+        }
+        w = model.rate(q, &v, t)?;
+        if settled(&w) {
+            break directions;
+        }
+    };
+    if !all_finite(&v) {
         return Err(StepError::non_finite_state(t));
     }
-    Ok((v, jacobian))
+    Ok((v, directions))
 }
 
 /// The start's velocities on the velocity-level constraint: Newton until `|w|` is a thousandth
@@ -182,8 +187,9 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
     tolerance: f64,
 ) -> Result<Vector<N>, StepError> {
     let settled = |w: &Vector<Z>| max_abs(w).0 <= tolerance * 1e-3;
-    let (v, jacobian) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
+    let (v, directions) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
     let (residual, index) = max_abs(&model.rate(q, &v, t)?);
+    let jacobian = directions.jacobian;
     let reach = (0..Z).map(|j| jacobian.row(j).norm()).fold(0.0, f64::max);
     let floor = 64.0 * f64::EPSILON * reach * v.amax();
     if !(residual <= tolerance.max(floor)) {
@@ -216,10 +222,19 @@ fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
-    if !q.iter().chain(v.iter()).all(|x| x.is_finite()) {
+    if !all_finite(q.iter().chain(v.iter())) {
         return Err(StepError::non_finite_state(t));
     }
     let directions = model.directions(&q, &v, t)?;
+    point_with(model, (t, q, v), directions)
+}
+
+/// The consistent point at a finite state whose directions are known.
+fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (t, q, v): (f64, Vector<N>, Vector<N>),
+    directions: ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
+) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
     let force = model.force(&q, &v, t)?;
     let m_inv_f = directions.factor.solve(&force);
     let bias = model.bias(&q, &v, t)?;
@@ -232,7 +247,7 @@ fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z
         }
     })?;
     let a = m_inv_f - directions.m_inv_gt * lambda;
-    if !a.iter().chain(lambda.iter()).all(|x| x.is_finite()) {
+    if !all_finite(a.iter().chain(lambda.iter())) {
         return Err(StepError::non_finite_state(t));
     }
     let point = Point { t, q, v, a, lambda };
@@ -264,8 +279,15 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     let r = S::POSITION_CONSTRAINTS;
     let sweeps = if r < Z { 3 } else { 1 };
     let velocity_rows_hold = |w: &Vector<Z>| w.iter().skip(r).all(|x| x.abs() <= tolerance);
-    let (v, _) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
-    consistent_point_and_gram(model, t, q, v)
+    let (v, directions) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
+    // `G` of position rows does not depend on the velocities: the last sweep's serves the
+    // projected ones. `q` is finite (the step's end), `v` checked by the sweeps.
+    let directions = if r == Z {
+        directions
+    } else {
+        model.directions(&q, &v, t)?
+    };
+    point_with(model, (t, q, v), directions)
 }
 
 #[cfg(test)]

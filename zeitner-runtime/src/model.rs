@@ -3,6 +3,7 @@
 
 use crate::contact::GapSet;
 use crate::error::{ModelFunction, StepError};
+use crate::linalg::all_finite;
 use crate::mass::{MassFactor, MassMatrix};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
@@ -134,7 +135,7 @@ pub(crate) fn finite<const R: usize, const C: usize>(
     t: f64,
     function: ModelFunction,
 ) -> Result<Matrix<R, C>, StepError> {
-    if value.iter().all(|x| x.is_finite()) {
+    if all_finite(&value) {
         Ok(value)
     } else {
         Err(StepError::NonFinite { t, function })
@@ -370,6 +371,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `a = M⁻¹(F - Gᵀλ)` with `λ` fixed.
+    ///
+    /// Only `a` is checked for finiteness on the way: every entry of `F` and `G` enters it with
+    /// a nonzero weight (`G_ji λ_j` is NaN for an infinite `G_ji` even where `λ_j = 0`) and the
+    /// solve with `M` keeps a non-finite entry non-finite, so a finite `a` vouches for them. The
+    /// inputs are checked one by one only to name the culprit. Where gaps can mask rows of `G`,
+    /// `G` is checked before the mask hides them.
     #[inline]
     pub fn acceleration(
         &mut self,
@@ -379,17 +386,33 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
     ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
         let factor = self.mass_factor(q, t)?;
-        let force = self.force(q, v, t)?;
-        let jacobian = self.jacobian(q, v, t)?;
+        self.evaluations.forces += 1;
+        self.evaluations.constraint_jacobians += 1;
+        let force = self.system.applied_force(q, v, t);
+        let unmasked = self.system.constraint_jacobian(q, v, t);
+        if S::UNILATERAL_CONSTRAINTS > 0 {
+            finite(unmasked, t, ModelFunction::ConstraintJacobian)?;
+        }
+        let jacobian = self.mask(unmasked);
         let a = factor.solve(&(force - jacobian.tr_mul(lambda)));
+        if !all_finite(&a) {
+            finite(force, t, ModelFunction::AppliedForce)?;
+            finite(unmasked, t, ModelFunction::ConstraintJacobian)?;
+            return Err(StepError::NonFinite {
+                t,
+                function: ModelFunction::State,
+            });
+        }
         Ok(Acceleration {
-            a: finite(a, t, ModelFunction::State)?,
+            a,
             factor,
             jacobian,
         })
     }
 
-    /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known.
+    /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known. As in
+    /// [`Model::acceleration`], the results are checked and the model's outputs only to name
+    /// the one that was not finite.
     pub fn acceleration_jacobians(
         &mut self,
         q: &Vector<N>,
@@ -399,25 +422,40 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
     ) -> Result<AccelerationJacobians<N, Z>, StepError> {
         self.evaluations.force_jacobians += 1;
+        self.evaluations.constraint_force_jacobians += 1;
         let (force_dq, force_dv) = self.system.force_jacobians(q, v, t);
-        let (reaction_dq, reaction_dv) = self.constraint_force_jacobians(q, v, t, lambda)?;
-        let mut dq = finite(force_dq, t, ModelFunction::ForceJacobians)? - reaction_dq;
-        if !S::MASS_IS_CONSTANT {
+        let masked = self.mask(*lambda);
+        let (reaction_dq, reaction_dv) = self.system.constraint_force_jacobians(q, v, t, &masked);
+        let mut dq = force_dq - reaction_dq;
+        let mass_term = (!S::MASS_IS_CONSTANT).then(|| {
             self.evaluations.mass_jacobian_products += 1;
-            dq -= finite(
-                self.system.mass_jacobian_product(q, t, &at.a),
-                t,
-                ModelFunction::MassJacobianProduct,
-            )?;
+            self.system.mass_jacobian_product(q, t, &at.a)
+        });
+        if let Some(mass_term) = mass_term {
+            dq -= mass_term;
         }
+        let dq = at.factor.solve(&dq);
         let dv = if S::DYNAMICS_DEPEND_ON_VELOCITY {
-            let dv = finite(force_dv, t, ModelFunction::ForceJacobians)? - reaction_dv;
-            at.factor.solve(&dv)
+            at.factor.solve(&(force_dv - reaction_dv))
         } else {
             Matrix::zeros()
         };
+        if !(all_finite(&dq) && (!S::DYNAMICS_DEPEND_ON_VELOCITY || all_finite(&dv))) {
+            let reaction = ModelFunction::ConstraintForceJacobians;
+            finite(reaction_dq, t, reaction)?;
+            finite(reaction_dv, t, reaction)?;
+            finite(force_dq, t, ModelFunction::ForceJacobians)?;
+            if let Some(mass_term) = mass_term {
+                finite(mass_term, t, ModelFunction::MassJacobianProduct)?;
+            }
+            finite(force_dv, t, ModelFunction::ForceJacobians)?;
+            return Err(StepError::NonFinite {
+                t,
+                function: ModelFunction::State,
+            });
+        }
         Ok(AccelerationJacobians {
-            dq: at.factor.solve(&dq),
+            dq,
             dv,
             dp: -at.factor.solve(&at.jacobian.transpose()),
         })

@@ -4,7 +4,7 @@
 
 use crate::control::error_norm;
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{dependent_rows, max_abs, solve_blocks};
+use crate::linalg::{all_finite, dependent_rows, max_abs, solve_blocks};
 use crate::mass::MassFactor;
 use crate::method::{Method, Start, StepEnd};
 use crate::model::Model;
@@ -369,7 +369,7 @@ fn failed<const N: usize, const Z: usize, const K: usize>(
 }
 
 fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
-    q.iter().chain(v.iter()).all(|x| x.is_finite())
+    all_finite(q.iter().chain(v.iter()))
 }
 
 fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(

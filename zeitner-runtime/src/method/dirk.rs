@@ -7,6 +7,8 @@
 // Stage indices read as the tableau is written.
 #![allow(clippy::needless_range_loop)]
 
+use core::marker::PhantomData;
+
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::linalg::Lu;
@@ -126,6 +128,29 @@ pub(crate) const KENNEDY_CARPENTER4: DirkTableau<6> = DirkTableau {
     embedded_order: Some(3),
 };
 
+/// A tableau known at compile time: each method is its own type, so that the stage loops
+/// unroll around the coefficients instead of reading them through a pointer.
+pub(crate) trait Tableau<const S: usize> {
+    const TABLEAU: DirkTableau<S>;
+}
+
+/// [`SDIRK2`] as a type.
+pub(crate) struct Alexander2;
+/// [`KVAERNO3`] as a type.
+pub(crate) struct Kvaerno3;
+/// [`KENNEDY_CARPENTER4`] as a type.
+pub(crate) struct KennedyCarpenter4;
+
+impl Tableau<2> for Alexander2 {
+    const TABLEAU: DirkTableau<2> = SDIRK2;
+}
+impl Tableau<4> for Kvaerno3 {
+    const TABLEAU: DirkTableau<4> = KVAERNO3;
+}
+impl Tableau<6> for KennedyCarpenter4 {
+    const TABLEAU: DirkTableau<6> = KENNEDY_CARPENTER4;
+}
+
 /// The tolerances stage equations are solved against: those of adaptive steps.
 fn tolerances(step: StepControl) -> Option<(f64, f64)> {
     match step {
@@ -148,8 +173,8 @@ pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
 
 /// The method and its workspace: the factorised iteration matrix and the step it was formed
 /// for.
-pub(crate) struct Dirk<const S: usize, const N: usize> {
-    tableau: &'static DirkTableau<S>,
+pub(crate) struct Dirk<T, const S: usize, const N: usize> {
+    tableau: PhantomData<T>,
     /// `(rtol, atol)` of adaptive steps, which the stage equations are solved against; fixed
     /// steps solve them to rounding.
     tolerances: Option<(f64, f64)>,
@@ -169,10 +194,12 @@ struct Stages<const S: usize, const N: usize, const Z: usize, const K: usize> {
     da: [[Matrix<N, Z>; K]; S],
 }
 
-impl<const S: usize, const N: usize> Dirk<S, N> {
-    pub fn new(tableau: &'static DirkTableau<S>, step: StepControl) -> Self {
+impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
+    const TABLEAU: DirkTableau<S> = T::TABLEAU;
+
+    pub fn new(step: StepControl) -> Self {
         Dirk {
-            tableau,
+            tableau: PhantomData,
             tolerances: tolerances(step),
             iteration: None,
             factorizations: 0,
@@ -185,7 +212,7 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
 
     /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
     fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
-        let hg = h * self.tableau.gamma;
+        let hg = h * Self::TABLEAU.gamma;
         let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
         self.factorizations += 1;
         let lu = Lu::new(matrix)?;
@@ -200,13 +227,13 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
     }
 }
 
-impl<const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<S, N> {
+impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<T, S, N> {
     fn order(&self) -> u32 {
-        self.tableau.order
+        Self::TABLEAU.order
     }
 
     fn embedded_order(&self) -> Option<u32> {
-        self.tableau.embedded_order
+        Self::TABLEAU.embedded_order
     }
 
     fn factorizations(&self) -> u64 {
@@ -235,9 +262,9 @@ impl<const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<S, N>
             step: h,
         };
         for i in 0..S {
-            let c = self.tableau.c(i);
+            let c = Self::TABLEAU.c(i);
             let (t, lambda) = (start.t + c * h, multipliers.at(c));
-            let acceleration = if self.tableau.a[i][i] == 0.0 {
+            let acceleration = if Self::TABLEAU.a[i][i] == 0.0 {
                 // The explicit first stage is the step start.
                 model.acceleration(&start.q, &start.v, t, &lambda)?
             } else {
@@ -261,7 +288,7 @@ impl<const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<S, N>
     }
 }
 
-impl<const S: usize, const N: usize> Dirk<S, N> {
+impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
     /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
@@ -274,13 +301,13 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         h: f64,
         lambda: &Vector<Z>,
     ) -> Result<Option<Acceleration<FactorOf<Sys, N, Z>, N, Z>>, StepError> {
-        let (a, hg) = (&self.tableau.a, h * self.tableau.gamma);
+        let (a, hg) = (&Self::TABLEAU.a, h * Self::TABLEAU.gamma);
         let (mut q_known, mut v_known) = (start.q, start.v);
         for j in 0..i {
             q_known += (h * a[i][j]) * stages.v[j];
             v_known += (h * a[i][j]) * stages.a[j];
         }
-        let t = start.t + self.tableau.c(i) * h;
+        let t = start.t + Self::TABLEAU.c(i) * h;
         // Guess: the last stage's velocity, or the start's continued by its acceleration.
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
@@ -334,8 +361,8 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         (multipliers, lambda): (&Multipliers<Z, K>, &Vector<Z>),
         acceleration: &Acceleration<FactorOf<Sys, N, Z>, N, Z>,
     ) -> Option<Result<(), StepError>> {
-        let (a, hg) = (&self.tableau.a, h * self.tableau.gamma);
-        let c = self.tableau.c(i);
+        let (a, hg) = (&Self::TABLEAU.a, h * Self::TABLEAU.gamma);
+        let c = Self::TABLEAU.c(i);
         let (q, v) = (stages.q[i], stages.v[i]);
         let jac = match model.acceleration_jacobians(&q, &v, t, lambda, acceleration) {
             Ok(jac) => jac,
@@ -376,17 +403,17 @@ impl<const S: usize, const N: usize> Dirk<S, N> {
         h: f64,
     ) -> StepEnd<N, Z, K> {
         let last = S - 1;
-        let error = self.tableau.embedded.map(|embedded| {
+        let error = Self::TABLEAU.embedded.map(|embedded| {
             let (mut eq, mut ev) = (Vector::<N>::zeros(), Vector::<N>::zeros());
             for j in 0..S {
-                let e = h * (self.tableau.a[last][j] - embedded[j]);
+                let e = h * (Self::TABLEAU.a[last][j] - embedded[j]);
                 eq += e * stages.v[j];
                 ev += e * stages.a[j];
             }
             match &self.iteration {
                 // `(x, y)` with `x - hγ y = eq`, `-hγ ∂a/∂q x + (I - hγ ∂a/∂q') y = ev`.
                 Some((_, lu, dq)) => {
-                    let hg = h * self.tableau.gamma;
+                    let hg = h * Self::TABLEAU.gamma;
                     let y = lu.solve(&(ev + hg * (dq * eq)));
                     (eq + hg * y, y)
                 }

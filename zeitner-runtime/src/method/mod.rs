@@ -97,11 +97,11 @@ pub(crate) enum AnyMethod<const N: usize> {
     Explicit4(explicit::Explicit<4>),
     Explicit7(explicit::Explicit<7>),
     #[cfg(feature = "implicit")]
-    Dirk2(dirk::Dirk<2, N>),
+    Dirk2(dirk::Dirk<dirk::Alexander2, 2, N>),
     #[cfg(feature = "implicit")]
-    Dirk4(dirk::Dirk<4, N>),
+    Dirk4(dirk::Dirk<dirk::Kvaerno3, 4, N>),
     #[cfg(feature = "implicit")]
-    Dirk6(dirk::Dirk<6, N>),
+    Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N>),
     #[cfg(feature = "implicit")]
     Alpha(alpha::GeneralizedAlpha<N>),
 }
@@ -117,13 +117,11 @@ impl<const N: usize> AnyMethod<N> {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
             }
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(&dirk::SDIRK2, step)),
+            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(&dirk::KVAERNO3, step)),
+            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk43 => {
-                AnyMethod::Dirk6(dirk::Dirk::new(&dirk::KENNEDY_CARPENTER4, step))
-            }
+            InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new(step)),
             #[cfg(feature = "implicit")]
             InnerMethod::GeneralizedAlpha { rho_inf } => {
                 AnyMethod::Alpha(alpha::GeneralizedAlpha::new(rho_inf))
