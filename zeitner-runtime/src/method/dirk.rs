@@ -167,6 +167,7 @@ pub(super) const SLOW_STAGE: usize = 6;
 const STEP_RATIO_KEPT: f64 = 1.25;
 
 /// Whether an iteration matrix formed for a step `formed_for` serves a step `h`.
+#[inline]
 pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
     (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT).contains(&(h / formed_for))
 }
@@ -257,7 +258,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z>
             dv: [start.dv_dc; S],
             da: [[Matrix::zeros(); K]; S],
         };
-        let stall = StepError::StageDidNotConverge {
+        let stall = || StepError::StageDidNotConverge {
             t: start.t,
             step: h,
         };
@@ -269,7 +270,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z>
                 model.acceleration(&start.q, &start.v, t, &lambda)?
             } else {
                 self.implicit_stage(model, start, &mut stages, i, h, &lambda)?
-                    .ok_or(stall)?
+                    .ok_or_else(stall)?
             };
             stages.a[i] = acceleration.a;
             if sensitivity {
@@ -281,7 +282,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z>
                     lambdas,
                     &acceleration,
                 )
-                .ok_or(stall)??;
+                .ok_or_else(stall)??;
             }
         }
         Ok(self.end(&stages, h))
@@ -442,7 +443,7 @@ fn stage_fraction(rtol: f64) -> f64 {
 /// `None` when it does not converge within them. With `tolerances`, converged once the last
 /// correction is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component; otherwise, and
 /// always when it gets there first, at rounding.
-#[inline]
+#[inline(always)]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
     lu: &Lu<N>,
