@@ -245,6 +245,12 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
     }
 }
 
+/// Corrections of the coefficients through one integration's linearised step map, before the
+/// step is integrated again. The end conditions are nonlinear in the end state: where the first
+/// correction leaves them just above `ε` while the step map is still linear enough, a second one
+/// costs a linearisation instead of an integration.
+const LINEAR_CORRECTIONS: u32 = 2;
+
 /// Newton on the coefficients of `multipliers` until the end conditions hold at `start.t + h`.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
@@ -281,35 +287,92 @@ where
         if conditions.hold(settings, h) {
             return Ok(converged(end, multipliers, iteration));
         }
-        let (dq_dc, dv_dc) = paper.unwrap_or((end.dq_dc, end.dv_dc));
-        let sensitivities = (&dq_dc, &dv_dc);
-        let (blocks, reach) = linearise(model, &end, t_end, sensitivities, &multipliers)?;
-        let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
-            return singular(model, &end, t_end, h, iteration, worst);
+        let sensitivities = paper.unwrap_or((end.dq_dc, end.dv_dc));
+        let linear = LinearStep {
+            end: &end,
+            sensitivities: &sensitivities,
         };
-        for (c, d) in multipliers.coefficients.iter_mut().zip(delta.iter()) {
-            *c += d;
-        }
-        if settings.exact && settings.accept_linearised {
-            let mut q = end.q;
-            let mut v = end.v;
-            for k in 0..K {
-                q += dq_dc[k] * delta[k];
-                v += dv_dc[k] * delta[k];
-            }
-            let shift = (q - end.q, delta.iter().sum::<Vector<Z>>(), reach);
-            if finite_state(&q, &v)
-                && Conditions::<Z, K>::at(model, (&q, &v, t_end), &multipliers.at(1.0))?
-                    .hold(settings, h)
-                && linearisation_is_negligible(model, settings, (start, &q, &v, t_end), shift)?
-            {
-                let updated = StepEnd { q, v, ..end };
-                return Ok(converged(updated, multipliers, iteration));
-            }
+        let span = (start, t_end);
+        match linear.correct(model, settings, span, &mut multipliers, conditions)? {
+            Correction::Accepted(updated) => return Ok(converged(updated, multipliers, iteration)),
+            Correction::Singular => return singular(model, &end, t_end, h, iteration, worst),
+            Correction::IntegrateAgain => {}
         }
     }
     let cause = not_converged::<S, N, Z>(start.t, h, settings.max_iterations, worst);
     Ok(failed(cause, settings.max_iterations))
+}
+
+/// One integration's end and its sensitivity to the coefficients: the step map linearised,
+/// `x(c) ≈ x(c₀) + Q (c - c₀)`.
+struct LinearStep<'a, const N: usize, const Z: usize, const K: usize> {
+    end: &'a StepEnd<N, Z, K>,
+    sensitivities: &'a Sensitivities<N, Z, K>,
+}
+
+/// What Newton through the linearised step map came to.
+enum Correction<const N: usize, const Z: usize, const K: usize> {
+    /// The linearly corrected end meets the end conditions and may stand for the integration.
+    Accepted(StepEnd<N, Z, K>),
+    /// The coefficients are corrected; the step is to be integrated with them.
+    IntegrateAgain,
+    Singular,
+}
+
+impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
+    /// Corrects `multipliers` by Newton on the end conditions through the linearised step map:
+    /// at most [`LINEAR_CORRECTIONS`] times with the exact sensitivity and linearised updates
+    /// accepted, once otherwise.
+    fn correct<S: ConstrainedSystem<N, Z>>(
+        &self,
+        model: &mut Model<'_, S, N, Z>,
+        settings: &NewtonSettings,
+        (start, t_end): (&Start<N, Z, K>, f64),
+        multipliers: &mut Multipliers<Z, K>,
+        mut conditions: Conditions<Z, K>,
+    ) -> Result<Correction<N, Z, K>, StepError> {
+        let (dq_dc, dv_dc) = self.sensitivities;
+        let linear_updates = settings.exact && settings.accept_linearised;
+        let corrections = if linear_updates {
+            LINEAR_CORRECTIONS
+        } else {
+            1
+        };
+        let (mut q, mut v) = (self.end.q, self.end.v);
+        let mut total = [Vector::<Z>::zeros(); K];
+        for _ in 0..corrections {
+            let at = (&q, &v, t_end);
+            let (blocks, reach) = linearise(model, at, (dq_dc, dv_dc), multipliers)?;
+            let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
+                return Ok(Correction::Singular);
+            };
+            for k in 0..K {
+                multipliers.coefficients[k] += delta[k];
+                total[k] += delta[k];
+            }
+            if !linear_updates {
+                break;
+            }
+            (q, v) = (self.end.q, self.end.v);
+            for k in 0..K {
+                q += dq_dc[k] * total[k];
+                v += dv_dc[k] * total[k];
+            }
+            if !finite_state(&q, &v) {
+                break;
+            }
+            let shift = (q - self.end.q, total.iter().sum::<Vector<Z>>(), reach);
+            if !linearisation_is_negligible(model, settings, (start, &q, &v, t_end), shift)? {
+                break;
+            }
+            conditions = Conditions::<Z, K>::at(model, (&q, &v, t_end), &multipliers.at(1.0))?;
+            if conditions.hold(settings, t_end - start.t) {
+                let updated = StepEnd { q, v, ..*self.end };
+                return Ok(Correction::Accepted(updated));
+            }
+        }
+        Ok(Correction::IntegrateAgain)
+    }
 }
 
 /// Whether the end state corrected linearly by `Q Δp` may stand for integrating the step again.
@@ -447,15 +510,14 @@ where
 /// `∂g/∂q`.
 fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    end: &StepEnd<N, Z, K>,
-    t_end: f64,
+    (q, v, t_end): (&Vector<N>, &Vector<N>, f64),
     (dq_dc, dv_dc): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
     multipliers: &Multipliers<Z, K>,
 ) -> Result<([[Matrix<Z, Z>; K]; K], f64), StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
-    let (dg_dq, dg_dv) = model.linearisation(&end.q, &end.v, t_end)?;
+    let (dg_dq, dg_dv) = model.linearisation(q, v, t_end)?;
     let r = S::POSITION_CONSTRAINTS;
     let mut blocks = [[Matrix::<Z, Z>::zeros(); K]; K];
     for k in 0..K {
@@ -468,16 +530,16 @@ where
         let mut dw_dq = Matrix::<Z, N>::zeros();
         for j in 0..r {
             let unit = Vector::<Z>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
-            let (hessian, _) = model.constraint_force_jacobians(&end.q, &end.v, t_end, &unit)?;
-            dw_dq.set_row(j, &(hessian * end.v).transpose());
+            let (hessian, _) = model.constraint_force_jacobians(q, v, t_end, &unit)?;
+            dw_dq.set_row(j, &(hessian * v).transpose());
         }
         for k in 0..K {
             blocks[1][k] = dw_dq * dq_dc[k] + dg_dq * dv_dc[k];
         }
         if r < Z {
             let lambda = multipliers.at(1.0);
-            let at = model.acceleration(&end.q, &end.v, t_end, &lambda)?;
-            let jac = model.acceleration_jacobians(&end.q, &end.v, t_end, &lambda, &at)?;
+            let at = model.acceleration(q, v, t_end, &lambda)?;
+            let jac = model.acceleration_jacobians(q, v, t_end, &lambda, &at)?;
             for k in 0..K {
                 let da =
                     jac.dq * dq_dc[k] + jac.dv * dv_dc[k] + multipliers.weight(k, 1.0) * jac.dp;
