@@ -197,7 +197,7 @@ pub fn solve_blocks<const Z: usize, const K: usize>(
             b[p] -= update;
         }
     }
-    b.iter().all(|x| all_finite(x)).then_some(b)
+    b.iter().all(all_finite).then_some(b)
 }
 
 #[cfg(test)]

@@ -443,6 +443,7 @@ fn stage_fraction(rtol: f64) -> f64 {
 /// correction is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component; otherwise, and
 /// always when it gets there first, at rounding.
 #[inline(always)]
+#[allow(clippy::type_complexity)]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
     lu: &Lu<N>,
