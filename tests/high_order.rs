@@ -236,3 +236,10 @@ fn esdirk43_with_quadratic_multipliers_converges_at_its_order_4() {
     let fixed = (errors(50), errors(100));
     assert_order_within("ESDIRK4(3), quadratic", fixed, 2.0, 4.0, 0.3);
 }
+
+#[test]
+fn esdirk54_with_quadratic_multipliers_converges_at_its_order_5() {
+    let errors = |n| quadratic_errors(InnerMethod::Esdirk54, n);
+    let fixed = (errors(25), errors(50));
+    assert_order_within("ESDIRK5(4), quadratic", fixed, 2.0, 5.0, 0.3);
+}

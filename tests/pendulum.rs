@@ -194,6 +194,18 @@ fn convergence_orders_esdirk32() {
     );
 }
 
+/// Order 5 with constant multipliers, capped at 4 like Dormand–Prince's.
+#[test]
+fn convergence_orders_esdirk54() {
+    assert_orders(
+        "ESDIRK5(4)",
+        InnerMethod::Esdirk54,
+        Sensitivity::Exact,
+        [50, 100],
+        [4.0, 2.0, 4.0, 1.0, 4.0],
+    );
+}
+
 #[test]
 fn convergence_orders_esdirk43() {
     assert_orders(

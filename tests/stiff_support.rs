@@ -1,5 +1,5 @@
 //! The stiff spring-supported pendulum against its reduced-coordinate reference: the adaptive
-//! L-stable ESDIRKs 3(2) and 4(3) follow their tolerance with steps far longer than the support's period,
+//! L-stable ESDIRKs 3(2), 4(3) and 5(4) follow their tolerance with steps far longer than the support's period,
 //! and Dormand–Prince gets there too, with the steps its stability allows.
 
 mod common;
@@ -57,11 +57,18 @@ fn esdirk_follows_the_tolerance_on_the_stiff_support() {
             eprintln!("ESDIRK3(2) {multipliers:?} rtol {rtol:e}: errors {errors:?}, {steps} steps");
             assert!(errors.iter().all(|&e| e < 100.0 * rtol), "{errors:?}");
         }
-        // Order 4 goes on to tolerances where order 3 needs too many steps.
-        for rtol in [1e-5, 1e-7, 1e-9] {
-            let (errors, steps) = run(InnerMethod::Esdirk43, multipliers, rtol);
-            eprintln!("ESDIRK4(3) {multipliers:?} rtol {rtol:e}: errors {errors:?}, {steps} steps");
-            assert!(errors.iter().all(|&e| e < 100.0 * rtol), "{errors:?}");
+        // Orders 4 and 5 go on to tolerances where order 3 needs too many steps.
+        for (label, method) in [
+            ("ESDIRK4(3)", InnerMethod::Esdirk43),
+            ("ESDIRK5(4)", InnerMethod::Esdirk54),
+        ] {
+            for rtol in [1e-5, 1e-7, 1e-9] {
+                let (errors, steps) = run(method, multipliers, rtol);
+                eprintln!(
+                    "{label} {multipliers:?} rtol {rtol:e}: errors {errors:?}, {steps} steps"
+                );
+                assert!(errors.iter().all(|&e| e < 100.0 * rtol), "{errors:?}");
+            }
         }
     }
 }

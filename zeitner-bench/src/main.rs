@@ -328,6 +328,10 @@ fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<M
             settings: implicit(InnerMethod::Esdirk43, 0.0),
         },
         Method {
+            name: "zeitner-quadratic-lambda-esdirk54-exactQ",
+            settings: implicit(InnerMethod::Esdirk54, 0.0),
+        },
+        Method {
             name: "zeitner-constant-lambda-sdirk2-exactQ",
             settings: fixed(|h| Options {
                 method: InnerMethod::Sdirk2,

@@ -174,6 +174,14 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
             },
         ),
         (
+            "esdirk54-adaptive",
+            Options {
+                method: InnerMethod::Esdirk54,
+                step: adaptive,
+                ..base
+            },
+        ),
+        (
             "gen-alpha-0.5",
             Options {
                 method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
@@ -185,13 +193,14 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
 }
 
 /// The methods of the report, in its columns' order.
-const METHODS: [&str; 7] = [
+const METHODS: [&str; 8] = [
     "rk4-paperQ",
     "rk4-exactQ",
     "dopri5-adaptive",
     "sdirk2-exactQ",
     "esdirk32-adaptive",
     "esdirk43-adaptive",
+    "esdirk54-adaptive",
     "gen-alpha-0.5",
 ];
 

