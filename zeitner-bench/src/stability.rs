@@ -727,6 +727,7 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          below is the initial one), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
          (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers), \
          `esdirk43-adaptive` (Kennedy & Carpenter's ESDIRK 4(3), the same otherwise), \
+         `esdirk54-adaptive` (their ESDIRK 5(4)7L[2]SA2, the same otherwise), \
          `gen-alpha-0.5` (generalised-α with ρ∞ = 0.5, fixed steps, constant multipliers); \
          the exact Q and projected outputs unless named.\n"
     );

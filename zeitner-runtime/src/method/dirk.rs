@@ -426,7 +426,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
         } else {
-            stages.v[i - 1]
+            v_known + hg * stages.a[i - 1]
         };
         // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
         let mut kept = self.kept(h);
@@ -552,9 +552,12 @@ fn stage_fraction(rtol: f64) -> f64 {
 }
 
 /// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
-/// `None` when it does not converge within them. With `tolerances`, converged once the last
-/// correction is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component; otherwise, and
-/// always when it gets there first, at rounding.
+/// `None` when it does not converge within them. With `tolerances`, converged once the error
+/// left is below [`stage_fraction`] of `atol + rtol·max(|v|, |v_known|)` in each component;
+/// otherwise, and always when it gets there first, at rounding. The error left after a
+/// correction `δ` is taken as `θ/(1 - θ)·|δ|`, `θ` the contraction from the previous sweep
+/// (Hairer & Wanner, *Solving ODEs II*, IV.8, eq. 8.10); after the first sweep, which has no
+/// `θ` yet, as `|δ|`.
 #[inline(always)]
 #[allow(clippy::type_complexity)]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
@@ -568,12 +571,12 @@ fn solve_stage<Sys, const N: usize, const Z: usize>(
 where
     Sys: ConstrainedSystem<N, Z>,
 {
-    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>| {
+    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>, left: f64| {
         tolerances.is_some_and(|(rtol, atol)| {
             let fraction = stage_fraction(rtol);
             (0..N).all(|i| {
                 let scale = atol + rtol * v[i].abs().max(v_known[i].abs());
-                delta[i].is_finite() && delta[i].abs() <= fraction * scale
+                delta[i].is_finite() && left * delta[i].abs() <= fraction * scale
             })
         })
     };
@@ -588,9 +591,15 @@ where
         v -= delta;
         let norm = delta.amax();
         let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
+        let theta = norm / last_norm;
+        let left = if last_norm.is_finite() && theta < 1.0 {
+            theta / (1.0 - theta)
+        } else {
+            1.0
+        };
         // Converged; or stalled at the rounding floor, which stiff forces raise well above the
         // velocities' own precision (k·x is rounded before it is divided back down).
-        if within_tolerance(&delta, &v)
+        if within_tolerance(&delta, &v, left)
             || norm <= 1e-12 * scale
             || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
         {
