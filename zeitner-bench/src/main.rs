@@ -1187,6 +1187,48 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
+/// The cost of the adaptive implicit methods where Dormand–Prince would do: the fastest run of
+/// each ESDIRK over our fastest Dormand–Prince run that reaches the same error.
+fn implicit_against_explicit(scenes: &[Scene], rows: &[Row]) -> String {
+    const IMPLICIT: [(&str, &str); 2] = [("esdirk54", "ESDIRK 5(4)"), ("esdirk43", "ESDIRK 4(3)")];
+    let fastest = |scene: &str, target: f64, tag: &str| -> Option<f64> {
+        rows.iter()
+            .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
+            .filter(|r| r.method.starts_with("zeitner-") && r.method.contains(tag))
+            .map(|r| r.cpu_seconds)
+            .min_by(f64::total_cmp)
+    };
+    let mut out = String::from(
+        "## The adaptive implicit methods against Dormand–Prince\n\n\
+         Time of each ESDIRK's fastest run over our fastest Dormand–Prince run (any multiplier \
+         model) that reaches the same error; below 1 the implicit method is faster.\n\n\
+         | scene | method | error ≤ 1e-4 | error ≤ 1e-6 | error ≤ 1e-8 |\n|---|---|---|---|---|\n",
+    );
+    for scene in scenes {
+        for (tag, label) in IMPLICIT {
+            if fastest(scene.name, f64::INFINITY, tag).is_none() {
+                continue;
+            }
+            let _ = write!(out, "| {} | {label} |", scene.name);
+            for target in [1e-4, 1e-6, 1e-8] {
+                match (
+                    fastest(scene.name, target, tag),
+                    fastest(scene.name, target, "dopri5"),
+                ) {
+                    (Some(implicit), Some(explicit)) => {
+                        let _ = write!(out, " {:.2} |", implicit / explicit);
+                    }
+                    (None, _) => out.push_str(" not reached |"),
+                    (Some(_), None) => out.push_str(" Dormand–Prince does not reach it |"),
+                }
+            }
+            out.push('\n');
+        }
+    }
+    out.push('\n');
+    out
+}
+
 /// The Markdown summary: for each scene and error target, the fastest setting of each method.
 fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
     let mut out = String::new();
@@ -1266,6 +1308,7 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
          a target is a result.\n"
     );
     let _ = writeln!(out, "{headline}");
+    out.push_str(&implicit_against_explicit(scenes, rows));
     for scene in scenes {
         let scene_rows: Vec<&Row> = rows.iter().filter(|r| r.scene == scene.name).collect();
         let _ = writeln!(out, "## {}\n", scene.title);

@@ -617,3 +617,80 @@ where
     }
     None
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn times<const S: usize>(x: [f64; S], y: [f64; S]) -> [f64; S] {
+        core::array::from_fn(|i| x[i] * y[i])
+    }
+
+    fn apply<const S: usize>(a: &[[f64; S]; S], x: [f64; S]) -> [f64; S] {
+        core::array::from_fn(|i| (0..S).map(|j| a[i][j] * x[j]).sum())
+    }
+
+    /// `Σ wᵢ Φᵢ(t) - 1/γ(t)` for the 17 rooted trees `t` of orders 1 to 5 (Butcher, *Numerical
+    /// Methods for ODEs*, 2016, Table 311(I)), as `(order, residual)`.
+    fn order_residuals<const S: usize>(a: &[[f64; S]; S], w: &[f64; S]) -> [(u32, f64); 17] {
+        let one = [1.0; S];
+        let c = apply(a, one);
+        let ac = apply(a, c);
+        let c2 = times(c, c);
+        let dot = |x: [f64; S], exact: f64| (0..S).map(|i| w[i] * x[i]).sum::<f64>() - exact;
+        [
+            (1, dot(one, 1.0)),
+            (2, dot(c, 1.0 / 2.0)),
+            (3, dot(c2, 1.0 / 3.0)),
+            (3, dot(ac, 1.0 / 6.0)),
+            (4, dot(times(c2, c), 1.0 / 4.0)),
+            (4, dot(times(c, ac), 1.0 / 8.0)),
+            (4, dot(apply(a, c2), 1.0 / 12.0)),
+            (4, dot(apply(a, ac), 1.0 / 24.0)),
+            (5, dot(times(c2, c2), 1.0 / 5.0)),
+            (5, dot(times(c2, ac), 1.0 / 10.0)),
+            (5, dot(times(c, apply(a, c2)), 1.0 / 15.0)),
+            (5, dot(times(c, apply(a, ac)), 1.0 / 30.0)),
+            (5, dot(times(ac, ac), 1.0 / 20.0)),
+            (5, dot(apply(a, times(c2, c)), 1.0 / 20.0)),
+            (5, dot(apply(a, times(c, ac)), 1.0 / 40.0)),
+            (5, dot(apply(a, apply(a, c2)), 1.0 / 60.0)),
+            (5, dot(apply(a, apply(a, ac)), 1.0 / 120.0)),
+        ]
+    }
+
+    /// The solution meets every order condition up to its order and misses one of the next;
+    /// the embedded solution likewise for its order.
+    fn check<const S: usize>(name: &str, tableau: &DirkTableau<S>) {
+        let solution = (tableau.a[S - 1], tableau.order);
+        let weights = [Some(solution), tableau.embedded.zip(tableau.embedded_order)];
+        for (w, order) in weights.into_iter().flatten() {
+            let residuals = order_residuals(&tableau.a, &w);
+            for (tree_order, residual) in residuals {
+                if tree_order <= order {
+                    assert!(
+                        residual.abs() < 1e-13,
+                        "{name}, order {order}: {residual:e}"
+                    );
+                }
+            }
+            if order < 5 {
+                assert!(
+                    residuals
+                        .iter()
+                        .any(|&(o, r)| o == order + 1 && r.abs() > 1e-6),
+                    "{name}: order {order} claimed, but the next order's conditions hold too"
+                );
+            }
+        }
+        assert!((0..S).all(|i| tableau.a[i][i] == 0.0 || tableau.a[i][i] == tableau.gamma));
+    }
+
+    #[test]
+    fn tableaux_meet_their_order_conditions() {
+        check("SDIRK2", &SDIRK2);
+        check("ESDIRK 3(2)", &KVAERNO3);
+        check("ESDIRK 4(3)", &KENNEDY_CARPENTER4);
+        check("ESDIRK 5(4)", &KENNEDY_CARPENTER5);
+    }
+}
