@@ -711,7 +711,7 @@ fn which_method_where(cases: &[Case]) -> String {
          `docs/performance.md`).\n\
          - **Non-stiff scenes** (pendulums, mechanisms, the steam generator): Dormand–Prince, with \
          quadratic multipliers for accuracy (order 5), or RK4 with fixed steps where the step is \
-         known; ESDIRK 5(4) works there too, at 1.2–3.0× Dormand–Prince's cost at equal error \
+         known; ESDIRK 5(4) works there too, at 1.2–2.8× Dormand–Prince's cost at equal error \
          (ESDIRK 4(3) at 1.6–5.0×; `docs/performance.md`), so a model that is stiff only in \
          parts of its run can stay with it.\n\
          - **Singular configurations and redundant equations** stop every method with \
