@@ -215,11 +215,12 @@ const fn with_first_entry(mut row: [f64; 7], total: f64) -> [f64; 7] {
 /// Kennedy & Carpenter's ESDIRK 5(4)7L\[2\]SA2 (C. A. Kennedy, M. H. Carpenter, *Diagonally
 /// implicit Runge–Kutta methods for ordinary differential equations. A review*, NASA
 /// TM-2016-219173, 2016): 7 stages with an explicit first one, `γ = 23/125`, order 5, stage
-/// order 2, L-stable and stiffly accurate, with an embedded order-4 solution. The same step
-/// control as Dormand–Prince 5(4) at one more implicit stage than [`KENNEDY_CARPENTER4`], for
-/// non-stiff stretches and tight tolerances. The coefficients are the published rationals, as
-/// SUNDIALS' `ESDIRK547L2SA2_7_4_5` gives them; checked in exact arithmetic, the order
-/// conditions hold to 1e-26 (orders 1–5 for the solution, 1–4 for the embedded one).
+/// order 2, L-stable and stiffly accurate, with an embedded order-4 solution: the orders of
+/// Dormand–Prince 5(4) at one implicit stage more than [`KENNEDY_CARPENTER4`], for tight
+/// tolerances and non-stiff stretches. The coefficients are the published rationals, as
+/// SUNDIALS' `ESDIRK547L2SA2_7_4_5` gives them (approximations of irrational values, which
+/// meet the order conditions far below rounding); the tests below check the conditions of
+/// orders 1–5 for the solution and 1–4 for the embedded one.
 pub(crate) const KENNEDY_CARPENTER5: DirkTableau<7> = DirkTableau {
     a: [
         KC5_A[0],
@@ -422,7 +423,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
             v_known += (h * a[i][j]) * stages.a[j];
         }
         let t = start.t + Self::TABLEAU.c(i) * h;
-        // Guess: the last stage's velocity, or the start's continued by its acceleration.
+        // Guess: the stage's known part continued by the last stage's acceleration (off by
+        // O(h²), where the last stage's velocity is off by O(h)), or, for an implicit first
+        // stage, by the start's acceleration.
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
         } else {
