@@ -601,9 +601,14 @@ where
             1.0
         };
         // Converged; or stalled at the rounding floor, which stiff forces raise well above the
-        // velocities' own precision (k·x is rounded before it is divided back down).
+        // velocities' own precision (k·x is rounded before it is divided back down). Fixed
+        // steps weigh the correction by what it leaves, as adaptive ones do their tolerance;
+        // adaptive steps keep the last correction itself at rounding, since a stiff member
+        // amplifies what a stage leaves into the error estimate (spring support, ESDIRK 5(4)
+        // at error 1e-6: 729 steps instead of 194 when weighed).
+        let floor = if tolerances.is_some() { 1.0 } else { left };
         if within_tolerance(&delta, &v, left)
-            || norm <= 1e-12 * scale
+            || floor * norm <= 1e-12 * scale
             || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
         {
             // The stage's acceleration from its equation, not evaluated again at the converged
