@@ -1192,11 +1192,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 fn implicit_against_explicit(scenes: &[Scene], rows: &[Row]) -> String {
     const IMPLICIT: [(&str, &str); 2] = [("esdirk54", "ESDIRK 5(4)"), ("esdirk43", "ESDIRK 4(3)")];
     let fastest = |scene: &str, target: f64, tag: &str| -> Option<f64> {
-        rows.iter()
-            .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
-            .filter(|r| r.method.starts_with("zeitner-") && r.method.contains(tag))
-            .map(|r| r.cpu_seconds)
-            .min_by(f64::total_cmp)
+        let ours = |method: &str| method.starts_with("zeitner-") && method.contains(tag);
+        fastest_run(rows, scene, target, ours).map(|r| r.cpu_seconds)
     };
     let mut out = String::from(
         "## The adaptive implicit methods against Dormand–Prince\n\n\
@@ -1229,17 +1226,27 @@ fn implicit_against_explicit(scenes: &[Scene], rows: &[Row]) -> String {
     out
 }
 
+/// The fastest run on `scene` that reaches the error `target`, among the methods `keep` admits.
+fn fastest_run<'r>(
+    rows: &'r [Row],
+    scene: &str,
+    target: f64,
+    keep: impl Fn(&str) -> bool,
+) -> Option<&'r Row> {
+    rows.iter()
+        .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
+        .filter(|r| keep(&r.method))
+        .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
+}
+
 /// The Markdown summary: for each scene and error target, the fastest setting of each method.
 fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "# Performance: error against run time\n");
     let fastest = |scene: &str, target: f64, ours: bool| -> Option<&Row> {
-        rows.iter()
-            .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
-            .filter(|r| {
-                r.method.starts_with("zeitner-") == ours && (ours || r.method.starts_with("peer-"))
-            })
-            .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
+        fastest_run(rows, scene, target, |method| {
+            method.starts_with("zeitner-") == ours && (ours || method.starts_with("peer-"))
+        })
     };
     let mut headline = String::from(
         "| scene | error ≤ | our fastest | best peer | peer time / ours |\n|---|---|---|---|---|\n",
@@ -1328,11 +1335,9 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
             let cells: Vec<String> = [1e-4, 1e-6, 1e-8]
                 .iter()
                 .map(|&target| {
-                    scene_rows
-                        .iter()
-                        .filter(|r| r.method == name && r.failure.is_none() && r.error() <= target)
-                        .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
-                        .map_or("not reached".to_string(), |r| {
+                    fastest_run(rows, scene.name, target, |method| method == name).map_or(
+                        "not reached".to_string(),
+                        |r| {
                             if r.method.starts_with("peer-") {
                                 format!(
                                     "{:.3} ms ({}, {} steps)",
@@ -1349,7 +1354,8 @@ fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
                                     r.newton_iterations as f64 / r.steps.max(1) as f64
                                 )
                             }
-                        })
+                        },
+                    )
                 })
                 .collect();
             let _ = writeln!(out, "| `{name}` | {} |", cells.join(" | "));
