@@ -258,15 +258,13 @@ pub(crate) fn error_norm<const N: usize>(
 /// nothing cancels it), `τ/12 M⁻¹ ΔGᵀ Δλ` over those rows — the tangential velocity error
 /// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. (For position rows the velocity
 /// error of this kind is of higher order.)
+/// `start` and `end` give `G` and `λ` there (and where the step ends).
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    start: (f64, &Vector<N>, &Vector<N>, &Vector<Z>),
-    end: (f64, &Vector<N>, &Matrix<Z, N>, &Vector<Z>),
+    (g1, lambda1, t1): (&Matrix<Z, N>, &Vector<Z>, f64),
+    (g2, lambda2, t2, q2): (&Matrix<Z, N>, &Vector<Z>, f64, &Vector<N>),
 ) -> Result<(Vector<N>, Vector<N>), StepError> {
-    let (t1, q1, v1, lambda1) = start;
-    // `G` at the end point is known: the consistent end point computed it.
-    let (t2, q2, g2, lambda2) = end;
-    let turn = g2 - model.jacobian(q1, v1, t1)?;
+    let turn = g2 - g1;
     let factor = model.mass_factor(q2, t2)?;
     let turned = |rows: &Vector<Z>| factor.solve(&turn.tr_mul(rows));
     let change = lambda2 - lambda1;

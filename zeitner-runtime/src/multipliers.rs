@@ -342,7 +342,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
         let mut total = [Vector::<Z>::zeros(); K];
         for _ in 0..corrections {
             let at = (&q, &v, t_end);
-            let (blocks, reach) = linearise(model, at, (dq_dc, dv_dc), multipliers)?;
+            let (blocks, dg_dq) = linearise(model, at, (dq_dc, dv_dc), multipliers)?;
             let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
                 return Ok(Correction::Singular);
             };
@@ -361,7 +361,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
             if !finite_state(&q, &v) {
                 break;
             }
-            let shift = (q - self.end.q, total.iter().sum::<Vector<Z>>(), reach);
+            let shift = (q - self.end.q, total.iter().sum::<Vector<Z>>(), &dg_dq);
             if !linearisation_is_negligible(model, settings, (start, &q, &v, t_end), shift)? {
                 break;
             }
@@ -382,12 +382,12 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
 /// absolute `ε`) nor the first integration's error estimate see it: where it was left
 /// unchecked, a double pendulum's energy drifted more at tighter tolerances. Adaptive steps:
 /// at most a tenth of the error tolerance; fixed steps: it may move the constraints (by up to
-/// `reach`, the largest row norm of `∂g/∂q`, per unit of position) by `ε` at most.
+/// the largest row norm of `∂g/∂q`, per unit of position) by `ε` at most.
 fn linearisation_is_negligible<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     settings: &NewtonSettings,
     (start, q, v, t_end): (&Start<N, Z, K>, &Vector<N>, &Vector<N>, f64),
-    (dq, dp, reach): (Vector<N>, Vector<Z>, f64),
+    (dq, dp, dg_dq): (Vector<N>, Vector<Z>, &Matrix<Z, N>),
 ) -> Result<bool, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -406,6 +406,7 @@ where
         );
         return Ok(norm <= LINEARISATION_SHARE);
     }
+    let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, f64::max);
     Ok(reach * (eq.amax() + h * ev.amax()) <= settings.tolerance)
 }
 
@@ -506,14 +507,13 @@ where
 /// Jacobian along `e_j` (`∂²g/∂q∂t` is left out: Newton then converges linearly for rheonomic
 /// constraints). For velocity rows, `∂ġ/∂c ≈ G (∂q''/∂q ∂q/∂c + ∂q''/∂q' ∂q'/∂c + ∂q''/∂λ ∂λ/∂c)`
 /// with `G = ∂g/∂q'`, leaving out the derivatives of `G` and `b` themselves (an `O(τ)` share of
-/// the whole; Newton converges linearly with that rate). Also returns the largest row norm of
-/// `∂g/∂q`.
+/// the whole; Newton converges linearly with that rate). Also returns `∂g/∂q`.
 fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t_end): (&Vector<N>, &Vector<N>, f64),
     (dq_dc, dv_dc): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
     multipliers: &Multipliers<Z, K>,
-) -> Result<([[Matrix<Z, Z>; K]; K], f64), StepError>
+) -> Result<([[Matrix<Z, Z>; K]; K], Matrix<Z, N>), StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
@@ -556,9 +556,7 @@ where
             model.open_rows().regularise(&mut row[l]);
         }
     }
-    // How far a change of the positions moves the constraints, at most.
-    let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, f64::max);
-    Ok((blocks, reach))
+    Ok((blocks, dg_dq))
 }
 
 #[cfg(test)]

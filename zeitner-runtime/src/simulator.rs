@@ -882,8 +882,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (point, gram) = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
-            let start = (self.time(), &self.q, &self.v, &self.lambda);
-            let end_state = (t_end, &end.q, &gram.jacobian, &point.lambda);
+            // `G` at the step start is the last end point's, where no gap can have opened since.
+            let known = self.state_gram.filter(|_| S::UNILATERAL_CONSTRAINTS == 0);
+            let g1 = match known {
+                Some((at, _)) => at.jacobian,
+                None => self.model.jacobian(&self.q, &self.v, self.time())?,
+            };
+            let start = (&g1, &self.lambda, self.time());
+            let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
             freezing_error(&mut self.model, start, end_state)?
         } else {
             (Vector::zeros(), Vector::zeros())

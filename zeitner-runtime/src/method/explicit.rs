@@ -17,6 +17,15 @@ pub(crate) struct Tableau<const S: usize> {
     pub embedded_order: Option<u32>,
 }
 
+impl<const S: usize> Tableau<S> {
+    /// Whether stage `i`'s slope enters the solution or a later stage; where it enters only the
+    /// error estimate (Dormand–Prince's last stage), its sensitivity is not needed.
+    #[inline(always)]
+    fn slope_enters_solution(&self, i: usize) -> bool {
+        self.b[i] != 0.0 || (i + 1..S).any(|j| self.a[j][i] != 0.0)
+    }
+}
+
 /// The classical Runge–Kutta method, order 4.
 pub(crate) const RK4: Tableau<4> = Tableau {
     a: [
@@ -198,7 +207,7 @@ where
         let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
-        if sensitivity {
+        if sensitivity && tableau.slope_enters_solution(i) {
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
                 dkq[i][k] = dv[k];
