@@ -144,6 +144,7 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
 /// mass metric (one is exact when `w` is linear in `q'`): at least one and at most
 /// `max_sweeps`, ending early once the `w` a later sweep starts from is `settled`. Returns the
 /// velocities and the directions (`G`, `M⁻¹Gᵀ`) of the last sweep.
+#[inline]
 fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, mut v, t): (&Vector<N>, Vector<N>, f64),
@@ -230,6 +231,7 @@ fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z
 }
 
 /// The consistent point at a finite state whose directions are known.
+#[inline]
 fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (t, q, v): (f64, Vector<N>, Vector<N>),
@@ -269,6 +271,7 @@ pub(crate) struct Gram<const N: usize, const Z: usize> {
 /// constraint (exact for constraints linear in `q'`, up to the rounding of the solve; a scene
 /// with velocity-level rows gets up to two more sweeps where that rounding — a badly scaled
 /// `G M⁻¹Gᵀ` — leaves them above the tolerance), then multipliers and accelerations.
+#[inline]
 pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     t: f64,

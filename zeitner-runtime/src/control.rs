@@ -191,6 +191,7 @@ pub(crate) fn retry_step(
 /// The step the controller plans after a step accepted with `(error norm, Newton
 /// integrations)`, for an estimate of order `k - 1`; `(h_used, h_planned)` are the step taken
 /// and the one planned before it was shortened to land.
+#[inline]
 pub(crate) fn next_step_size(
     options: &Options,
     controller: &mut Controller,
@@ -225,6 +226,7 @@ pub(crate) fn next_step_size(
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
 /// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
 /// estimate, infinite when the estimate is not finite (so that the step is rejected).
+#[inline]
 pub(crate) fn error_norm<const N: usize>(
     step: StepControl,
     start: (&Vector<N>, &Vector<N>),
@@ -259,6 +261,7 @@ pub(crate) fn error_norm<const N: usize>(
 /// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. (For position rows the velocity
 /// error of this kind is of higher order.)
 /// `start` and `end` give `G` and `λ` there (and where the step ends).
+#[inline]
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (g1, lambda1, t1): (&Matrix<Z, N>, &Vector<Z>, f64),

@@ -49,6 +49,7 @@ pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) ->
 }
 
 /// Solves the symmetric positive definite `a x = b`, or names the dependent rows.
+#[inline]
 pub fn solve_spd<const Z: usize, const C: usize>(
     a: &Matrix<Z, Z>,
     b: &Matrix<Z, C>,
@@ -84,6 +85,7 @@ pub struct Lu<const N: usize> {
 
 impl<const N: usize> Lu<N> {
     /// `None` when a pivot falls below `1e-13` of the largest one: numerically singular.
+    #[inline]
     pub fn new(mut a: Matrix<N, N>) -> Option<Self> {
         let mut pivots = [0usize; N];
         let mut largest = 0.0f64;
@@ -115,6 +117,7 @@ impl<const N: usize> Lu<N> {
         Some(Lu { lu: a, pivots })
     }
 
+    #[inline]
     pub fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
         let mut x = *b;
         for k in 0..N {
@@ -168,6 +171,7 @@ pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
 /// complement of the first.
 // Block indices read as the elimination is written on paper.
 #[allow(clippy::needless_range_loop)]
+#[inline]
 pub fn solve_blocks<const Z: usize, const K: usize>(
     blocks: &[[Matrix<Z, Z>; K]; K],
     rhs: &[Vector<Z>; K],

@@ -262,6 +262,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         })
     }
 
+    #[inline]
     pub fn mass_factor(&mut self, q: &Vector<N>, t: f64) -> Result<FactorOf<S, N, Z>, StepError> {
         match &self.constant_factor {
             Some(factor) if S::MASS_IS_CONSTANT => Ok(factor.clone()),
@@ -269,6 +270,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         }
     }
 
+    #[inline]
     pub fn force(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<N>, StepError> {
         self.evaluations.forces += 1;
         let force = self.system.applied_force(q, v, t);
@@ -300,6 +302,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `(∂g/∂q, ∂g/∂q')` of all rows, for the Newton linearisation at the step end.
+    #[inline]
     pub fn linearisation(
         &mut self,
         q: &Vector<N>,
@@ -337,6 +340,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
+    #[inline]
     pub fn constraint_force_jacobians(
         &mut self,
         q: &Vector<N>,
@@ -413,6 +417,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known. As in
     /// [`Model::acceleration`], the results are checked and the model's outputs only to name
     /// the one that was not finite.
+    #[inline]
     pub fn acceleration_jacobians(
         &mut self,
         q: &Vector<N>,

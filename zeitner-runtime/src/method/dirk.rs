@@ -326,6 +326,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
     }
 
     /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
+    #[inline]
     fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
         let hg = h * Self::TABLEAU.gamma;
         let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
@@ -407,6 +408,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
     /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
+    #[inline]
     fn implicit_stage<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
@@ -469,6 +471,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
     /// its converged equation `v = v_known + hγ a(q_known + hγ v, v)`: a fresh factorisation
     /// there, which then serves as the next iteration matrix. `None` when it is singular.
     #[allow(clippy::type_complexity)]
+    #[inline]
     fn stage_sensitivity<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
