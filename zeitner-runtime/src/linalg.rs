@@ -171,7 +171,6 @@ pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
 /// complement of the first.
 // Block indices read as the elimination is written on paper.
 #[allow(clippy::needless_range_loop)]
-#[inline]
 pub fn solve_blocks<const Z: usize, const K: usize>(
     blocks: &[[Matrix<Z, Z>; K]; K],
     rhs: &[Vector<Z>; K],
