@@ -260,7 +260,9 @@ pub(crate) fn error_norm<const N: usize>(
 /// nothing cancels it), `τ/12 M⁻¹ ΔGᵀ Δλ` over those rows — the tangential velocity error
 /// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. (For position rows the velocity
 /// error of this kind is of higher order.)
-/// `start` and `end` give `G` and `λ` there (and where the step ends).
+///
+/// `start` gives `G`, `λ` and the time at the step start; `end` the same at the step end, and
+/// the end's positions.
 #[inline]
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
