@@ -119,6 +119,16 @@ impl<const N: usize> Lu<N> {
 
     #[inline]
     pub fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
+        self.substitute(b, |i, sum| sum / self.lu[(i, i)])
+    }
+
+    /// Forward and back substitution; `divide(i, sum)` is `sum / U_ii`.
+    #[inline(always)]
+    fn substitute<const C: usize>(
+        &self,
+        b: &Matrix<N, C>,
+        divide: impl Fn(usize, f64) -> f64,
+    ) -> Matrix<N, C> {
         let mut x = *b;
         for k in 0..N {
             x.swap_rows(k, self.pivots[k]);
@@ -136,10 +146,39 @@ impl<const N: usize> Lu<N> {
                 for j in i + 1..N {
                     sum -= self.lu[(i, j)] * x[(j, c)];
                 }
-                x[(i, c)] = sum / self.lu[(i, i)];
+                x[(i, c)] = divide(i, sum);
             }
         }
         x
+    }
+}
+
+/// The factor of a Newton iteration matrix, kept for many solves: with the pivots' reciprocals,
+/// so that the back substitution multiplies instead of waiting on a division per row (the
+/// sweeps of a stage are a chain of such solves). A product with a reciprocal rounds twice, which
+/// a Newton correction can afford and a direct solve ([`Lu`]) need not.
+#[derive(Clone, Copy, Debug)]
+pub struct IterationFactor<const N: usize> {
+    lu: Lu<N>,
+    inverse_diagonal: [f64; N],
+}
+
+impl<const N: usize> IterationFactor<N> {
+    /// `None` where [`Lu::new`] refuses the matrix.
+    #[inline]
+    pub fn new(a: Matrix<N, N>) -> Option<Self> {
+        let lu = Lu::new(a)?;
+        let inverse_diagonal = core::array::from_fn(|i| 1.0 / lu.lu[(i, i)]);
+        Some(IterationFactor {
+            lu,
+            inverse_diagonal,
+        })
+    }
+
+    #[inline]
+    pub fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
+        self.lu
+            .substitute(b, |i, sum| sum * self.inverse_diagonal[i])
     }
 }
 
@@ -214,6 +253,16 @@ mod tests {
         let x = Vector::<3>::new(1.0, 2.0, 3.0);
         let solved = Lu::new(a).unwrap().solve(&(a * x));
         assert!((solved - x).amax() < 1e-14, "{solved}");
+    }
+
+    #[test]
+    fn iteration_factor_solves_as_the_lu_does() {
+        let a = Matrix::<3, 3>::new(0.0, 2.0, 1.0, 1.0, 1.0, 1.0, 4.0, -1.0, 2.0);
+        let b = Matrix::<3, 2>::new(1.0, -2.0, 0.5, 3.0, 7.0, 0.25);
+        let exact = Lu::new(a).unwrap().solve(&b);
+        let iterated = IterationFactor::new(a).unwrap().solve(&b);
+        assert!((iterated - exact).amax() < 1e-14, "{iterated} {exact}");
+        assert!(IterationFactor::new(Matrix::<2, 2>::zeros()).is_none());
     }
 
     #[test]

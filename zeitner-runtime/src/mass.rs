@@ -34,18 +34,21 @@ pub struct DiagonalFactor<const N: usize>(Vector<N>);
 impl<const N: usize> MassMatrix<N> for DiagonalMass<N> {
     type Factor = DiagonalFactor<N>;
 
+    #[inline]
     fn factor(&self) -> Option<DiagonalFactor<N>> {
         let positive = self.0.iter().all(|&m| m.is_finite() && m > 0.0);
         let inverse = self.0.map(|m| 1.0 / m);
         (positive && inverse.iter().all(|x| x.is_finite())).then_some(DiagonalFactor(inverse))
     }
 
+    #[inline]
     fn mul(&self, x: &Vector<N>) -> Vector<N> {
         self.0.component_mul(x)
     }
 }
 
 impl<const N: usize> MassFactor<N> for DiagonalFactor<N> {
+    #[inline]
     fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
         let mut out = *b;
         for (mut row, &scale) in out.row_iter_mut().zip(self.0.iter()) {
@@ -58,6 +61,7 @@ impl<const N: usize> MassFactor<N> for DiagonalFactor<N> {
 impl<const N: usize> MassMatrix<N> for FullMass<N> {
     type Factor = Cholesky<f64, nalgebra::Const<N>>;
 
+    #[inline]
     fn factor(&self) -> Option<Self::Factor> {
         if !self.0.iter().all(|m| m.is_finite()) {
             return None;
@@ -73,12 +77,14 @@ impl<const N: usize> MassMatrix<N> for FullMass<N> {
         (lo > 0.0 && hi / lo < 3.0e7).then_some(factor)
     }
 
+    #[inline]
     fn mul(&self, x: &Vector<N>) -> Vector<N> {
         self.0 * x
     }
 }
 
 impl<const N: usize> MassFactor<N> for Cholesky<f64, nalgebra::Const<N>> {
+    #[inline]
     fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
         Cholesky::solve(self, b)
     }

@@ -17,7 +17,7 @@
 use super::dirk::{serves_step, SLOW_STAGE, STAGE_ITERATIONS};
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
-use crate::linalg::Lu;
+use crate::linalg::IterationFactor;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
 use crate::multipliers::Multipliers;
@@ -70,7 +70,7 @@ pub(crate) struct GeneralizedAlpha<const N: usize> {
     /// What the last integration would commit; a failed or rejected step never commits it.
     candidate: Option<Candidate<N>>,
     /// The step the iteration matrix was formed for and its factor.
-    iteration: Option<(f64, Lu<N>)>,
+    iteration: Option<(f64, IterationFactor<N>)>,
     factorizations: u64,
 }
 
@@ -100,19 +100,23 @@ impl<const N: usize> GeneralizedAlpha<N> {
 
     /// `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)`, factorised and kept for steps near
     /// `h`.
-    fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
+    fn refresh(
+        &mut self,
+        h: f64,
+        (dq, dv): (&Matrix<N, N>, &Matrix<N, N>),
+    ) -> Option<IterationFactor<N>> {
         let p = self.parameters;
         let (hg, hhb) = (h * p.gamma, h * h * p.beta);
         let matrix = (1.0 - p.alpha_m) * Matrix::<N, N>::identity()
             - (1.0 - p.alpha_f) * (hg * dv + hhb * dq);
         self.factorizations += 1;
-        let lu = Lu::new(matrix)?;
+        let lu = IterationFactor::new(matrix)?;
         self.iteration = Some((h, lu));
         Some(lu)
     }
 
     /// The kept iteration matrix if it was formed for a step near `h`.
-    fn kept(&self, h: f64) -> Option<Lu<N>> {
+    fn kept(&self, h: f64) -> Option<IterationFactor<N>> {
         let (formed_for, lu) = self.iteration?;
         serves_step(formed_for, h).then_some(lu)
     }
@@ -247,7 +251,7 @@ impl<const N: usize> GeneralizedAlpha<N> {
     fn sweeps<Sys: ConstrainedSystem<N, Z>, const Z: usize>(
         &self,
         model: &mut Model<'_, Sys, N, Z>,
-        lu: &Lu<N>,
+        lu: &IterationFactor<N>,
         known: &Known<'_, N, Z>,
         mut abar: Vector<N>,
         limit: usize,

@@ -11,7 +11,7 @@ use core::marker::PhantomData;
 
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
-use crate::linalg::Lu;
+use crate::linalg::IterationFactor;
 use crate::model::{Acceleration, FactorOf, Model};
 use crate::multipliers::Multipliers;
 use crate::options::StepControl;
@@ -295,7 +295,7 @@ pub(crate) struct Dirk<T, const S: usize, const N: usize> {
     tolerances: Option<(f64, f64)>,
     /// The step it was formed for, its factor, and `∂a/∂q` it was formed from (for filtering
     /// the error estimate).
-    iteration: Option<(f64, Lu<N>, Matrix<N, N>)>,
+    iteration: Option<(f64, IterationFactor<N>, Matrix<N, N>)>,
     factorizations: u64,
 }
 
@@ -327,17 +327,21 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
 
     /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
     #[inline]
-    fn refresh(&mut self, h: f64, (dq, dv): (&Matrix<N, N>, &Matrix<N, N>)) -> Option<Lu<N>> {
+    fn refresh(
+        &mut self,
+        h: f64,
+        (dq, dv): (&Matrix<N, N>, &Matrix<N, N>),
+    ) -> Option<IterationFactor<N>> {
         let hg = h * Self::TABLEAU.gamma;
         let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
         self.factorizations += 1;
-        let lu = Lu::new(matrix)?;
+        let lu = IterationFactor::new(matrix)?;
         self.iteration = Some((h, lu, *dq));
         Some(lu)
     }
 
     /// The kept iteration matrix if it was formed for a step near `h`.
-    fn kept(&self, h: f64) -> Option<Lu<N>> {
+    fn kept(&self, h: f64) -> Option<IterationFactor<N>> {
         let (formed_for, lu, _) = self.iteration?;
         serves_step(formed_for, h).then_some(lu)
     }
@@ -568,7 +572,7 @@ fn stage_fraction(rtol: f64) -> f64 {
 #[allow(clippy::type_complexity)]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
-    lu: &Lu<N>,
+    lu: &IterationFactor<N>,
     (q_known, v_known): (Vector<N>, Vector<N>),
     mut v: Vector<N>,
     (t, hg, lambda): (f64, f64, &Vector<Z>),
@@ -597,9 +601,9 @@ where
         v -= delta;
         let norm = delta.amax();
         let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
-        let theta = norm / last_norm;
-        let left = if last_norm.is_finite() && theta < 1.0 {
-            theta / (1.0 - theta)
+        // `θ/(1 - θ)` with `θ = norm/last_norm`, in one division: the sweeps wait on it.
+        let left = if last_norm.is_finite() && norm < last_norm {
+            norm / (last_norm - norm)
         } else {
             1.0
         };
