@@ -437,3 +437,64 @@ fn a_bar_started_into_one_contact_must_not_sink_its_other_end() {
     let lowest = lowest_gap(&bar, start, 0.01, |q| q[1] + bar.a * q[2].sin());
     assert!(lowest >= -1e-9, "the bar's end went down to {lowest:e}");
 }
+
+/// Issue #31: the two-link arm with a configuration-dependent mass, quadratic multipliers,
+/// Dormand–Prince at rtol 1e-8 and no `min_step`, started near its stretched configuration,
+/// took a million accepted steps of 1.7e-13 s with the time stuck at 0.190928 s. It must reach
+/// its end time, or stop with a typed error, within a bounded number of steps.
+#[test]
+fn a_two_link_arm_must_not_stall() {
+    use fuzz::scenes::TwoLinkArm;
+    use zeitner::{MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector};
+    for sensitivity in [Sensitivity::Paper, Sensitivity::Exact] {
+        let q0 = Vector::<2>::new(-0.000414, 0.0470);
+        // m = l = 1, the tip's line through the start: nearly stretched, where `G` is small.
+        let arm = TwoLinkArm {
+            m1: 1.0,
+            m2: 1.0,
+            l1: 1.0,
+            l2: 1.0,
+            d: q0[0].cos() + (q0[0] + q0[1]).cos(),
+            ..TwoLinkArm::nominal()
+        };
+        let options = Options {
+            multipliers: MultiplierModel::Quadratic,
+            step: StepControl::Adaptive {
+                initial_step: 1e-4,
+                min_step: 0.0,
+                max_step: 0.1,
+                rtol: 1e-8,
+                atol: 1e-12,
+            },
+            sensitivity,
+            constraint_tolerance: 1e-8,
+            max_newton_iterations: 20,
+            extrapolate_multipliers: false,
+            accept_linearised_update: false,
+            ..Options::default()
+        };
+        let outcome = within_time(move || {
+            let mut sim = Simulator::new(&arm, q0, Vector::zeros(), 0.0, options).unwrap();
+            sim.set_stop_time(1.0).unwrap();
+            let mut result = Ok(zeitner::StopReason::StepTaken);
+            while sim.statistics().steps < 200_000 {
+                result = sim.step();
+                if matches!(result, Ok(zeitner::StopReason::StopTimeReached) | Err(_)) {
+                    break;
+                }
+            }
+            eprintln!(
+                "{sensitivity:?}: {result:?} at t = {} after {} steps",
+                sim.time(),
+                sim.statistics().steps
+            );
+            assert!(
+                sim.time() == 1.0 || result.is_err(),
+                "stalled at t = {} after {} steps",
+                sim.time(),
+                sim.statistics().steps
+            );
+        });
+        assert_eq!(outcome, Ok(()), "{sensitivity:?}");
+    }
+}

@@ -9,6 +9,7 @@ pub mod knife_edge;
 pub mod ladder;
 pub mod pendulum;
 pub mod reference;
+pub mod slider_crank;
 pub mod spring_support;
 pub mod steam_generator;
 pub mod stiff;

@@ -208,8 +208,11 @@ pub(crate) fn next_step_size(
     };
     let settings = options.controller;
     let mut factor = controller.accepted(&settings, error, k);
-    // Many Newton sweeps: the multipliers change fast; do not grow, or shrink.
-    if integrations > options.max_newton_iterations / 2 {
+    // Many Newton sweeps: the multipliers change fast; do not grow, or shrink. "Many" is never
+    // fewer than `slow_newton_iterations`: with `max_newton_iterations: 1` every step took more
+    // than half the allowed sweeps, and the steps shrank to `min_step` and stayed there.
+    let many = (options.max_newton_iterations / 2).max(settings.slow_newton_iterations);
+    if integrations > many {
         factor = factor.min(0.8);
     } else if integrations >= settings.slow_newton_iterations {
         factor = factor.min(1.0);

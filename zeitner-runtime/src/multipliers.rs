@@ -72,14 +72,18 @@ impl<const Z: usize> StepPolynomial<Z> {
     }
 }
 
-/// The first guess of the next step's multipliers, from the last two accepted steps. Reset when
+/// The first guess of the next step's multipliers, from the last two recorded steps. Reset when
 /// the trajectory is re-initialised.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Predictor<const Z: usize> {
     last: Option<StepPolynomial<Z>>,
     before: Option<StepPolynomial<Z>>,
-    /// The rate of the consistent multipliers over the last step.
+    /// The rate of the consistent multipliers over the last recorded step.
     lambda_rate: Vector<Z>,
+    /// Time covered by short steps left out since the last recorded step, and between the two
+    /// recorded steps.
+    skipped_since_last: f64,
+    skipped_between: f64,
 }
 
 impl<const Z: usize> Default for Predictor<Z> {
@@ -88,21 +92,39 @@ impl<const Z: usize> Default for Predictor<Z> {
             last: None,
             before: None,
             lambda_rate: Vector::zeros(),
+            skipped_since_last: 0.0,
+            skipped_between: 0.0,
         }
     }
 }
 
+/// A step shorter than this share of the last recorded one (an event located, a stop time
+/// landed on, a retry) is left out of the prediction, until the steps left out add up to the
+/// last recorded one: what such a step's Newton leaves in its multipliers is divided by its
+/// length, and continuing it over a normal step multiplied rounding into the next guess.
+const SHORT_STEP_SHARE: f64 = 0.05;
+
 impl<const Z: usize> Predictor<Z> {
-    /// Remembers an accepted step: its multipliers and the consistent `λ` at both ends.
+    /// Remembers an accepted step: its multipliers and the consistent `λ` at both ends; a
+    /// short one only as the time it covers (see [`SHORT_STEP_SHARE`]).
     pub fn record(
         &mut self,
         step: StepPolynomial<Z>,
         lambda_start: &Vector<Z>,
         lambda_end: &Vector<Z>,
     ) {
+        if let Some(last) = self.last {
+            let skipped = self.skipped_since_last + step.h;
+            if step.h < SHORT_STEP_SHARE * last.h && skipped < last.h {
+                self.skipped_since_last = skipped;
+                return;
+            }
+        }
         if step.h > 0.0 {
             self.lambda_rate = (lambda_end - lambda_start) / step.h;
         }
+        self.skipped_between = self.skipped_since_last;
+        self.skipped_since_last = 0.0;
         self.before = self.last.replace(step);
     }
 
@@ -111,20 +133,26 @@ impl<const Z: usize> Predictor<Z> {
     }
 
     /// Constant multipliers for a step of size `h` that make the linearised constraint hold at
-    /// the step end: `g + τ w + τ²/2 G M⁻¹Gᵀ (λ + τλ'/3 - p) = 0`, from the consistent `λ`, its
-    /// rate over the last step and the residuals `g`, `w` that the state carries into the step.
-    /// (`λ + τλ'/3` is the mean of a linear `λ` weighted as the positions feel it.) The raw
-    /// velocities' error normal to the constraints flips sign from step to step and the step's
-    /// `p` must undo it, which no extrapolation of past `p` foresees. Position-level rows only;
+    /// the end of a step of the planned size `planned`:
+    /// `g + τ̂ w + τ̂²/2 G M⁻¹Gᵀ (λ + τλ'/3 - p) = 0` with `τ̂ = max(τ, planned)`, from the
+    /// consistent `λ`, its rate over the last step and the residuals `g`, `w` that the state
+    /// carries into the step. (`λ + τλ'/3` is the mean of a linear `λ` weighted as the positions
+    /// feel it.) The raw velocities' error normal to the constraints flips sign from step to
+    /// step and the step's `p` must undo it, which no extrapolation of past `p` foresees. A step
+    /// shortened below the planned size (an event, a stop time, a retry) corrects `g` and `w` as
+    /// the planned step would, a share of the way: making `g` vanish over a step `τ` kicks the
+    /// normal velocity by `2g/τ`, which after a step of picoseconds was metres per second, and
+    /// that error flips sign from step to step without decaying. Position-level rows only;
     /// `None` where `solve_gram` (with `G M⁻¹Gᵀ`) finds it singular.
     pub fn constant_from_constraints(
         &self,
         solve_gram: impl FnOnce(&Vector<Z>) -> Option<Vector<Z>>,
         (g, w): (&Vector<Z>, &Vector<Z>),
         lambda: &Vector<Z>,
-        h: f64,
+        (h, planned): (f64, f64),
     ) -> Option<Vector<Z>> {
-        let correction = solve_gram(&((2.0 / (h * h)) * (g + h * w)))?;
+        let reach = h.max(planned);
+        let correction = solve_gram(&((2.0 / (reach * reach)) * (g + reach * w)))?;
         Some(lambda + (h / 3.0) * self.lambda_rate + correction)
     }
 
@@ -137,8 +165,9 @@ impl<const Z: usize> Predictor<Z> {
         };
         match self.before.filter(|_| extrapolate) {
             Some(before) if before.h + last.h > 0.0 => {
-                let span = 0.5 * (before.h + last.h);
-                last.mean() + (last.mean() - before.mean()) * (0.5 * (last.h + h) / span)
+                let span = 0.5 * (before.h + last.h) + self.skipped_between;
+                let ahead = 0.5 * (last.h + h) + self.skipped_since_last;
+                last.mean() + (last.mean() - before.mean()) * (ahead / span)
             }
             _ => last.mean(),
         }
@@ -150,9 +179,11 @@ impl<const Z: usize> Predictor<Z> {
     pub fn continued<const K: usize>(&self, h: f64) -> [Vector<Z>; K] {
         let mut coefficients = [Vector::zeros(); K];
         if let Some(StepPolynomial { c, h: last_h }) = self.last.filter(|last| last.h > 0.0) {
-            // λ(1 + ρ s) of the last step, ρ = h / last_h, expanded in s.
+            // λ(σ₀ + ρ s) of the last step, ρ = h / last_h, expanded in s; σ₀ is 1 past the
+            // short steps left out.
             let ratio = h / last_h;
-            let expanded = [(c[1] + 2.0 * c[2]) * ratio, c[2] * (ratio * ratio)];
+            let from = 1.0 + self.skipped_since_last / last_h;
+            let expanded = [(c[1] + 2.0 * from * c[2]) * ratio, c[2] * (ratio * ratio)];
             for (k, value) in coefficients.iter_mut().zip(expanded) {
                 *k = value;
             }
@@ -245,6 +276,36 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
     }
 }
 
+/// Where Newton aims the end conditions on a step of size `h` planned as `planned`: zero on a
+/// step of the planned size, and on a shorter one most of the way back to where the conditions
+/// start, `(1 - (τ/τ̂)²)` of `g` and of the position rows' `w` at the start (`τ̂ = planned`).
+/// The conditions at the start hold already; driving them to zero over a step of picoseconds
+/// took a multiplier of `g/τ²`, whose velocity kick `2g/τ` no later step removed. `None` on a
+/// step of the planned size (the targets are zero), without evaluating anything.
+pub(crate) fn short_step_targets<S, const N: usize, const Z: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    (h, planned): (f64, f64),
+) -> Result<Option<[Vector<Z>; K]>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    if !(h < planned) {
+        return Ok(None);
+    }
+    let ratio = h / planned;
+    let kept = 1.0 - ratio * ratio;
+    let mut targets = [Vector::zeros(); K];
+    targets[0] = kept * model.residual(q, v, t)?;
+    if K > 1 {
+        let r = S::POSITION_CONSTRAINTS;
+        targets[1] = kept * model.rate(q, v, t)?;
+        // A velocity row's second condition is `ġ = 0` at the end: nothing carried over.
+        targets[1].rows_mut(r, Z - r).fill(0.0);
+    }
+    Ok(Some(targets))
+}
+
 /// Corrections of the coefficients through one integration's linearised step map, before the
 /// step is integrated again. The end conditions are nonlinear in the end state: where the first
 /// correction leaves them just above `ε` while the step map is still linear enough, a second one
@@ -252,6 +313,9 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
 const LINEAR_CORRECTIONS: u32 = 2;
 
 /// Newton on the coefficients of `multipliers` until the end conditions hold at `start.t + h`.
+/// Each correction aims the conditions at `targets` (zero, but on a step much shorter than
+/// planned most of the way back to where they started, see [`short_step_targets`]); the step
+/// is done once they hold within the tolerances.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -259,7 +323,7 @@ pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
     start: &Start<N, Z, K>,
     h: f64,
     t_end: f64,
-    mut multipliers: Multipliers<Z, K>,
+    (mut multipliers, targets): (Multipliers<Z, K>, &[Vector<Z>; K]),
     settings: &NewtonSettings,
 ) -> Result<NewtonOutcome<N, Z, K>, StepError>
 where
@@ -293,7 +357,8 @@ where
             sensitivities: &sensitivities,
         };
         let span = (start, t_end);
-        match linear.correct(model, settings, span, &mut multipliers, conditions)? {
+        let aim = (conditions, targets);
+        match linear.correct(model, settings, span, &mut multipliers, aim)? {
             Correction::Accepted(updated) => return Ok(converged(updated, multipliers, iteration)),
             Correction::Singular => return singular(model, &end, t_end, h, iteration, worst),
             Correction::IntegrateAgain => {}
@@ -329,7 +394,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
         settings: &NewtonSettings,
         (start, t_end): (&Start<N, Z, K>, f64),
         multipliers: &mut Multipliers<Z, K>,
-        mut conditions: Conditions<Z, K>,
+        (mut conditions, targets): (Conditions<Z, K>, &[Vector<Z>; K]),
     ) -> Result<Correction<N, Z, K>, StepError> {
         let (dq_dc, dv_dc) = self.sensitivities;
         let linear_updates = settings.exact && settings.accept_linearised;
@@ -343,7 +408,8 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
         for _ in 0..corrections {
             let at = (&q, &v, t_end);
             let (blocks, dg_dq) = linearise(model, at, (dq_dc, dv_dc), multipliers)?;
-            let Some(delta) = solve_blocks(&blocks, &conditions.values.map(|c| -c)) else {
+            let miss = core::array::from_fn(|k| targets[k] - conditions.values[k]);
+            let Some(delta) = solve_blocks(&blocks, &miss) else {
                 return Ok(Correction::Singular);
             };
             for k in 0..K {
@@ -654,7 +720,8 @@ mod tests {
             step: StepControl::Fixed { step: 0.02 },
         };
         let h = 0.02;
-        match solve(&mut model, &mut method, &start, h, h, guess, &settings).unwrap() {
+        let aim = (guess, &[Vector::zeros()]);
+        match solve(&mut model, &mut method, &start, h, h, aim, &settings).unwrap() {
             NewtonOutcome::Converged {
                 end, integrations, ..
             } => (model.residual(&end.q, &end.v, h).unwrap()[0], integrations),

@@ -429,7 +429,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         loop {
             let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
             retry = true;
-            match self.attempt(h_try, t_end)? {
+            match self.attempt((h_try, planned.max(h)), t_end)? {
                 Attempt::Accepted(step) => {
                     let (values, crossing) = self.crossing(&step, t_end)?;
                     // Where the dense output is too poor to aim by, halve the step instead.
@@ -770,8 +770,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         )
     }
 
-    /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model.
-    fn attempt(&mut self, h: f64, t_end: f64) -> Result<Attempt<N, Z>, StepError> {
+    /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model;
+    /// `planned` is the size the controller planned before the step was shortened to land or to
+    /// retry, which sets how far the step corrects the residuals it starts with.
+    fn attempt(
+        &mut self,
+        (h, planned): (f64, f64),
+        t_end: f64,
+    ) -> Result<Attempt<N, Z>, StepError> {
         let method = self.options.method;
         match self
             .options
@@ -779,13 +785,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .resolve(method, S::POSITION_CONSTRAINTS, Z)
         {
             MultiplierModel::Automatic | MultiplierModel::Constant => {
-                let p = self.constant_guess(h)?;
+                let p = self.constant_guess(h, planned)?;
                 let multipliers = Multipliers {
                     base: Vector::zeros(),
                     coefficients: [p],
                     first_power: 0,
                 };
-                self.attempt_with(h, t_end, multipliers)
+                self.attempt_with((h, planned), t_end, multipliers)
             }
             #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Quadratic => {
@@ -794,7 +800,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                     coefficients: self.predictor.continued::<2>(h),
                     first_power: 1,
                 };
-                self.attempt_with(h, t_end, multipliers)
+                self.attempt_with((h, planned), t_end, multipliers)
             }
         }
     }
@@ -802,7 +808,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The constant multipliers Newton starts from: with position-level rows only, those that
     /// make the linearised constraint hold at the step end; else extrapolated from the last two
     /// steps (or, without extrapolation, the last step's, as in the paper).
-    fn constant_guess(&mut self, h: f64) -> Result<Vector<Z>, StepError> {
+    fn constant_guess(&mut self, h: f64, planned: f64) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
         if let Some((at, consistent_v)) = self.state_gram.filter(|_| extrapolate) {
             // Position rows: `g` does not depend on the velocities (the report's serves), and
@@ -812,9 +818,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             // A first guess only: a plain Cholesky solve, without the rank diagnosis of
             // `solve_spd`.
             let solve = |b: &Vector<Z>| nalgebra::Cholesky::new(at.gram).map(|c| c.solve(b));
-            let predicted =
-                self.predictor
-                    .constant_from_constraints(solve, residuals, &self.lambda, h);
+            let predicted = self.predictor.constant_from_constraints(
+                solve,
+                residuals,
+                &self.lambda,
+                (h, planned),
+            );
             if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
                 return Ok(p);
             }
@@ -824,11 +833,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     fn attempt_with<const K: usize>(
         &mut self,
-        h: f64,
+        (h, planned): (f64, f64),
         t_end: f64,
         guess: Multipliers<Z, K>,
     ) -> Result<Attempt<N, Z>, StepError> {
         let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
+        let state = (&self.q, &self.v, self.time());
+        let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?
+            .unwrap_or([Vector::zeros(); K]);
         let embedded_order = Method::<N, Z>::embedded_order(&self.method);
         let settings = NewtonSettings {
             steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3)
@@ -845,7 +857,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             &start,
             h,
             t_end,
-            guess,
+            (guess, &targets),
             &settings,
         )?;
         match outcome {

@@ -319,7 +319,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             let sliver = (!retry).then_some(self.options.controller.landing_fraction);
             let (h_try, t_end, landing) = plan_step((self.time(), self.t_carry), h, limit, sliver)?;
             retry = true;
-            let outcome = match self.newton(h_try, t_end)? {
+            let outcome = match self.newton((h_try, h), t_end)? {
                 Ok(end) => self.conclude(end, h_try, t_end)?,
                 Err(failure) => Err(failure),
             };
@@ -342,15 +342,22 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         }
     }
 
-    /// Newton on the constant multipliers of a step of size `h`: the end with its constraints
-    /// holding, or the factor to retry with and why.
+    /// Newton on the constant multipliers of a step of size `h` planned as `planned`: the end
+    /// with its constraints holding, or the factor to retry with and why. A step shorter than
+    /// planned aims `g` most of the way back to where it starts, as [`crate::Simulator`] does.
     #[allow(clippy::type_complexity)]
     fn newton(
         &mut self,
-        h: f64,
+        (h, planned): (f64, f64),
         t_end: f64,
     ) -> Result<Result<End<N, Z>, (f64, StepError)>, StepError> {
-        let mut p = self.guess(h)?;
+        let mut p = self.guess(h, planned)?;
+        let target = if h < planned {
+            let (ratio, (q, v, t)) = (h / planned, (self.q, self.v, self.time()));
+            (1.0 - ratio * ratio) * self.residual(&q, &v, t)?
+        } else {
+            Vector::zeros()
+        };
         let tolerance = self.options.constraint_tolerance;
         let mut worst = (f64::INFINITY, 0);
         for integrations in 1..=self.options.max_newton_iterations {
@@ -373,7 +380,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             }
             // Row j's end condition moves by `D_j (G M⁻¹Gᵀ Δp)_j`: `τ²/2` for position rows,
             // `τ` for velocity rows.
-            let mut scaled = g;
+            let mut scaled = g - target;
             for (j, x) in scaled.iter_mut().enumerate() {
                 *x /= if j < S::POSITION_CONSTRAINTS {
                     0.5 * h * h
@@ -397,7 +404,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     }
 
     /// The multipliers Newton starts from (as [`crate::Simulator`] chooses them).
-    fn guess(&mut self, h: f64) -> Result<Vector<Z>, StepError> {
+    fn guess(&mut self, h: f64, planned: f64) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
         if extrapolate && S::POSITION_CONSTRAINTS == Z && self.statistics.steps > 0 {
             let w = self
@@ -409,7 +416,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
                 solve,
                 (&self.last.residual, &w),
                 &self.lambda,
-                h,
+                (h, planned),
             );
             if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
                 return Ok(p);

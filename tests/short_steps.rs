@@ -1,0 +1,165 @@
+//! Short steps — an event located, a stop time, a landing — and runs that stop advancing.
+//! Each test is one of issue #31's repros: a step much shorter than the last must neither kick
+//! the raw velocities nor poison the multipliers' prediction, and a run whose steps no longer
+//! advance the time must end with a typed error, not go on for ever. References: the energy
+//! (conserved in every scene here) and the run without the short step.
+
+mod common;
+
+use common::pendulum::Pendulum;
+use common::slider_crank::{axis_crossings, SliderCrankOnAxis};
+use zeitner::{
+    InnerMethod, MultiplierModel, Options, Simulator, StepControl, StepError, StopReason, Vector,
+};
+
+const PENDULUM: Pendulum = Pendulum {
+    m: 1.0,
+    length: 1.0,
+    g: 9.81,
+};
+
+fn pendulum_energy(q: &Vector<2>, v: &Vector<2>) -> f64 {
+    0.5 * PENDULUM.m * v.norm_squared() + PENDULUM.m * PENDULUM.g * q[1]
+}
+
+/// The unit pendulum released horizontally, RK4 at 1 ms with extrapolated constant multipliers,
+/// to 10 s; with `short_step`, stopped at 0.2005 s and again 1e-12 s later on the way. Returns
+/// the largest energy error of the reported states (J).
+fn pendulum_with_stops(short_step: bool) -> f64 {
+    let options = Options {
+        method: InnerMethod::Rk4 { substeps: 1 },
+        step: StepControl::Fixed { step: 1e-3 },
+        ..Options::default()
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
+    let e0 = pendulum_energy(&sim.last().end.q, &sim.last().end.v);
+    let mut worst = 0.0f64;
+    let mut watch = |r: &zeitner::StepReport<2, 1>| {
+        worst = worst.max((pendulum_energy(&r.end.q, &r.end.v) - e0).abs());
+    };
+    if short_step {
+        for stop in [0.2005, 0.2005 + 1e-12] {
+            sim.advance_to(stop, |r| watch(r)).unwrap();
+        }
+    }
+    sim.advance_to(10.0, |r| watch(r)).unwrap();
+    worst
+}
+
+#[test]
+fn a_stop_time_a_picosecond_after_another_costs_no_energy() {
+    let plain = pendulum_with_stops(false);
+    let stopped = pendulum_with_stops(true);
+    eprintln!(
+        "pendulum RK4 1 ms, 10 s: energy error {plain:.2e} J plain, {stopped:.2e} J with the stops"
+    );
+    // Before: 9.3e-5 J with the stops, 1.5e-9 J without.
+    assert!(plain < 1e-8, "{plain:e}");
+    assert!(stopped < 2.0 * plain, "{stopped:e} against {plain:e}");
+}
+
+/// Runs the slider-crank through its event crossings to `t_end`, continuing after each; returns
+/// the largest energy error of the reported states, the crossing times and the statistics.
+fn slider_crank(options: Options, t_end: f64) -> (f64, Vec<f64>, zeitner::Statistics) {
+    let scene = SliderCrankOnAxis::nominal();
+    let (q0, v0) = scene.at_rest(30f64.to_radians());
+    let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+    let e0 = scene.energy(&sim.last().end.q, &sim.last().end.v);
+    let mut worst = 0.0f64;
+    let mut crossings = Vec::new();
+    loop {
+        let reason = sim
+            .advance_to(t_end, |r| {
+                worst = worst.max((scene.energy(&r.end.q, &r.end.v) - e0).abs());
+            })
+            .unwrap();
+        match reason {
+            StopReason::Event { .. } => crossings.push(sim.time()),
+            StopReason::StopTimeReached => break,
+            other => panic!("{other:?}"),
+        }
+    }
+    (worst, crossings, sim.statistics())
+}
+
+fn adaptive(rtol: f64) -> Options {
+    let mut options = Options::default();
+    if let StepControl::Adaptive { rtol: r, atol, .. } = &mut options.step {
+        (*r, *atol) = (rtol, rtol * 1e-2);
+    }
+    options
+}
+
+#[test]
+fn a_slider_crank_keeps_its_energy_through_its_event_crossings() {
+    // Before: 4.4e-2 J of 0.49 J at the defaults, 0.45 J at rtol 1e-10, 0.5 J with ESDIRK 5(4)
+    // and constant multipliers, 0.33 J with RK4 at 1 ms; the event times drifted by 3.5 ms.
+    let cases = [
+        ("defaults", Options::default(), 1e-6),
+        ("rtol 1e-10", adaptive(1e-10), 1e-7),
+        (
+            "ESDIRK 5(4), constant",
+            Options {
+                method: InnerMethod::Esdirk54,
+                multipliers: MultiplierModel::Constant,
+                ..Options::default()
+            },
+            1e-6,
+        ),
+        (
+            "RK4 1 ms",
+            Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                step: StepControl::Fixed { step: 1e-3 },
+                ..Options::default()
+            },
+            1e-6,
+        ),
+    ];
+    // The crossings in reduced coordinates (RK4 at 1e-5 s: converged to about 1e-12 s).
+    let scene = SliderCrankOnAxis::nominal();
+    let reference = axis_crossings(&scene, 30f64.to_radians(), 2.0, 1e-5);
+    assert!(reference.len() >= 4, "{reference:?}");
+    for (name, options, bound) in cases {
+        let (energy, crossings, statistics) = slider_crank(options, 2.0);
+        let drift = crossings
+            .iter()
+            .zip(&reference)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        eprintln!(
+            "slider-crank, {name}: energy error {energy:.2e} J, {} crossings, largest time shift \
+             {drift:.2e} s, {} steps",
+            crossings.len(),
+            statistics.steps
+        );
+        assert!(energy < bound, "{name}: {energy:e} J");
+        assert_eq!(crossings.len(), reference.len(), "{name}");
+        // The crossings' time tolerance is 1e-12 s; what the trajectory's error moves them by
+        // is a few nanoseconds here.
+        assert!(drift < 1e-7, "{name}: {drift:e} s");
+    }
+}
+
+#[test]
+fn one_newton_integration_per_step_still_advances() {
+    // Before: 2 million accepted steps of 1e-12 s, stuck at t = 0.005.
+    let options = Options {
+        max_newton_iterations: 1,
+        ..Options::default()
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
+    let outcome = sim.advance_to(1.0, |_| {});
+    let steps = sim.statistics().steps;
+    eprintln!(
+        "max_newton_iterations 1: {outcome:?} after {steps} steps at t = {}",
+        sim.time()
+    );
+    match outcome {
+        Ok(reason) => assert_eq!(reason, StopReason::StopTimeReached),
+        Err(error) => assert!(matches!(error, StepError::NewtonDidNotConverge { .. })),
+    }
+    assert!(steps < 100_000, "{steps} steps");
+}
