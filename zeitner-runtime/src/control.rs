@@ -157,6 +157,52 @@ pub(crate) fn plan_step(
 /// of one call when the options make the controller shrink too slowly.
 pub(crate) const MAX_ATTEMPTS: u32 = 1000;
 
+/// How many accepted steps in a row may be too small to matter before the run stops.
+pub(crate) const STALL_STEPS: u32 = 100;
+
+/// Whether accepted steps still advance the time. A step too small to matter is one within a
+/// few ulps of the time, or a billionth of the largest step of the run (where the default
+/// `min_step` of 1e-12 pins steps); [`STALL_STEPS`] of them in a row, together advancing the
+/// time by less than 1e-4 of its scale, are a stall: before, runs went on for millions of
+/// steps of picoseconds without an error.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Progress {
+    largest_step: f64,
+    tiny_steps: u32,
+    tiny_span: f64,
+    /// The size of the last tiny step.
+    last_tiny: f64,
+}
+
+impl Progress {
+    /// Records an accepted step of size `h` ending at `t`.
+    pub fn record(&mut self, h: f64, t: f64) {
+        self.largest_step = self.largest_step.max(h);
+        let tiny = h <= (64.0 * f64::EPSILON * t.abs()).max(1e-9 * self.largest_step);
+        if tiny {
+            self.tiny_steps += 1;
+            self.tiny_span += h;
+            self.last_tiny = h;
+        } else {
+            self.tiny_steps = 0;
+            self.tiny_span = 0.0;
+        }
+    }
+
+    /// The error that ends a run stalled at `t`, if it is.
+    pub fn check(&self, t: f64) -> Result<(), StepError> {
+        let scale = t.abs().max(self.largest_step);
+        if self.tiny_steps >= STALL_STEPS && self.tiny_span < 1e-4 * scale {
+            return Err(StepError::Stalled {
+                t,
+                step: self.last_tiny,
+                steps: self.tiny_steps,
+            });
+        }
+        Ok(())
+    }
+}
+
 /// The step after the `attempts`-th rejection at time `t`, or the error that ends the run: fixed
 /// steps cannot shrink, adaptive ones not below `min_step`, nor below what still moves the
 /// time, nor more than [`MAX_ATTEMPTS`] times.
@@ -384,6 +430,49 @@ mod tests {
             ),
             0.0
         );
+    }
+}
+
+#[cfg(test)]
+mod progress_tests {
+    use super::*;
+
+    #[test]
+    fn steps_pinned_far_below_the_run_s_stall_it_and_a_normal_step_clears_that() {
+        let mut progress = Progress::default();
+        let mut t = 0.0;
+        for _ in 0..10 {
+            t += 1e-3;
+            progress.record(1e-3, t);
+        }
+        for _ in 0..STALL_STEPS - 1 {
+            t += 1e-12;
+            progress.record(1e-12, t);
+            assert_eq!(progress.check(t), Ok(()));
+        }
+        progress.record(1e-12, t + 1e-12);
+        assert!(matches!(
+            progress.check(t),
+            Err(StepError::Stalled {
+                steps: STALL_STEPS,
+                ..
+            })
+        ));
+        progress.record(1e-4, t + 1e-4);
+        assert_eq!(progress.check(t), Ok(()));
+    }
+
+    #[test]
+    fn many_small_steps_that_advance_the_time_are_no_stall() {
+        // A stiff scene's explicit steps: a millionth of the first one, for a long time.
+        let mut progress = Progress::default();
+        progress.record(1e-1, 0.1);
+        let mut t = 0.1;
+        for _ in 0..10 * STALL_STEPS {
+            t += 1e-7;
+            progress.record(1e-7, t);
+        }
+        assert_eq!(progress.check(t), Ok(()));
     }
 }
 

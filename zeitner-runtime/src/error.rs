@@ -278,6 +278,10 @@ pub enum StepError {
     StepSizeTooSmall { t: f64, step: f64 },
     /// One step was rejected this many times (the step-size controller shrinks too slowly).
     TooManyAttempts { t: f64, step: f64, attempts: u32 },
+    /// The run stopped advancing: the last `steps` accepted steps, the last of size `step`, were
+    /// all too small to matter (a billionth of the run's largest step, or a few ulps of the
+    /// time) and together moved it by almost nothing. Nothing was changed by the call.
+    Stalled { t: f64, step: f64, steps: u32 },
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
     InconsistentStart { worst_row: Row, residual: f64 },
@@ -341,6 +345,13 @@ impl fmt::Display for StepError {
                 "a step from t = {t} was rejected {attempts} times (the last try was {step:e}): \
                  shrink it faster after a rejection (smaller `newton_failure_factor` or \
                  `min_factor`) or start from a smaller `initial_step`"
+            ),
+            StepError::Stalled { t, step, steps } => write!(
+                f,
+                "the run stalled at t = {t}: the last {steps} accepted steps were all about \
+                 {step:e} or smaller and barely moved the time; look for a singular configuration \
+                 or a discontinuity there, loosen `rtol`/`atol` or `constraint_tolerance`, raise \
+                 `max_newton_iterations`, or use an implicit method if the model is stiff"
             ),
             StepError::InconsistentStart {
                 worst_row,

@@ -6,7 +6,7 @@
 use crate::consistency::{consistent_point, consistent_start, end_point, Gram, StartReport};
 use crate::contact::{self, GapSet, Impact};
 use crate::control::{
-    bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller,
+    bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller, Progress,
 };
 use crate::error::{InvalidOption, RowSet, StepError};
 use crate::events::{self, Crossing, Direction, Values, Watch};
@@ -56,6 +56,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     stop_time: Option<f64>,
     /// The step size the controller plans next.
     planned_step: f64,
+    /// Whether the accepted steps still advance the time.
+    progress: Progress,
     last: StepReport<N, Z>,
     start_report: StartReport<N, Z>,
     statistics: Statistics,
@@ -150,6 +152,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             jacobian_row_scale: Vector::from_fn(|j, _| start_jacobian.row(j).norm()),
             stop_time: None,
             planned_step: first_step(options.step),
+            progress: Progress::default(),
             last,
             start_report,
             statistics: Statistics::default(),
@@ -258,6 +261,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.predictor.reset();
         self.controller = Controller::new();
         self.planned_step = first_step(self.options.step);
+        self.progress = Progress::default();
         self.stop_time = self.stop_time.filter(|&stop| stop > t);
         self.next_time_event = self.find_time_event();
         self.start_report = report;
@@ -351,6 +355,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         self.method.use_step_control(options.step);
         self.watch = watch;
+        // New options may cure a stall: the next steps are watched afresh.
+        self.progress = Progress::default();
         let (min, max) = bounds(options.step);
         self.planned_step = match options.step {
             StepControl::Fixed { step } => step,
@@ -416,6 +422,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             self.stop_time = None;
             return Ok(StopReason::StopTimeReached);
         }
+        self.progress.check(self.time())?;
         let stop = self.stop_time.unwrap_or(f64::INFINITY);
         let time_event = self.next_time_event.filter(|&t| t > self.time());
         let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
@@ -990,6 +997,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.state_gram = position_rows_only.then_some((step.gram, step.point.v));
         self.last = report;
         self.planned_step = self.next_step(h_used, h_planned, &step, landing);
+        self.progress.record(h_used, t_end);
         self.statistics.steps += 1;
         self.statistics.max_newton_iterations =
             self.statistics.max_newton_iterations.max(step.integrations);

@@ -23,8 +23,10 @@ use zeitner::{
 
 use super::cases::{rng, variant, Rng};
 use crate::scenes::andrews::{self, Andrews};
+use crate::scenes::contact::Ball;
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference::{self, State};
+use crate::scenes::slider_crank::{self, SliderCrankOnAxis};
 use crate::scenes::steam_generator::SteamGenerator;
 use crate::scenes::stiff::DoublePendulum;
 
@@ -37,6 +39,26 @@ pub enum AccuracyScene {
     SteamGenerator,
     DoublePendulum,
     Andrews,
+    /// With an event function, run through its crossings as a user would.
+    SliderCrank,
+    /// A gap with impacts and persistent contact, in closed form.
+    Ball,
+}
+
+/// What a case does to the run on its way, besides stepping to the end: each of these left
+/// the answer as it was, until a short step after a stop or an event kicked it (issue #31).
+#[derive(Clone, Debug, Default)]
+pub struct Disturbances {
+    /// Times to stop at on the way (sometimes two a few ulps apart), in order.
+    pub stops: Vec<f64>,
+    /// Times given to `set_time_events`.
+    pub time_events: Vec<f64>,
+    /// After the stop with this index: `reinitialise` with the reported state there.
+    pub reinitialise_after: Option<usize>,
+    /// After the stop with this index: `set_options` with these (no looser tolerances).
+    pub set_options_after: Option<(usize, Options)>,
+    /// Run on `SparseSimulator` instead (constant multipliers, stops only).
+    pub sparse: bool,
 }
 
 /// One accuracy case.
@@ -49,6 +71,7 @@ pub struct AccuracyCase {
     pub parameters: Vec<f64>,
     pub t_end: f64,
     pub options: Options,
+    pub disturbances: Disturbances,
 }
 
 impl AccuracyCase {
@@ -72,7 +95,8 @@ impl fmt::Display for AccuracyCase {
             "seed {}: {:?}, parameters {:?}, t_end = {}",
             self.seed, self.scene, self.parameters, self.t_end
         )?;
-        write!(f, "  options: {:?}", self.options)
+        writeln!(f, "  options: {:?}", self.options)?;
+        write!(f, "  disturbances: {:?}", self.disturbances)
     }
 }
 
@@ -107,7 +131,7 @@ fn sensible_options(rng: &mut Rng) -> Options {
 pub fn generate(seed: u64) -> AccuracyCase {
     let mut rng = rng(seed);
     let options = sensible_options(&mut rng);
-    let (scene, parameters, t_end) = match rng.random_range(0..10) {
+    let (scene, parameters, t_end) = match rng.random_range(0..14) {
         0..=2 => (
             AccuracyScene::Pendulum,
             vec![
@@ -138,14 +162,109 @@ pub fn generate(seed: u64) -> AccuracyCase {
             ],
             (rng.random_range(0.1..1.0) * 1e5f64).round() * 1e-5,
         ),
-        _ => (AccuracyScene::Andrews, Vec::new(), 0.03),
+        9 => (AccuracyScene::Andrews, Vec::new(), 0.03),
+        10..=11 => (
+            AccuracyScene::SliderCrank,
+            vec![
+                rng.random_range(0.5..2.0),
+                rng.random_range(0.2..2.0),
+                rng.random_range(0.05..0.2),
+                rng.random_range(1.5..4.0),
+                rng.random_range(-80.0..80.0),
+            ],
+            rng.random_range(0.3..2.0),
+        ),
+        _ => (
+            AccuracyScene::Ball,
+            vec![
+                rng.random_range(0.1..10.0),
+                rng.random_range(0.3..0.9),
+                rng.random_range(0.05..2.0),
+            ],
+            rng.random_range(0.1..3.0),
+        ),
     };
+    let disturbances = disturbances(&mut rng, scene, t_end, &options);
+    let mut options = options;
+    if disturbances.sparse {
+        options.multipliers = MultiplierModel::Constant;
+    }
     AccuracyCase {
         seed,
         scene,
         parameters,
         t_end,
         options,
+        disturbances,
+    }
+}
+
+/// Stops on the way (a pair of them a few ulps apart in a third of the cases), time events,
+/// and at one stop in four `reinitialise` or `set_options`; the sparse simulator for a fifth of
+/// the scenes it runs (position rows, diagonal mass, no events or gaps).
+fn disturbances(
+    rng: &mut Rng,
+    scene: AccuracyScene,
+    t_end: f64,
+    options: &Options,
+) -> Disturbances {
+    let mut stops: Vec<f64> = (0..rng.random_range(0..4))
+        .map(|_| rng.random_range(0.0..1.0) * t_end)
+        .collect();
+    if rng.random_bool(1.0 / 3.0) {
+        let t = rng.random_range(0.0..1.0) * t_end;
+        let ulps = rng.random_range(1..64);
+        stops.extend([t, f64::from_bits(t.to_bits() + ulps)]);
+    }
+    stops.retain(|&t| t > 0.0 && t < t_end);
+    stops.sort_by(f64::total_cmp);
+    stops.dedup();
+    let sparse_scene = matches!(
+        scene,
+        AccuracyScene::Pendulum | AccuracyScene::DoublePendulum
+    );
+    let sparse = sparse_scene && rng.random_bool(0.2);
+    if sparse {
+        return Disturbances {
+            stops,
+            sparse,
+            ..Disturbances::default()
+        };
+    }
+    let time_events = (0..rng.random_range(0..3))
+        .map(|_| rng.random_range(0.0..1.0) * t_end)
+        .collect();
+    let pick = |rng: &mut Rng| (!stops.is_empty()).then(|| rng.random_range(0..stops.len()));
+    let reinitialise_after = pick(rng).filter(|_| rng.random_bool(0.25));
+    let set_options_after = pick(rng).filter(|_| rng.random_bool(0.25)).map(|k| {
+        let mut changed = *options;
+        match rng.random_range(0..3) {
+            0 => {
+                changed.multipliers = match options.multipliers {
+                    MultiplierModel::Quadratic => MultiplierModel::Constant,
+                    _ => MultiplierModel::Quadratic,
+                }
+            }
+            1 => {
+                changed.sensitivity = match options.sensitivity {
+                    Sensitivity::Exact => Sensitivity::Paper,
+                    _ => Sensitivity::Exact,
+                }
+            }
+            _ => {
+                if let StepControl::Adaptive { rtol, atol, .. } = &mut changed.step {
+                    (*rtol, *atol) = (*rtol / 10.0, *atol / 10.0);
+                }
+            }
+        }
+        (k, changed)
+    });
+    Disturbances {
+        stops,
+        time_events,
+        reinitialise_after,
+        set_options_after,
+        sparse,
     }
 }
 
@@ -158,6 +277,11 @@ pub enum AccuracyOutcome {
         errors: [f64; 3],
         tolerances: [f64; 3],
         reliability: [f64; 3],
+        /// The largest energy error along the run over its scale, over the tolerance (0 where
+        /// the scene keeps no energy), and whether the event crossings were as many as the
+        /// reference's.
+        energy: f64,
+        crossings_agree: bool,
     },
     /// A typed error: the run failed loudly. Its variant, and the error.
     Failed(String, String),
@@ -173,6 +297,7 @@ impl AccuracyOutcome {
                 errors,
                 tolerances,
                 reliability,
+                ..
             } => core::array::from_fn(|k| errors[k] / tolerances[k].max(reliability[k] / 100.0)),
             AccuracyOutcome::Failed(..) => [f64::NAN; 3],
         }
@@ -181,12 +306,26 @@ impl AccuracyOutcome {
     /// Which of q, q', λ is wrong: its error beyond `THRESHOLD` times its tolerance (and ten
     /// times what the reference vouches for).
     pub fn wrong(&self) -> Vec<&'static str> {
-        ["q", "v", "lambda"]
+        let mut wrong: Vec<&'static str> = ["q", "v", "lambda"]
             .into_iter()
             .zip(self.ratios())
             .filter(|(_, ratio)| !(*ratio <= THRESHOLD))
             .map(|(name, _)| name)
-            .collect()
+            .collect();
+        if let AccuracyOutcome::Ok {
+            energy,
+            crossings_agree,
+            ..
+        } = self
+        {
+            if !(*energy <= THRESHOLD) {
+                wrong.push("energy");
+            }
+            if !crossings_agree {
+                wrong.push("events");
+            }
+        }
+        wrong
     }
 }
 
@@ -209,11 +348,12 @@ fn relative(x: &[f64], reference: &[f64], scale: f64) -> f64 {
 /// q and q'; relative to the quantity's scale that is `rtol + atol / scale`. λ follows from q and
 /// q' and is held to the larger of their two tolerances.
 fn compare<const N: usize, const Z: usize>(
-    (end, scales): &(zeitner::Point<N, Z>, [f64; 3]),
-    reference: &State<N, Z>,
+    run: &Run<N, Z>,
+    (reference, crossings): (&State<N, Z>, Option<&[f64]>),
     (rtol, atol): (f64, f64),
     reliability: [f64; 3],
 ) -> AccuracyOutcome {
+    let (end, scales) = (&run.end, &run.scales);
     let errors = [
         relative(end.q.as_slice(), &reference.q, scales[0]),
         relative(end.v.as_slice(), &reference.v, scales[1]),
@@ -221,32 +361,109 @@ fn compare<const N: usize, const Z: usize>(
     ];
     let tolerance_q = rtol + atol / scales[0];
     let tolerance_v = rtol + atol / scales[1];
+    // The energy moves with q and q' together, as `F·δq + p·δq'`: twice their tolerance.
+    let energy_tolerance = 2.0 * tolerance_q.max(tolerance_v).max(reliability[1] / 100.0);
     AccuracyOutcome::Ok {
         errors,
         tolerances: [tolerance_q, tolerance_v, tolerance_q.max(tolerance_v)],
         reliability,
+        energy: run.energy_drift / energy_tolerance,
+        crossings_agree: crossings.is_none_or(|c| c.len() == run.crossings.len()),
     }
 }
 
-/// The end point, and the largest |q|, |q'|, |λ| along the run (at the start and every step
-/// end).
+/// What a run came to: its end point, the largest |q|, |q'|, |λ| along it, the event
+/// crossings it returned, and its largest energy error over the energy's scale (0 where the
+/// scene keeps none).
+struct Run<const N: usize, const Z: usize> {
+    end: zeitner::Point<N, Z>,
+    scales: [f64; 3],
+    crossings: Vec<f64>,
+    energy_drift: f64,
+}
+
+/// A kept quantity of a scene, `E(q, q')`, and its scale.
+type Energy<'e, const N: usize> = Option<(&'e dyn Fn(&Vector<N>, &Vector<N>) -> f64, f64)>;
+
+/// Runs `case` from `(q, v)` through its disturbances and `stops` (its own, the end last), on
+/// through every event crossing, as a user would.
 fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     (q, v): (Vector<N>, Vector<N>),
-    stops: &[f64],
-    options: Options,
-) -> Result<(zeitner::Point<N, Z>, [f64; 3]), StepError> {
-    let mut sim = Simulator::new(scene, q, v, 0.0, options)?;
+    case: &AccuracyCase,
+    (stops, energy): (&[f64], Energy<'_, N>),
+) -> Result<Run<N, Z>, StepError> {
+    let disturbances = &case.disturbances;
+    let mut stops: Vec<f64> = disturbances.stops.iter().chain(stops).copied().collect();
+    stops.sort_by(f64::total_cmp);
+    stops.dedup();
+    if disturbances.sparse {
+        return integrate_sparse(scene, (q, v), case.options, (&stops, energy));
+    }
+    let mut sim = Simulator::new(scene, q, v, 0.0, case.options)?;
+    sim.set_time_events(&disturbances.time_events)?;
     let size = |p: &zeitner::Point<N, Z>| [p.q.amax(), p.v.amax(), p.lambda.amax()];
-    let mut scales = size(&sim.last().end);
+    let start = sim.last().end;
+    let kept = |p: &zeitner::Point<N, Z>| energy.map_or(0.0, |(e, _)| e(&p.q, &p.v));
+    let e0 = kept(&start);
+    let (mut scales, mut drift, mut crossings) = (size(&start), 0.0f64, Vec::new());
+    for (k, &stop) in stops.iter().enumerate() {
+        loop {
+            let reason = sim.advance_to(stop, |step| {
+                for (scale, x) in scales.iter_mut().zip(size(&step.end)) {
+                    *scale = scale.max(x);
+                }
+                drift = drift.max((kept(&step.end) - e0).abs());
+            })?;
+            match reason {
+                zeitner::StopReason::Event { .. } => crossings.push(sim.time()),
+                _ => break,
+            }
+        }
+        if disturbances.reinitialise_after == Some(k) {
+            let end = sim.last().end;
+            sim.reinitialise(end.q, end.v, end.t)?;
+        }
+        if let Some((_, options)) = disturbances.set_options_after.filter(|(j, _)| *j == k) {
+            sim.set_options(options)?;
+        }
+    }
+    let energy_drift = energy.map_or(0.0, |(_, scale)| drift / scale);
+    Ok(Run {
+        end: sim.last().end,
+        scales,
+        crossings,
+        energy_drift,
+    })
+}
+
+/// [`integrate`] on `SparseSimulator` (stops only).
+fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v): (Vector<N>, Vector<N>),
+    options: Options,
+    (stops, energy): (&[f64], Energy<'_, N>),
+) -> Result<Run<N, Z>, StepError> {
+    let mut sim = zeitner::SparseSimulator::new(scene, q, v, 0.0, options)?;
+    let size = |p: &zeitner::Point<N, Z>| [p.q.amax(), p.v.amax(), p.lambda.amax()];
+    let start = sim.last().end;
+    let kept = |p: &zeitner::Point<N, Z>| energy.map_or(0.0, |(e, _)| e(&p.q, &p.v));
+    let e0 = kept(&start);
+    let (mut scales, mut drift) = (size(&start), 0.0f64);
     for &stop in stops {
         sim.advance_to(stop, |step| {
             for (scale, x) in scales.iter_mut().zip(size(&step.end)) {
                 *scale = scale.max(x);
             }
+            drift = drift.max((kept(&step.end) - e0).abs());
         })?;
     }
-    Ok((sim.last().end, scales))
+    Ok(Run {
+        end: sim.last().end,
+        scales,
+        crossings: Vec::new(),
+        energy_drift: energy.map_or(0.0, |(_, scale)| drift / scale),
+    })
 }
 
 /// The double pendulum's angle equations (θ from the downward vertical, point masses), RK4 at
@@ -316,10 +533,38 @@ fn double_pendulum_start(p: &[f64]) -> (Vector<4>, Vector<4>) {
     (Vector::from(q), Vector::from(v))
 }
 
+/// The ball dropped from rest at height `h0` (restitution `e`, a bounce only when it lands
+/// faster than `rest`), in closed form at `t_end`: the state and the contact multiplier
+/// (`-m g` at rest on the floor, 0 in flight).
+fn ball_reference((m, g, e, h0): (f64, f64, f64, f64), rest: f64, t_end: f64) -> State<1, 1> {
+    let (mut t, mut y, mut v) = (0.0, h0, 0.0);
+    loop {
+        let speed = (v * v + 2.0 * g * y).sqrt();
+        let landing = t + (v + speed) / g;
+        if t_end < landing {
+            let tau = t_end - t;
+            return State {
+                q: [y + v * tau - 0.5 * g * tau * tau],
+                v: [v - g * tau],
+                lambda: [0.0],
+            };
+        }
+        if !(speed > rest && e > 0.0) {
+            return State {
+                q: [0.0],
+                v: [0.0],
+                lambda: [-m * g],
+            };
+        }
+        (t, y, v) = (landing, 0.0, e * speed);
+    }
+}
+
 pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
     let rtol = case.tolerances();
     let p = &case.parameters;
     let exact = 1e-13;
+    let end = [case.t_end];
     let outcome = match case.scene {
         AccuracyScene::Pendulum => {
             let scene = Pendulum {
@@ -329,8 +574,12 @@ pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
             };
             let reference = reference::pendulum_released_horizontally(&scene, case.t_end);
             let start = (Vector::<2>::new(p[1], 0.0), Vector::zeros());
-            integrate(&scene, start, &[case.t_end], case.options)
-                .map(|end| compare(&end, &reference, rtol, [exact; 3]))
+            let energy = |q: &Vector<2>, v: &Vector<2>| {
+                0.5 * scene.m * v.norm_squared() + scene.m * scene.g * q[1]
+            };
+            let kept: Energy<'_, 2> = Some((&energy, scene.m * scene.g * scene.length));
+            integrate(&scene, start, case, (&end, kept))
+                .map(|run| compare(&run, (&reference, None), rtol, [exact; 3]))
         }
         AccuracyScene::SteamGenerator => {
             let scene = SteamGenerator {
@@ -345,8 +594,8 @@ pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
                 .filter(|&t| t <= case.t_end)
                 .collect();
             let start = (Vector::zeros(), Vector::zeros());
-            integrate(&scene, start, &stops, case.options)
-                .map(|end| compare(&end, &reference, rtol, [exact; 3]))
+            integrate(&scene, start, case, (&stops, None))
+                .map(|run| compare(&run, (&reference, None), rtol, [exact; 3]))
         }
         AccuracyScene::DoublePendulum => {
             let scene = DoublePendulum {
@@ -357,20 +606,51 @@ pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
                 g: p[4],
             };
             let reference = double_pendulum_reference(p, case.t_end);
-            integrate(
-                &scene,
-                double_pendulum_start(p),
-                &[case.t_end],
-                case.options,
-            )
-            .map(|end| compare(&end, &reference, rtol, [1e-12; 3]))
+            let start = double_pendulum_start(p);
+            let energy = |q: &Vector<4>, v: &Vector<4>| scene.energy(q.as_slice(), v.as_slice());
+            let kinetic = scene.energy(&[0.0; 4], start.1.as_slice());
+            let scale = (p[0] + p[1]) * p[4] * (p[2] + p[3]) + kinetic;
+            let kept: Energy<'_, 4> = Some((&energy, scale));
+            integrate(&scene, start, case, (&end, kept))
+                .map(|run| compare(&run, (&reference, None), rtol, [1e-12; 3]))
         }
         AccuracyScene::Andrews => {
             let scene = Andrews::published();
             let start = (Vector::from(Andrews::Q0), Vector::zeros());
             let reference = andrews::published_end();
-            integrate(&scene, start, &[case.t_end], case.options)
-                .map(|end| compare(&end, &reference, rtol, [1e-9, 1e-7, 1e-5]))
+            integrate(&scene, start, case, (&end, None))
+                .map(|run| compare(&run, (&reference, None), rtol, [1e-9, 1e-7, 1e-5]))
+        }
+        AccuracyScene::SliderCrank => {
+            let scene = SliderCrankOnAxis {
+                m: p[0],
+                ms: p[1],
+                r: p[2],
+                l: p[2] * p[3],
+                g: 9.81,
+            };
+            let phi0 = p[4].to_radians();
+            // RK4 at 1e-5 s in the crank angle: errors near 1e-13 of the scales.
+            let (crossings, reference) = slider_crank::reduced(&scene, phi0, case.t_end, 1e-5);
+            let start = scene.at_rest(phi0);
+            let energy = |q: &Vector<4>, v: &Vector<4>| scene.energy(q, v);
+            let kept: Energy<'_, 4> = Some((&energy, scene.m * scene.g * scene.r));
+            integrate(&scene, start, case, (&end, kept))
+                .map(|run| compare(&run, (&reference, Some(&crossings)), rtol, [1e-11; 3]))
+        }
+        AccuracyScene::Ball => {
+            let scene = Ball {
+                m: p[0],
+                g: 9.81,
+                e: p[1],
+            };
+            let rest = case.options.events.rest_velocity;
+            let reference = ball_reference((p[0], 9.81, p[1], p[2]), rest, case.t_end);
+            let start = (Vector::<1>::new(p[2]), Vector::zeros());
+            // Each impact is located within the events' time tolerance: the state errs by
+            // about the speed times it, per impact.
+            integrate(&scene, start, case, (&end, None))
+                .map(|run| compare(&run, (&reference, None), rtol, [1e-9; 3]))
         }
     };
     outcome.unwrap_or_else(|error| AccuracyOutcome::Failed(variant(&error), format!("{error:?}")))

@@ -1138,10 +1138,17 @@ pub enum FailureClass {
     /// An impact that is not a zero-length step, or that creates energy with a restitution
     /// of at most 1.
     ImpactViolation,
+    /// The case used up its step budget while the time had stopped advancing: its last
+    /// [`STALL_WINDOW`] accepted steps together moved it by less than 1e-7 of its scale, and no
+    /// error said so.
+    Stall,
 }
 
+/// The accepted steps over which a case that used up its budget must have moved the time.
+pub const STALL_WINDOW: usize = 200;
+
 impl FailureClass {
-    pub const ALL: [FailureClass; 8] = [
+    pub const ALL: [FailureClass; 9] = [
         FailureClass::Panic,
         FailureClass::StateLoss,
         FailureClass::NonFinite,
@@ -1150,6 +1157,7 @@ impl FailureClass {
         FailureClass::ReportInconsistency,
         FailureClass::Penetration,
         FailureClass::ImpactViolation,
+        FailureClass::Stall,
     ];
 
     pub fn name(self) -> &'static str {
@@ -1162,6 +1170,7 @@ impl FailureClass {
             FailureClass::ReportInconsistency => "report-inconsistency",
             FailureClass::Penetration => "penetration",
             FailureClass::ImpactViolation => "impact-violation",
+            FailureClass::Stall => "stall",
         }
     }
 }
@@ -1183,6 +1192,33 @@ pub struct Outcome {
     pub steps: u64,
     /// Calls made, `new` included.
     pub calls: usize,
+    /// The end times of the last [`STALL_WINDOW`] accepted steps, and the largest step.
+    recent_ends: std::collections::VecDeque<f64>,
+    largest_step: f64,
+}
+
+impl Outcome {
+    /// Counts an accepted step from `start` to `end`.
+    fn record_step(&mut self, (start, end): (f64, f64)) {
+        self.steps += 1;
+        self.largest_step = self.largest_step.max(end - start);
+        if self.recent_ends.len() == STALL_WINDOW {
+            self.recent_ends.pop_front();
+        }
+        self.recent_ends.push_back(end);
+    }
+
+    /// Whether the last [`STALL_WINDOW`] steps moved the time by less than 1e-7 of its scale
+    /// (the larger of the time and the largest step), and by less than half `max_step` each.
+    fn stalled(&self, max_step: f64) -> bool {
+        let (Some(first), Some(last)) = (self.recent_ends.front(), self.recent_ends.back()) else {
+            return false;
+        };
+        let scale = last.abs().max(self.largest_step);
+        let advance = last - first;
+        let mean = advance / (STALL_WINDOW - 1) as f64;
+        self.recent_ends.len() == STALL_WINDOW && advance < 1e-7 * scale && mean < 0.5 * max_step
+    }
 }
 
 /// The variant of an error, with the refused option for `InvalidOption`.
@@ -1327,8 +1363,11 @@ fn check_report<const N: usize, const Z: usize>(
 
 /// The largest and smallest step the options allow, besides a landing one.
 fn step_bounds(step: StepControl) -> (f64, f64) {
+    // The runtime takes no step longer than 1e300 (beyond it `t + h` overflows): a fixed step
+    // of `f64::MAX` runs at that.
+    const LARGEST_STEP: f64 = 1e300;
     match step {
-        StepControl::Fixed { step } => (step, step),
+        StepControl::Fixed { step } => (step.min(LARGEST_STEP), step.min(LARGEST_STEP)),
         StepControl::Adaptive {
             min_step, max_step, ..
         } => (min_step, max_step),
@@ -1935,8 +1974,29 @@ fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         trace,
     };
     let result = run.all(case);
-    let mut outcome = run.outcome;
+    let mut outcome = std::mem::take(&mut run.outcome);
     outcome.failure = result.err();
+    // Fixed steps, and steps at the options' `max_step`, advance as far as the options ask,
+    // however little.
+    let max_step = run
+        .sim
+        .as_ref()
+        .map_or(0.0, |sim| match sim.options().step {
+            StepControl::Adaptive { max_step, .. } => max_step,
+            StepControl::Fixed { .. } => 0.0,
+        });
+    if outcome.failure.is_none() && outcome.steps >= budget.steps && outcome.stalled(max_step) {
+        let detail = format!(
+            "the step budget ran out while the last {STALL_WINDOW} steps moved the time from {:e} \
+             to {:e}, without an error",
+            outcome.recent_ends.front().copied().unwrap_or_default(),
+            outcome.recent_ends.back().copied().unwrap_or_default(),
+        );
+        outcome.failure = Some(Failure {
+            class: FailureClass::Stall,
+            detail,
+        });
+    }
     outcome
 }
 
@@ -2118,9 +2178,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 return Ok(None);
             }
         };
-        self.outcome.steps += 1;
-        check_time(sim, call)?;
         let report = *sim.last();
+        self.outcome.record_step((report.start.t, report.end.t));
+        check_time(sim, call)?;
         (self.trace)(format!(
             "  {reason:?}: [{:e}, {:e}] q = {:?}, v = {:?}, closed {:?}",
             report.start.t,
@@ -2276,6 +2336,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             repeated: false,
             impacts: 0,
             impact_report: None,
+            spans: Vec::new(),
         };
         let options = (&before.options, S::POSITION_CONSTRAINTS);
         // The observer sees why `step()` returned, but a step shortened to aim at a crossing
@@ -2289,6 +2350,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             }
             seen.observed += 1;
             let report = *step.report();
+            seen.spans.push((report.start.t, report.end.t));
             let mut check = match change(&seen.previous, &report) {
                 // A later event at the same step end, returned without a step: advance_to
                 // returns it next.
@@ -2338,7 +2400,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 step.stop();
             }
         });
-        self.outcome.steps += u64::from(seen.observed);
+        for &span in &seen.spans {
+            self.outcome.record_step(span);
+        }
         if let Some(failure) = seen.broken {
             return Err(failure);
         }
@@ -2556,6 +2620,8 @@ struct Seen<const N: usize, const Z: usize> {
     /// Zero-length reports (impacts) seen, and the last.
     impacts: u32,
     impact_report: Option<StepReport<N, Z>>,
+    /// Each observed report's start and end times.
+    spans: Vec<(f64, f64)>,
 }
 
 /// Runs `case`: builds its scene from the parameters and executes the calls with the checks.

@@ -12,6 +12,7 @@ use super::configuration::{
 use crate::consistency::StartReport;
 use crate::control::{
     bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, Controller,
+    Progress,
 };
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 use crate::linalg::max_abs;
@@ -64,6 +65,8 @@ pub struct SparseSimulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const
     lambda: Vector<Z>,
     stop_time: Option<f64>,
     planned_step: f64,
+    /// Whether the accepted steps still advance the time.
+    progress: Progress,
     last: StepReport<N, Z>,
     start_report: StartReport<N, Z>,
     statistics: Statistics,
@@ -110,6 +113,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             lambda: Vector::zeros(),
             stop_time: None,
             planned_step: first_step(options.step),
+            progress: Progress::default(),
             last: empty_report(t0),
             start_report: StartReport::unmoved(),
             statistics: Statistics::default(),
@@ -308,6 +312,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     /// One accepted step, not beyond the stop time; says whether it reached it. A failed step
     /// leaves the state as it was.
     pub fn step(&mut self) -> Result<StopReason, StepError> {
+        self.progress.check(self.time())?;
         let limit = self.stop_time.unwrap_or(f64::INFINITY);
         let (min_step, max_step) = bounds(self.options.step);
         let mut h = self
@@ -609,6 +614,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             (h, h_planned),
             landing,
         );
+        self.progress.record(h, t_end);
         self.statistics.steps += 1;
         self.statistics.max_newton_iterations =
             self.statistics.max_newton_iterations.max(end.integrations);
