@@ -276,26 +276,30 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
     }
 }
 
+/// The share of the residuals a step of size `h` planned as `planned` leaves to the next steps:
+/// `1 - (τ/τ̂)²` on a shorter step (`τ̂ = planned`), none on a step of the planned size.
+pub(crate) fn carried_share(h: f64, planned: f64) -> Option<f64> {
+    let ratio = h / planned;
+    (h < planned).then_some(1.0 - ratio * ratio)
+}
+
 /// Where Newton aims the end conditions on a step of size `h` planned as `planned`: zero on a
-/// step of the planned size, and on a shorter one most of the way back to where the conditions
-/// start, `(1 - (τ/τ̂)²)` of `g` and of the position rows' `w` at the start (`τ̂ = planned`).
-/// The conditions at the start hold already; driving them to zero over a step of picoseconds
-/// took a multiplier of `g/τ²`, whose velocity kick `2g/τ` no later step removed. `None` on a
-/// step of the planned size (the targets are zero), without evaluating anything.
+/// step of the planned size, and on a shorter one the [`carried_share`] of `g` and of the
+/// position rows' `w` at the start. The conditions at the start hold already; driving them to
+/// zero over a step of picoseconds took a multiplier of `g/τ²`, whose velocity kick `2g/τ` no
+/// later step removed. Evaluates nothing on a step of the planned size.
 pub(crate) fn short_step_targets<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (&Vector<N>, &Vector<N>, f64),
     (h, planned): (f64, f64),
-) -> Result<Option<[Vector<Z>; K]>, StepError>
+) -> Result<[Vector<Z>; K], StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
-    if !(h < planned) {
-        return Ok(None);
-    }
-    let ratio = h / planned;
-    let kept = 1.0 - ratio * ratio;
     let mut targets = [Vector::zeros(); K];
+    let Some(kept) = carried_share(h, planned) else {
+        return Ok(targets);
+    };
     targets[0] = kept * model.residual(q, v, t)?;
     if K > 1 {
         let r = S::POSITION_CONSTRAINTS;
@@ -303,7 +307,7 @@ where
         // A velocity row's second condition is `ġ = 0` at the end: nothing carried over.
         targets[1].rows_mut(r, Z - r).fill(0.0);
     }
-    Ok(Some(targets))
+    Ok(targets)
 }
 
 /// Corrections of the coefficients through one integration's linearised step map, before the

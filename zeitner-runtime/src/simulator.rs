@@ -846,8 +846,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<Attempt<N, Z>, StepError> {
         let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
         let state = (&self.q, &self.v, self.time());
-        let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?
-            .unwrap_or([Vector::zeros(); K]);
+        let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?;
         let embedded_order = Method::<N, Z>::embedded_order(&self.method);
         let settings = NewtonSettings {
             steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3)

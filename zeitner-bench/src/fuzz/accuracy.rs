@@ -385,6 +385,50 @@ struct Run<const N: usize, const Z: usize> {
 /// A kept quantity of a scene, `E(q, q')`, and its scale.
 type Energy<'e, const N: usize> = Option<(&'e dyn Fn(&Vector<N>, &Vector<N>) -> f64, f64)>;
 
+/// What a run sees along the way: the largest |q|, |q'|, |λ| (at the start and every step
+/// end) and the largest change of the kept energy from the start.
+struct Along<'e, const N: usize, const Z: usize> {
+    energy: Energy<'e, N>,
+    start_energy: f64,
+    scales: [f64; 3],
+    drift: f64,
+}
+
+impl<'e, const N: usize, const Z: usize> Along<'e, N, Z> {
+    fn from(start: &zeitner::Point<N, Z>, energy: Energy<'e, N>) -> Self {
+        let mut along = Along {
+            energy,
+            start_energy: 0.0,
+            scales: [0.0; 3],
+            drift: 0.0,
+        };
+        along.start_energy = along.kept(start);
+        along.see(start);
+        along
+    }
+
+    fn kept(&self, p: &zeitner::Point<N, Z>) -> f64 {
+        self.energy.map_or(0.0, |(e, _)| e(&p.q, &p.v))
+    }
+
+    fn see(&mut self, p: &zeitner::Point<N, Z>) {
+        let size = [p.q.amax(), p.v.amax(), p.lambda.amax()];
+        for (scale, x) in self.scales.iter_mut().zip(size) {
+            *scale = scale.max(x);
+        }
+        self.drift = self.drift.max((self.kept(p) - self.start_energy).abs());
+    }
+
+    fn run(self, end: zeitner::Point<N, Z>, crossings: Vec<f64>) -> Run<N, Z> {
+        Run {
+            end,
+            scales: self.scales,
+            crossings,
+            energy_drift: self.energy.map_or(0.0, |(_, scale)| self.drift / scale),
+        }
+    }
+}
+
 /// Runs `case` from `(q, v)` through its disturbances and `stops` (its own, the end last), on
 /// through every event crossing, as a user would.
 fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
@@ -402,19 +446,11 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     let mut sim = Simulator::new(scene, q, v, 0.0, case.options)?;
     sim.set_time_events(&disturbances.time_events)?;
-    let size = |p: &zeitner::Point<N, Z>| [p.q.amax(), p.v.amax(), p.lambda.amax()];
-    let start = sim.last().end;
-    let kept = |p: &zeitner::Point<N, Z>| energy.map_or(0.0, |(e, _)| e(&p.q, &p.v));
-    let e0 = kept(&start);
-    let (mut scales, mut drift, mut crossings) = (size(&start), 0.0f64, Vec::new());
+    let mut along = Along::from(&sim.last().end, energy);
+    let mut crossings = Vec::new();
     for (k, &stop) in stops.iter().enumerate() {
         loop {
-            let reason = sim.advance_to(stop, |step| {
-                for (scale, x) in scales.iter_mut().zip(size(&step.end)) {
-                    *scale = scale.max(x);
-                }
-                drift = drift.max((kept(&step.end) - e0).abs());
-            })?;
+            let reason = sim.advance_to(stop, |step| along.see(&step.end))?;
             match reason {
                 zeitner::StopReason::Event { .. } => crossings.push(sim.time()),
                 _ => break,
@@ -428,13 +464,7 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             sim.set_options(options)?;
         }
     }
-    let energy_drift = energy.map_or(0.0, |(_, scale)| drift / scale);
-    Ok(Run {
-        end: sim.last().end,
-        scales,
-        crossings,
-        energy_drift,
-    })
+    Ok(along.run(sim.last().end, crossings))
 }
 
 /// [`integrate`] on `SparseSimulator` (stops only).
@@ -445,25 +475,11 @@ fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (stops, energy): (&[f64], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
     let mut sim = zeitner::SparseSimulator::new(scene, q, v, 0.0, options)?;
-    let size = |p: &zeitner::Point<N, Z>| [p.q.amax(), p.v.amax(), p.lambda.amax()];
-    let start = sim.last().end;
-    let kept = |p: &zeitner::Point<N, Z>| energy.map_or(0.0, |(e, _)| e(&p.q, &p.v));
-    let e0 = kept(&start);
-    let (mut scales, mut drift) = (size(&start), 0.0f64);
+    let mut along = Along::from(&sim.last().end, energy);
     for &stop in stops {
-        sim.advance_to(stop, |step| {
-            for (scale, x) in scales.iter_mut().zip(size(&step.end)) {
-                *scale = scale.max(x);
-            }
-            drift = drift.max((kept(&step.end) - e0).abs());
-        })?;
+        sim.advance_to(stop, |step| along.see(&step.end))?;
     }
-    Ok(Run {
-        end: sim.last().end,
-        scales,
-        crossings: Vec::new(),
-        energy_drift: energy.map_or(0.0, |(_, scale)| drift / scale),
-    })
+    Ok(along.run(sim.last().end, Vec::new()))
 }
 
 /// The double pendulum's angle equations (θ from the downward vertical, point masses), RK4 at

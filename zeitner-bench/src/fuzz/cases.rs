@@ -2323,6 +2323,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             .min((self.budget.steps - self.outcome.steps) as u32)
             .max(1);
         let (scene, facts) = (self.scene, self.facts);
+        let outcome = &mut self.outcome;
         let sim = self.sim.as_mut().expect("a simulator");
         let before = Snapshot::of(sim);
         let t_end = target.resolve(sim.last());
@@ -2336,7 +2337,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             repeated: false,
             impacts: 0,
             impact_report: None,
-            spans: Vec::new(),
         };
         let options = (&before.options, S::POSITION_CONSTRAINTS);
         // The observer sees why `step()` returned, but a step shortened to aim at a crossing
@@ -2350,7 +2350,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             }
             seen.observed += 1;
             let report = *step.report();
-            seen.spans.push((report.start.t, report.end.t));
+            outcome.record_step((report.start.t, report.end.t));
             let mut check = match change(&seen.previous, &report) {
                 // A later event at the same step end, returned without a step: advance_to
                 // returns it next.
@@ -2400,9 +2400,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 step.stop();
             }
         });
-        for &span in &seen.spans {
-            self.outcome.record_step(span);
-        }
         if let Some(failure) = seen.broken {
             return Err(failure);
         }
@@ -2620,8 +2617,6 @@ struct Seen<const N: usize, const Z: usize> {
     /// Zero-length reports (impacts) seen, and the last.
     impacts: u32,
     impact_report: Option<StepReport<N, Z>>,
-    /// Each observed report's start and end times.
-    spans: Vec<(f64, f64)>,
 }
 
 /// Runs `case`: builds its scene from the parameters and executes the calls with the checks.

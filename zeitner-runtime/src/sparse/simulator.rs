@@ -18,7 +18,7 @@ use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 use crate::linalg::max_abs;
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
 use crate::model::{finite, Evaluations};
-use crate::multipliers::{Predictor, StepPolynomial};
+use crate::multipliers::{carried_share, Predictor, StepPolynomial};
 use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,
 };
@@ -357,11 +357,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         t_end: f64,
     ) -> Result<Result<End<N, Z>, (f64, StepError)>, StepError> {
         let mut p = self.guess(h, planned)?;
-        let target = if h < planned {
-            let (ratio, (q, v, t)) = (h / planned, (self.q, self.v, self.time()));
-            (1.0 - ratio * ratio) * self.residual(&q, &v, t)?
-        } else {
-            Vector::zeros()
+        let target = match carried_share(h, planned) {
+            Some(kept) => {
+                let (q, v, t) = (self.q, self.v, self.time());
+                kept * self.residual(&q, &v, t)?
+            }
+            None => Vector::zeros(),
         };
         let tolerance = self.options.constraint_tolerance;
         let mut worst = (f64::INFINITY, 0);
