@@ -139,7 +139,7 @@ impl<const Z: usize> Predictor<Z> {
     /// carries into the step. (`λ + τλ'/3` is the mean of a linear `λ` weighted as the positions
     /// feel it.) The raw velocities' error normal to the constraints flips sign from step to
     /// step and the step's `p` must undo it, which no extrapolation of past `p` foresees. A step
-    /// shortened below the planned size (an event, a stop time, a retry) corrects `g` and `w` as
+    /// shortened below the planned size (to land on an event, a stop time) corrects `g` and `w` as
     /// the planned step would, a share of the way: making `g` vanish over a step `τ` kicks the
     /// normal velocity by `2g/τ`, which after a step of picoseconds was metres per second, and
     /// that error flips sign from step to step without decaying. Position-level rows only;

@@ -432,11 +432,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .clamp(min_step, max_step)
             .min(LARGEST_STEP);
         let planned = h;
+        // The size the step's residual correction is made for: the controller's, until a
+        // rejection replaces it; a step shortened to land or to aim at a crossing keeps it.
+        let mut reach = h;
         let (mut retry, mut target, mut relocations, mut attempts) = (false, None::<f64>, 0, 0);
         loop {
             let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
             retry = true;
-            match self.attempt((h_try, planned.max(h)), t_end)? {
+            match self.attempt((h_try, reach), t_end)? {
                 Attempt::Accepted(step) => {
                     let (values, crossing) = self.crossing(&step, t_end)?;
                     // Where the dense output is too poor to aim by, halve the step instead.
@@ -461,6 +464,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                     self.statistics.rejected_steps += 1;
                     attempts += 1;
                     h = self.retry((h_try * factor, attempts), cause)?;
+                    reach = h;
                     target = target.filter(|&aim| self.time() + h >= aim);
                 }
             }
@@ -779,7 +783,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model;
     /// `planned` is the size the controller planned before the step was shortened to land or to
-    /// retry, which sets how far the step corrects the residuals it starts with.
+    /// aim at a crossing, which sets how far the step corrects the residuals it starts with.
     fn attempt(
         &mut self,
         (h, planned): (f64, f64),
