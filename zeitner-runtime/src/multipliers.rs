@@ -364,7 +364,7 @@ where
         let aim = (conditions, targets);
         match linear.correct(model, settings, span, &mut multipliers, aim)? {
             Correction::Accepted(updated) => return Ok(converged(updated, multipliers, iteration)),
-            Correction::Singular => return singular(model, &end, t_end, h, iteration, worst),
+            Correction::Singular => return singular(model, start, h, iteration, worst),
             Correction::IntegrateAgain => {}
         }
     }
@@ -524,12 +524,15 @@ fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
 }
 
-/// A singular Newton matrix: rank-deficient constraints at the step end (named), or else a step
-/// too large for the linearisation.
+/// A singular Newton matrix: rank-deficient constraints at the step start (named), or else a
+/// step too large for the linearisation, to be retried smaller. The start is a state the run
+/// accepted; the end is an iterate of a Newton that may be diverging, whose configuration says
+/// nothing about the model (a slider-crank, never singular, was refused so at moderate
+/// tolerances). A singularity the steps approach is named once they reach it, or by
+/// `StepSizeTooSmall`'s diagnosis of vanishing gradients.
 fn singular<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    end: &StepEnd<N, Z, K>,
-    t_end: f64,
+    start: &Start<N, Z, K>,
     h: f64,
     iteration: u32,
     worst: (f64, usize),
@@ -537,15 +540,15 @@ fn singular<S, const N: usize, const Z: usize, const K: usize>(
 where
     S: ConstrainedSystem<N, Z>,
 {
-    let directions = model.directions(&end.q, &end.v, t_end)?;
+    let directions = model.directions(&start.q, &start.v, start.t)?;
     let rows: RowSet = dependent_rows(&directions.gram(), S::POSITION_CONSTRAINTS);
     if !rows.is_empty() {
         return Err(StepError::RankDeficientConstraints {
-            t: t_end,
+            t: start.t,
             dependent_rows: rows,
         });
     }
-    let cause = not_converged::<S, N, Z>(t_end - h, h, iteration, worst);
+    let cause = not_converged::<S, N, Z>(start.t, h, iteration, worst);
     Ok(failed(cause, iteration))
 }
 
