@@ -1192,8 +1192,10 @@ pub struct Outcome {
     pub steps: u64,
     /// Calls made, `new` included.
     pub calls: usize,
-    /// The end times of the last [`STALL_WINDOW`] accepted steps, and the largest step.
-    recent_ends: std::collections::VecDeque<f64>,
+    /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
+    /// largest step.
+    recent_steps: std::collections::VecDeque<f64>,
+    last_end: f64,
     largest_step: f64,
 }
 
@@ -1202,22 +1204,22 @@ impl Outcome {
     fn record_step(&mut self, (start, end): (f64, f64)) {
         self.steps += 1;
         self.largest_step = self.largest_step.max(end - start);
-        if self.recent_ends.len() == STALL_WINDOW {
-            self.recent_ends.pop_front();
+        if self.recent_steps.len() == STALL_WINDOW {
+            self.recent_steps.pop_front();
         }
-        self.recent_ends.push_back(end);
+        self.recent_steps.push_back(end - start);
+        self.last_end = end;
     }
 
     /// Whether the last [`STALL_WINDOW`] steps moved the time by less than 1e-7 of its scale
     /// (the larger of the time and the largest step), and by less than half `max_step` each.
+    /// Summed step by step, so that a `reinitialise` back in time within the window counts as
+    /// no move.
     fn stalled(&self, max_step: f64) -> bool {
-        let (Some(first), Some(last)) = (self.recent_ends.front(), self.recent_ends.back()) else {
-            return false;
-        };
-        let scale = last.abs().max(self.largest_step);
-        let advance = last - first;
-        let mean = advance / (STALL_WINDOW - 1) as f64;
-        self.recent_ends.len() == STALL_WINDOW && advance < 1e-7 * scale && mean < 0.5 * max_step
+        let scale = self.last_end.abs().max(self.largest_step);
+        let advance: f64 = self.recent_steps.iter().sum();
+        let mean = advance / STALL_WINDOW as f64;
+        self.recent_steps.len() == STALL_WINDOW && advance < 1e-7 * scale && mean < 0.5 * max_step
     }
 }
 
@@ -1986,11 +1988,11 @@ fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             StepControl::Fixed { .. } => 0.0,
         });
     if outcome.failure.is_none() && outcome.steps >= budget.steps && outcome.stalled(max_step) {
+        let advance: f64 = outcome.recent_steps.iter().sum();
         let detail = format!(
-            "the step budget ran out while the last {STALL_WINDOW} steps moved the time from {:e} \
+            "the step budget ran out while the last {STALL_WINDOW} steps moved the time by {advance:e} \
              to {:e}, without an error",
-            outcome.recent_ends.front().copied().unwrap_or_default(),
-            outcome.recent_ends.back().copied().unwrap_or_default(),
+            outcome.last_end
         );
         outcome.failure = Some(Failure {
             class: FailureClass::Stall,
