@@ -245,13 +245,22 @@ impl Follower {
 }
 
 #[test]
-fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_or_the_stiff_method() {
+fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_or_an_adaptive_method() {
     let explicit = InnerMethod::DormandPrince54;
     let resolve =
         |position_rows, rows| MultiplierModel::Automatic.resolve(explicit, position_rows, rows);
     assert_eq!(resolve(1, 2), MultiplierModel::Quadratic);
     assert_eq!(resolve(0, 1), MultiplierModel::Quadratic);
-    assert_eq!(resolve(2, 2), MultiplierModel::Constant);
+    assert_eq!(resolve(2, 2), MultiplierModel::Quadratic);
+    let fixed = InnerMethod::Rk4 { substeps: 1 };
+    assert_eq!(
+        MultiplierModel::Automatic.resolve(fixed, 2, 2),
+        MultiplierModel::Constant
+    );
+    assert_eq!(
+        MultiplierModel::Automatic.resolve(fixed, 1, 2),
+        MultiplierModel::Quadratic
+    );
     let stiff = MultiplierModel::Automatic.resolve(InnerMethod::Esdirk32, 2, 2);
     assert_eq!(stiff, MultiplierModel::Quadratic);
     // A mixed scene runs with it and keeps both kinds of rows.

@@ -305,10 +305,13 @@ pub(crate) fn error_norm<const N: usize>(
 /// The error from holding the multipliers fixed while `G` turns, which the embedded estimate of
 /// the inner method cannot see since it integrates the frozen-multiplier equations. With
 /// `ΔG = G(t₂) - G(t₁)` and `Δλ = λ(t₂) - λ(t₁)`, to leading order: in `q`,
-/// `τ²/36 M⁻¹ ΔGᵀ Δλ`; in `q'`, for velocity-level rows (whose end condition is on `q'`, so that
-/// nothing cancels it), `τ/12 M⁻¹ ΔGᵀ Δλ` over those rows — the tangential velocity error
-/// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. (For position rows the velocity
-/// error of this kind is of higher order.)
+/// `τ²/36 M⁻¹ ΔGᵀ Δλ`; in `q'`, `τ/12 M⁻¹ ΔGᵀ Δλ` — the tangential velocity error
+/// `M⁻¹ Ġᵀ ∫(t - t₂)(λ - p) dt` with `λ - p ≈ λ'(t - t_mid)`. For position rows a smooth run's
+/// `p` makes that integral vanish to leading order, but the raw normal velocity that constant
+/// multipliers leave flipping from step to step, re-seeded by every shortened step, puts an
+/// offset into `p` whose leaks stop cancelling in pairs: without this term a slider-crank's
+/// end velocities erred 1 200–3 000 times their tolerance (issue #31). An estimate from that
+/// offset alone (`τ/2 M⁻¹ΔGᵀ(p - λ₁ - Δλ/3)`) missed half of those cases and stalled others.
 ///
 /// `start` gives `G`, `λ` and the time at the step start; `end` the same at the step end, and
 /// the end's positions.
@@ -322,30 +325,18 @@ pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     let factor = model.mass_factor(q2, t2)?;
     let turned = |rows: &Vector<Z>| factor.solve(&turn.tr_mul(rows));
     let change = lambda2 - lambda1;
-    Ok(frozen_estimate(
-        t2 - t1,
-        &change,
-        S::POSITION_CONSTRAINTS,
-        turned,
-    ))
+    Ok(frozen_estimate(t2 - t1, &change, turned))
 }
 
 /// The frozen-multiplier estimate of [`freezing_error`] for a step of size `h` from the change
-/// `change` of the multipliers and `turned(y) = M⁻¹ (G(t₂) - G(t₁))ᵀ y`, whatever stores `G`;
-/// rows from `position_rows` on are velocity-level.
+/// `change` of the multipliers and `turned(y) = M⁻¹ (G(t₂) - G(t₁))ᵀ y`, whatever stores `G`.
 pub(crate) fn frozen_estimate<const N: usize, const Z: usize>(
     h: f64,
     change: &Vector<Z>,
-    position_rows: usize,
     turned: impl Fn(&Vector<Z>) -> Vector<N>,
 ) -> (Vector<N>, Vector<N>) {
-    let eq = (h * h / 36.0) * turned(change);
-    if position_rows == Z {
-        return (eq, Vector::zeros());
-    }
-    let mut velocity_rows = *change;
-    velocity_rows.rows_mut(0, position_rows).fill(0.0);
-    (eq, (h / 12.0) * turned(&velocity_rows))
+    let turned = turned(change);
+    ((h * h / 36.0) * turned, (h / 12.0) * turned)
 }
 
 #[cfg(test)]

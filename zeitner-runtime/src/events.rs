@@ -2,11 +2,12 @@
 //! about to close) and of the multipliers of closed gaps (a contact about to pull, so to open).
 //!
 //! Each watched function's side (`value > 0`) is kept from the last accepted step end; a step
-//! whose end is on the other side has a crossing of interest, located on the step's quintic
-//! Hermite dense output by the Illinois method. The simulator then integrates the step again to
-//! end just beyond the crossing (just before it for a gap, so that the impact happens while
-//! the gap is still open), within [`crate::EventSettings::time_tolerance`]. A function that
-//! crosses twice within one step is not seen: bound `max_step` where that matters.
+//! on whose dense output (sampled at interior points, and at its end) a function is on the other
+//! side has a crossing of interest, located on the step's quintic Hermite dense output by the
+//! Illinois method. The simulator then integrates the step again to end just beyond the
+//! crossing (just before it for a gap, so that the impact happens while the gap is still open),
+//! within [`crate::EventSettings::time_tolerance`]. Two crossings closer than a step's eighth
+//! can still both be missed: bound `max_step` where that matters.
 
 use crate::consistency::consistent_point;
 use crate::contact::GapSet;
@@ -223,9 +224,17 @@ pub(crate) struct Crossing {
     pub t: f64,
 }
 
+/// Interior points of a step at which the event functions and open gaps are sampled on its dense
+/// output, besides its end: a function that crosses zero and back within one step (a crank that
+/// just passes its axis and falls back, a ball that grazes a wall) is seen where a sample falls
+/// between its two crossings. Seven, like the ten of DifferentialEquations.jl's
+/// `interp_points`, cost an interpolation and one call of the event functions each.
+const INTERIOR_SAMPLES: usize = 7;
+
 /// The earliest crossing of interest between the step's start (as `watch` has it) and
 /// its end (whose values are `end_values`), located on the dense output between `start` and
-/// `end`.
+/// `end`. Each function's first change of side is looked for at [`INTERIOR_SAMPLES`] points and
+/// the end; a closed contact's multiplier only at the end (it needs a consistent point).
 pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (start, end): (&Point<N, Z>, &Point<N, Z>),
@@ -234,35 +243,66 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     time_tolerance: f64,
 ) -> Result<Option<Crossing>, StepError> {
     let open = model.open_gaps();
-    let events = (0..S::EVENTS).map(|i| (Watched::Event(i), watch.event(i), end_values.events[i]));
-    // An open gap is above its level and a closed one pushes, by construction.
-    let gaps = (0..S::UNILATERAL_CONSTRAINTS).map(|k| {
-        let watched = if open.contains(k) {
-            Watched::Gap(k)
+    let watched = |index: usize| {
+        if index < MAX_EVENTS {
+            (Watched::Event(index), watch.event(index))
         } else {
-            Watched::Contact(k)
-        };
-        (watched, open.contains(k), end_values.gaps[k])
-    });
-    let mut earliest: Option<Crossing> = None;
-    for (watched, was_positive, value) in events.chain(gaps) {
-        if (value > 0.0) == was_positive {
-            continue;
+            let k = index - MAX_EVENTS;
+            match open.contains(k) {
+                true => (Watched::Gap(k), true),
+                false => (Watched::Contact(k), false),
+            }
         }
+    };
+    let indices = (0..S::EVENTS).chain((0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k));
+    // Each function's first point on the other side, and its value there.
+    let mut other_side = [None::<(f64, f64)>; MAX_EVENTS + MAX_GAPS];
+    let value_in = |values: &Values, index: usize| match index < MAX_EVENTS {
+        true => values.events[index],
+        false => values.gaps[index - MAX_EVENTS],
+    };
+    if S::EVENTS > 0 || !open.is_empty() {
+        let h = end.t - start.t;
+        for j in 1..=INTERIOR_SAMPLES {
+            let t = start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+            let sample = sampled(model, &interpolate(start, end, t), watch)?;
+            for index in indices.clone() {
+                let (which, was_positive) = watched(index);
+                let value = value_in(&sample, index);
+                let seen = !matches!(which, Watched::Contact(_));
+                if seen && other_side[index].is_none() && (value > 0.0) != was_positive {
+                    other_side[index] = Some((t, value));
+                }
+            }
+        }
+    }
+    let mut earliest: Option<Crossing> = None;
+    for index in indices {
+        let (which, was_positive) = watched(index);
+        let end_value = value_in(end_values, index);
+        let end_side = ((end_value > 0.0) != was_positive).then_some((end.t, end_value));
+        let Some(bracket_end) = other_side[index].or(end_side) else {
+            continue;
+        };
         let direction = if was_positive {
             Direction::Falling
         } else {
             Direction::Rising
         };
-        if !watched.matters(direction) {
+        if !which.matters(direction) {
             continue;
         }
         let before = earliest.map_or(end.t, |c| c.t);
-        let sides = (was_positive, value);
-        let t = locate(model, (watched, watch), (start, end), sides, time_tolerance)?;
+        let t = locate(
+            model,
+            (which, watch),
+            (start, end),
+            (was_positive, bracket_end),
+            time_tolerance,
+        )?;
         if t < before || earliest.is_none() {
             earliest = Some(Crossing {
-                watched,
+                watched: which,
                 direction,
                 t,
             });
@@ -271,14 +311,37 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     Ok(earliest)
 }
 
-/// The zero of `watched` on the interpolant between `start` (on the side `was_positive`) and
-/// `end` (value `end_value`, on the other side): Illinois' modified regula falsi until the
-/// bracket is a quarter of `time_tolerance` wide.
+/// The event functions and the open gaps' distances above their levels at an interpolated
+/// point (closed contacts are left at zero: their multipliers need a consistent point).
+fn sampled<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: &Point<N, Z>,
+    watch: &Watch,
+) -> Result<Values, StepError> {
+    let events = if S::EVENTS > 0 {
+        model.events(&point.q, &point.v, point.t)?
+    } else {
+        [0.0; MAX_EVENTS]
+    };
+    let mut gaps = [0.0; MAX_GAPS];
+    let open = model.open_gaps();
+    if !open.is_empty() {
+        let distances = model.gaps(&point.q, &point.v, point.t)?;
+        for k in open.iter() {
+            gaps[k] = distances[k] - watch.level(k);
+        }
+    }
+    Ok(Values { events, gaps })
+}
+
+/// The zero of `watched` on the interpolant between `start` and `end`, bracketed by `start` (on
+/// the side `was_positive`) and `bracket_end` (a time and the value there, on the other side):
+/// Illinois' modified regula falsi until the bracket is a quarter of `time_tolerance` wide.
 fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (watched, watch): (Watched, &Watch),
     (start, end): (&Point<N, Z>, &Point<N, Z>),
-    (was_positive, end_value): (bool, f64),
+    (was_positive, bracket_end): (bool, (f64, f64)),
     time_tolerance: f64,
 ) -> Result<f64, StepError> {
     // The start's value, on its recorded side even where rounding put it at or across zero.
@@ -289,7 +352,7 @@ fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     } else {
         start_value.min(-tiny)
     };
-    let (mut a, mut b, mut fb) = (start.t, end.t, end_value);
+    let (mut a, (mut b, mut fb)) = (start.t, bracket_end);
     let mut retained = 0i32;
     for _ in 0..200 {
         if b - a <= 0.25 * time_tolerance {

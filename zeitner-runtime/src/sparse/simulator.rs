@@ -568,7 +568,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             .component_mul(&self.there.inverse_mass)
         };
         let change = lambda_end - self.lambda;
-        frozen_estimate(h, &change, S::POSITION_CONSTRAINTS, turned)
+        frozen_estimate(h, &change, turned)
     }
 
     fn accept(
