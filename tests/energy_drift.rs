@@ -20,13 +20,22 @@ const SCENE: DoublePendulum = DoublePendulum {
 };
 
 /// `(|E(t_end) - E(0)|` of the state, of the reported (projected) velocities, integrations per
-/// step, steps`)`.
+/// step, steps`)`, with constant multipliers.
 fn drift(rtol: f64, t_end: f64, projection: VelocityProjection) -> (f64, f64, u64) {
-    let mut options = Options {
+    let options = Options {
         multipliers: MultiplierModel::Constant,
-        velocity_projection: projection,
         ..Options::default()
     };
+    drift_with(options, rtol, t_end, projection)
+}
+
+fn drift_with(
+    mut options: Options,
+    rtol: f64,
+    t_end: f64,
+    projection: VelocityProjection,
+) -> (f64, f64, u64) {
+    options.velocity_projection = projection;
     if let StepControl::Adaptive { rtol: r, .. } = &mut options.step {
         *r = rtol;
     }
@@ -58,15 +67,33 @@ fn twenty_seconds_of_a_double_pendulum_keep_their_energy_at_tight_tolerances() {
 }
 
 /// The issue's long run: `cargo test --release --test energy_drift -- --ignored --nocapture`.
+/// Constant multipliers (as the README's table), constant with `constraint_tolerance: 1e-14`,
+/// and the defaults (`Automatic`: quadratic with Dormand–Prince).
 #[test]
 #[ignore = "a measurement of 1000 s runs, not a check"]
 fn thousand_seconds_report() {
-    for rtol in [1e-8, 1e-9, 1e-10] {
-        let (state, integrations, steps) = drift(rtol, 1000.0, VelocityProjection::Off);
-        let (reported, _, _) = drift(rtol, 1000.0, VelocityProjection::Output);
-        eprintln!(
-            "rtol {rtol:.0e}: |ΔE| state {state:.2e} J, reported {reported:.2e} J; {steps} steps, \
-             {integrations:.3} integrations per step"
-        );
+    let constant = Options {
+        multipliers: MultiplierModel::Constant,
+        ..Options::default()
+    };
+    let tight = Options {
+        constraint_tolerance: 1e-14,
+        ..constant
+    };
+    let models = [
+        ("constant", constant),
+        ("constant, ε 1e-14", tight),
+        ("defaults (quadratic)", Options::default()),
+    ];
+    for (name, options) in models {
+        for rtol in [1e-8, 1e-9, 1e-10] {
+            let (state, integrations, steps) =
+                drift_with(options, rtol, 1000.0, VelocityProjection::Off);
+            let (reported, _, _) = drift_with(options, rtol, 1000.0, VelocityProjection::Output);
+            eprintln!(
+                "{name}, rtol {rtol:.0e}: |ΔE| state {state:.2e} J, reported {reported:.2e} J; \
+                 {steps} steps, {integrations:.3} integrations per step"
+            );
+        }
     }
 }

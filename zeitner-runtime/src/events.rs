@@ -227,14 +227,16 @@ pub(crate) struct Crossing {
 /// Interior points of a step at which the event functions and open gaps are sampled on its dense
 /// output, besides its end: a function that crosses zero and back within one step (a crank that
 /// just passes its axis and falls back, a ball that grazes a wall) is seen where a sample falls
-/// between its two crossings. Seven, like the ten of DifferentialEquations.jl's
-/// `interp_points`, cost an interpolation and one call of the event functions each.
+/// between its two crossings (like DifferentialEquations.jl's ten `interp_points`). Each costs
+/// an interpolation and one call of the event functions, so only the middle one is taken unless
+/// a parabola through the start, the middle and the end dips towards zero ([`may_cross`]).
 const INTERIOR_SAMPLES: usize = 7;
 
 /// The earliest crossing of interest between the step's start (as `watch` has it) and
 /// its end (whose values are `end_values`), located on the dense output between `start` and
-/// `end`. Each function's first change of side is looked for at [`INTERIOR_SAMPLES`] points and
-/// the end; a closed contact's multiplier only at the end (it needs a consistent point).
+/// `end`. Each function's first change of side is looked for at [`INTERIOR_SAMPLES`] points
+/// (where one may dip to zero) and the end; a closed contact's multiplier only at the end (it
+/// needs a consistent point).
 pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (start, end): (&Point<N, Z>, &Point<N, Z>),
@@ -261,17 +263,29 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         true => values.events[index],
         false => values.gaps[index - MAX_EVENTS],
     };
+    let sampled_kind = |index: usize| !matches!(watched(index).0, Watched::Contact(_));
     if S::EVENTS > 0 || !open.is_empty() {
         let h = end.t - start.t;
-        for j in 1..=INTERIOR_SAMPLES {
-            let t = start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
-            let sample = sampled(model, &interpolate(start, end, t), watch)?;
-            for index in indices.clone() {
-                let (which, was_positive) = watched(index);
-                let value = value_in(&sample, index);
-                let seen = !matches!(which, Watched::Contact(_));
-                if seen && other_side[index].is_none() && (value > 0.0) != was_positive {
-                    other_side[index] = Some((t, value));
+        let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+        // The start and the middle first: all samples only where a function may dip to zero.
+        let (first, middle) = (sampled(model, start, watch)?, (INTERIOR_SAMPLES + 1) / 2);
+        let centre = sampled(model, &interpolate(start, end, at(middle)), watch)?;
+        let may_dip = indices.clone().filter(|&i| sampled_kind(i)).any(|index| {
+            let side = if watched(index).1 { 1.0 } else { -1.0 };
+            let [a, m, b] = [&first, &centre, end_values].map(|v| side * value_in(v, index));
+            may_cross(a, m, b)
+        });
+        if may_dip {
+            for j in 1..=INTERIOR_SAMPLES {
+                let sample = match j == middle {
+                    true => centre,
+                    false => sampled(model, &interpolate(start, end, at(j)), watch)?,
+                };
+                for index in indices.clone().filter(|&i| sampled_kind(i)) {
+                    let value = value_in(&sample, index);
+                    if other_side[index].is_none() && (value > 0.0) != watched(index).1 {
+                        other_side[index] = Some((at(j), value));
+                    }
                 }
             }
         }
@@ -309,6 +323,21 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         }
     }
     Ok(earliest)
+}
+
+/// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
+/// that the start's side is positive) may cross zero within the step: a value on the other side,
+/// or a parabola through them whose minimum inside the step comes within half the smaller end
+/// value of zero.
+fn may_cross(a: f64, m: f64, b: f64) -> bool {
+    if !(m > 0.0 && b > 0.0) {
+        return true;
+    }
+    let curvature = 2.0 * a - 4.0 * m + 2.0 * b;
+    let slope = -3.0 * a + 4.0 * m - b;
+    let vertex = -slope / (2.0 * curvature);
+    let lowest = a + slope * vertex + curvature * vertex * vertex;
+    curvature > 0.0 && vertex > 0.0 && vertex < 1.0 && lowest < 0.5 * a.min(b)
 }
 
 /// The event functions and the open gaps' distances above their levels at an interpolated
@@ -382,4 +411,25 @@ fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     // The crossing lies in [a, b]: b is on the end's side.
     Ok(if watched.lands_before() { a } else { b })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::may_cross;
+
+    #[test]
+    fn a_dip_towards_zero_is_sampled_and_a_monotone_or_distant_function_is_not() {
+        // Values on the other side at the middle or the end.
+        assert!(may_cross(1.0, -0.1, 1.0));
+        assert!(may_cross(1.0, 0.5, -0.2));
+        // A parabola 1 - 3.9 x (1 - x) dips to 0.025 at x = 1/2 (the middle sample, 0.025, is
+        // still positive): sampled.
+        assert!(may_cross(1.0, 0.025, 1.0));
+        // x (1 - x) / 4 + 1: bulges away from zero; a straight line; a shallow dip far above it.
+        assert!(!may_cross(1.0, 1.0625, 1.0));
+        assert!(!may_cross(1.0, 1.5, 2.0));
+        assert!(!may_cross(1.0, 0.9, 1.0));
+        // A decline steepening towards the end (vertex outside the step): not sampled.
+        assert!(!may_cross(4.0, 3.0, 1.5));
+    }
 }
