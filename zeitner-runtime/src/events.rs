@@ -268,7 +268,7 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         let h = end.t - start.t;
         let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
         // The start and the middle first: all samples only where a function may dip to zero.
-        let (first, middle) = (sampled(model, start, watch)?, (INTERIOR_SAMPLES + 1) / 2);
+        let (first, middle) = (sampled(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
         let centre = sampled(model, &interpolate(start, end, at(middle)), watch)?;
         let may_dip = indices.clone().filter(|&i| sampled_kind(i)).any(|index| {
             let side = if watched(index).1 { 1.0 } else { -1.0 };
