@@ -7,7 +7,10 @@
 mod common;
 
 use common::pendulum::Pendulum;
+use common::reference::steam_generator as steam_reference;
+use common::relative_error;
 use common::slider_crank::{reduced, SliderCrankOnAxis};
+use common::steam_generator::SteamGenerator;
 use zeitner::{
     InnerMethod, MultiplierModel, Options, Simulator, StepControl, StepError, StopReason, Vector,
 };
@@ -176,6 +179,59 @@ fn a_crank_that_just_passes_its_axis_and_falls_back_is_seen() {
     for (a, b) in crossings.iter().zip(&reference) {
         assert!((a - b).abs() < 1e-4, "{a} against {b}");
     }
+}
+
+/// Accuracy fuzz seed 11158: the steam generator, constant multipliers at rtol 1.1e-10, with
+/// two time events. The landing steps erred little because they were short, and the controller,
+/// judging the next step by that error, grew it up to five times beyond its plan: the positions
+/// ended 1 215 times the tolerance off. A landing step's error is now scaled to the planned size.
+/// Returns the end positions' relative error with and without the time events.
+fn steam_generator_with_time_events() -> (f64, f64) {
+    let scene = SteamGenerator {
+        p0: 663959.8500545332,
+        d: 1068505.9957531665,
+        ..SteamGenerator::paper()
+    };
+    let options = Options {
+        multipliers: MultiplierModel::Constant,
+        sensitivity: zeitner::Sensitivity::Paper,
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: f64::INFINITY,
+            rtol: 1.1160194108777093e-10,
+            atol: 1.44818171140796e-14,
+        },
+        ..Options::default()
+    };
+    let t_end = 0.04553;
+    let reference = steam_reference(&scene, t_end);
+    let mut errors = [0.0; 2];
+    for (error, events) in errors
+        .iter_mut()
+        .zip([&[][..], &[0.043388798705954024, 0.032914576577866304]])
+    {
+        let mut sim =
+            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        sim.set_time_events(events).unwrap();
+        for stop in [scene.rise, t_end] {
+            while sim.advance_to(stop, |_| {}).unwrap() != StopReason::StopTimeReached {}
+        }
+        *error = relative_error(sim.last().end.q.as_slice(), &reference.q);
+    }
+    (errors[0], errors[1])
+}
+
+#[test]
+fn a_landing_step_does_not_let_the_next_one_grow_beyond_the_plan() {
+    let (plain, with_events) = steam_generator_with_time_events();
+    eprintln!("steam generator, rtol 1.1e-10: q error {plain:.2e} plain, {with_events:.2e} with two time events");
+    // Before: 3.1e-9 plain, 4.3e-8 with the time events.
+    assert!(plain < 1e-8, "{plain:e}");
+    assert!(
+        with_events < 3.0 * plain,
+        "{with_events:e} against {plain:e}"
+    );
 }
 
 #[test]
