@@ -268,8 +268,8 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         let h = end.t - start.t;
         let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
         // The start and the middle first: all samples only where a function may dip to zero.
-        let (first, middle) = (sampled(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
-        let centre = sampled(model, &interpolate(start, end, at(middle)), watch)?;
+        let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
+        let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
         let may_dip = indices.clone().filter(|&i| sampled_kind(i)).any(|index| {
             let side = if watched(index).1 { 1.0 } else { -1.0 };
             let [a, m, b] = [&first, &centre, end_values].map(|v| side * value_in(v, index));
@@ -279,7 +279,7 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
             for j in 1..=INTERIOR_SAMPLES {
                 let sample = match j == middle {
                     true => centre,
-                    false => sampled(model, &interpolate(start, end, at(j)), watch)?,
+                    false => values(model, &interpolate(start, end, at(j)), watch)?,
                 };
                 for index in indices.clone().filter(|&i| sampled_kind(i)) {
                     let value = value_in(&sample, index);
@@ -338,29 +338,6 @@ fn may_cross(a: f64, m: f64, b: f64) -> bool {
     let vertex = -slope / (2.0 * curvature);
     let lowest = a + slope * vertex + curvature * vertex * vertex;
     curvature > 0.0 && vertex > 0.0 && vertex < 1.0 && lowest < 0.5 * a.min(b)
-}
-
-/// The event functions and the open gaps' distances above their levels at an interpolated
-/// point (closed contacts are left at zero: their multipliers need a consistent point).
-fn sampled<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    model: &mut Model<'_, S, N, Z>,
-    point: &Point<N, Z>,
-    watch: &Watch,
-) -> Result<Values, StepError> {
-    let events = if S::EVENTS > 0 {
-        model.events(&point.q, &point.v, point.t)?
-    } else {
-        [0.0; MAX_EVENTS]
-    };
-    let mut gaps = [0.0; MAX_GAPS];
-    let open = model.open_gaps();
-    if !open.is_empty() {
-        let distances = model.gaps(&point.q, &point.v, point.t)?;
-        for k in open.iter() {
-            gaps[k] = distances[k] - watch.level(k);
-        }
-    }
-    Ok(Values { events, gaps })
 }
 
 /// The zero of `watched` on the interpolant between `start` and `end`, bracketed by `start` (on
