@@ -6,7 +6,7 @@
 mod common;
 
 use common::andrews::{published_end, Andrews};
-use zeitner::{Options, Simulator, StepControl, Vector};
+use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
 
 /// Component-wise relative error, the largest over the components.
 fn worst_relative(x: &[f64], reference: &[f64]) -> f64 {
@@ -96,4 +96,38 @@ fn matches_the_published_solution_at_t_003() {
     assert!(eq < 1e-9, "q: {eq:e}");
     assert!(ev < 1e-7, "q': {ev:e}");
     assert!(el < 1e-5, "λ: {el:e}");
+}
+
+/// Issue #31: at rtol 1.6e-10, atol 2.6e-14 with quadratic multipliers and the default
+/// `constraint_tolerance` (1e-10), the residuals each step left were many times what the step's
+/// error test allows; the next step's removal of them was rejected, down to `min_step` at
+/// t = 1.1e-4 (`StepSizeTooSmall`). Newton now holds `g` to what the tolerances allow.
+#[test]
+fn tight_tolerances_with_the_default_constraint_tolerance_reach_the_end() {
+    let scene = Andrews::published();
+    let options = Options {
+        multipliers: MultiplierModel::Quadratic,
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: f64::INFINITY,
+            rtol: 1.6472185783136928e-10,
+            atol: 2.5864817078419814e-14,
+        },
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(
+        &scene,
+        Vector::from(Andrews::Q0),
+        Vector::zeros(),
+        0.0,
+        options,
+    )
+    .unwrap();
+    sim.advance_to(0.03, |_| {}).unwrap();
+    let end = sim.last().end;
+    let published = published_end();
+    // 1.4e-9 measured, nine times the rtol.
+    let eq = worst_relative(end.q.as_slice(), &published.q);
+    assert!(eq < 100.0 * 1.6472185783136928e-10, "q: {eq:e}");
 }

@@ -351,3 +351,46 @@ fn a_diverging_newton_does_not_call_a_regular_mechanism_singular() {
     eprintln!("slider-crank to {t_end}: |Δq| {error:.2e}");
     assert!(error < 1e-4 * scene.r, "{error:e}");
 }
+
+/// Accuracy fuzz seed 8361: a pendulum stopped at 2.2371977674619 s, re-initialised there and
+/// its tolerances tightened tenfold, then stopped again 16 ulps later. Newton's tolerance
+/// follows the step's error tolerance (issue #31, `control::newton_tolerance`); the state,
+/// which met the looser one, could not be brought within the tighter one over a step of
+/// 4e-15 s, and the run failed with `StepSizeTooSmall` — until a short step was judged by how
+/// far its end misses where it aims `g`, most of the way back to the start's value.
+#[test]
+fn tighter_tolerances_then_a_stop_a_few_ulps_later() {
+    let scene = Pendulum {
+        m: 0.22603382885956272,
+        length: 0.5609652175330897,
+        g: 15.653168192651346,
+    };
+    let adaptive = |rtol: f64, atol: f64| Options {
+        multipliers: MultiplierModel::Constant,
+        step: StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: f64::INFINITY,
+            rtol,
+            atol,
+        },
+        ..Options::default()
+    };
+    let loose = adaptive(2.2085540394605744e-9, 1.1592264999455646e-10);
+    let q0 = Vector::<2>::new(scene.length, 0.0);
+    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, loose).unwrap();
+    let first = 2.237197767461887;
+    sim.advance_to(first, |_| {}).unwrap();
+    let end = sim.last().end;
+    sim.reinitialise(end.q, end.v, end.t).unwrap();
+    sim.set_options(adaptive(2.2085540394605744e-10, 1.1592264999455646e-11))
+        .unwrap();
+    let second = f64::from_bits(first.to_bits() + 16);
+    sim.advance_to(second, |_| {}).unwrap();
+    sim.advance_to(2.918766380236746, |_| {}).unwrap();
+    let energy =
+        |q: &Vector<2>, v: &Vector<2>| 0.5 * scene.m * v.norm_squared() + scene.m * scene.g * q[1];
+    let end = sim.last().end;
+    let drift = energy(&end.q, &end.v).abs() / (scene.m * scene.g * scene.length);
+    assert!(drift < 1e-8, "{drift:e}");
+}

@@ -281,6 +281,60 @@ pub(crate) fn next_step_size(
     (base * factor).clamp(min_step, max_step)
 }
 
+/// The share of a step's error tolerance that the constraint residuals a step leaves may take.
+const RESIDUAL_SHARE: f64 = 0.1;
+
+/// The finest position (or velocity) a residual is asked to stand for, in ulps of the largest
+/// coordinate.
+const RESOLUTION_ULPS: f64 = 64.0;
+
+/// The tolerance Newton holds `g` to: `constraint_tolerance`, or less where the positions (or,
+/// for velocity rows, the velocities) that a residual of that size stands for,
+/// `|g_j| / |∂g_j/∂x|`, would exceed [`RESIDUAL_SHARE`] of the RMS of the step's error scales
+/// `atol + rtol |x_i|`. What a step leaves, the next one removes, and its error estimate sees
+/// the removal: with the default `ε = 1e-10` and `atol = 2.6e-14`, Andrews' mechanism with
+/// quadratic multipliers rejected its steps down to `min_step` at t = 1.1e-4 (issue #31).
+/// Never below what [`RESOLUTION_ULPS`] of the largest coordinate stand for: no step can hold
+/// a residual finer than the state's rounding (at rtol 1e-16, atol 1e-300 a fuzz case spent a
+/// thousand integrations on every try of a step). `row_scale` holds `|∂g_j/∂x|` at the start;
+/// fixed steps keep `constraint_tolerance`.
+pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
+    options: &Options,
+    (q, v): (&Vector<N>, &Vector<N>),
+    row_scale: &Vector<Z>,
+    position_rows: usize,
+) -> f64 {
+    let epsilon = options.constraint_tolerance;
+    let StepControl::Adaptive { rtol, atol, .. } = options.step else {
+        return epsilon;
+    };
+    let rms = |x: &Vector<N>| {
+        let sum: f64 = x
+            .iter()
+            .map(|x| {
+                let scale = atol + rtol * x.abs();
+                scale * scale
+            })
+            .sum();
+        libm::sqrt(sum / N.max(1) as f64)
+    };
+    let resolution = |x: &Vector<N>| RESOLUTION_ULPS * f64::EPSILON * x.amax();
+    let position_scale = (RESIDUAL_SHARE * rms(q)).max(resolution(q));
+    let velocity_scale = (RESIDUAL_SHARE * rms(v)).max(resolution(v));
+    let allowed = row_scale.iter().enumerate().map(|(j, &reach)| {
+        let scale = if j < position_rows {
+            position_scale
+        } else {
+            velocity_scale
+        };
+        reach * scale
+    });
+    // Rows whose gradient vanished at the start (an open gap far away) bound nothing.
+    allowed
+        .filter(|allowed| *allowed > 0.0)
+        .fold(epsilon, f64::min)
+}
+
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
 /// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
 /// estimate, infinite when the estimate is not finite (so that the step is rejected).
@@ -362,6 +416,45 @@ mod tests {
         slow_newton_iterations: 5,
         landing_fraction: 1e-6,
     };
+
+    #[test]
+    fn newton_holds_the_constraints_to_what_the_step_tolerance_allows() {
+        let adaptive = |rtol, atol| Options {
+            step: StepControl::Adaptive {
+                initial_step: 1e-3,
+                min_step: 0.0,
+                max_step: 1.0,
+                rtol,
+                atol,
+            },
+            ..Options::default()
+        };
+        let (q, v) = (Vector::<2>::new(3.0, 4.0), Vector::<2>::new(0.0, 0.0));
+        // One position row with |∂g/∂q| = 2, one velocity row with |∂g/∂q'| = 1.
+        let rows = Vector::<2>::new(2.0, 1.0);
+        // Loose tolerances: ε as given.
+        let loose = adaptive(1e-6, 1e-6);
+        assert_eq!(newton_tolerance(&loose, (&q, &v), &rows, 1), 1e-10);
+        // Tight ones: a tenth of the RMS scale, in each row's units; the velocity row (scale
+        // atol, since q' = 0) binds: 0.1 · 1 · 1e-14.
+        let tight = adaptive(1e-12, 1e-14);
+        let expected = 0.1 * 1e-14;
+        assert!((newton_tolerance(&tight, (&q, &v), &rows, 1) - expected).abs() < 1e-30);
+        // Both rows position rows: RMS of 1e-14 + 1e-12·(3, 4) is 3.55e-12; times 0.1 and the
+        // smaller |∂g/∂q|, 1.
+        let position = newton_tolerance(&tight, (&q, &v), &rows, 2);
+        let rms = libm::sqrt(((1e-14 + 3e-12f64).powi(2) + (1e-14 + 4e-12f64).powi(2)) / 2.0);
+        assert!((position - 0.1 * rms).abs() < 1e-25, "{position:e}");
+        // Fixed steps, and rows whose gradient vanished, keep ε.
+        let fixed = Options::paper(1e-3);
+        assert_eq!(newton_tolerance(&fixed, (&q, &v), &rows, 1), 1e-10);
+        let vanished = Vector::<2>::new(0.0, 0.0);
+        assert_eq!(newton_tolerance(&tight, (&q, &v), &vanished, 1), 1e-10);
+        // Not below the state's rounding: 64 ulps of |q|∞ = 4, times the smaller |∂g/∂q|, 1.
+        let hostile = adaptive(1e-16, 1e-300);
+        let floor = newton_tolerance(&hostile, (&q, &v), &rows, 2);
+        assert_eq!(floor, 64.0 * f64::EPSILON * 4.0);
+    }
 
     #[test]
     fn the_defaults_are_valid_and_documented_values() {

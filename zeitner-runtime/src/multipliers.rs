@@ -195,9 +195,14 @@ impl<const Z: usize> Predictor<Z> {
 /// What the Newton needs from the options.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct NewtonSettings {
-    /// `ε` for `g`; the velocity-level end condition uses `ε / min(τ, 1)`, or `ε` itself with
+    /// How far `g` may end from where Newton aims it (see `control::newton_tolerance`); the
+    /// velocity-level end condition uses that over `min(τ, 1)`, or itself with
     /// `steady_velocity_tolerance`.
     pub tolerance: f64,
+    /// `constraint_tolerance`, the bound on `|g|` itself that every report keeps. A short step
+    /// aims `g` at most of its start value, which met this bound but may exceed `tolerance`
+    /// (tightened since by `set_options`, or by smaller positions).
+    pub ceiling: f64,
     /// Whether the velocity-level tolerance must not grow as steps shrink: with an embedded
     /// solution of order below 3 (ESDIRK 3(2)), and with the stiff methods. What `w` is left at
     /// a step end, the next step's multipliers undo within that step, as a polynomial whose
@@ -263,16 +268,19 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
         max_abs(&self.values[0])
     }
 
-    fn hold(&self, settings: &NewtonSettings, h: f64) -> bool {
-        let velocity_tolerance = if settings.steady_velocity_tolerance {
-            settings.tolerance
+    /// Whether the conditions end within the tolerances of `targets`, and `g` within the
+    /// ceiling.
+    fn hold(&self, settings: &NewtonSettings, h: f64, targets: &[Vector<Z>; K]) -> bool {
+        let stretch = if settings.steady_velocity_tolerance {
+            1.0
         } else {
-            settings.tolerance / h.min(1.0)
+            1.0 / h.min(1.0)
         };
-        self.worst().0 <= settings.tolerance
-            && self.values[1..]
-                .iter()
-                .all(|w| max_abs(w).0 <= velocity_tolerance)
+        let near =
+            |k: usize, tolerance: f64| max_abs(&(self.values[k] - targets[k])).0 <= tolerance;
+        self.worst().0 <= settings.ceiling
+            && near(0, settings.tolerance)
+            && (1..K).all(|k| near(k, settings.tolerance * stretch))
     }
 }
 
@@ -352,7 +360,7 @@ where
         let lambda_end = multipliers.at(1.0);
         let conditions = Conditions::<Z, K>::at(model, (&end.q, &end.v, t_end), &lambda_end)?;
         worst = conditions.worst();
-        if conditions.hold(settings, h) {
+        if conditions.hold(settings, h, targets) {
             return Ok(converged(end, multipliers, iteration));
         }
         let sensitivities = paper.unwrap_or((end.dq_dc, end.dv_dc));
@@ -436,7 +444,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
                 break;
             }
             conditions = Conditions::<Z, K>::at(model, (&q, &v, t_end), &multipliers.at(1.0))?;
-            if conditions.hold(settings, t_end - start.t) {
+            if conditions.hold(settings, t_end - start.t, targets) {
                 let updated = StepEnd { q, v, ..*self.end };
                 return Ok(Correction::Accepted(updated));
             }
@@ -721,6 +729,7 @@ mod tests {
         let settings = NewtonSettings {
             steady_velocity_tolerance: false,
             tolerance: 1e-12,
+            ceiling: 1e-12,
             max_iterations: 30,
             exact,
             accept_linearised: false,

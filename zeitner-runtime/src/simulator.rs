@@ -6,7 +6,8 @@
 use crate::consistency::{consistent_point, consistent_start, end_point, Gram, StartReport};
 use crate::contact::{self, GapSet, Impact};
 use crate::control::{
-    bounds, error_norm, freezing_error, next_step_size, plan_step, retry_step, Controller, Progress,
+    bounds, error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step,
+    Controller, Progress,
 };
 use crate::error::{InvalidOption, RowSet, StepError};
 use crate::events::{self, Crossing, Direction, Values, Watch};
@@ -855,7 +856,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let settings = NewtonSettings {
             steady_velocity_tolerance: embedded_order.is_some_and(|order| order < 3)
                 || self.options.method.is_stiff(),
-            tolerance: self.options.constraint_tolerance,
+            tolerance: newton_tolerance(
+                &self.options,
+                (&self.q, &self.v),
+                &self.jacobian_row_scale,
+                S::POSITION_CONSTRAINTS,
+            ),
+            ceiling: self.options.constraint_tolerance,
             max_iterations: self.options.max_newton_iterations,
             exact: self.options.exact(),
             accept_linearised: self.options.accept_linearised_update,
