@@ -12,18 +12,10 @@ mod scenes;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use clap::{Parser, ValueEnum};
+use clap::Parser;
 use figure::{write_panels, Panel};
 use scenes::knife_edge::KnifeEdge;
 use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
-
-#[derive(Clone, Copy, Debug, ValueEnum)]
-enum Lambda {
-    /// Held constant over each step (order 2 on velocity-level rows).
-    Constant,
-    /// Quadratic over each step (order 4 on velocity-level rows; the default for them).
-    Quadratic,
-}
 
 #[derive(Parser)]
 struct Args {
@@ -33,9 +25,6 @@ struct Args {
     /// Turning rate ω [rad/s].
     #[arg(long, default_value_t = 2.0)]
     omega: f64,
-    /// Multipliers over a step.
-    #[arg(long, value_enum, default_value_t = Lambda::Quadratic)]
-    multipliers: Lambda,
     /// Relative tolerance of the adaptive steps.
     #[arg(long, default_value_t = 1e-9)]
     rtol: f64,
@@ -51,11 +40,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args = Args::parse();
     let scene = KnifeEdge::PAPER;
     let exact = |t: f64| scene.exact(args.omega, t);
+    // Quadratic multipliers, `Automatic`'s choice for a velocity-level row: constant ones hold
+    // it to order 2 only, and are refused with adaptive steps.
     let options = Options {
-        multipliers: match args.multipliers {
-            Lambda::Constant => MultiplierModel::Constant,
-            Lambda::Quadratic => MultiplierModel::Quadratic,
-        },
+        multipliers: MultiplierModel::Automatic,
         step: StepControl::Adaptive {
             initial_step: 1e-3,
             min_step: 1e-12,

@@ -1086,6 +1086,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     settings,
                 });
             }
+            // Constant multipliers with adaptive steps are refused on velocity-level rows, which
+            // only the knife edge has (issue #31).
+            let velocity_rows = scene.name == "knife_edge";
+            let refused = move |o: &Options| {
+                velocity_rows
+                    && o.multipliers == MultiplierModel::Constant
+                    && matches!(o.step, StepControl::Adaptive { .. })
+            };
             methods
                 .into_iter()
                 .filter(|m| !scene.large || large_scenes::METHODS.contains(&m.name))
@@ -1096,6 +1104,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .flat_map(move |m| {
                     m.settings
                         .into_iter()
+                        .filter(move |(_, o)| !refused(o))
                         .map(move |(s, o)| (k, m.name.to_string(), s, o))
                 })
                 .collect::<Vec<_>>()

@@ -181,6 +181,9 @@ pub enum InvalidOption {
     SpectralRadius,
     /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`.
     MultipliersForMethod,
+    /// Constant multipliers with adaptive steps on a system with velocity-level rows: the step
+    /// control cannot hold them to the tolerance.
+    ConstantMultipliersOnVelocityRows,
 }
 
 impl fmt::Display for InvalidOption {
@@ -243,6 +246,9 @@ impl fmt::Display for InvalidOption {
                 "generalised-α evaluates the multipliers only at the step's ends, where the two \
                  coefficients of `MultiplierModel::Quadratic` act alike: use `Constant` or \
                  `Automatic` with it, or another inner method with quadratic multipliers",
+            ),
+            InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(
+                "constant multipliers hold velocity-level rows to order 2 only, through an error                  the adaptive step control does not see (a knife edge ended 300 times its                  tolerance off at rtol 1e-6 and 25 000 times at 1e-12): use                  `MultiplierModel::Automatic` or `Quadratic` with adaptive steps, or fixed steps",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,

@@ -129,7 +129,9 @@ pub enum MultiplierModel {
     /// `GeneralizedAlpha` (which sees the multipliers only at the step's ends); `Constant`
     /// without the `quadratic-multipliers` feature. The default.
     Automatic,
-    /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end.
+    /// Held constant at `p` (Zeitner's method); Newton enforces `g = 0` at the step end. Refused
+    /// with adaptive steps on a system with velocity-level rows, which it holds to order 2
+    /// through an error the step control does not see.
     Constant,
     /// Quadratic in time from the consistent `λ(t₁)`; Newton on both coefficients enforces each
     /// row and its time derivative at the step end (`g`, `ġ`): order 5 with Dormand–Prince on
