@@ -6,8 +6,7 @@
 
 #[path = "support/figure.rs"]
 mod figure;
-#[path = "scenes/mod.rs"]
-mod scenes;
+use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;

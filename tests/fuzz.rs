@@ -3,8 +3,7 @@
 //! may panic, hang or break a promise of the runtime. A failing seed replays with
 //! `cargo run --release -p zeitner-bench -- fuzz --seed S --runs 1 --trace`.
 
-#[path = "../examples/scenes/mod.rs"]
-mod scenes;
+use zeitner_scenes as scenes;
 
 #[allow(dead_code)]
 #[path = "../zeitner-bench/src/fuzz/mod.rs"]

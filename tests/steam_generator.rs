@@ -1,5 +1,5 @@
 //! The paper's steam generator against an independent reduced-coordinate solution
-//! (derived in `examples/scenes/reference.rs`).
+//! (derived in `zeitner-scenes/src/reference.rs`).
 
 mod common;
 

@@ -1,9 +1,7 @@
 //! Scenes shared with the examples, and small reference integrators.
 #![allow(dead_code, unused_imports)]
 
-#[path = "../../examples/scenes/mod.rs"]
-mod scenes;
-pub use scenes::*;
+pub use zeitner_scenes::*;
 
 /// `max |x - reference| / max |reference|`.
 pub fn relative_error(x: &[f64], reference: &[f64]) -> f64 {

@@ -1,5 +1,5 @@
 """Andrews' squeezing mechanism's parameters and start (E. Hairer, G. Wanner, the test set's
-values; examples/scenes/andrews.rs), shared by the peer scripts."""
+values; zeitner-scenes/src/andrews.rs), shared by the peer scripts."""
 
 M = (0.04325, 0.00365, 0.02373, 0.00706, 0.07050, 0.00706, 0.05498)
 I = (2.194e-6, 4.410e-7, 5.255e-6, 5.667e-7, 1.169e-5, 5.667e-7, 1.912e-5)

@@ -172,7 +172,7 @@ def knife_edge(mbs):
 
 
 class AndrewsModel:
-    """Andrews' squeezing mechanism as in examples/scenes/andrews.rs (the test set's parameters):
+    """Andrews' squeezing mechanism as in zeitner-scenes/src/andrews.rs (the test set's parameters):
     q = (beta, Theta, gamma, Phi, delta, Omega, epsilon), its mass matrix M(q), force f(q, q'),
     the 6 loop-closure rows g(q) and their Jacobian G = dg/dq."""
     m1, m2, m3, m4, m5, m6, m7 = A.M

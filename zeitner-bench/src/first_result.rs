@@ -19,7 +19,7 @@ pub struct SceneCrate {
 
 /// Where a scene's model is written.
 pub enum Source {
-    /// A file of `examples/scenes/`, a module of the crate; the dense `Simulator` runs it.
+    /// A file of `zeitner-scenes/src/`, a module of the crate; the dense `Simulator` runs it.
     Example(&'static str),
     /// One invocation of the scaling families' macros (`zeitner-bench/src/scaling/families.rs`);
     /// `SparseSimulator` runs it, as the work-precision run does.
@@ -126,7 +126,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
                  pub mod reference {{\n        pub struct State<const N: usize, const Z: usize> {{\n            \
                  pub q: [f64; N],\n            pub v: [f64; N],\n            pub lambda: [f64; Z],\n        \
                  }}\n    }}\n}}\n\nuse zeitner::{{Options, Simulator, Vector}};\n",
-                path = root.join("examples/scenes").join(format!("{file}.rs")),
+                path = root.join("zeitner-scenes/src").join(format!("{file}.rs")),
             ),
             "Simulator",
         ),

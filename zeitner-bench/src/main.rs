@@ -22,9 +22,9 @@ mod measure;
 mod peer_gaps;
 mod peers;
 mod scaling;
-#[path = "../../examples/scenes/mod.rs"]
-mod scenes;
 mod stability;
+
+use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;

@@ -1,4 +1,4 @@
-//! Expansion snapshots: every example scene in `examples/scenes/*.rs` is expanded and compared
+//! Expansion snapshots: every example scene in `zeitner-scenes/src/*.rs` is expanded and compared
 //! with the checked-in `tests/expand/<scene>.expanded.rs`, so a change to code generation
 //! shows in review.
 //! `ZEITNER_BLESS=1 cargo test -p zeitner-macros` rewrites them.
@@ -42,13 +42,13 @@ fn expand_file(source: &str) -> String {
 #[test]
 fn expansions_match_snapshots() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    let scenes = root.join("examples/scenes");
+    let scenes = root.join("zeitner-scenes/src");
     let expand = root.join("tests/expand");
     let bless = std::env::var_os("ZEITNER_BLESS").is_some();
     let mut checked = 0;
     let mut mismatched = Vec::new();
     let mut entries: Vec<_> = std::fs::read_dir(&scenes)
-        .expect("examples/scenes exists")
+        .expect("zeitner-scenes/src exists")
         .flatten()
         .collect();
     entries.sort_by_key(|e| e.path());
@@ -115,7 +115,7 @@ fn chain_scene(n: usize) -> String {
 #[test]
 #[ignore = "a measurement, not a check"]
 fn operation_counts_report() {
-    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes");
+    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../zeitner-scenes/src");
     let mut paths: Vec<_> = std::fs::read_dir(&scenes)
         .unwrap()
         .flatten()
@@ -162,7 +162,7 @@ fn operation_counts_report() {
 #[ignore = "a measurement, not a check"]
 fn scaling_report() {
     let andrews = std::fs::read_to_string(
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/andrews.rs"),
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../zeitner-scenes/src/andrews.rs"),
     )
     .unwrap();
     let mut scenes = vec![(
@@ -253,10 +253,10 @@ fn expansion_timing() {
     }
 }
 
-/// `PinnedLadder8` of `examples/scenes/ladder.rs` with `bays` bays.
+/// `PinnedLadder8` of `zeitner-scenes/src/ladder.rs` with `bays` bays.
 fn ladder_scene(bays: usize) -> String {
     let source = std::fs::read_to_string(
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/ladder.rs"),
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../zeitner-scenes/src/ladder.rs"),
     )
     .unwrap();
     let start = source.find("pub struct PinnedLadder8").unwrap();

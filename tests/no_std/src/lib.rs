@@ -2,7 +2,7 @@
 //! `thumbv7em-none-eabihf` in CI; `size.sh` measures its code size.
 #![no_std]
 
-#[path = "../../../examples/scenes/steam_generator.rs"]
+#[path = "../../../zeitner-scenes/src/steam_generator.rs"]
 mod scene;
 
 use scene::SteamGenerator;

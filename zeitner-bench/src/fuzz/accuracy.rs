@@ -2,7 +2,7 @@
 //! silent wrong answers — `Ok` results whose error exceeds a multiple of `rtol`.
 //!
 //! References: the pendulum released horizontally and the steam generator against their
-//! reduced-coordinate solutions (`examples/scenes/reference.rs`, RK4 at 2e-5 s and 1e-5 s); the
+//! reduced-coordinate solutions (`zeitner-scenes/src/reference.rs`, RK4 at 2e-5 s and 1e-5 s); the
 //! double pendulum against its angle equations integrated here by RK4 at 1e-5 s; Andrews'
 //! mechanism against the published values at 0.03 s (reliable to 1e-9 in q, 1e-7 in q', 1e-5 in
 //! λ, relative).

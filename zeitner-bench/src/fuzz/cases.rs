@@ -80,7 +80,7 @@ pub enum SceneKind {
     TwoLinkArm,
     Sleigh,
     FollowerPendulum,
-    /// The contact scenes (`examples/scenes/contact.rs`): gaps, restitution, an event function.
+    /// The contact scenes (`zeitner-scenes/src/contact.rs`): gaps, restitution, an event function.
     Ball,
     WallPendulum,
     FallingBar,

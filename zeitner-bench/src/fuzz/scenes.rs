@@ -1,6 +1,6 @@
-//! Scenes the fuzzer adds to `examples/scenes`: a configuration-dependent full mass matrix
+//! Scenes the fuzzer adds to `zeitner-scenes`: a configuration-dependent full mass matrix
 //! (a two-link arm in joint angles) and velocity-level constraints (a knife-edge sleigh on a slope,
-//! and a pendulum with a follower). Kept here rather than in `examples/scenes`, whose every file has an
+//! and a pendulum with a follower). Kept here rather than in `zeitner-scenes`, whose every file has an
 //! expansion snapshot.
 
 use zeitner::constrained_system;

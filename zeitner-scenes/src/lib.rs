@@ -1,6 +1,6 @@
 //! The example scenes, written with `#[constrained_system]` as a user would, and their
-//! independent references. Shared by the examples, the tests and the benchmark.
-#![allow(dead_code)]
+//! independent references. Shared by the examples, the tests and the benchmark, which compile
+//! them once as this crate.
 
 pub mod andrews;
 pub mod chain;
