@@ -2,7 +2,7 @@
 
 use nalgebra::Cholesky;
 
-use crate::system::{Matrix, Vector};
+use crate::dense::{Matrix, Vector};
 
 /// Storage of `M`, as the generated code returns it.
 pub trait MassMatrix<const N: usize>: Copy {
