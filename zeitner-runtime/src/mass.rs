@@ -2,7 +2,7 @@
 
 use nalgebra::Cholesky;
 
-use crate::dense::{Matrix, Vector};
+use crate::system::{Matrix, Vector};
 
 /// Storage of `M`, as the generated code returns it.
 pub trait MassMatrix<const N: usize>: Copy {
