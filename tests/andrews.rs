@@ -6,7 +6,7 @@
 mod common;
 
 use common::andrews::{published_end, Andrews};
-use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
+use zeitner::{MultiplierModel, Options, Point, Simulator, Statistics, StepControl, Vector};
 
 /// Component-wise relative error, the largest over the components.
 fn worst_relative(x: &[f64], reference: &[f64]) -> f64 {
@@ -58,9 +58,18 @@ fn the_consistent_start_reproduces_the_published_initial_multipliers_and_acceler
     );
 }
 
+/// The published scene run from its start to t = 0.03 with `options`: the end point and the
+/// statistics.
+fn end_at_the_published_time(options: Options) -> (Point<7, 6>, Statistics) {
+    let scene = Andrews::published();
+    let start = Vector::from(Andrews::Q0);
+    let mut sim = Simulator::new(&scene, start, Vector::zeros(), 0.0, options).unwrap();
+    sim.advance_to(0.03, |_| {}).unwrap();
+    (sim.last().end, sim.statistics())
+}
+
 #[test]
 fn matches_the_published_solution_at_t_003() {
-    let scene = Andrews::published();
     let options = Options {
         step: StepControl::Adaptive {
             initial_step: 1e-6,
@@ -73,16 +82,7 @@ fn matches_the_published_solution_at_t_003() {
         max_newton_iterations: 20,
         ..Options::default()
     };
-    let mut sim = Simulator::new(
-        &scene,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
-        options,
-    )
-    .unwrap();
-    sim.advance_to(0.03, |_| {}).unwrap();
-    let end = sim.last().end;
+    let (end, statistics) = end_at_the_published_time(options);
     let published = published_end();
     let (eq, ev, el) = (
         worst_relative(end.q.as_slice(), &published.q),
@@ -90,8 +90,7 @@ fn matches_the_published_solution_at_t_003() {
         worst_relative(end.lambda.as_slice(), &published.lambda),
     );
     eprintln!(
-        "andrews at t = 0.03: relative errors q {eq:.2e}, q' {ev:.2e}, λ {el:.2e}; {:?}",
-        sim.statistics()
+        "andrews at t = 0.03: relative errors q {eq:.2e}, q' {ev:.2e}, λ {el:.2e}; {statistics:?}"
     );
     assert!(eq < 1e-9, "q: {eq:e}");
     assert!(ev < 1e-7, "q': {ev:e}");
@@ -104,7 +103,6 @@ fn matches_the_published_solution_at_t_003() {
 /// t = 1.1e-4 (`StepSizeTooSmall`). Newton now holds `g` to what the tolerances allow.
 #[test]
 fn tight_tolerances_with_the_default_constraint_tolerance_reach_the_end() {
-    let scene = Andrews::published();
     let options = Options {
         multipliers: MultiplierModel::Quadratic,
         step: StepControl::Adaptive {
@@ -116,16 +114,7 @@ fn tight_tolerances_with_the_default_constraint_tolerance_reach_the_end() {
         },
         ..Options::default()
     };
-    let mut sim = Simulator::new(
-        &scene,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
-        options,
-    )
-    .unwrap();
-    sim.advance_to(0.03, |_| {}).unwrap();
-    let end = sim.last().end;
+    let (end, _) = end_at_the_published_time(options);
     let published = published_end();
     // 1.4e-9 measured, nine times the rtol.
     let eq = worst_relative(end.q.as_slice(), &published.q);

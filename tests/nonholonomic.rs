@@ -283,7 +283,15 @@ fn constant_multipliers_with_adaptive_steps_are_refused_on_a_velocity_row() {
         InvalidOption::ConstantMultipliersOnVelocityRows,
     ));
     let constant = adaptive(1e-8, MultiplierModel::Constant);
-    assert_eq!(Simulator::new(&scene, q, v, 0.0, constant).err(), refused);
+    let error = Simulator::new(&scene, q, v, 0.0, constant).err();
+    assert_eq!(error, refused);
+    // One sentence that names what to use instead.
+    let message = error.unwrap().to_string();
+    assert!(
+        message.contains("`MultiplierModel::Automatic`"),
+        "{message}"
+    );
+    assert!(!message.contains("  "), "{message}");
     let mut sim = Simulator::new(
         &scene,
         q,

@@ -248,7 +248,10 @@ impl fmt::Display for InvalidOption {
                  `Automatic` with it, or another inner method with quadratic multipliers",
             ),
             InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(
-                "constant multipliers hold velocity-level rows to order 2 only, through an error                  the adaptive step control does not see (a knife edge ended 300 times its                  tolerance off at rtol 1e-6 and 25 000 times at 1e-12): use                  `MultiplierModel::Automatic` or `Quadratic` with adaptive steps, or fixed steps",
+                "constant multipliers hold velocity-level rows to order 2 only, through an error \
+                 the adaptive step control does not see (a knife edge ended 300 times its \
+                 tolerance off at rtol 1e-6 and 25 000 times at 1e-12): use \
+                 `MultiplierModel::Automatic` or `Quadratic` with adaptive steps, or fixed steps",
             ),
             InvalidOption::NotForSparseSimulator(what) => write!(
                 f,
