@@ -930,9 +930,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // only the embedded solution, see `consistency::tangential`.
         let projected = K > 1 && adaptive && self.embedded_order().is_some_and(|k| k < 3);
         let estimate = match end.error {
-            Some(estimate) if projected => {
-                Some(tangential(&mut self.model, (&end.q, &point.v, t_end), estimate)?)
-            }
+            Some(estimate) if projected => Some(tangential(
+                &mut self.model,
+                (&end.q, &point.v, t_end),
+                estimate,
+            )?),
             other => other,
         };
         let error = error_norm(
