@@ -26,82 +26,6 @@ pub enum Source {
     Family(&'static str),
 }
 
-pub const SCENES: [SceneCrate; 10] = [
-    SceneCrate {
-        scene: "pendulum",
-        source: Source::Example("pendulum"),
-        construct: "scenes::pendulum::Pendulum { m: 1.0, length: 1.0, g: 9.81 }",
-        start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
-        t_end: 10.0,
-    },
-    SceneCrate {
-        scene: "steam_generator",
-        source: Source::Example("steam_generator"),
-        construct: "scenes::steam_generator::SteamGenerator::paper()",
-        start: "(Vector::<3>::zeros(), Vector::zeros())",
-        t_end: 2.0,
-    },
-    SceneCrate {
-        // The file holds two more contact scenes, which this crate compiles too.
-        scene: "wall_pendulum",
-        source: Source::Example("contact"),
-        construct: "scenes::contact::WallPendulum { m: 1.0, length: 1.0, g: 9.81, e: 1.0, \
-                    height: -2.0 }",
-        start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
-        t_end: 10.0,
-    },
-    SceneCrate {
-        scene: "andrews",
-        source: Source::Example("andrews"),
-        construct: "scenes::andrews::Andrews::published()",
-        start: "(Vector::from(scenes::andrews::Andrews::Q0), Vector::zeros())",
-        t_end: 0.03,
-    },
-    SceneCrate {
-        scene: "knife_edge",
-        source: Source::Example("knife_edge"),
-        construct: "scenes::knife_edge::KnifeEdge::PAPER",
-        start: "(Vector::<3>::zeros(), Vector::<3>::new(0.0, 0.0, 2.0))",
-        t_end: 2.0,
-    },
-    SceneCrate {
-        scene: "spring_support",
-        source: Source::Example("spring_support"),
-        construct: "scenes::spring_support::SpringSupportedPendulum::STIFF",
-        start: "{ let s = scenes::spring_support::SpringSupportedPendulum::STIFF; \
-                (Vector::from(s.start()), Vector::zeros()) }",
-        t_end: 1.0,
-    },
-    SceneCrate {
-        scene: "chain_64",
-        source: Source::Family("chain!(Chain32, 32);"),
-        construct: "Chain32::standard()",
-        start: "(horizontal_chain::<64>(), Vector::zeros())",
-        t_end: 1.0,
-    },
-    SceneCrate {
-        scene: "chain_256",
-        source: Source::Family("chain!(Chain128, 128);"),
-        construct: "Chain128::standard()",
-        start: "(horizontal_chain::<256>(), Vector::zeros())",
-        t_end: 1.0,
-    },
-    SceneCrate {
-        scene: "ladder_64",
-        source: Source::Family("ladder!(Ladder16, 16);"),
-        construct: "Ladder16::standard()",
-        start: "(sagging_ladder::<64>(), Vector::zeros())",
-        t_end: 1.0,
-    },
-    SceneCrate {
-        scene: "ladder_256",
-        source: Source::Family("ladder!(Ladder64, 64);"),
-        construct: "Ladder64::standard()",
-        start: "(sagging_ladder::<256>(), Vector::zeros())",
-        t_end: 1.0,
-    },
-];
-
 /// Zeitner's time to the first result of one scene: `(rebuild seconds, run seconds)`, wall
 /// time; `Err` says what failed.
 pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
@@ -189,7 +113,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
 /// The Markdown table of the first results: Zeitner's rebuild and run of each scene, and the
 /// setup each peer reported. The in-process Rust peers share the bench's build and need no
 /// setup of their own beyond constructing a solver (microseconds), so they have no column.
-pub fn markdown(scenes: &[&str], peer_setups: &[(&str, &str, f64)], work: &Path) -> String {
+pub fn markdown(scenes: &[&SceneCrate], peer_setups: &[(&str, &str, f64)], work: &Path) -> String {
     use std::fmt::Write as _;
     let mut peers: Vec<&str> = peer_setups.iter().map(|(_, peer, _)| *peer).collect();
     peers.sort_unstable();
@@ -211,10 +135,8 @@ pub fn markdown(scenes: &[&str], peer_setups: &[(&str, &str, f64)], work: &Path)
         let _ = write!(out, " `{p}` setup |");
     });
     let _ = writeln!(out, "\n|---|---|---|{}", "---|".repeat(peers.len()));
-    for &name in scenes {
-        let Some(scene) = SCENES.iter().find(|s| s.scene == name) else {
-            continue;
-        };
+    for &scene in scenes {
+        let name = scene.scene;
         let (rebuild, run) = match zeitner(scene, work) {
             Ok((rebuild, run)) => (format!("{rebuild:.2} s"), format!("{run:.3} s")),
             Err(failure) => {

@@ -272,6 +272,9 @@ struct Tally {
     errors: BTreeMap<String, u64>,
     /// Accuracy: (scene, error / tolerance of q, q', λ, seed, rtol) of every Ok run.
     ratios: Vec<(String, [f64; 3], u64, f64)>,
+    /// Cases over the timeout that finished alone and whose options ask for that work (over
+    /// 100 RK4 substeps or Newton integrations per step): not failures, listed.
+    costly: Vec<(u64, String)>,
 }
 
 impl Tally {
@@ -487,6 +490,15 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
             out.push_str(&format!("  {class}: {}\n", list.len()));
         }
     }
+    if !tally.costly.is_empty() {
+        out.push_str(&format!(
+            "  over the timeout with the work their options ask for (not failures): {}\n",
+            tally.costly.len()
+        ));
+        for (seed, detail) in &tally.costly {
+            out.push_str(&format!("    seed {seed}: {detail}\n"));
+        }
+    }
     out.push_str("  typed errors by variant:\n");
     for (variant, count) in &tally.errors {
         out.push_str(&format!("    {variant}: {count}\n"));
@@ -546,7 +558,11 @@ fn recheck_hangs(tally: &mut Tally, args: &FuzzArgs) -> Result<(), Box<dyn std::
                     "finished in {:.1} s when run alone: {text}",
                     clock.elapsed().as_secs_f64()
                 );
-                tally.failure("slow", seed, detail);
+                if !args.accuracy && cases::generate(seed).is_costly() {
+                    tally.costly.push((seed, detail));
+                } else {
+                    tally.failure("slow", seed, detail);
+                }
             }
             None => tally.failure(
                 "hang",

@@ -23,58 +23,33 @@ pub struct Peer {
     pub name: &'static str,
     pub script: &'static str,
     pub leading_args: &'static [&'static str],
-    /// The scenes it models.
-    pub scenes: &'static [&'static str],
     /// Fixed-step peers take step counts; adaptive ones relative tolerances.
     pub fixed_steps: bool,
 }
-
-/// The scenes `casadi_idas.py` and `exudyn_ga.py` model: all but the wall pendulum, whose
-/// impacts neither can express (CasADi's integrator has no events; Exudyn's contact is a penalty
-/// spring).
-const SCRIPT_SCENES: &[&str] = &[
-    "pendulum",
-    "steam_generator",
-    "andrews",
-    "knife_edge",
-    "spring_support",
-    "chain_64",
-    "chain_256",
-    "ladder_64",
-    "ladder_256",
-];
-
-/// CasADi with C code: the same but the ladders (the last two), on which IDAS fails at its
-/// consistent start in both modes, after minutes of gcc here.
-const CASADI_C_SCENES: &[&str] = SCRIPT_SCENES.split_at(SCRIPT_SCENES.len() - 2).0;
 
 pub const PEERS: [Peer; 4] = [
     Peer {
         name: "peer-casadi-idas",
         script: "casadi_idas.py",
         leading_args: &["vm"],
-        scenes: SCRIPT_SCENES,
         fixed_steps: false,
     },
     Peer {
         name: "peer-casadi-idas-c",
         script: "casadi_idas.py",
         leading_args: &["codegen"],
-        scenes: CASADI_C_SCENES,
         fixed_steps: false,
     },
     Peer {
         name: "peer-exudyn-ga",
         script: "exudyn_ga.py",
         leading_args: &["ga"],
-        scenes: SCRIPT_SCENES,
         fixed_steps: true,
     },
     Peer {
         name: "peer-exudyn-trapezoidal",
         script: "exudyn_ga.py",
         leading_args: &["trapezoidal"],
-        scenes: SCRIPT_SCENES,
         fixed_steps: true,
     },
 ];

@@ -11,12 +11,14 @@
 
 use zeitner::{ConstrainedSystem, Options, SparseSimulator, Vector};
 
+use super::scene::{
+    flattened, measure_runs, no_own_methods, rust_peers, worst_relative, Outcome, Scene,
+};
 use crate::measure::{cpu_seconds, Allocations};
 use crate::peers::PeerRun;
 use crate::scaling::families::{horizontal_chain, sagging_ladder};
 use crate::scaling::reference_options;
 use crate::scenes::reference::State;
-use crate::{flattened, measure_runs, rust_peers, Outcome, Scene};
 
 const END: f64 = 1.0;
 
@@ -157,12 +159,15 @@ pub fn large_scene<
         constraint_tolerance: 1e-12,
         tightest_rtol: 1e-10,
         reference: flat,
+        error_measure: worst_relative,
+        velocity_rows: false,
         large: true,
+        own_methods: no_own_methods,
         run: Box::new(move |method, setting, options, repeats| {
             on_large_stack(|| {
                 let scene = make();
                 let run = |max_g: &mut f64| sparse_run(&scene, large, options, max_g);
-                measure_runs((name, method, setting), &reference, repeats, run)
+                measure_runs((name, method, setting), repeats, run)
             })
             .unwrap_or_else(|failure| panic!("{name} {method} {setting}: {failure}"))
         }),

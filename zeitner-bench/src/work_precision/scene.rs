@@ -1,0 +1,348 @@
+//! A scene of the work-precision benchmark and how one configuration of it is measured.
+
+use crate::measure::{cpu_seconds, median, Allocations};
+use crate::peers;
+use crate::scenes::reference::State;
+use zeitner::{ConstrainedSystem, Options, Simulator, Vector};
+
+use super::methods::Method;
+
+/// One measured configuration: a CSV row.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub scene: &'static str,
+    pub method: String,
+    pub setting: String,
+    pub error_q: f64,
+    pub error_v: f64,
+    pub error_lambda: f64,
+    pub max_g: f64,
+    pub steps: u64,
+    pub newton_iterations: u64,
+    pub cpu_seconds: f64,
+    /// Heap allocations during the integration; unknown for peers.
+    pub allocations: Option<u64>,
+    pub failure: Option<String>,
+    /// The end state, flattened (q, then q', then λ), until [`Scene::score`] measures it.
+    pub end: Vec<f64>,
+}
+
+impl Row {
+    /// The error that decides whether a setting meets a target: the worst of q, q' and λ.
+    pub fn error(&self) -> f64 {
+        self.error_q.max(self.error_v).max(self.error_lambda)
+    }
+}
+
+pub const HEADER: &str = "scene,method,setting,error_q,error_v,error_lambda,max_g,steps,newton_iterations,cpu_seconds,allocations";
+
+pub fn csv_line(row: &Row) -> String {
+    format!(
+        "{},{},{},{:e},{:e},{:e},{:e},{},{},{:e},{}",
+        row.scene,
+        row.method,
+        row.setting,
+        row.error_q,
+        row.error_v,
+        row.error_lambda,
+        row.max_g,
+        row.steps,
+        row.newton_iterations,
+        row.cpu_seconds,
+        row.allocations.map_or(String::new(), |a| a.to_string())
+    )
+}
+
+/// Component-wise relative errors, the largest; components whose reference is below 1e-6 of the
+/// largest one are measured against that floor instead (absolute, scaled).
+pub fn worst_relative(x: &[f64], reference: &[f64]) -> f64 {
+    let floor = 1e-6 * reference.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    x.iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs() / b.abs().max(floor))
+        .fold(0.0, f64::max)
+}
+
+/// The largest error relative to the largest component of q, of q' and of λ: where a fast
+/// transient, which an L-stable method damps rather than resolves, moves components that do not
+/// stand for the motion (the spring-supported pendulum's support moves by 1e-4 of the bob).
+pub fn relative_to_largest(x: &[f64], reference: &[f64]) -> f64 {
+    let scale = reference.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    let error = x
+        .iter()
+        .zip(reference)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    error / scale
+}
+
+/// Runs one configuration with the dense `Simulator`: a warm-up run for the errors, then
+/// `repeats` timed runs.
+#[allow(clippy::too_many_arguments)]
+pub fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene_name: &'static str,
+    method: &str,
+    setting: &str,
+    scene: &S,
+    start: (Vector<N>, Vector<N>),
+    // Times the run must stop at, such as kinks of the load, ending with the end time.
+    stops: &[f64],
+    options: Options,
+    repeats: usize,
+) -> Row {
+    let run = |max_g: &mut f64| -> Result<Outcome, String> {
+        let mut sim =
+            Simulator::new(scene, start.0, start.1, 0.0, options).map_err(|e| e.to_string())?;
+        let allocations_before = Allocations::count();
+        let cpu_before = cpu_seconds();
+        for &stop in stops {
+            // Through the scene's events: each ends a call.
+            while sim.time() < stop {
+                sim.advance_to(stop, |r| *max_g = max_g.max(r.residual.amax()))
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        let cpu = cpu_seconds() - cpu_before;
+        let allocations = Allocations::count() - allocations_before;
+        let end = sim.last().end;
+        Ok(Outcome::new(
+            &end.q,
+            &end.v,
+            &end.lambda,
+            sim.statistics(),
+            cpu,
+            allocations,
+        ))
+    };
+    measure_runs((scene_name, method, setting), repeats, run)
+}
+
+/// One run's end state `(q, v, λ)`, statistics, CPU seconds and heap allocations.
+pub struct Outcome {
+    pub end: [Vec<f64>; 3],
+    pub statistics: zeitner::Statistics,
+    pub cpu: f64,
+    pub allocations: u64,
+}
+
+impl Outcome {
+    pub fn new<const N: usize, const Z: usize>(
+        q: &Vector<N>,
+        v: &Vector<N>,
+        lambda: &Vector<Z>,
+        statistics: zeitner::Statistics,
+        cpu: f64,
+        allocations: u64,
+    ) -> Self {
+        let end = [q.as_slice(), v.as_slice(), lambda.as_slice()].map(<[f64]>::to_vec);
+        Outcome {
+            end,
+            statistics,
+            cpu,
+            allocations,
+        }
+    }
+}
+
+/// A warm-up `run` for the end state (which [`Scene::score`] measures), then `repeats` timed
+/// runs.
+pub fn measure_runs(
+    (scene_name, method, setting): (&'static str, &str, &str),
+    repeats: usize,
+    mut run: impl FnMut(&mut f64) -> Result<Outcome, String>,
+) -> Row {
+    let mut row = Row {
+        scene: scene_name,
+        method: method.to_string(),
+        setting: setting.to_string(),
+        error_q: f64::NAN,
+        error_v: f64::NAN,
+        error_lambda: f64::NAN,
+        max_g: f64::NAN,
+        steps: 0,
+        newton_iterations: 0,
+        cpu_seconds: f64::NAN,
+        allocations: Some(0),
+        failure: None,
+        end: Vec::new(),
+    };
+    let mut max_g = 0.0f64;
+    match run(&mut max_g) {
+        Ok(outcome) => {
+            row.end = outcome.end.concat();
+            row.max_g = max_g;
+            row.steps = outcome.statistics.steps;
+            row.newton_iterations = outcome.statistics.newton_iterations;
+        }
+        Err(error) => {
+            row.failure = Some(error);
+            return row;
+        }
+    }
+    let mut times = Vec::with_capacity(repeats);
+    for _ in 0..repeats.max(1) {
+        let mut ignored = 0.0;
+        if let Ok(outcome) = run(&mut ignored) {
+            times.push(outcome.cpu);
+            row.allocations = row.allocations.max(Some(outcome.allocations));
+        }
+    }
+    row.cpu_seconds = median(times);
+    row
+}
+
+/// The in-process peers on `scene`; `X = 2N` and `Y = 2N + Z` size the peers' state arrays.
+pub fn rust_peers<
+    S: ConstrainedSystem<N, Z> + 'static,
+    const N: usize,
+    const Z: usize,
+    const X: usize,
+    const Y: usize,
+>(
+    scene: S,
+    start: (Vector<N>, Vector<N>),
+    t_end: f64,
+) -> PeerRunner {
+    Box::new(move |rtols: &[f64]| {
+        let mut runs: Vec<(&'static str, peers::PeerRun)> = Vec::new();
+        let mut add = |name: &'static str, results: Vec<peers::PeerRun>| {
+            runs.extend(results.into_iter().map(|run| (name, run)));
+        };
+        // Every peer models gaps with events and an impact (`peer_gaps`).
+        #[cfg(feature = "diffsol")]
+        {
+            use crate::diffsol_peer::Method;
+            let methods = [
+                ("peer-diffsol-bdf", Method::Bdf),
+                ("peer-diffsol-esdirk34", Method::Esdirk34),
+                ("peer-diffsol-tr-bdf2", Method::TrBdf2),
+            ];
+            for (name, method) in methods {
+                add(
+                    name,
+                    crate::diffsol_peer::run(&scene, start, t_end, method, rtols),
+                );
+            }
+        }
+        #[cfg(feature = "differential-equations")]
+        {
+            use crate::de_peer::Index;
+            let radau3 =
+                crate::de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Three, rtols);
+            add("peer-de-radau5-index3", radau3);
+            let radau2 =
+                crate::de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Two, rtols);
+            add("peer-de-radau5-index2", radau2);
+            let dop853 = crate::de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols);
+            add("peer-de-dop853-projected", dop853);
+        }
+        let _ = (&mut add, &scene, start, t_end, rtols);
+        runs
+    })
+}
+
+/// Runs one configuration: `(method, setting, options, repeats)`.
+pub type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
+/// Runs the in-process peers for these relative tolerances: `(method, run)` for each peer
+/// built (`--features diffsol`, `--features differential-equations`).
+pub type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<(&'static str, peers::PeerRun)>>;
+
+/// How an end state's error is measured against the reference's, per part (q, q' or λ).
+pub type ErrorMeasure = fn(&[f64], &[f64]) -> f64;
+
+/// A scene: how to run one configuration of it, and how its results are measured.
+pub struct Scene {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub t_end: f64,
+    /// `ε` in the constraints' units, the same for every setting.
+    pub constraint_tolerance: f64,
+    /// The tightest `rtol` of the adaptive settings.
+    pub tightest_rtol: f64,
+    /// The reference end state, flattened: q, then v, then λ; and the sizes N, Z.
+    pub reference: (Vec<f64>, usize, usize),
+    /// How the errors against the reference are measured ([`worst_relative`] unless the scene
+    /// says otherwise).
+    pub error_measure: ErrorMeasure,
+    /// Velocity-level rows: the runtime refuses constant multipliers with adaptive steps.
+    pub velocity_rows: bool,
+    /// Hundreds of coordinates: `SparseSimulator`'s methods only, fewer peer tolerances.
+    pub large: bool,
+    /// Methods of the scene's own beside the common ones (which it is given).
+    pub own_methods: fn(&[Method]) -> Vec<Method>,
+    pub run: Runner,
+    pub run_rust_peers: PeerRunner,
+}
+
+impl Scene {
+    /// `row` with its errors measured against the reference.
+    pub fn score(&self, mut row: Row) -> Row {
+        let (reference, n, z) = (&self.reference.0, self.reference.1, self.reference.2);
+        if row.failure.is_none() && row.end.len() == reference.len() {
+            let (q, rest) = row.end.split_at(n);
+            let (v, lambda) = rest.split_at(n);
+            let error = self.error_measure;
+            row.error_q = error(q, &reference[..n]);
+            row.error_v = error(v, &reference[n..2 * n]);
+            row.error_lambda = error(lambda, &reference[2 * n..2 * n + z]);
+        }
+        row
+    }
+}
+
+/// No methods of the scene's own.
+pub fn no_own_methods(_: &[Method]) -> Vec<Method> {
+    Vec::new()
+}
+
+/// A reference state as (q, then v, then λ; N; Z).
+pub fn flattened<const N: usize, const Z: usize>(state: &State<N, Z>) -> (Vec<f64>, usize, usize) {
+    (
+        state
+            .q
+            .iter()
+            .chain(&state.v)
+            .chain(&state.lambda)
+            .copied()
+            .collect(),
+        N,
+        Z,
+    )
+}
+
+/// A peer's run as a row, its errors measured against the scene's reference.
+pub fn peer_row(scene: &Scene, method: &str, run: peers::PeerRun) -> Row {
+    let mut row = Row {
+        scene: scene.name,
+        method: method.to_string(),
+        setting: run.setting,
+        error_q: f64::NAN,
+        error_v: f64::NAN,
+        error_lambda: f64::NAN,
+        max_g: f64::NAN,
+        steps: 0,
+        newton_iterations: 0,
+        cpu_seconds: f64::NAN,
+        allocations: None,
+        failure: None,
+        end: Vec::new(),
+    };
+    match run.outcome {
+        Ok(end) => {
+            row.end = end.values;
+            row.max_g = end.max_g;
+            row.steps = end.steps;
+            row.cpu_seconds = end.cpu_seconds;
+        }
+        Err(failure) => row.failure = Some(failure),
+    }
+    scene.score(row)
+}
+
+/// A failure's message cut to its first 300 characters: Radau5's quote the whole state.
+pub fn shortened(message: &str) -> String {
+    const LIMIT: usize = 300;
+    match message.char_indices().nth(LIMIT) {
+        Some((end, _)) => format!("{} …", &message[..end]),
+        None => message.to_string(),
+    }
+}

@@ -1,0 +1,469 @@
+//! The work-precision report: the peers' rows, the Markdown summary and the chain scaling.
+
+use std::fmt::Write as _;
+
+use crate::figure;
+use crate::measure::{cpu_seconds, median};
+use crate::peers;
+use crate::scenes;
+use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, Vector};
+
+use super::registry::Entry;
+use super::scene::{peer_row, shortened, Row, Scene};
+use super::Args;
+
+/// The peers' rows for every scene they model, and the setup times they reported as
+/// `(scene, peer, seconds)`; a peer that is unavailable is said so once.
+pub fn peer_rows(
+    scenes: &[(&Entry, Scene)],
+    args: &Args,
+) -> (Vec<Row>, Vec<(&'static str, &'static str, f64)>) {
+    let rtols: &[f64] = if args.quick {
+        &[1e-5, 1e-8]
+    } else {
+        &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
+    };
+    // Fixed-step peers: steps of 10 ms down to 0.1 ms (one with --quick).
+    let step_sizes: &[f64] = if args.quick {
+        &[1e-3]
+    } else {
+        &[1e-2, 3e-3, 1e-3, 3e-4, 1e-4]
+    };
+    let mut rows = Vec::new();
+    let mut setups = Vec::new();
+    match peers::python(&args.output_dir) {
+        Ok(python) => {
+            for peer in &peers::PEERS {
+                let modelled = scenes
+                    .iter()
+                    .filter(|(entry, _)| entry.script_peers.contains(&peer.name));
+                for (_, scene) in modelled {
+                    let (rtols, step_sizes) = large_settings(scene, rtols, step_sizes);
+                    let settings: Vec<f64> = if peer.fixed_steps {
+                        step_sizes
+                            .iter()
+                            .map(|h| (scene.t_end / h).round())
+                            .collect()
+                    } else {
+                        rtols.to_vec()
+                    };
+                    let (runs, setup) = peers::run(
+                        &python,
+                        peer,
+                        scene.name,
+                        scene.t_end,
+                        &settings,
+                        scene.reference.0.len(),
+                    );
+                    rows.extend(runs.into_iter().map(|run| peer_row(scene, peer.name, run)));
+                    setups.extend(setup.map(|seconds| (scene.name, peer.name, seconds)));
+                }
+            }
+        }
+        Err(reason) => println!("Python peers unavailable: {reason}"),
+    }
+    for (_, scene) in scenes {
+        let (rtols, _) = large_settings(scene, rtols, step_sizes);
+        rows.extend(
+            (scene.run_rust_peers)(rtols)
+                .into_iter()
+                .map(|(name, run)| peer_row(scene, name, run)),
+        );
+    }
+    if !cfg!(feature = "diffsol") {
+        println!("peer-diffsol-bdf not built: add --features diffsol");
+    }
+    if !cfg!(feature = "differential-equations") {
+        println!(
+            "the differential-equations peers not built: add --features differential-equations"
+        );
+    }
+    (rows, setups)
+}
+
+/// The peers' settings on `scene`: on the large scenes, whose peers cost seconds a run, the
+/// loosest five tolerances and three step sizes only.
+fn large_settings<'a>(
+    scene: &Scene,
+    rtols: &'a [f64],
+    step_sizes: &'a [f64],
+) -> (&'a [f64], &'a [f64]) {
+    if scene.large {
+        (
+            &rtols[..rtols.len().min(5)],
+            &step_sizes[..step_sizes.len().min(3)],
+        )
+    } else {
+        (rtols, step_sizes)
+    }
+}
+
+/// The cost of the adaptive implicit methods where Dormand–Prince would do: the fastest run of
+/// each ESDIRK over our fastest Dormand–Prince run that reaches the same error.
+fn implicit_against_explicit(scenes: &[Scene], rows: &[Row]) -> String {
+    const IMPLICIT: [(&str, &str); 2] = [("esdirk54", "ESDIRK 5(4)"), ("esdirk43", "ESDIRK 4(3)")];
+    let fastest = |scene: &str, target: f64, tag: &str| -> Option<f64> {
+        let ours = |method: &str| method.starts_with("zeitner-") && method.contains(tag);
+        fastest_run(rows, scene, target, ours).map(|r| r.cpu_seconds)
+    };
+    let mut out = String::from(
+        "## The adaptive implicit methods against Dormand–Prince\n\n\
+         Time of each ESDIRK's fastest run over our fastest Dormand–Prince run (any multiplier \
+         model) that reaches the same error; below 1 the implicit method is faster.\n\n\
+         | scene | method | error ≤ 1e-4 | error ≤ 1e-6 | error ≤ 1e-8 |\n|---|---|---|---|---|\n",
+    );
+    for scene in scenes {
+        for (tag, label) in IMPLICIT {
+            if fastest(scene.name, f64::INFINITY, tag).is_none() {
+                continue;
+            }
+            let _ = write!(out, "| {} | {label} |", scene.name);
+            for target in [1e-4, 1e-6, 1e-8] {
+                match (
+                    fastest(scene.name, target, tag),
+                    fastest(scene.name, target, "dopri5"),
+                ) {
+                    (Some(implicit), Some(explicit)) => {
+                        let _ = write!(out, " {:.2} |", implicit / explicit);
+                    }
+                    (None, _) => out.push_str(" not reached |"),
+                    (Some(_), None) => out.push_str(" Dormand–Prince does not reach it |"),
+                }
+            }
+            out.push('\n');
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// The fastest run on `scene` that reaches the error `target`, among the methods `keep` admits.
+fn fastest_run<'r>(
+    rows: &'r [Row],
+    scene: &str,
+    target: f64,
+    keep: impl Fn(&str) -> bool,
+) -> Option<&'r Row> {
+    rows.iter()
+        .filter(|r| r.scene == scene && r.failure.is_none() && r.error() <= target)
+        .filter(|r| keep(&r.method))
+        .min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds))
+}
+
+/// The Markdown summary: for each scene and error target, the fastest setting of each method.
+pub fn summary_markdown(scenes: &[Scene], rows: &[Row], repeats: usize) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "# Performance: error against run time\n");
+    let fastest = |scene: &str, target: f64, ours: bool| -> Option<&Row> {
+        fastest_run(rows, scene, target, |method| {
+            method.starts_with("zeitner-") == ours && (ours || method.starts_with("peer-"))
+        })
+    };
+    let mut headline = String::from(
+        "| scene | error ≤ | our fastest | best peer | peer time / ours |\n|---|---|---|---|---|\n",
+    );
+    for scene in scenes {
+        for target in [1e-4, 1e-6, 1e-8] {
+            let ours = fastest(scene.name, target, true);
+            let peer = fastest(scene.name, target, false);
+            let describe = |r: Option<&Row>| {
+                r.map_or("not reached".to_string(), |r| {
+                    format!("{:.3} ms `{}` {}", r.cpu_seconds * 1e3, r.method, r.setting)
+                })
+            };
+            let ratio = match (ours, peer) {
+                (Some(o), Some(p)) => format!("{:.1}", p.cpu_seconds / o.cpu_seconds),
+                _ => "–".to_string(),
+            };
+            headline.push_str(&format!(
+                "| {} | {target:.0e} | {} | {} | {ratio} |\n",
+                scene.name,
+                describe(ours),
+                describe(peer)
+            ));
+        }
+    }
+    let _ = writeln!(
+        out,
+        "Generated by `cargo run --release -p zeitner-bench -- work-precision` on this project's 2-core \
+         machine; CPU time of the integration alone (setup excluded), median of {repeats} runs after a \
+         warm-up. Error: the largest component-wise relative error at the end time over q, q' and λ \
+         (components below 1e-6 of the largest are measured against that floor; on the spring-supported \
+         pendulum, whose support moves by 1e-4 of the bob, relative to the largest component; on the \
+         ladders, whose dependent rows leave λ free, over q, q' and the constraint force Gᵀλ). References: the \
+         reduced-coordinate solutions of the pendulum, the steam generator and the spring-supported pendulum, \
+         the knife edge's closed form; for the pendulum against the wall (elastic impacts), the free \
+         pendulum's mirrored at the wall; for Andrews our tightest \
+         run (rtol 1e-13), checked against the published values within their stated reliability; \
+         for the chains and ladders our sparse run at rtol 1e-12. Peers (`--peers`): CasADi 3.8.2's IDAS on the \
+         index-1 formulation, in its SX virtual machine (`peer-casadi-idas`) and with its functions \
+         generated as C and compiled by gcc -O3 (`peer-casadi-idas-c`); Exudyn 1.13.6's \
+         generalised-α (index 3) and trapezoidal (index 2) solvers with fixed steps, built from its \
+         native objects (the steam generator's load, the knife edge's velocity-level row and \
+         Andrews' mass matrix, forces and loop closures through Python user functions; the ladders \
+         with its dense full-pivoting LU, which passes over their dependent rows; not the wall \
+         pendulum, whose contact Exudyn models as a penalty spring; its adaptiveStep off, so a \
+         setting whose Newton fails is a failure, not silently shorter steps); in process, calling the scenes' generated functions and with the Jacobians of \
+         their generated derivatives: with `--features diffsol`, diffsol 0.18's BDF, ESDIRK 3(4) and \
+         TR-BDF2 on the index-1 formulation (the multipliers out of the error test); with \
+         `--features differential-equations`, differential-equations 0.7's Radau5 on the index-3 and \
+         index-2 formulations (variables' indices declared as RADAU5 asks) and its DOP853 on the \
+         index-1 ODE, projected back onto the constraints when it leaves them by more than atol \
+         (over the last four first-step lengths, where the crate cannot restart, only the end \
+         state is projected). On the pendulum against the wall every in-process peer runs with \
+         its gap free while open (its λ held at 0) and an event where it closes: Newton's impact \
+         law (M-orthogonal impulse, the gap's restitution) sets the velocities there and the method \
+         goes on from that state (diffsol: its root finding and `state_mut_back`; \
+         differential-equations: the crossing found on the crate's dense output, and a new solve \
+         from the impact, as 0.7.0's Radau5 keeps a zeroed Jacobian when restarted in place); \
+         CasADi's integrator has no events. The \
+         in-process peers cannot take the ladders' three dependent rows: they run the ladder \
+         with those pin rows removed, the rows the dense `Simulator`'s rank check names; CasADi \
+         and Exudyn get every row. The peers' absolute tolerances are 1e-2·rtol; their setup is outside \
+         the timing except differential-equations' initialisation, which its `solve` includes. On \
+         the chains and ladders the peers run rtol 1e-4 … 1e-8 and steps of 10, 3 and 1 ms only (so \
+         \"not reached\" at 1e-8 means not tried tighter), and runs of over a second are timed once. A peer failing or not reaching \
+         a target is a result.\n"
+    );
+    let _ = writeln!(out, "{headline}");
+    out.push_str(&implicit_against_explicit(scenes, rows));
+    for scene in scenes {
+        let scene_rows: Vec<&Row> = rows.iter().filter(|r| r.scene == scene.name).collect();
+        let _ = writeln!(out, "## {}\n", scene.title);
+        let _ = writeln!(
+            out,
+            "![work-precision, {}](figures/work_precision_{}.png)\n",
+            scene.name, scene.name
+        );
+        let _ = writeln!(
+            out,
+            "| method | error ≤ 1e-4 | error ≤ 1e-6 | error ≤ 1e-8 |"
+        );
+        let _ = writeln!(out, "|---|---|---|---|");
+        let mut names: Vec<&str> = scene_rows.iter().map(|r| r.method.as_str()).collect();
+        names.dedup();
+        for name in names {
+            let cells: Vec<String> = [1e-4, 1e-6, 1e-8]
+                .iter()
+                .map(|&target| {
+                    fastest_run(rows, scene.name, target, |method| method == name).map_or(
+                        "not reached".to_string(),
+                        |r| {
+                            if r.method.starts_with("peer-") {
+                                format!(
+                                    "{:.3} ms ({}, {} steps)",
+                                    r.cpu_seconds * 1e3,
+                                    r.setting,
+                                    r.steps
+                                )
+                            } else {
+                                format!(
+                                    "{:.3} ms ({}, {} steps, {:.1} sweeps/step)",
+                                    r.cpu_seconds * 1e3,
+                                    r.setting,
+                                    r.steps,
+                                    r.newton_iterations as f64 / r.steps.max(1) as f64
+                                )
+                            }
+                        },
+                    )
+                })
+                .collect();
+            let _ = writeln!(out, "| `{name}` | {} |", cells.join(" | "));
+        }
+        let allocations: u64 = scene_rows
+            .iter()
+            .filter_map(|r| r.allocations)
+            .max()
+            .unwrap_or(0);
+        let _ = writeln!(
+            out,
+            "\nMost heap allocations in one timed integration of ours: {allocations}.\n"
+        );
+        for row in scene_rows.iter().filter(|r| r.failure.is_some()) {
+            let _ = writeln!(
+                out,
+                "- `{}` {} failed: {}",
+                row.method,
+                row.setting,
+                shortened(row.failure.as_deref().unwrap_or(""))
+            );
+        }
+        let _ = writeln!(out);
+        if scene.name == "steam_generator" {
+            let pairs: Vec<f64> = scene_rows
+                .iter()
+                .filter(|r| {
+                    r.method == "zeitner-constant-lambda-dopri5-exactQ" && r.failure.is_none()
+                })
+                .filter_map(|g| {
+                    let hand = scene_rows
+                        .iter()
+                        .find(|h| h.method == "hand-written" && h.setting == g.setting)?;
+                    Some(
+                        (g.cpu_seconds / g.steps as f64)
+                            / (hand.cpu_seconds / hand.steps.max(1) as f64),
+                    )
+                })
+                .collect();
+            if !pairs.is_empty() {
+                let mut sorted = pairs.clone();
+                sorted.sort_by(f64::total_cmp);
+                let _ = writeln!(
+                    out,
+                    "Generated / hand-written time per step, same options (Dormand–Prince, exact Q), over {} \
+                     settings: median {:.3}, range {:.3} … {:.3}.\n",
+                    sorted.len(),
+                    sorted[sorted.len() / 2],
+                    sorted[0],
+                    sorted[sorted.len() - 1]
+                );
+            }
+        }
+    }
+    out
+}
+
+/// Time per step against the number of coordinates, for chains of 2 to 16 pendulums released
+/// horizontally: 1 s of fixed 1 ms steps. Writes `chain_scaling.{csv,svg,png}` and returns the
+/// Markdown section.
+pub fn chain_scaling(
+    repeats: usize,
+    output_dir: &std::path::Path,
+) -> Result<String, Box<dyn std::error::Error>> {
+    use scenes::chain::{Chain16, Chain2, Chain4, Chain8};
+
+    fn time_per_step<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+        scene: &S,
+        options: Options,
+        repeats: usize,
+    ) -> Result<(f64, u64), String> {
+        let q0 = Vector::<N>::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 });
+        let mut times = Vec::new();
+        let mut steps = 0;
+        for _ in 0..=repeats.max(1) {
+            let mut sim = Simulator::new(scene, q0, Vector::zeros(), 0.0, options)
+                .map_err(|e| e.to_string())?;
+            let before = cpu_seconds();
+            sim.advance_to(1.0, |_| {}).map_err(|e| e.to_string())?;
+            times.push(cpu_seconds() - before);
+            steps = sim.statistics().steps;
+        }
+        // The first run is the warm-up.
+        Ok((median(times.split_off(1)) / steps as f64, steps))
+    }
+
+    let methods = [
+        (
+            "zeitner-constant-lambda-rk4-exactQ",
+            Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                step: StepControl::Fixed { step: 1e-3 },
+                max_newton_iterations: 30,
+                ..Options::default()
+            },
+        ),
+        (
+            "zeitner-constant-lambda-rk4-paperQ-raw",
+            Options {
+                max_newton_iterations: 30,
+                ..Options::paper(1e-3)
+            },
+        ),
+    ];
+    let mut csv = String::from("coordinates,constraints,method,steps,seconds_per_step\n");
+    let mut series = Vec::new();
+    let mut table = String::from(
+        "## Scaling: chains of pendulums\n\n![time per step against coordinates](figures/work_precision_chain_scaling.png)\n\n\
+         1 s of 1 ms steps from the horizontal; CPU time per step, median of the timed runs; the dense `Simulator` on small chains. \
+         For chains and ladders up to 256 coordinates with `SparseSimulator`, against an O(n) floor, see [scaling.md](scaling.md) \
+         (`cargo run --release -p zeitner-bench -- scaling`).\n\n\
+         | coordinates | constraints | method | time per step |\n|---|---|---|---|\n",
+    );
+    for (name, options) in methods {
+        let results = [
+            (
+                4,
+                time_per_step(
+                    &Chain2 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                8,
+                time_per_step(
+                    &Chain4 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                16,
+                time_per_step(
+                    &Chain8 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+            (
+                32,
+                time_per_step(
+                    &Chain16 {
+                        m: 1.0,
+                        l: 1.0,
+                        g: 9.81,
+                    },
+                    options,
+                    repeats,
+                ),
+            ),
+        ];
+        let mut points = Vec::new();
+        for (coordinates, result) in results {
+            match result {
+                Ok((per_step, steps)) => {
+                    csv.push_str(&format!(
+                        "{coordinates},{},{name},{steps},{per_step:e}\n",
+                        coordinates / 2
+                    ));
+                    table.push_str(&format!(
+                        "| {coordinates} | {} | `{name}` | {:.2} µs |\n",
+                        coordinates / 2,
+                        per_step * 1e6
+                    ));
+                    points.push((coordinates as f64, per_step));
+                }
+                Err(error) => table.push_str(&format!(
+                    "| {coordinates} | {} | `{name}` | failed: {error} |\n",
+                    coordinates / 2
+                )),
+            }
+        }
+        series.push((name, points));
+    }
+    std::fs::write(output_dir.join("chain_scaling.csv"), csv)?;
+    figure::write_log_log(
+        &output_dir.join("chain_scaling"),
+        &figure::Panel {
+            title: "Chains of pendulums: time per step",
+            x_label: "coordinates",
+            y_label: "CPU time per step [s]",
+            series,
+        },
+    )?;
+    table.push('\n');
+    Ok(table)
+}
