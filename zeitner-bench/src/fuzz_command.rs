@@ -417,11 +417,13 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
         "runtime fuzz"
     };
     out.push_str(&format!(
-        "{kind}: {} runs from seed {first} in {:.1} s ({} passed, {} failed); timeout {} ms\n",
+        "{kind}: {} runs from seed {first} in {:.1} s ({} passed, {} failed, {} costly); timeout \
+         {} ms\n",
         tally.runs,
         elapsed.as_secs_f64(),
         tally.ok,
         tally.failed(),
+        tally.costly.len(),
         args.timeout_ms
     ));
     if args.accuracy {

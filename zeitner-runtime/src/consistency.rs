@@ -7,7 +7,7 @@ use crate::linalg::{all_finite, keep_leading_rows, max_abs, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model};
 use crate::options::StartPolicy;
-use crate::output::Point;
+use crate::output::{Point, StepReport};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Gauss–Newton sweeps when projecting a start onto the position-level constraints.
@@ -330,6 +330,36 @@ pub(crate) fn tangential<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     let eq = normal(&position_gram, &position_rhs).map_or(eq, |n| eq - n);
     let ev = normal(&gram, &(directions.jacobian * ev)).map_or(ev, |n| ev - n);
     Ok((eq, ev))
+}
+
+/// The report of a step from its end point, with the constraint forces and residuals there;
+/// `jacobian` is `G` at the end point if the caller has it already.
+#[inline(always)]
+pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    start: Point<N, Z>,
+    end: Point<N, Z>,
+    step_multipliers: Vector<Z>,
+    newton_iterations: u32,
+    jacobian: Option<&Matrix<Z, N>>,
+) -> Result<StepReport<N, Z>, StepError> {
+    let g = match jacobian {
+        Some(g) => *g,
+        None => model.jacobian(&end.q, &end.v, end.t)?,
+    };
+    let constraint_force = -g.tr_mul(&end.lambda);
+    if !constraint_force.iter().all(|x| x.is_finite()) {
+        return Err(StepError::non_finite_state(end.t));
+    }
+    Ok(StepReport {
+        start,
+        end,
+        step_multipliers,
+        constraint_force,
+        residual: model.residual(&end.q, &end.v, end.t)?,
+        rate_residual: model.rate(&end.q, &end.v, end.t)?,
+        newton_iterations,
+    })
 }
 
 #[cfg(test)]

@@ -10,67 +10,12 @@
 
 use crate::consistency::consistent_point;
 use crate::error::StepError;
+use crate::gaps::GapSet;
 use crate::linalg::solve_spd;
 use crate::mass::MassMatrix;
 use crate::model::Model;
 use crate::output::Point;
 use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
-
-/// A set of gaps by their index in the model's `gaps` (`0..UNILATERAL_CONSTRAINTS`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct GapSet(u32);
-
-impl GapSet {
-    pub const EMPTY: GapSet = GapSet(0);
-
-    /// Gaps `0..count`.
-    pub fn first(count: usize) -> Self {
-        if count >= 32 {
-            GapSet(u32::MAX)
-        } else {
-            GapSet((1u32 << count) - 1)
-        }
-    }
-
-    pub fn insert(&mut self, gap: usize) {
-        self.0 |= 1 << gap;
-    }
-
-    pub fn remove(&mut self, gap: usize) {
-        self.0 &= !(1 << gap);
-    }
-
-    pub fn contains(&self, gap: usize) -> bool {
-        gap < MAX_GAPS && self.0 & (1 << gap) != 0
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.0 == 0
-    }
-
-    pub fn len(&self) -> usize {
-        self.0.count_ones() as usize
-    }
-
-    /// The gaps in `self` but not in `other`.
-    pub fn without(self, other: GapSet) -> GapSet {
-        GapSet(self.0 & !other.0)
-    }
-
-    pub fn union(self, other: GapSet) -> GapSet {
-        GapSet(self.0 | other.0)
-    }
-
-    /// The gaps, in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        let mut bits = self.0;
-        core::iter::from_fn(move || {
-            let k = bits.trailing_zeros() as usize;
-            bits &= bits.wrapping_sub(1);
-            (k < MAX_GAPS).then_some(k)
-        })
-    }
-}
 
 /// What one impact did.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -5,71 +5,12 @@
 use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::Model;
-use crate::options::{Options, StepControl};
+use crate::options::{ControllerSettings, Options, StepControl};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
-/// The step-size controller's constants: plain data with documented defaults.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ControllerSettings {
-    /// Safety factor on every proposed step. Default 0.9.
-    pub safety: f64,
-    /// The smallest factor from one step to the next. Default 0.2.
-    pub min_factor: f64,
-    /// The largest factor from one step to the next. Default 5.
-    pub max_factor: f64,
-    /// The largest factor after a rejected step (so that a rejection always shrinks). Default 0.9.
-    pub max_factor_after_rejection: f64,
-    /// `β·k` of the PI controller `h₊ = h · safety · e⁻ᵅ · e₋ᵝ` with `β = beta_times_order / k`,
-    /// `α = 1/k - 0.75 β` and `k` one more than the lower order of the error estimate
-    /// (Hairer & Wanner's stabilised control; 0.2 gives their DOPRI5 default `β = 0.04`);
-    /// 0 is the plain I-controller. Default 0.2.
-    pub beta_times_order: f64,
-    /// The factor a step shrinks by when Newton on the multipliers fails or the trajectory
-    /// becomes non-finite. Default 0.25.
-    pub newton_failure_factor: f64,
-    /// From this many Newton integrations per step on, the step does not grow: the multipliers
-    /// change fast. Default 5.
-    pub slow_newton_iterations: u32,
-    /// A planned step within this fraction of the distance to the stop time lands on it,
-    /// instead of leaving a sliver of a step. Default 1e-6.
-    pub landing_fraction: f64,
-}
-
-impl Default for ControllerSettings {
-    fn default() -> Self {
-        ControllerSettings {
-            safety: 0.9,
-            min_factor: 0.2,
-            max_factor: 5.0,
-            max_factor_after_rejection: 0.9,
-            beta_times_order: 0.2,
-            newton_failure_factor: 0.25,
-            slow_newton_iterations: 5,
-            landing_fraction: 1e-6,
-        }
-    }
-}
-
-impl ControllerSettings {
-    pub(crate) fn is_valid(&self) -> bool {
-        let factor = |x: f64| x.is_finite() && x > 0.0;
-        factor(self.safety)
-            && self.safety <= 1.0
-            && factor(self.min_factor)
-            && self.min_factor < 1.0
-            && factor(self.max_factor)
-            && self.max_factor > 1.0
-            && factor(self.max_factor_after_rejection)
-            && self.max_factor_after_rejection < 1.0
-            && self.min_factor <= self.max_factor_after_rejection
-            && self.beta_times_order.is_finite()
-            && (0.0..=0.5).contains(&self.beta_times_order)
-            && factor(self.newton_failure_factor)
-            && self.newton_failure_factor < 1.0
-            && self.landing_fraction.is_finite()
-            && (0.0..=0.5).contains(&self.landing_fraction)
-    }
-}
+/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
+/// is valid, but `t + h` would not be).
+pub(crate) const LARGEST_STEP: f64 = 1e300;
 
 /// The controller's memory: the logarithm of the last accepted step's error norm (one `ln`
 /// and one `exp` per step instead of two powers).
@@ -572,7 +513,6 @@ mod progress_tests {
 #[cfg(test)]
 mod retry_tests {
     use super::*;
-    use crate::simulator::LARGEST_STEP;
 
     const ADAPTIVE: StepControl = StepControl::Adaptive {
         initial_step: 1e-3,

@@ -167,7 +167,7 @@ pub enum InvalidOption {
     /// Adaptive steps need an error estimate: `DormandPrince54`, `Esdirk32`, `Esdirk43` and
     /// `Esdirk54` have one.
     AdaptiveNeedsErrorEstimate,
-    /// [`crate::sparse::SparseSimulator`] does not run this yet.
+    /// The sparse simulator (`SparseSimulator`) does not run this yet.
     NotForSparseSimulator(&'static str),
     /// RK4 `substeps × max_newton_iterations` above 20 000: one step would do too much work.
     StepWork,

@@ -10,8 +10,8 @@
 //! can still both be missed: bound `max_step` where that matters.
 
 use crate::consistency::consistent_point;
-use crate::contact::GapSet;
 use crate::error::StepError;
+use crate::gaps::GapSet;
 use crate::model::Model;
 use crate::output::{interpolate, Point};
 use crate::system::{ConstrainedSystem, MAX_EVENTS, MAX_GAPS};

@@ -33,8 +33,10 @@ extern crate alloc;
 pub mod consistency;
 pub mod contact;
 pub mod control;
+mod dense;
 pub mod error;
 pub mod events;
+pub mod gaps;
 mod linalg;
 pub mod mass;
 pub mod math;
@@ -43,6 +45,7 @@ mod model;
 mod multipliers;
 pub mod options;
 pub mod output;
+mod polynomial;
 pub mod simulator;
 #[cfg(feature = "alloc")]
 pub mod sparse;
@@ -51,18 +54,18 @@ pub mod system;
 mod testing;
 
 pub use consistency::StartReport;
-pub use contact::{GapSet, Impact};
-pub use control::ControllerSettings;
+pub use contact::Impact;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use events::Direction;
+pub use gaps::GapSet;
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
 pub use options::{
-    EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity, StartPolicy, StepControl,
-    VelocityProjection,
+    ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
+    StartPolicy, StepControl, VelocityProjection,
 };
-pub use output::{Observation, Point, StepReport, StopReason};
-pub use simulator::{Simulator, Statistics};
+pub use output::{Point, StepReport, StopReason};
+pub use simulator::{Observation, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
 pub use system::{

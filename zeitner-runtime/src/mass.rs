@@ -2,7 +2,7 @@
 
 use nalgebra::Cholesky;
 
-use crate::system::{Matrix, Vector};
+use crate::dense::{Matrix, Vector};
 
 /// Storage of `M`, as the generated code returns it.
 pub trait MassMatrix<const N: usize>: Copy {
@@ -84,8 +84,48 @@ impl<const N: usize> MassMatrix<N> for FullMass<N> {
 }
 
 impl<const N: usize> MassFactor<N> for Cholesky<f64, nalgebra::Const<N>> {
-    #[inline]
+    /// `L Lᵀ x = b` by forward and back substitution, written out here so that the solve
+    /// inlines into its callers whatever surrounds them: nalgebra's `Cholesky::solve` stopped
+    /// being inlined when modules of the runtime moved, and Andrews' steps took 3 % more
+    /// instructions and 12–27 % more time.
+    #[inline(always)]
     fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C> {
-        Cholesky::solve(self, b)
+        let l = self.l_dirty();
+        let mut x = *b;
+        for c in 0..C {
+            for i in 0..N {
+                let coefficient = x[(i, c)] / l[(i, i)];
+                x[(i, c)] = coefficient;
+                for k in i + 1..N {
+                    x[(k, c)] -= coefficient * l[(k, i)];
+                }
+            }
+            for i in (0..N).rev() {
+                let mut sum = x[(i, c)];
+                for k in i + 1..N {
+                    sum -= l[(k, i)] * x[(k, c)];
+                }
+                x[(i, c)] = sum / l[(i, i)];
+            }
+        }
+        x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_written_out_cholesky_solve_matches_nalgebra_s() {
+        // A symmetric positive definite matrix with a spread of scales, and two right-hand sides.
+        let a = Matrix::<4, 4>::from_fn(|i, j| 1.0 / (1.0 + i as f64 + j as f64))
+            + Matrix::<4, 4>::from_diagonal(&Vector::<4>::new(10.0, 1.0, 0.1, 3.0));
+        let b = Matrix::<4, 2>::from_fn(|i, j| (i as f64 - 1.5) * (j as f64 + 0.5));
+        let factor = FullMass(a).factor().expect("positive definite");
+        let ours = MassFactor::solve(&factor, &b);
+        let theirs = Cholesky::solve(&factor, &b);
+        assert!((ours - theirs).amax() <= 1e-14 * theirs.amax(), "{ours} {theirs}");
+        assert!((a * ours - b).amax() < 1e-13, "{}", a * ours - b);
     }
 }

@@ -1,8 +1,8 @@
 //! The evaluation layer: every call into the system goes through here, is counted, and is
 //! checked for non-finite values, so that a bad model becomes a typed error, not a NaN trajectory.
 
-use crate::contact::GapSet;
 use crate::error::{ModelFunction, StepError};
+use crate::gaps::GapSet;
 use crate::linalg::all_finite;
 use crate::mass::{MassFactor, MassMatrix};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};

@@ -1,13 +1,9 @@
-//! What a run shows: consistent points, step reports with dense output, why a step stopped,
-//! and what the observer of [`Simulator::advance_to`] sees.
+//! What a run shows, as plain data: consistent points, step reports with dense output and why
+//! a step stopped. (What the observer of `Simulator::advance_to` sees lives beside the
+//! simulator it borrows; the reports are made in `consistency`.)
 
-use core::ops::Deref;
-
-use crate::contact::{GapSet, Impact};
-use crate::error::StepError;
-use crate::model::Model;
-use crate::simulator::Simulator;
-use crate::system::{ConstrainedSystem, Matrix, Vector};
+use crate::gaps::GapSet;
+use crate::system::Vector;
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,7 +41,7 @@ pub struct StepReport<const N: usize, const Z: usize> {
 impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// Dense output at `t` within the step: quintic Hermite in `q` from `q`, `q'`, `q''` at both
     /// ends and its derivative for `q'` (local errors `O(τ⁶)` and `O(τ⁵)`), linear in `q''` and
-    /// `λ`. For multipliers as accurate as the positions, use [`Simulator::sample`]. Outside the
+    /// `λ`. For multipliers as accurate as the positions, use `Simulator::sample`. Outside the
     /// step it extrapolates.
     pub fn sample(&self, t: f64) -> Point<N, Z> {
         interpolate(&self.start, &self.end, t)
@@ -98,37 +94,7 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
     }
 }
 
-/// The report of a step from its end point, with the constraint forces and residuals there;
-/// `jacobian` is `G` at the end point if the caller has it already.
-#[inline(always)]
-pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    model: &mut Model<'_, S, N, Z>,
-    start: Point<N, Z>,
-    end: Point<N, Z>,
-    step_multipliers: Vector<Z>,
-    newton_iterations: u32,
-    jacobian: Option<&Matrix<Z, N>>,
-) -> Result<StepReport<N, Z>, StepError> {
-    let g = match jacobian {
-        Some(g) => *g,
-        None => model.jacobian(&end.q, &end.v, end.t)?,
-    };
-    let constraint_force = -g.tr_mul(&end.lambda);
-    if !constraint_force.iter().all(|x| x.is_finite()) {
-        return Err(StepError::non_finite_state(end.t));
-    }
-    Ok(StepReport {
-        start,
-        end,
-        step_multipliers,
-        constraint_force,
-        residual: model.residual(&end.q, &end.v, end.t)?,
-        rate_residual: model.rate(&end.q, &end.v, end.t)?,
-        newton_iterations,
-    })
-}
-
-/// Why [`Simulator::step`] or [`Simulator::advance_to`] returned.
+/// Why `Simulator::step` or `Simulator::advance_to` returned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum StopReason {
@@ -136,7 +102,7 @@ pub enum StopReason {
     StepTaken,
     /// A step was taken and landed exactly on the stop time, which is now cleared.
     StopTimeReached,
-    /// The observer of [`Simulator::advance_to`] asked to stop after the step it saw.
+    /// The observer of `Simulator::advance_to` asked to stop after the step it saw.
     ObserverStopped,
     /// A step landed exactly on a known discontinuity in time of the model
     /// ([`crate::ConstrainedSystem::time_event_after`]); the multipliers' predictor and the
@@ -145,7 +111,7 @@ pub enum StopReason {
     /// A step landed just past a zero crossing of event function `index` (within
     /// [`crate::EventSettings::time_tolerance`]). Several at once are returned one per call
     /// (the later ones without a step). `advance_to` returns here, so that the caller can act
-    /// (change parameters, [`Simulator::reinitialise`]).
+    /// (change parameters, `Simulator::reinitialise`).
     Event {
         index: usize,
         direction: crate::Direction,
@@ -155,68 +121,14 @@ pub enum StopReason {
     /// goes on.
     CrossingAhead,
     /// A step landed just before gaps close (within the time tolerance): the next
-    /// [`Simulator::step`] applies the impact. `advance_to` goes on.
-    GapsClosing { gaps: crate::GapSet },
-    /// Gaps closed: the velocities jumped by an impulse ([`Simulator::last_impact`]), a step of
+    /// `Simulator::step` applies the impact. `advance_to` goes on.
+    GapsClosing { gaps: GapSet },
+    /// Gaps closed: the velocities jumped by an impulse (`Simulator::last_impact`), a step of
     /// zero length whose report has the velocities before and after. `advance_to` goes on.
     Impact,
     /// Contacts opened where their force would have pulled: their gaps are free again.
     /// `advance_to` goes on.
-    ContactsOpened { gaps: crate::GapSet },
-}
-
-/// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
-/// report (through `Deref`, so `step.end.q` reads as on a [`StepReport`]), dense output with
-/// recomputed multipliers, and a way to stop the run.
-pub struct Observation<'a, 's, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
-    pub(crate) simulator: &'a mut Simulator<'s, S, N, Z>,
-    pub(crate) reason: StopReason,
-    pub(crate) stop: bool,
-}
-
-impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Observation<'_, '_, S, N, Z> {
-    /// The step just taken.
-    pub fn report(&self) -> &StepReport<N, Z> {
-        self.simulator.last()
-    }
-
-    /// What [`Simulator::step`] returned for it.
-    pub fn reason(&self) -> StopReason {
-        self.reason
-    }
-
-    /// The impact, when the step was one ([`StopReason::Impact`]).
-    pub fn impact(&self) -> Option<&Impact<N, Z>> {
-        let impact = self.simulator.last_impact();
-        impact.filter(|_| self.reason == StopReason::Impact)
-    }
-
-    /// The gaps whose contact is closed after the step.
-    pub fn closed_gaps(&self) -> GapSet {
-        self.simulator.closed_gaps()
-    }
-
-    /// Dense output within the step just taken, multipliers recomputed: see
-    /// [`Simulator::sample`].
-    #[cfg(feature = "dense-output")]
-    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
-        self.simulator.sample(t)
-    }
-
-    /// Ends [`Simulator::advance_to`] after this step, with [`StopReason::ObserverStopped`].
-    pub fn stop(&mut self) {
-        self.stop = true;
-    }
-}
-
-impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Deref
-    for Observation<'_, '_, S, N, Z>
-{
-    type Target = StepReport<N, Z>;
-
-    fn deref(&self) -> &StepReport<N, Z> {
-        self.simulator.last()
-    }
+    ContactsOpened { gaps: GapSet },
 }
 
 #[cfg(all(test, feature = "dense-output"))]

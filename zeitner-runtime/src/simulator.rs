@@ -4,21 +4,22 @@
 //! [`crate::output`]); this file only puts them in order.
 
 use crate::consistency::{
-    consistent_point, consistent_start, end_point, tangential, Gram, StartReport,
+    consistent_point, consistent_start, end_point, end_report, tangential, Gram, StartReport,
 };
-use crate::contact::{self, GapSet, Impact};
+use crate::contact::{self, Impact};
 use crate::control::{
     bounds, error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step,
-    Controller, Progress,
+    Controller, Progress, LARGEST_STEP,
 };
 use crate::error::{InvalidOption, RowSet, StepError};
 use crate::events::{self, Crossing, Direction, Values, Watch};
+use crate::gaps::GapSet;
 use crate::method::{AnyMethod, Method, Start, StepEnd};
 use crate::model::{Evaluations, Model};
-use crate::multipliers::StepPolynomial;
-use crate::multipliers::{self, Multipliers, NewtonOutcome, NewtonSettings, Predictor};
+use crate::multipliers::{self, NewtonOutcome, NewtonSettings, Predictor};
 use crate::options::{MultiplierModel, Options, StepControl, VelocityProjection};
-use crate::output::{end_report, Observation, Point, StepReport, StopReason};
+use crate::output::{Point, StepReport, StopReason};
+use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.
@@ -1135,14 +1136,64 @@ pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
     Ok(t_end == now)
 }
 
-/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
-/// is valid, but `t + h` would not be).
-pub(crate) const LARGEST_STEP: f64 = 1e300;
-
 /// The first step the options plan.
 pub(crate) fn first_step(step: StepControl) -> f64 {
     match step {
         StepControl::Fixed { step } => step,
         StepControl::Adaptive { initial_step, .. } => initial_step,
+    }
+}
+
+/// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
+/// report (through `Deref`, so `step.end.q` reads as on a [`StepReport`]), dense output with
+/// recomputed multipliers, and a way to stop the run.
+pub struct Observation<'a, 's, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    pub(crate) simulator: &'a mut Simulator<'s, S, N, Z>,
+    pub(crate) reason: StopReason,
+    pub(crate) stop: bool,
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Observation<'_, '_, S, N, Z> {
+    /// The step just taken.
+    pub fn report(&self) -> &StepReport<N, Z> {
+        self.simulator.last()
+    }
+
+    /// What [`Simulator::step`] returned for it.
+    pub fn reason(&self) -> StopReason {
+        self.reason
+    }
+
+    /// The impact, when the step was one ([`StopReason::Impact`]).
+    pub fn impact(&self) -> Option<&Impact<N, Z>> {
+        let impact = self.simulator.last_impact();
+        impact.filter(|_| self.reason == StopReason::Impact)
+    }
+
+    /// The gaps whose contact is closed after the step.
+    pub fn closed_gaps(&self) -> GapSet {
+        self.simulator.closed_gaps()
+    }
+
+    /// Dense output within the step just taken, multipliers recomputed: see
+    /// [`Simulator::sample`].
+    #[cfg(feature = "dense-output")]
+    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+        self.simulator.sample(t)
+    }
+
+    /// Ends [`Simulator::advance_to`] after this step, with [`StopReason::ObserverStopped`].
+    pub fn stop(&mut self) {
+        self.stop = true;
+    }
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> core::ops::Deref
+    for Observation<'_, '_, S, N, Z>
+{
+    type Target = StepReport<N, Z>;
+
+    fn deref(&self) -> &StepReport<N, Z> {
+        self.simulator.last()
     }
 }

@@ -1,14 +1,8 @@
 //! The seam between generated code and the runtime: one trait, implemented by
 //! `#[constrained_system]` (or by hand), with every size a const generic.
 
-use nalgebra::{SMatrix, SVector};
-
+pub use crate::dense::{Matrix, Vector};
 use crate::mass::MassMatrix;
-
-/// A column vector of `N` reals.
-pub type Vector<const N: usize> = SVector<f64, N>;
-/// An `R`×`C` matrix of reals.
-pub type Matrix<const R: usize, const C: usize> = SMatrix<f64, R, C>;
 
 /// A constrained mechanical system `M(q,t) q'' = F(q, q', t) - G(q, q', t)ᵀ λ`, `g(q, q', t) = 0`,
 /// with `N` coordinates and `Z` constraints: rows `0..POSITION_CONSTRAINTS` are position-level

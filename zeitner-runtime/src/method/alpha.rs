@@ -20,7 +20,7 @@ use crate::error::StepError;
 use crate::linalg::IterationFactor;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
-use crate::multipliers::Multipliers;
+use crate::polynomial::Multipliers;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The method's four parameters, from the spectral radius `ρ∞` at infinite frequency

@@ -13,8 +13,8 @@ use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::linalg::IterationFactor;
 use crate::model::{Acceleration, FactorOf, Model};
-use crate::multipliers::Multipliers;
 use crate::options::StepControl;
+use crate::polynomial::Multipliers;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A stiffly accurate DIRK tableau with `S` stages: the step end is the last stage.

@@ -3,7 +3,7 @@
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::model::Model;
-use crate::multipliers::Multipliers;
+use crate::polynomial::Multipliers;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// An explicit Runge–Kutta tableau with `S` stages.

@@ -16,8 +16,8 @@ pub(crate) mod explicit;
 
 use crate::error::StepError;
 use crate::model::Model;
-use crate::multipliers::Multipliers;
 use crate::options::{InnerMethod, StepControl};
+use crate::polynomial::Multipliers;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
@@ -251,7 +251,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::multipliers::Multipliers;
+    use crate::polynomial::Multipliers;
     use crate::testing::{swinging, PENDULUM};
 
     /// The exact sensitivity of a method's step map against central differences of the map,

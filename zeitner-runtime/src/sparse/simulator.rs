@@ -12,18 +12,19 @@ use super::configuration::{
 use crate::consistency::StartReport;
 use crate::control::{
     bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, Controller,
-    Progress,
+    Progress, LARGEST_STEP,
 };
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 use crate::linalg::max_abs;
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
 use crate::model::{finite, Evaluations};
-use crate::multipliers::{carried_share, Predictor, StepPolynomial};
+use crate::multipliers::{carried_share, Predictor};
 use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,
 };
 use crate::output::{Point, StepReport, StopReason};
-use crate::simulator::{already_there, first_step, Statistics, LARGEST_STEP};
+use crate::polynomial::StepPolynomial;
+use crate::simulator::{already_there, first_step, Statistics};
 use crate::system::{ConstrainedSystem, MassKind, Vector};
 
 /// Position projections at the start take at most this many Newton sweeps.

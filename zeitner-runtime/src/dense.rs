@@ -1,0 +1,8 @@
+//! The fixed-size dense storage on the stack: every size a const generic.
+
+use nalgebra::{SMatrix, SVector};
+
+/// A column vector of `N` reals.
+pub type Vector<const N: usize> = SVector<f64, N>;
+/// An `R`×`C` matrix of reals.
+pub type Matrix<const R: usize, const C: usize> = SMatrix<f64, R, C>;
