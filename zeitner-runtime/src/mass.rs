@@ -125,7 +125,10 @@ mod tests {
         let factor = FullMass(a).factor().expect("positive definite");
         let ours = MassFactor::solve(&factor, &b);
         let theirs = Cholesky::solve(&factor, &b);
-        assert!((ours - theirs).amax() <= 1e-14 * theirs.amax(), "{ours} {theirs}");
+        assert!(
+            (ours - theirs).amax() <= 1e-14 * theirs.amax(),
+            "{ours} {theirs}"
+        );
         assert!((a * ours - b).amax() < 1e-13, "{}", a * ours - b);
     }
 }
