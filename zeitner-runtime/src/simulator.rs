@@ -116,6 +116,17 @@ enum Attempt<const N: usize, const Z: usize> {
     },
 }
 
+/// What re-anchoring the run at a consistent point forgets besides the multipliers' history
+/// and the inner method's memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Forget {
+    /// Nothing more: the step size and its controller go on (a re-projection).
+    History,
+    /// The step size, its controller and the remainder carried towards stop times too (a new
+    /// state, an impact).
+    Steps,
+}
+
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// Starts at `(q0, v0)` at time `t0`. With the default [`crate::StartPolicy::Project`] the
     /// start is first made consistent — positions projected onto `g = 0` and velocities onto
@@ -254,22 +265,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 ))
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
-        let point = last.end;
-        // The consistent start's acceleration.
-        Method::<N, Z>::restart(&mut self.method, || Ok(point.a));
-        self.watch = watch;
+        self.anchor((last, watch, Some(report)), Forget::Steps);
         self.pending = Pending::default();
-        self.last = last;
-        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        self.t_carry = 0.0;
-        self.state_gram = None;
-        self.predictor.reset();
-        self.controller = Controller::new();
-        self.planned_step = first_step(self.options.step);
         self.progress = Progress::default();
         self.stop_time = self.stop_time.filter(|&stop| stop > t);
         self.next_time_event = self.find_time_event();
-        self.start_report = report;
         Ok(report)
     }
 
@@ -384,9 +384,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
         let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
         let watch = watch_at(model, &last.end, tolerance)?;
-        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        (self.last, self.start_report, self.watch) = (last, report, watch);
-        self.restart_predictors();
+        self.anchor((last, watch, Some(report)), Forget::History);
         Ok(())
     }
 
@@ -695,15 +693,37 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         });
         let (impact, last, report, watch) =
             resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
+        self.anchor((last, watch, Some(report)), Forget::Steps);
+        self.last_impact = Some(impact);
+        Ok(())
+    }
+
+    /// Goes on from a consistent point `last.end` made at a new state, a re-projection or an
+    /// impact: the one transaction that re-anchors the run there. The state, the report, the
+    /// watched functions' values and (where the point was made as a start) the start report are
+    /// replaced; the multipliers' history and the inner method's memory start afresh from the
+    /// point's acceleration, and with [`Forget::Steps`] the step size too. Cold: off the step's
+    /// hot path.
+    #[cold]
+    fn anchor(
+        &mut self,
+        (last, watch, start): (StepReport<N, Z>, Watch, Option<StartReport<N, Z>>),
+        forget: Forget,
+    ) {
         let point = last.end;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        (self.last, self.start_report, self.watch) = (last, report, watch);
-        self.last_impact = Some(impact);
-        self.t_carry = 0.0;
-        self.restart_predictors();
-        self.controller = Controller::new();
-        self.planned_step = first_step(self.options.step);
-        Ok(())
+        (self.last, self.watch) = (last, watch);
+        if let Some(report) = start {
+            self.start_report = report;
+        }
+        self.predictor.reset();
+        self.state_gram = None;
+        Method::<N, Z>::restart(&mut self.method, || Ok(point.a));
+        if forget == Forget::Steps {
+            self.t_carry = 0.0;
+            self.controller = Controller::new();
+            self.planned_step = first_step(self.options.step);
+        }
     }
 
     /// After a discontinuity the multipliers' history, and the inner method's memory, say
