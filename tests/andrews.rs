@@ -108,13 +108,7 @@ fn matches_the_published_solution_at_t_003() {
 fn tight_tolerances_with_the_default_constraint_tolerance_reach_the_end() {
     let options = Options {
         multipliers: MultiplierModel::Quadratic,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol: 1.6472185783136928e-10,
-            atol: 2.5864817078419814e-14,
-        },
+        step: StepControl::adaptive(1.6472185783136928e-10).with_atol(2.5864817078419814e-14),
         ..Options::default()
     };
     let (end, _) = end_at_the_published_time(options);

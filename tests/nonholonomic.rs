@@ -129,13 +129,7 @@ fn local_error_report() {
 fn adaptive(rtol: f64, multipliers: MultiplierModel) -> Options {
     Options {
         multipliers,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol,
-            atol: rtol * 1e-2,
-        },
+        step: StepControl::adaptive(rtol).with_atol(rtol * 1e-2),
         constraint_tolerance: 1e-13,
         ..Options::default()
     }

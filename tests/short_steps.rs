@@ -106,13 +106,7 @@ fn crank_run(
     let atol = rtol / 10.0;
     let options = Options {
         multipliers,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol,
-            atol,
-        },
+        step: StepControl::adaptive(rtol).with_atol(atol),
         ..Options::default()
     };
     let (q0, v0) = scene.at_rest(phi0);
@@ -195,13 +189,7 @@ fn steam_generator_with_time_events() -> (f64, f64) {
     let options = Options {
         multipliers: MultiplierModel::Constant,
         sensitivity: zeitner::Sensitivity::Paper,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol: 1.1160194108777093e-10,
-            atol: 1.44818171140796e-14,
-        },
+        step: StepControl::adaptive(1.1160194108777093e-10).with_atol(1.44818171140796e-14),
         ..Options::default()
     };
     let t_end = 0.04553;
@@ -331,13 +319,7 @@ fn a_diverging_newton_does_not_call_a_regular_mechanism_singular() {
     let options = Options {
         multipliers: MultiplierModel::Quadratic,
         sensitivity: zeitner::Sensitivity::Paper,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol: 6.919003121907622e-7,
-            atol: 2.0156338649399754e-9,
-        },
+        step: StepControl::adaptive(6.919003121907622e-7).with_atol(2.0156338649399754e-9),
         ..Options::default()
     };
     let (q0, v0) = scene.at_rest(phi0);
@@ -367,13 +349,7 @@ fn tighter_tolerances_then_a_stop_a_few_ulps_later() {
     };
     let adaptive = |rtol: f64, atol: f64| Options {
         multipliers: MultiplierModel::Constant,
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol,
-            atol,
-        },
+        step: StepControl::adaptive(rtol).with_atol(atol),
         ..Options::default()
     };
     let loose = adaptive(2.2085540394605744e-9, 1.1592264999455646e-10);

@@ -170,7 +170,7 @@ impl MultiplierModel {
 pub enum StepControl {
     /// Every step has this size (the last one is shortened to land on the stop time).
     Fixed { step: f64 },
-    /// Steps chosen from the inner method's error estimate (`DormandPrince54` only) and from the
+    /// Steps chosen from the inner method's error estimate (Dormand–Prince and the ESDIRKs) and from the
     /// Newton iteration count, always within `min_step..=max_step`. The error of `q` and `q'` is
     /// measured component by component against `atol + rtol·|x|` in a root mean square;
     /// `atol` must be positive (a coordinate that stays at zero has no relative scale).
@@ -182,6 +182,53 @@ pub enum StepControl {
         rtol: f64,
         atol: f64,
     },
+}
+
+impl StepControl {
+    /// Adaptive steps to the relative tolerance `rtol`, with `atol = rtol / 100` and the
+    /// default bounds (`initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞); the default
+    /// options' steps are `StepControl::adaptive(1e-8)`.
+    ///
+    /// ```
+    /// use zeitner_runtime::{Options, StepControl};
+    ///
+    /// let tight = Options {
+    ///     step: StepControl::adaptive(1e-10).with_atol(1e-13),
+    ///     ..Options::default()
+    /// };
+    /// assert!(tight.validate().is_ok());
+    /// assert_eq!(Options::default().step, StepControl::adaptive(1e-8));
+    /// ```
+    pub fn adaptive(rtol: f64) -> Self {
+        StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: f64::INFINITY,
+            rtol,
+            atol: rtol / 100.0,
+        }
+    }
+
+    /// The same steps with the absolute tolerance `atol` (in each coordinate's unit); fixed
+    /// steps, which have none, are returned as they are.
+    pub fn with_atol(self, atol: f64) -> Self {
+        match self {
+            StepControl::Adaptive {
+                initial_step,
+                min_step,
+                max_step,
+                rtol,
+                ..
+            } => StepControl::Adaptive {
+                initial_step,
+                min_step,
+                max_step,
+                rtol,
+                atol,
+            },
+            fixed @ StepControl::Fixed { .. } => fixed,
+        }
+    }
 }
 
 /// Whether a start that violates the constraints is moved onto them.
@@ -258,13 +305,7 @@ impl Default for Options {
         Options {
             method: InnerMethod::DormandPrince54,
             multipliers: MultiplierModel::Automatic,
-            step: StepControl::Adaptive {
-                initial_step: 1e-3,
-                min_step: 1e-12,
-                max_step: f64::INFINITY,
-                rtol: 1e-8,
-                atol: 1e-10,
-            },
+            step: StepControl::adaptive(1e-8),
             #[cfg(feature = "exact-sensitivity")]
             sensitivity: Sensitivity::Exact,
             #[cfg(not(feature = "exact-sensitivity"))]

@@ -117,13 +117,7 @@ fn sensible_options(rng: &mut Rng) -> Options {
         } else {
             Sensitivity::Paper
         },
-        step: StepControl::Adaptive {
-            initial_step: 1e-3,
-            min_step: 1e-12,
-            max_step: f64::INFINITY,
-            rtol,
-            atol,
-        },
+        step: StepControl::adaptive(rtol).with_atol(atol),
         ..Options::default()
     }
 }
