@@ -1,0 +1,356 @@
+//! One step as a transaction: plan its size, predict the multipliers, let Newton hold the
+//! constraints at its end, test its error, and accept it or say how to retry.
+
+use super::Simulator;
+use crate::consistency::{end_point, end_report, tangential, Gram};
+use crate::control::{
+    error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, Controller,
+};
+use crate::error::{RowSet, StepError};
+use crate::method::{Method, Start, StepEnd};
+use crate::multipliers::{self, NewtonOutcome, NewtonSettings};
+use crate::options::{MultiplierModel, StepControl, VelocityProjection};
+use crate::output::Point;
+use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::system::{ConstrainedSystem, Vector};
+
+/// A step whose constraints hold and whose error is within tolerance.
+pub(super) struct Accepted<const N: usize, const Z: usize> {
+    pub(super) q: Vector<N>,
+    pub(super) v: Vector<N>,
+    /// The consistent end point (velocities projected, multipliers recomputed).
+    pub(super) point: Point<N, Z>,
+    pub(super) multipliers: StepPolynomial<Z>,
+    pub(super) integrations: u32,
+    pub(super) error_norm: f64,
+    /// `G` and `G M⁻¹Gᵀ` at the end point.
+    pub(super) gram: Gram<N, Z>,
+}
+
+pub(super) enum Attempt<const N: usize, const Z: usize> {
+    Accepted(Accepted<N, Z>),
+    /// Retry with the step multiplied by `factor`; `cause` is the error if no smaller step is
+    /// possible.
+    Rejected {
+        factor: f64,
+        cause: StepError,
+    },
+}
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// The next try: its size, its end time, and whether it lands on the stop time.
+    pub(super) fn plan(
+        &self,
+        h: f64,
+        limit: f64,
+        retry: bool,
+    ) -> Result<(f64, f64, bool), StepError> {
+        let sliver = self.options.controller.landing_fraction;
+        plan_step(
+            (self.time(), self.t_carry),
+            h,
+            limit,
+            (!retry).then_some(sliver),
+        )
+    }
+
+    /// The step after a rejection, or the error when there is none.
+    pub(super) fn retry(
+        &mut self,
+        rejected: (f64, u32),
+        cause: StepError,
+    ) -> Result<f64, StepError> {
+        match retry_step(self.options.step, self.time(), rejected, cause) {
+            Ok(h) => Ok(h),
+            Err(cause) => Err(self.singular_configuration()?.unwrap_or(cause)),
+        }
+    }
+
+    /// When a step cannot be completed: whether some constraint gradients have all but vanished
+    /// (below 1e-3 of their size at the start), a singular configuration such as a cusp, which
+    /// explains the failure better than the failure itself.
+    pub(super) fn singular_configuration(&mut self) -> Result<Option<StepError>, StepError> {
+        let g = self.model.jacobian(&self.q, &self.v, self.time())?;
+        let mut rows = RowSet::new(S::POSITION_CONSTRAINTS);
+        let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+        let open = self.model.open_gaps();
+        let vanishing = |j: usize| g.row(j).norm() < 1e-3 * self.jacobian_row_scale[j];
+        let open_gap = |j: usize| j >= first_gap && open.contains(j - first_gap);
+        for j in (0..Z).filter(|&j| vanishing(j) && !open_gap(j)) {
+            rows.insert(j);
+        }
+        Ok(
+            (!rows.is_empty()).then_some(StepError::RankDeficientConstraints {
+                t: self.time(),
+                dependent_rows: rows,
+            }),
+        )
+    }
+
+    /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model;
+    /// `planned` is the size the controller planned before the step was shortened to land or to
+    /// aim at a crossing, which sets how far the step corrects the residuals it starts with.
+    pub(super) fn attempt(
+        &mut self,
+        (h, planned): (f64, f64),
+        t_end: f64,
+    ) -> Result<Attempt<N, Z>, StepError> {
+        let method = self.options.method;
+        match self
+            .options
+            .multipliers
+            .resolve(method, S::POSITION_CONSTRAINTS, Z)
+        {
+            MultiplierModel::Automatic | MultiplierModel::Constant => {
+                let p = self.constant_guess(h, planned)?;
+                let multipliers = Multipliers {
+                    base: Vector::zeros(),
+                    coefficients: [p],
+                    first_power: 0,
+                };
+                self.attempt_with((h, planned), t_end, multipliers)
+            }
+            #[cfg(feature = "quadratic-multipliers")]
+            MultiplierModel::Quadratic => {
+                let multipliers = Multipliers {
+                    base: self.lambda,
+                    coefficients: self.predictor.continued::<2>(h),
+                    first_power: 1,
+                };
+                self.attempt_with((h, planned), t_end, multipliers)
+            }
+        }
+    }
+
+    /// The constant multipliers Newton starts from: with position-level rows only, those that
+    /// make the linearised constraint hold at the step end; else extrapolated from the last two
+    /// steps (or, without extrapolation, the last step's, as in the paper).
+    pub(super) fn constant_guess(&mut self, h: f64, planned: f64) -> Result<Vector<Z>, StepError> {
+        let extrapolate = self.options.extrapolate_multipliers;
+        if let Some((at, consistent_v)) = self.state_gram.filter(|_| extrapolate) {
+            // Position rows: `g` does not depend on the velocities (the report's serves), and
+            // `w` is linear in them, zero at the consistent ones.
+            let w = at.jacobian * (self.v - consistent_v);
+            let residuals = (&self.last.residual, &w);
+            // A first guess only: a plain Cholesky solve, without the rank diagnosis of
+            // `solve_spd`.
+            let solve = |b: &Vector<Z>| nalgebra::Cholesky::new(at.gram).map(|c| c.solve(b));
+            let predicted = self.predictor.constant_from_constraints(
+                solve,
+                residuals,
+                &self.lambda,
+                (h, planned),
+            );
+            if let Some(p) = predicted.filter(|p| p.iter().all(|x| x.is_finite())) {
+                return Ok(p);
+            }
+        }
+        Ok(self.predictor.constant(h, extrapolate, self.lambda))
+    }
+
+    pub(super) fn attempt_with<const K: usize>(
+        &mut self,
+        (h, planned): (f64, f64),
+        t_end: f64,
+        guess: Multipliers<Z, K>,
+    ) -> Result<Attempt<N, Z>, StepError> {
+        let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
+        let state = (&self.q, &self.v, self.time());
+        let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?;
+        let settings = NewtonSettings {
+            steady_velocity_tolerance: self.embedded_order().is_some_and(|order| order < 3)
+                || self.options.method.is_stiff(),
+            tolerance: newton_tolerance(
+                &self.options,
+                (&self.q, &self.v),
+                &self.jacobian_row_scale,
+                S::POSITION_CONSTRAINTS,
+            ),
+            ceiling: self.options.constraint_tolerance,
+            max_iterations: self.options.max_newton_iterations,
+            exact: self.options.exact(),
+            accept_linearised: self.options.accept_linearised_update,
+            step: self.options.step,
+        };
+        let outcome = multipliers::solve(
+            &mut self.model,
+            &mut self.method,
+            &start,
+            h,
+            t_end,
+            (guess, &targets),
+            &settings,
+        )?;
+        match outcome {
+            NewtonOutcome::Converged {
+                end,
+                multipliers,
+                integrations,
+            } => {
+                self.statistics.newton_iterations += u64::from(integrations);
+                let constant = multipliers.first_power == 0 && K == 1;
+                self.conclude(end, &multipliers, constant, integrations, (h, t_end))
+            }
+            NewtonOutcome::Failed {
+                cause,
+                integrations,
+            } => {
+                self.statistics.newton_iterations += u64::from(integrations);
+                let factor = self.options.controller.newton_failure_factor;
+                Ok(Attempt::Rejected { factor, cause })
+            }
+        }
+    }
+
+    /// A step whose constraints hold: its consistent end point and error test.
+    pub(super) fn conclude<const K: usize>(
+        &mut self,
+        end: StepEnd<N, Z, K>,
+        multipliers: &Multipliers<Z, K>,
+        constant: bool,
+        integrations: u32,
+        (h, t_end): (f64, f64),
+    ) -> Result<Attempt<N, Z>, StepError> {
+        let tolerance = self.options.constraint_tolerance;
+        let (point, gram) = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
+        let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
+        let frozen = if constant && adaptive {
+            // `G` at the step start is the last end point's, where no gap can have opened since.
+            let known = self.state_gram.filter(|_| S::UNILATERAL_CONSTRAINTS == 0);
+            let g1 = match known {
+                Some((at, _)) => at.jacobian,
+                None => self.model.jacobian(&self.q, &self.v, self.time())?,
+            };
+            let start = (&g1, &self.lambda, self.time());
+            let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
+            freezing_error(&mut self.model, start, end_state)?
+        } else {
+            (Vector::zeros(), Vector::zeros())
+        };
+        // Both `g` and `ġ` hold at the end by construction: the estimate's normal part measures
+        // only the embedded solution, see `consistency::tangential`.
+        let projected = K > 1 && adaptive && self.embedded_order().is_some_and(|k| k < 3);
+        let estimate = match end.error {
+            Some(estimate) if projected => Some(tangential(
+                &mut self.model,
+                (&end.q, &point.v, t_end),
+                estimate,
+            )?),
+            other => other,
+        };
+        let error = error_norm(
+            self.options.step,
+            (&self.q, &self.v),
+            (&end.q, &end.v),
+            estimate,
+            (&frozen.0, &frozen.1),
+        );
+        if !(error <= 1.0) {
+            let factor = Controller::rejected(&self.options.controller, error, self.error_order());
+            let cause = StepError::StepSizeTooSmall {
+                t: self.time(),
+                step: h,
+            };
+            return Ok(Attempt::Rejected { factor, cause });
+        }
+        Ok(Attempt::Accepted(Accepted {
+            q: end.q,
+            v: end.v,
+            point,
+            multipliers: multipliers.polynomial(h),
+            integrations,
+            error_norm: error,
+            gram,
+        }))
+    }
+
+    /// The order of the inner method's embedded solution, if it has one.
+    pub(super) fn embedded_order(&self) -> Option<u32> {
+        Method::<N, Z>::embedded_order(&self.method)
+    }
+
+    /// `k` for the controller: one more than the lower order of the error estimate.
+    pub(super) fn error_order(&self) -> u32 {
+        let method = &self.method;
+        let order = Method::<N, Z>::order(method);
+        Method::<N, Z>::embedded_order(method)
+            .unwrap_or(order)
+            .min(order)
+            + 1
+    }
+
+    pub(super) fn accept(
+        &mut self,
+        step: Accepted<N, Z>,
+        t_end: f64,
+        (h_used, h_planned): (f64, f64),
+        landing: bool,
+    ) -> Result<(), StepError> {
+        let step_multipliers = step.multipliers.at_end();
+        let mut reported = step.point;
+        if self.options.velocity_projection == VelocityProjection::Off {
+            // Raw output: velocities and multipliers as the paper has them.
+            reported.v = step.v;
+            reported.lambda = step_multipliers;
+            reported.a = self
+                .model
+                .acceleration(&step.q, &step.v, t_end, &step_multipliers)?
+                .a;
+        }
+        // `G` of the end point serves the report unless the reported velocities differ and
+        // some row depends on them.
+        let raw = self.options.velocity_projection == VelocityProjection::Off;
+        let known = (!raw || S::POSITION_CONSTRAINTS == Z).then_some(&step.gram.jacobian);
+        let report = end_report(
+            &mut self.model,
+            self.last.end,
+            reported,
+            step_multipliers,
+            step.integrations,
+            known,
+        )?;
+        self.t_carry = if landing {
+            0.0
+        } else {
+            (h_used + self.t_carry) - (t_end - self.time())
+        };
+        Method::<N, Z>::accepted(&mut self.method, &step.v);
+        self.q = step.q;
+        self.v = match self.options.velocity_projection {
+            VelocityProjection::State => step.point.v,
+            _ => step.v,
+        };
+        self.predictor
+            .record(step.multipliers, &self.lambda, &step.point.lambda);
+        self.lambda = step.point.lambda;
+        let position_rows_only = S::POSITION_CONSTRAINTS == Z;
+        self.state_gram = position_rows_only.then_some((step.gram, step.point.v));
+        self.last = report;
+        self.planned_step = self.next_step(h_used, h_planned, &step, landing);
+        self.progress.record(h_used, t_end);
+        self.statistics.steps += 1;
+        self.statistics.max_newton_iterations =
+            self.statistics.max_newton_iterations.max(step.integrations);
+        Ok(())
+    }
+
+    /// The step the controller plans after an accepted one.
+    pub(super) fn next_step(
+        &mut self,
+        h_used: f64,
+        h_planned: f64,
+        step: &Accepted<N, Z>,
+        landing: bool,
+    ) -> f64 {
+        let k = self.error_order();
+        let accepted = (step.error_norm, step.integrations);
+        next_step_size(
+            &self.options,
+            &mut self.controller,
+            k,
+            accepted,
+            (h_used, h_planned),
+            landing,
+        )
+    }
+}

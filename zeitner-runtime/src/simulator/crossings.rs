@@ -1,0 +1,230 @@
+//! After a step: the zero crossings of event functions and gaps it found, where the step is
+//! aimed again to end at one, the events and impacts it reports, and contacts that open.
+
+use super::attempt::Accepted;
+use super::{start_point, watch_at, Forget, Simulator};
+use crate::consistency::{consistent_point, end_report};
+use crate::contact;
+use crate::error::StepError;
+use crate::events::{self, Crossing, Direction, Values};
+use crate::gaps::GapSet;
+use crate::output::{Point, StopReason};
+use crate::system::ConstrainedSystem;
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// The watched functions at a candidate step's end, and their earliest crossing of interest
+    /// within the step.
+    pub(super) fn crossing(
+        &mut self,
+        step: &Accepted<N, Z>,
+        t_end: f64,
+    ) -> Result<(Option<Values>, Option<Crossing>), StepError> {
+        if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
+            return Ok((None, None));
+        }
+        let end = Point {
+            t: t_end,
+            ..step.point
+        };
+        let values = events::values(&mut self.model, &end, &self.watch)?;
+        let tolerance = self.time_tolerance();
+        let start = self.last.end;
+        let ends = (&start, &end);
+        let crossing = events::earliest(&mut self.model, ends, &self.watch, &values, tolerance)?;
+        Ok((Some(values), crossing))
+    }
+
+    /// The events' time tolerance, or what the time's resolution allows where it is coarser.
+    pub(super) fn time_tolerance(&self) -> f64 {
+        let resolution = 8.0 * f64::EPSILON * self.time().abs();
+        self.options.events.time_tolerance.max(resolution)
+    }
+
+    /// Where a step with a crossing should end instead of `t_end`: half the time tolerance
+    /// beyond it (before it for a gap), or nowhere new if `t_end` is that already.
+    pub(super) fn aim(&self, crossing: Crossing, t_end: f64) -> Option<f64> {
+        let half = 0.5 * self.time_tolerance();
+        let offset = if crossing.watched.lands_before() {
+            -half
+        } else {
+            half
+        };
+        let now = self.time();
+        let aim = (crossing.t + offset).max(now + half).min(t_end);
+        (aim < t_end && t_end - aim > 0.25 * half && aim > now).then_some(aim)
+    }
+
+    /// The middle of a step with a crossing, unless the step is within the time tolerance.
+    pub(super) fn halve(&self, t_end: f64) -> Option<f64> {
+        let now = self.time();
+        let middle = now + 0.5 * (t_end - now);
+        let wide = t_end - now > 0.5 * self.time_tolerance();
+        (wide && middle > now && middle < t_end).then_some(middle)
+    }
+
+    /// What a step that was just accepted stopped for.
+    #[inline]
+    pub(super) fn after_step(
+        &mut self,
+        values: Option<&Values>,
+        t_end: f64,
+        (landing, time_event): (bool, Option<f64>),
+        aimed: bool,
+    ) -> Result<StopReason, StepError> {
+        // A time event landed on is passed even where a crossing is reported first.
+        let time_event_reached = landing && time_event == Some(t_end);
+        if time_event_reached {
+            self.next_time_event = self.find_time_event();
+            self.restart_predictors();
+        }
+        if let Some(values) = values {
+            // A stop time reached here as well is reported by the next call.
+            if let Some(reason) = self.resolve_crossings(values)? {
+                return Ok(reason);
+            }
+        }
+        if landing && self.stop_time == Some(t_end) {
+            self.stop_time = None;
+            return Ok(StopReason::StopTimeReached);
+        }
+        if time_event_reached {
+            return Ok(StopReason::TimeEventReached);
+        }
+        if aimed {
+            return Ok(StopReason::CrossingAhead);
+        }
+        Ok(StopReason::StepTaken)
+    }
+
+    /// The crossings at the step end: event functions that changed side (returned, the later
+    /// ones kept for the next calls), contacts whose force would pull (opened now), gaps
+    /// closing (their impact kept for the next call).
+    pub(super) fn resolve_crossings(
+        &mut self,
+        values: &Values,
+    ) -> Result<Option<StopReason>, StepError> {
+        let open = self.model.open_gaps();
+        let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS);
+        let watch = self
+            .watch
+            .after(values, counts, open, self.options.constraint_tolerance);
+        let events = (0..S::EVENTS)
+            .filter(|&i| watch.event(i) != self.watch.event(i))
+            .fold(0u32, |bits, i| bits | (1 << i));
+        let mut releasing = GapSet::EMPTY;
+        for k in (0..S::UNILATERAL_CONSTRAINTS).filter(|&k| !open.contains(k)) {
+            if values.gaps[k] > 0.0 {
+                releasing.insert(k);
+            }
+        }
+        let closing = self.closing_gaps(values)?;
+        self.watch = watch;
+        if !releasing.is_empty() {
+            self.open_contacts(releasing)?;
+        }
+        self.pending.rising = watch.event_bits();
+        self.pending.events = events;
+        self.pending.impact = closing;
+        if let Some(reason) = self.next_event() {
+            return Ok(Some(reason));
+        }
+        if !closing.is_empty() {
+            return Ok(Some(StopReason::GapsClosing { gaps: closing }));
+        }
+        Ok((!releasing.is_empty()).then_some(StopReason::ContactsOpened { gaps: releasing }))
+    }
+
+    /// Open gaps at the current end that close now: approaching, and within the time tolerance
+    /// (or the constraint tolerance) of their level, or past it.
+    pub(super) fn closing_gaps(&mut self, values: &Values) -> Result<GapSet, StepError> {
+        let mut closing = GapSet::EMPTY;
+        let open = self.model.open_gaps();
+        let near = self.options.constraint_tolerance;
+        if open.is_empty() {
+            return Ok(closing);
+        }
+        let end = self.last.end;
+        let rates = self.model.gap_rates(&end.q, &end.v, end.t)?;
+        let window = 2.0 * self.time_tolerance();
+        for k in open.iter() {
+            if rates[k] < 0.0 && (values.gaps[k] <= near || values.gaps[k] <= -rates[k] * window) {
+                closing.insert(k);
+            }
+        }
+        Ok(closing)
+    }
+
+    /// Opens the contacts of `gaps` at the current end: multipliers, and the report made from
+    /// them, recomputed without them.
+    pub(super) fn open_contacts(&mut self, gaps: GapSet) -> Result<(), StepError> {
+        let open = self.model.open_gaps();
+        self.model.set_open_gaps(open.union(gaps));
+        let last = &self.last;
+        let (start, end) = (last.start, last.end);
+        let step = (last.step_multipliers, last.newton_iterations);
+        let tolerance = self.options.constraint_tolerance;
+        let settled = consistent_point(&mut self.model, end.t, end.q, end.v).and_then(|point| {
+            let report = end_report(&mut self.model, start, point, step.0, step.1, None)?;
+            Ok((report, watch_at(&mut self.model, &point, tolerance)?))
+        });
+        let (report, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
+        let point = report.end;
+        (self.last, self.watch) = (report, watch);
+        self.lambda = point.lambda;
+        self.restart_predictors();
+        Ok(())
+    }
+
+    /// The next event function found at the last step end and not yet returned.
+    pub(super) fn next_event(&mut self) -> Option<StopReason> {
+        let index = (0..S::EVENTS).find(|&i| self.pending.events & (1 << i) != 0)?;
+        self.pending.events &= !(1 << index);
+        let direction = if self.pending.rising & (1 << index) != 0 {
+            Direction::Rising
+        } else {
+            Direction::Falling
+        };
+        Some(StopReason::Event { index, direction })
+    }
+
+    /// What the last step end left to report: events, then an impact.
+    pub(super) fn pending_stop(&mut self) -> Result<Option<StopReason>, StepError> {
+        if let Some(reason) = self.next_event() {
+            return Ok(Some(reason));
+        }
+        if self.pending.impact.is_empty() {
+            return Ok(None);
+        }
+        self.impact(self.pending.impact)?;
+        self.pending.impact = GapSet::EMPTY;
+        Ok(Some(StopReason::Impact))
+    }
+
+    /// The impact of `gaps` at the current state: the velocity jump, the contacts that stay
+    /// closed, and a consistent state after it, reported as a step of zero length.
+    pub(super) fn impact(&mut self, gaps: GapSet) -> Result<(), StepError> {
+        let before = self.last.end;
+        let open = self.model.open_gaps();
+        let rest = self.options.events.rest_velocity;
+        let tolerance = self.options.constraint_tolerance;
+        let resolved = contact::impact(
+            &mut self.model,
+            (&before.q, &before.v, before.t),
+            gaps,
+            rest,
+        )
+        .and_then(|impact| {
+            let state = (before.q, impact.velocity_after, before.t);
+            let (mut last, report, _) = start_point(&mut self.model, state, &self.options)?;
+            contact::open_pulling(&mut self.model, &mut last.end)?;
+            let last = end_report(&mut self.model, before, last.end, last.end.lambda, 0, None)?;
+            let watch = watch_at(&mut self.model, &last.end, tolerance)?;
+            Ok((impact, last, report, watch))
+        });
+        let (impact, last, report, watch) =
+            resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
+        self.anchor((last, watch, Some(report)), Forget::Steps);
+        self.last_impact = Some(impact);
+        Ok(())
+    }
+}

@@ -1,0 +1,388 @@
+//! The orchestration of Zeitner's step: predict the multipliers, let Newton correct them until
+//! the constraints hold at the step end, test the error, accept or retry, report. Each of those
+//! is a part of its own (`multipliers`, `method`, [`crate::control`], [`crate::consistency`],
+//! [`crate::output`]); this module puts them in order: one step as a transaction in `attempt`,
+//! what the step found (events, gaps, impacts) in `crossings`, changes made mid-run in
+//! `reconfigure`, and what an observer sees in `observation`.
+
+mod attempt;
+mod crossings;
+mod observation;
+mod reconfigure;
+mod start;
+
+use start::{start_point, suits_the_rows, watch_at};
+
+pub use observation::Observation;
+
+use attempt::Attempt;
+
+use crate::consistency::{Gram, StartReport};
+use crate::contact::Impact;
+use crate::control::{bounds, Controller, Progress, LARGEST_STEP};
+use crate::error::{InvalidOption, StepError};
+use crate::events::Watch;
+use crate::gaps::GapSet;
+use crate::method::{AnyMethod, Method};
+use crate::model::{Evaluations, Model};
+use crate::multipliers::Predictor;
+use crate::options::{Options, StepControl};
+use crate::output::{Point, StepReport, StopReason};
+use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
+
+/// Counts over the whole run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Statistics {
+    pub steps: u64,
+    pub rejected_steps: u64,
+    /// Integrations of a step with prescribed multipliers (Newton sweeps), over all attempts.
+    pub newton_iterations: u64,
+    /// The most integrations one accepted step needed.
+    pub max_newton_iterations: u32,
+    /// Factorisations of an implicit method's iteration matrix.
+    pub iteration_matrix_factorizations: u64,
+    pub evaluations: Evaluations,
+}
+
+/// A constrained system being integrated. Holds the last accepted state; a failed step leaves
+/// it untouched.
+pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    model: Model<'s, S, N, Z>,
+    method: AnyMethod<N>,
+    options: Options,
+    controller: Controller,
+    predictor: Predictor<Z>,
+    /// The integration state; `v` is raw unless velocities are projected into the state.
+    q: Vector<N>,
+    v: Vector<N>,
+    /// What the rounding of the end times has lost so far (Neumaier summation).
+    t_carry: f64,
+    /// The consistent multipliers at the current time, the anchor of varying multipliers.
+    lambda: Vector<Z>,
+    /// `G` and `G M⁻¹Gᵀ` at the current state and the consistent velocities there, from the
+    /// last step's end point (the multiplier prediction's linearisation); none after a start.
+    state_gram: Option<(Gram<N, Z>, Vector<N>)>,
+    /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
+    jacobian_row_scale: Vector<Z>,
+    stop_time: Option<f64>,
+    /// The step size the controller plans next.
+    planned_step: f64,
+    /// Whether the accepted steps still advance the time.
+    progress: Progress,
+    last: StepReport<N, Z>,
+    start_report: StartReport<N, Z>,
+    statistics: Statistics,
+    /// The event functions' sides and the open gaps' levels at the current state.
+    watch: Watch,
+    /// What the next [`Simulator::step`] reports before it integrates.
+    pending: Pending,
+    last_impact: Option<Impact<N, Z>>,
+    /// Times the user asked steps to land on, besides the model's time events.
+    time_events: &'s [f64],
+    /// The first time event ahead, the model's or the user's (found again once reached).
+    next_time_event: Option<f64>,
+}
+
+/// Events found at the last step end and not yet returned, and gaps to close by an impact.
+#[derive(Clone, Copy, Debug, Default)]
+struct Pending {
+    /// Event functions that crossed, by bit, and which of them rose.
+    events: u32,
+    rising: u32,
+    impact: GapSet,
+}
+
+/// How many times a step is integrated again to end nearer a crossing before it is taken as it
+/// is (the next step finds the crossing again, from much nearer): first aimed at the crossing
+/// located on the dense output, then by halving, which converges on the exact trajectory
+/// however poor the dense output.
+const RELOCATIONS: u32 = 64;
+/// How many of those aim at the crossing located on the dense output; the rest halve the step.
+const AIMED_RELOCATIONS: u32 = 8;
+
+/// What re-anchoring the run at a consistent point forgets besides the multipliers' history
+/// and the inner method's memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Forget {
+    /// Nothing more: the step size and its controller go on (a re-projection).
+    History,
+    /// The step size, its controller and the remainder carried towards stop times too (a new
+    /// state, an impact).
+    Steps,
+}
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// Starts at `(q0, v0)` at time `t0`. With the default [`crate::StartPolicy::Project`] the
+    /// start is first made consistent — positions projected onto `g = 0` and velocities onto
+    /// the velocity-level constraint, both in the mass-matrix metric, multipliers from the
+    /// acceleration-level system — and [`Simulator::start_report`] says how far it moved.
+    pub fn new(
+        system: &'s S,
+        q0: Vector<N>,
+        v0: Vector<N>,
+        t0: f64,
+        options: Options,
+    ) -> Result<Self, StepError> {
+        options.validate()?;
+        suits_the_rows::<S, N, Z>(&options)?;
+        let fits = S::EVENTS <= MAX_EVENTS
+            && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
+            && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS;
+        if !fits {
+            return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
+        }
+        if (0..S::UNILATERAL_CONSTRAINTS).any(|k| !(0.0..=1.0).contains(&system.restitution(k))) {
+            return Err(StepError::InvalidOption(InvalidOption::Restitution));
+        }
+        let mut model = Model::new(system);
+        let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
+        let point = last.end;
+        let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
+        let mut simulator = Simulator {
+            model,
+            method: AnyMethod::new(options.method, options.step),
+            options,
+            controller: Controller::new(),
+            predictor: Predictor::default(),
+            q: point.q,
+            v: point.v,
+            t_carry: 0.0,
+            lambda: point.lambda,
+            state_gram: None,
+            jacobian_row_scale: Vector::from_fn(|j, _| start_jacobian.row(j).norm()),
+            stop_time: None,
+            planned_step: first_step(options.step),
+            progress: Progress::default(),
+            last,
+            start_report,
+            statistics: Statistics::default(),
+            watch,
+            pending: Pending::default(),
+            last_impact: None,
+            time_events: &[],
+            next_time_event: None,
+        }
+        .with_next_time_event();
+        simulator.restart_method();
+        Ok(simulator)
+    }
+
+    /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
+    /// the acceleration at the current state with the consistent multipliers there (evaluated
+    /// only for a method with memory).
+    fn restart_method(&mut self) {
+        let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
+        let model = &mut self.model;
+        Method::<N, Z>::restart(&mut self.method, || {
+            Ok(model.acceleration(&q, &v, t, &lambda)?.a)
+        });
+    }
+
+    /// How the start (or the last re-initialised state) was made consistent.
+    pub fn start_report(&self) -> &StartReport<N, Z> {
+        &self.start_report
+    }
+
+    /// Dense output within the last step with the multipliers and accelerations recomputed
+    /// from the acceleration-level system at the interpolated state, so that they are as
+    /// accurate as the positions and velocities. `t` must lie within the last step.
+    #[cfg(feature = "dense-output")]
+    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+        let (start, end) = (self.last.start.t, self.last.end.t);
+        if !(t >= start && t <= end) {
+            return Err(StepError::InvalidOption(InvalidOption::SampleTime));
+        }
+        let point = self.last.sample(t);
+        crate::consistency::consistent_point(&mut self.model, t, point.q, point.v)
+    }
+
+    /// The last accepted step (at the start: the consistent initial point).
+    pub fn last(&self) -> &StepReport<N, Z> {
+        &self.last
+    }
+
+    /// The current time: the end of the last accepted step.
+    pub fn time(&self) -> f64 {
+        self.last.end.t
+    }
+
+    pub fn statistics(&self) -> Statistics {
+        Statistics {
+            evaluations: self.model.evaluations,
+            iteration_matrix_factorizations: Method::<N, Z>::factorizations(&self.method),
+            ..self.statistics
+        }
+    }
+
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports
+    /// [`StopReason::StopTimeReached`] and the stop time is cleared).
+    pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
+        if !(t > self.time()) || !t.is_finite() {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        self.stop_time = Some(t);
+        Ok(())
+    }
+
+    /// One accepted step, not beyond the stop time nor past a zero crossing of an event
+    /// function or a gap; says why it returned. Events found at the last step end and an
+    /// impact due there are returned first, one per call, without a step.
+    pub fn step(&mut self) -> Result<StopReason, StepError> {
+        if let Some(reason) = self.pending_stop()? {
+            return Ok(reason);
+        }
+        if self.stop_time == Some(self.time()) {
+            // Reached by a step that stopped for an event as well.
+            self.stop_time = None;
+            return Ok(StopReason::StopTimeReached);
+        }
+        self.progress.check(self.time())?;
+        let stop = self.stop_time.unwrap_or(f64::INFINITY);
+        let time_event = self.next_time_event.filter(|&t| t > self.time());
+        let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
+        let (min_step, max_step) = bounds(self.options.step);
+        let mut h = self
+            .planned_step
+            .clamp(min_step, max_step)
+            .min(LARGEST_STEP);
+        let planned = h;
+        // The size the step's residual correction is made for: the controller's, until a
+        // rejection replaces it; a step shortened to land or to aim at a crossing keeps it.
+        let mut reach = h;
+        let (mut retry, mut target, mut relocations, mut attempts) = (false, None::<f64>, 0, 0);
+        loop {
+            let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
+            retry = true;
+            match self.attempt((h_try, reach), t_end)? {
+                Attempt::Accepted(step) => {
+                    let (values, crossing) = self.crossing(&step, t_end)?;
+                    // Where the dense output is too poor to aim by, halve the step instead.
+                    let aim = match crossing {
+                        Some(c) if relocations < AIMED_RELOCATIONS => self.aim(c, t_end),
+                        Some(_) => self.halve(t_end),
+                        None => None,
+                    };
+                    if let Some(aim) = aim {
+                        if relocations < RELOCATIONS {
+                            (relocations, target, h) =
+                                (relocations + 1, Some(aim), aim - self.time());
+                            continue;
+                        }
+                    }
+                    let landed = landing && target.is_none_or(|aim| aim == t_end);
+                    let aimed = landing && target == Some(t_end);
+                    self.accept(step, t_end, (h_try, planned.max(h)), landed)?;
+                    return self.after_step(values.as_ref(), t_end, (landing, time_event), aimed);
+                }
+                Attempt::Rejected { factor, cause } => {
+                    self.statistics.rejected_steps += 1;
+                    attempts += 1;
+                    h = self.retry((h_try * factor, attempts), cause)?;
+                    reach = h;
+                    target = target.filter(|&aim| self.time() + h >= aim);
+                }
+            }
+        }
+    }
+
+    /// The last impact, if any (see [`StopReason::Impact`]).
+    pub fn last_impact(&self) -> Option<&Impact<N, Z>> {
+        self.last_impact.as_ref()
+    }
+
+    /// The gaps whose contact is closed now.
+    pub fn closed_gaps(&self) -> GapSet {
+        GapSet::first(S::UNILATERAL_CONSTRAINTS).without(self.model.open_gaps())
+    }
+
+    /// Goes on from a consistent point `last.end` made at a new state, a re-projection or an
+    /// impact: the one transaction that re-anchors the run there. The state, the report, the
+    /// watched functions' values and (where the point was made as a start) the start report are
+    /// replaced; the multipliers' history and the inner method's memory start afresh from the
+    /// point's acceleration, and with [`Forget::Steps`] the step size too. Cold: off the step's
+    /// hot path.
+    #[cold]
+    fn anchor(
+        &mut self,
+        (last, watch, start): (StepReport<N, Z>, Watch, Option<StartReport<N, Z>>),
+        forget: Forget,
+    ) {
+        let point = last.end;
+        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
+        (self.last, self.watch) = (last, watch);
+        if let Some(report) = start {
+            self.start_report = report;
+        }
+        self.predictor.reset();
+        self.state_gram = None;
+        Method::<N, Z>::restart(&mut self.method, || Ok(point.a));
+        if forget == Forget::Steps {
+            self.t_carry = 0.0;
+            self.controller = Controller::new();
+            self.planned_step = first_step(self.options.step);
+        }
+    }
+
+    /// After a discontinuity the multipliers' history, and the inner method's memory, say
+    /// nothing about what follows. Cold: kept out of the step's hot path.
+    #[cold]
+    fn restart_predictors(&mut self) {
+        self.predictor.reset();
+        self.state_gram = None;
+        self.restart_method();
+    }
+
+    /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the
+    /// step's report, can sample dense output and can stop the run.
+    pub fn advance_to(
+        &mut self,
+        t_end: f64,
+        mut observer: impl FnMut(&mut Observation<'_, 's, S, N, Z>),
+    ) -> Result<StopReason, StepError> {
+        if already_there(self.time(), t_end)? {
+            return Ok(StopReason::StopTimeReached);
+        }
+        self.set_stop_time(t_end)?;
+        loop {
+            let reason = self.step()?;
+            let mut observation = Observation {
+                simulator: self,
+                reason,
+                stop: false,
+            };
+            observer(&mut observation);
+            if observation.stop {
+                self.stop_time = None;
+                return Ok(StopReason::ObserverStopped);
+            }
+            if matches!(
+                reason,
+                StopReason::StopTimeReached | StopReason::Event { .. }
+            ) {
+                return Ok(reason);
+            }
+        }
+    }
+}
+
+/// Whether a run to `t_end` from `now` has nothing to do; an error when `t_end` is not a
+/// finite time from `now` on.
+pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
+    if !(t_end >= now) || !t_end.is_finite() {
+        return Err(StepError::InvalidOption(InvalidOption::EndTime));
+    }
+    Ok(t_end == now)
+}
+
+/// The first step the options plan.
+pub(crate) fn first_step(step: StepControl) -> f64 {
+    match step {
+        StepControl::Fixed { step } => step,
+        StepControl::Adaptive { initial_step, .. } => initial_step,
+    }
+}

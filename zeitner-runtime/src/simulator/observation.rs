@@ -1,0 +1,62 @@
+//! What the observer of `Simulator::advance_to` sees after each step.
+
+use super::Simulator;
+use crate::contact::Impact;
+use crate::error::StepError;
+use crate::gaps::GapSet;
+use crate::output::{Point, StepReport, StopReason};
+use crate::system::ConstrainedSystem;
+
+/// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
+/// report (through `Deref`, so `step.end.q` reads as on a [`StepReport`]), dense output with
+/// recomputed multipliers, and a way to stop the run.
+pub struct Observation<'a, 's, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
+    pub(crate) simulator: &'a mut Simulator<'s, S, N, Z>,
+    pub(crate) reason: StopReason,
+    pub(crate) stop: bool,
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Observation<'_, '_, S, N, Z> {
+    /// The step just taken.
+    pub fn report(&self) -> &StepReport<N, Z> {
+        self.simulator.last()
+    }
+
+    /// What [`Simulator::step`] returned for it.
+    pub fn reason(&self) -> StopReason {
+        self.reason
+    }
+
+    /// The impact, when the step was one ([`StopReason::Impact`]).
+    pub fn impact(&self) -> Option<&Impact<N, Z>> {
+        let impact = self.simulator.last_impact();
+        impact.filter(|_| self.reason == StopReason::Impact)
+    }
+
+    /// The gaps whose contact is closed after the step.
+    pub fn closed_gaps(&self) -> GapSet {
+        self.simulator.closed_gaps()
+    }
+
+    /// Dense output within the step just taken, multipliers recomputed: see
+    /// [`Simulator::sample`].
+    #[cfg(feature = "dense-output")]
+    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+        self.simulator.sample(t)
+    }
+
+    /// Ends [`Simulator::advance_to`] after this step, with [`StopReason::ObserverStopped`].
+    pub fn stop(&mut self) {
+        self.stop = true;
+    }
+}
+
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> core::ops::Deref
+    for Observation<'_, '_, S, N, Z>
+{
+    type Target = StepReport<N, Z>;
+
+    fn deref(&self) -> &StepReport<N, Z> {
+        self.simulator.last()
+    }
+}

@@ -1,0 +1,132 @@
+//! What a user changes mid-run: the options (re-projecting the state where they tighten the
+//! tolerance) and the time events.
+
+use super::{suits_the_rows, watch_at, Forget, Simulator};
+use crate::consistency::{consistent_start, end_report};
+use crate::control::{bounds, Progress};
+use crate::error::{InvalidOption, StepError};
+use crate::method::{AnyMethod, Method};
+use crate::options::{Options, StepControl};
+use crate::system::ConstrainedSystem;
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// Changes the options; the state is kept, unless a tighter `constraint_tolerance` than it
+    /// meets makes it consistent again, with the contacts as they are (see
+    /// [`Simulator::start_report`]; `StartPolicy::Refuse` refuses that with `InconsistentStart`).
+    /// Refused (and nothing changed) when the options are invalid or do not suit the system.
+    pub fn set_options(&mut self, options: Options) -> Result<(), StepError> {
+        options.validate()?;
+        suits_the_rows::<S, N, Z>(&options)?;
+        let tolerance = options.constraint_tolerance;
+        // Consistent only to a looser tolerance: made consistent again, as at a restart, so
+        // that no step starts off its constraints (an open gap's level included).
+        let reproject =
+            tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)?;
+        let new_method = options.method != self.options.method;
+        let previous_method = new_method.then(|| {
+            let method = AnyMethod::new(options.method, options.step);
+            core::mem::replace(&mut self.method, method)
+        });
+        let previous_options = core::mem::replace(&mut self.options, options);
+        let changed = match (reproject, new_method) {
+            (true, _) => self.reproject(),
+            (false, true) => {
+                self.restart_method();
+                Ok(())
+            }
+            (false, false) => Ok(()),
+        };
+        // The gaps' levels are set off by the constraint tolerance (`reproject` did).
+        let same_levels = reproject || tolerance == previous_options.constraint_tolerance;
+        let watch = changed.and_then(|()| match same_levels {
+            true => Ok(self.watch),
+            false => watch_at(&mut self.model, &self.last.end, tolerance),
+        });
+        let watch = match watch {
+            Ok(watch) => watch,
+            Err(error) => {
+                self.options = previous_options;
+                if let Some(method) = previous_method {
+                    self.method = method;
+                }
+                return Err(error);
+            }
+        };
+        if let Some(method) = previous_method {
+            let factorizations = Method::<N, Z>::factorizations(&method);
+            self.statistics.iteration_matrix_factorizations += factorizations;
+        }
+        self.method.use_step_control(options.step);
+        self.watch = watch;
+        // New options may cure a stall: the next steps are watched afresh.
+        self.progress = Progress::default();
+        let (min, max) = bounds(options.step);
+        self.planned_step = match options.step {
+            StepControl::Fixed { step } => step,
+            StepControl::Adaptive { .. } => self.planned_step.clamp(min, max),
+        };
+        Ok(())
+    }
+
+    /// Makes the current state consistent to the options' tolerance, tighter than the one it
+    /// was made for, with the contacts as they are: pending events and impacts, the stop time
+    /// and the step-size controller stay; the predictors restart (the state moved). On an error
+    /// nothing changed.
+    pub(super) fn reproject(&mut self) -> Result<(), StepError> {
+        let end = self.last.end;
+        let (tolerance, policy) = (self.options.constraint_tolerance, self.options.start);
+        let model = &mut self.model;
+        model.prepare(&end.q, end.t)?;
+        let (point, report) = consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
+        let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
+        let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
+        let watch = watch_at(model, &last.end, tolerance)?;
+        self.anchor((last, watch, Some(report)), Forget::History);
+        Ok(())
+    }
+
+    /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
+    /// below its level.
+    pub(super) fn state_within(&mut self, tolerance: f64) -> Result<bool, StepError> {
+        if self.last.residual.amax() > tolerance {
+            return Ok(false);
+        }
+        let open = self.model.open_gaps();
+        if open.is_empty() {
+            return Ok(true);
+        }
+        let end = self.last.end;
+        let gaps = self.model.gaps(&end.q, &end.v, end.t)?;
+        let within = open.iter().all(|k| gaps[k] >= -tolerance);
+        Ok(within)
+    }
+
+    /// Times at which steps land exactly, besides the model's own time events (a switch, a
+    /// change of load made from outside), in any order; the multipliers' predictor and the
+    /// step-size controller start afresh at each, as at the model's
+    /// ([`crate::StopReason::TimeEventReached`]). Refused (and nothing changed) if one is not finite.
+    pub fn set_time_events(&mut self, times: &'s [f64]) -> Result<(), StepError> {
+        if !times.iter().all(|t| t.is_finite()) {
+            return Err(StepError::InvalidOption(InvalidOption::EndTime));
+        }
+        self.time_events = times;
+        self.next_time_event = self.find_time_event();
+        Ok(())
+    }
+
+    /// Finds the first time event ahead.
+    pub(super) fn with_next_time_event(mut self) -> Self {
+        self.next_time_event = self.find_time_event();
+        self
+    }
+
+    /// The first time event, the model's or the user's, after the current time.
+    pub(super) fn find_time_event(&self) -> Option<f64> {
+        let now = self.time();
+        let given = self.time_events.iter().copied().filter(|&t| t > now);
+        let model = self.model.system.time_event_after(now).filter(|&t| t > now);
+        given
+            .chain(model)
+            .fold(None, |next, t| Some(next.map_or(t, |n: f64| n.min(t))))
+    }
+}

@@ -1,0 +1,138 @@
+//! How a run starts and starts again: a consistent start (or a refusal), the options it can
+//! take, the values the event machinery watches there, given multipliers, and a new state.
+
+use super::{Forget, Pending, Simulator};
+use crate::consistency::{consistent_start, end_report, StartReport};
+use crate::contact;
+use crate::control::Progress;
+use crate::error::{InvalidOption, StepError};
+use crate::events::Watch;
+use crate::gaps::GapSet;
+use crate::model::Model;
+use crate::options::{MultiplierModel, Options, StepControl};
+use crate::output::{Point, StepReport};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// Starts from the given multipliers instead of those of the acceleration-level system: the
+    /// first step's Newton starts from them, and the quadratic model is anchored at them (for a
+    /// restart that continues a run exactly).
+    pub fn with_initial_multipliers(mut self, lambda: Vector<Z>) -> Result<Self, StepError> {
+        if !lambda.iter().all(|x| x.is_finite()) {
+            return Err(StepError::InvalidOption(InvalidOption::InitialMultipliers));
+        }
+        let mut point = self.last.end;
+        point.lambda = lambda;
+        point.a = self
+            .model
+            .acceleration(&point.q, &point.v, point.t, &lambda)?
+            .a;
+        self.last = end_report(&mut self.model, point, point, lambda, 0, None)?;
+        self.lambda = lambda;
+        self.start_report.multipliers = lambda;
+        self.start_report.multipliers_given = true;
+        self.restart_method();
+        Ok(self)
+    }
+
+    /// Replaces the state — after an event, a change of parameters, or to restart — and makes
+    /// it consistent as at the start (or refuses it, as the options say). The multiplier
+    /// predictor and the step-size controller start afresh; statistics go on. On an error the
+    /// state is unchanged.
+    pub fn reinitialise(
+        &mut self,
+        q: Vector<N>,
+        v: Vector<N>,
+        t: f64,
+    ) -> Result<StartReport<N, Z>, StepError> {
+        let open = self.model.open_gaps();
+        let tolerance = self.options.constraint_tolerance;
+        let started =
+            start_point(&mut self.model, (q, v, t), &self.options).and_then(|(last, report, _)| {
+                Ok((
+                    last,
+                    report,
+                    watch_at(&mut self.model, &last.end, tolerance)?,
+                ))
+            });
+        let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
+        self.anchor((last, watch, Some(report)), Forget::Steps);
+        self.pending = Pending::default();
+        self.progress = Progress::default();
+        self.stop_time = self.stop_time.filter(|&stop| stop > t);
+        self.next_time_event = self.find_time_event();
+        Ok(report)
+    }
+}
+
+/// Refuses constant multipliers with adaptive steps on a system with velocity-level rows, whose
+/// error the step control does not see (issue #31).
+pub(super) fn suits_the_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    options: &Options,
+) -> Result<(), StepError> {
+    let velocity_rows = S::POSITION_CONSTRAINTS < Z;
+    let adaptive = matches!(options.step, StepControl::Adaptive { .. });
+    let model = options
+        .multipliers
+        .resolve(options.method, S::POSITION_CONSTRAINTS, Z);
+    if velocity_rows && adaptive && model == MultiplierModel::Constant {
+        return Err(StepError::InvalidOption(
+            InvalidOption::ConstantMultipliersOnVelocityRows,
+        ));
+    }
+    Ok(())
+}
+
+/// The consistent start at `(q, v, t)` — for [`Simulator::new`] and
+/// [`Simulator::reinitialise`] alike — as a report, with how it was made consistent and `G`
+/// there. Gaps that touch and do not separate start closed, unless their force would pull.
+#[allow(clippy::type_complexity)]
+pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (Vector<N>, Vector<N>, f64),
+    options: &Options,
+) -> Result<(StepReport<N, Z>, StartReport<N, Z>, Matrix<Z, N>), StepError> {
+    if !t.is_finite() {
+        return Err(StepError::InvalidOption(InvalidOption::EndTime));
+    }
+    model.prepare(&q, t)?;
+    let tolerance = options.constraint_tolerance;
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        let closed = contact::touching(model, (&q, &v, t), tolerance)?;
+        model.set_open_gaps(GapSet::first(S::UNILATERAL_CONSTRAINTS).without(closed));
+    }
+    let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        // The projection may push an open gap through: close it too and project again.
+        for _ in 0..S::UNILATERAL_CONSTRAINTS {
+            let gaps = model.gaps(&point.q, &point.v, t)?;
+            let open = model.open_gaps();
+            let through = open
+                .iter()
+                .find(|&k| k < S::UNILATERAL_CONSTRAINTS && gaps[k] < -tolerance);
+            let Some(k) = through else { break };
+            let mut closing = open;
+            closing.remove(k);
+            model.set_open_gaps(closing);
+            (point, report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
+        }
+        if !contact::open_pulling(model, &mut point)?.is_empty() {
+            report.multipliers = point.lambda;
+        }
+    }
+    let jacobian = model.jacobian(&point.q, &point.v, t)?;
+    let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
+    Ok((last, report, jacobian))
+}
+
+/// The watch of events and gaps at a point.
+pub(super) fn watch_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: &Point<N, Z>,
+    tolerance: f64,
+) -> Result<Watch, StepError> {
+    if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
+        return Ok(Watch::default());
+    }
+    Watch::at(model, point, tolerance)
+}
