@@ -235,8 +235,8 @@ const INTERIOR_SAMPLES: usize = 7;
 /// The earliest crossing of interest between the step's start (as `watch` has it) and
 /// its end (whose values are `end_values`), located on the dense output between `start` and
 /// `end`. Each function's first change of side is looked for at [`INTERIOR_SAMPLES`] points
-/// (where one may dip to zero) and the end; a closed contact's multiplier only at the end (it
-/// needs a consistent point).
+/// (where one may dip to zero, [`other_sides`]) and the end; a closed contact's multiplier only
+/// at the end (it needs a consistent point).
 pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (start, end): (&Point<N, Z>, &Point<N, Z>),
@@ -245,54 +245,10 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     time_tolerance: f64,
 ) -> Result<Option<Crossing>, StepError> {
     let open = model.open_gaps();
-    let watched = |index: usize| {
-        if index < MAX_EVENTS {
-            (Watched::Event(index), watch.event(index))
-        } else {
-            let k = index - MAX_EVENTS;
-            match open.contains(k) {
-                true => (Watched::Gap(k), true),
-                false => (Watched::Contact(k), false),
-            }
-        }
-    };
-    let indices = (0..S::EVENTS).chain((0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k));
-    // Each function's first point on the other side, and its value there.
-    let mut other_side = [None::<(f64, f64)>; MAX_EVENTS + MAX_GAPS];
-    let value_in = |values: &Values, index: usize| match index < MAX_EVENTS {
-        true => values.events[index],
-        false => values.gaps[index - MAX_EVENTS],
-    };
-    let sampled_kind = |index: usize| !matches!(watched(index).0, Watched::Contact(_));
-    if S::EVENTS > 0 || !open.is_empty() {
-        let h = end.t - start.t;
-        let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
-        // The start and the middle first: all samples only where a function may dip to zero.
-        let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
-        let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
-        let may_dip = indices.clone().filter(|&i| sampled_kind(i)).any(|index| {
-            let side = if watched(index).1 { 1.0 } else { -1.0 };
-            let [a, m, b] = [&first, &centre, end_values].map(|v| side * value_in(v, index));
-            may_cross(a, m, b)
-        });
-        if may_dip {
-            for j in 1..=INTERIOR_SAMPLES {
-                let sample = match j == middle {
-                    true => centre,
-                    false => values(model, &interpolate(start, end, at(j)), watch)?,
-                };
-                for index in indices.clone().filter(|&i| sampled_kind(i)) {
-                    let value = value_in(&sample, index);
-                    if other_side[index].is_none() && (value > 0.0) != watched(index).1 {
-                        other_side[index] = Some((at(j), value));
-                    }
-                }
-            }
-        }
-    }
+    let other_side = other_sides(model, (start, end), watch, end_values)?;
     let mut earliest: Option<Crossing> = None;
-    for index in indices {
-        let (which, was_positive) = watched(index);
+    for index in watched_indices::<S, N, Z>() {
+        let (which, was_positive) = watched(index, watch, open);
         let end_value = value_in(end_values, index);
         let end_side = ((end_value > 0.0) != was_positive).then_some((end.t, end_value));
         let Some(bracket_end) = other_side[index].or(end_side) else {
@@ -323,6 +279,82 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         }
     }
     Ok(earliest)
+}
+
+/// The indices of the watched functions: the event functions, then the gaps after
+/// [`MAX_EVENTS`].
+fn watched_indices<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+) -> impl Iterator<Item = usize> + Clone {
+    (0..S::EVENTS).chain((0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k))
+}
+
+/// What is watched at `index`, and whether it was positive at the step start (an open gap
+/// always was; a closed contact's multiplier, by convention, was not).
+fn watched(index: usize, watch: &Watch, open: GapSet) -> (Watched, bool) {
+    if index < MAX_EVENTS {
+        (Watched::Event(index), watch.event(index))
+    } else {
+        let k = index - MAX_EVENTS;
+        match open.contains(k) {
+            true => (Watched::Gap(k), true),
+            false => (Watched::Contact(k), false),
+        }
+    }
+}
+
+/// The value of the function at `index` in `values`.
+fn value_in(values: &Values, index: usize) -> f64 {
+    match index < MAX_EVENTS {
+        true => values.events[index],
+        false => values.gaps[index - MAX_EVENTS],
+    }
+}
+
+/// Each event function's and open gap's first sample on the other side within the step, and
+/// its value there: the start, the middle and the end first, and all [`INTERIOR_SAMPLES`] only
+/// where one of them may dip to zero ([`may_cross`]).
+fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (start, end): (&Point<N, Z>, &Point<N, Z>),
+    watch: &Watch,
+    end_values: &Values,
+) -> Result<[Option<(f64, f64)>; MAX_EVENTS + MAX_GAPS], StepError> {
+    let open = model.open_gaps();
+    let mut other_side = [None::<(f64, f64)>; MAX_EVENTS + MAX_GAPS];
+    if S::EVENTS == 0 && open.is_empty() {
+        return Ok(other_side);
+    }
+    let sampled = watched_indices::<S, N, Z>()
+        .filter(|&i| !matches!(watched(i, watch, open).0, Watched::Contact(_)));
+    let h = end.t - start.t;
+    let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+    let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
+    let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
+    let may_dip = sampled.clone().any(|index| {
+        let side = if watched(index, watch, open).1 {
+            1.0
+        } else {
+            -1.0
+        };
+        let [a, m, b] = [&first, &centre, end_values].map(|v| side * value_in(v, index));
+        may_cross(a, m, b)
+    });
+    if !may_dip {
+        return Ok(other_side);
+    }
+    for j in 1..=INTERIOR_SAMPLES {
+        let sample = match j == middle {
+            true => centre,
+            false => values(model, &interpolate(start, end, at(j)), watch)?,
+        };
+        for index in sampled.clone() {
+            let value = value_in(&sample, index);
+            if other_side[index].is_none() && (value > 0.0) != watched(index, watch, open).1 {
+                other_side[index] = Some((at(j), value));
+            }
+        }
+    }
+    Ok(other_side)
 }
 
 /// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
