@@ -280,3 +280,34 @@ fn vectors_of_any_size_are_built_from_arrays() {
     assert_eq!(q[6], 0.7);
     assert_eq!(Vector::<7>::from_column_slice(q.as_slice()), q);
 }
+
+/// `Automatic` says which model it chose: quadratic with adaptive steps, constant with fixed
+/// RK4 and with generalised-α (multipliers at the step ends only); a model asked for is kept.
+#[test]
+fn the_simulator_says_which_multiplier_model_automatic_chose() {
+    let (q, v) = released();
+    let chosen = |options: Options| {
+        Simulator::new(&PENDULUM, q, v, 0.0, options)
+            .unwrap()
+            .multiplier_model()
+    };
+    assert_eq!(chosen(Options::default()), MultiplierModel::Quadratic);
+    let rk4 = Options {
+        method: InnerMethod::Rk4 { substeps: 1 },
+        step: StepControl::Fixed { step: 1e-3 },
+        ..Options::default()
+    };
+    assert_eq!(rk4.multipliers, MultiplierModel::Automatic);
+    assert_eq!(chosen(rk4), MultiplierModel::Constant);
+    let alpha = Options {
+        method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+        step: StepControl::Fixed { step: 1e-3 },
+        ..Options::default()
+    };
+    assert_eq!(chosen(alpha), MultiplierModel::Constant);
+    let asked = Options {
+        multipliers: MultiplierModel::Constant,
+        ..Options::default()
+    };
+    assert_eq!(chosen(asked), MultiplierModel::Constant);
+}

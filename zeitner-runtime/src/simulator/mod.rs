@@ -26,7 +26,7 @@ use crate::gaps::GapSet;
 use crate::method::{AnyMethod, Method};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::Predictor;
-use crate::options::{Options, StepControl};
+use crate::options::{MultiplierModel, Options, StepControl};
 use crate::output::{Point, StepReport, StopReason};
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
@@ -217,6 +217,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     pub fn options(&self) -> &Options {
         &self.options
+    }
+
+    /// The multiplier model the steps use: the options' one, with
+    /// [`MultiplierModel::Automatic`] resolved for the inner method and the scene's rows
+    /// ([`MultiplierModel::resolve`]).
+    pub fn multiplier_model(&self) -> MultiplierModel {
+        let method = self.options.method;
+        self.options
+            .multipliers
+            .resolve(method, S::POSITION_CONSTRAINTS, Z)
     }
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports
