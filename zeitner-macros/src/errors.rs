@@ -22,6 +22,11 @@ impl Errors {
         self.errors.push(syn::Error::new(span, message));
     }
 
+    /// Adds `other`'s errors after these.
+    pub fn append(&mut self, other: Errors) {
+        self.errors.extend(other.errors);
+    }
+
     pub fn count(&self) -> usize {
         self.errors.len()
     }

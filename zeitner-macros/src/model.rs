@@ -176,6 +176,7 @@ impl<'a> Model<'a> {
         let mut functions: Vec<ModelFn<'a>> = Vec::new();
         let mut helpers: Vec<Helper<'a>> = Vec::new();
         let mut seen: Vec<Role> = Vec::new();
+        let mut near_misses: Vec<(&syn::Ident, Errors)> = Vec::new();
         for (index, member) in item.items.iter().enumerate() {
             if !members.get(index).copied().unwrap_or(true) {
                 continue;
@@ -196,9 +197,19 @@ impl<'a> Model<'a> {
             };
             let name = function.sig.ident.to_string();
             let Some(role) = Role::ALL.into_iter().find(|r| r.name() == name) else {
-                if let Some(helper) = parse_helper(function, &consts, errors) {
-                    helpers.push(helper);
+                // A method named almost like a model function that is not a valid helper either
+                // (a misspelt `fn constraint(&self, [x, y]: [f64; 2])`) is most likely that
+                // function: its helper errors wait until we know whether the function is missing.
+                let mut own = Errors::new();
+                match parse_helper(function, &consts, &mut own) {
+                    Some(helper) => helpers.push(helper),
+                    None if Role::ALL.iter().any(|r| close(&name, r.name())) => {
+                        near_misses.push((&function.sig.ident, own));
+                        continue;
+                    }
+                    None => {}
                 }
+                errors.append(own);
                 continue;
             };
             if seen.contains(&role) {
@@ -219,7 +230,23 @@ impl<'a> Model<'a> {
         for role in [Role::Mass, Role::Force, Role::Constraints] {
             let optional = role == Role::Constraints && constraints_optional;
             if !(seen.contains(&role) || optional) {
-                // A helper named like the missing function is most likely it, misspelt.
+                // A helper named like the missing function is most likely it, misspelt; so is a
+                // near miss that is no valid helper (whose helper errors are then dropped).
+                let near_miss = near_misses
+                    .iter()
+                    .position(|(name, _)| close(&name.to_string(), role.name()));
+                if let Some(k) = near_miss {
+                    let (name, _) = near_misses.remove(k);
+                    errors.error_spanned_by(
+                        name,
+                        format_args!(
+                            "unknown method `{name}` in a #[constrained_system] impl: the model \
+                             function is named `{}`",
+                            role.name()
+                        ),
+                    );
+                    continue;
+                }
                 let misspelt = helpers
                     .iter()
                     .find(|h| close(&h.name.to_string(), role.name()));
@@ -244,6 +271,10 @@ impl<'a> Model<'a> {
                     ),
                 }
             }
+        }
+        // Near misses of functions that are present are helpers with mistakes after all.
+        for (_, own) in near_misses {
+            errors.append(own);
         }
         Model {
             functions,
