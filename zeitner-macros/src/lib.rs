@@ -28,6 +28,25 @@ use proc_macro::TokenStream;
 /// `velocity_constraints`) into an implementation of `zeitner::ConstrainedSystem`, with exact
 /// derivatives computed at compile time.
 ///
+/// The model functions, each a method of `&self` with any of `[q…]: [f64; N]`, `[v…]: [f64; N]`
+/// and `t: f64` as it needs them:
+/// - `mass` — the diagonal `[f64; N]` or the full `[[f64; N]; N]` mass matrix, constant or
+///   depending on `q` and `t`;
+/// - `force` — the applied forces `F(q, q', t)`;
+/// - `constraints` — the position-level rows `g(q, t) = 0`;
+/// - `velocity_constraints` — velocity-level rows, linear in `q'` (a knife edge's);
+/// - `gaps` — unilateral rows `g(q) ≥ 0` that close with an impact and open where their force
+///   would pull; with `restitution(&self) -> [f64; U]`, Newton's coefficient of each (0 to 1,
+///   default 0);
+/// - `events` — event functions whose zero crossings `Simulator::advance_to` stops at
+///   (`StopReason::Event`). An event function must be continuous along the motion: a crossing is
+///   a change of sign between two samples of the step's dense output, so a jump through zero (the
+///   branch cut of `atan2`, a `floor`) fires as if it were one. Write the cut out (`sin` and
+///   `cos` of an angle rather than the angle from `atan2`);
+/// - `time_events` — `fn time_events(&self) -> [f64; K]`, the times at which the model changes
+///   discontinuously in time (a load's ramp ending, a load switched off); steps land on them
+///   (`StopReason::TimeEventReached`).
+///
 /// Sign convention: `M(q,t) q'' = F(q, q', t) - Gᵀλ` with `G = ∂g/∂q` for position-level rows
 /// and `G = ∂g/∂q'` for velocity-level rows. The user's methods stay as written and callable.
 /// The grammar is in the README: `let` bindings and a final array, `+ - * /`, f64 methods,
