@@ -114,21 +114,20 @@ fn given_initial_multipliers_start_the_run() {
     let computed = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
     // Released at rest from the horizontal, the rod carries no load: λ(0) = 0.
     assert!(computed.last().end.lambda[0].abs() < 1e-12);
-    let mut given = Simulator::new(&PENDULUM, q, v, 0.0, options)
-        .unwrap()
-        .with_initial_multipliers(Vector::from([3.0]))
-        .unwrap();
+    let mut given = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    given.set_initial_multipliers(Vector::from([3.0])).unwrap();
     assert_eq!(given.last().end.lambda[0], 3.0);
     assert!(given.start_report().multipliers_given);
     given.step().unwrap();
     assert!(given.last().residual.amax() <= options.constraint_tolerance);
-    let nan = Simulator::new(&PENDULUM, q, v, 0.0, options)
-        .unwrap()
-        .with_initial_multipliers(Vector::from([f64::NAN]));
+    // A refusal keeps the simulator as it was.
+    let before = *given.last();
     assert_eq!(
-        nan.err(),
-        Some(StepError::InvalidOption(InvalidOption::InitialMultipliers))
+        given.set_initial_multipliers(Vector::from([f64::NAN])),
+        Err(StepError::InvalidOption(InvalidOption::InitialMultipliers))
     );
+    assert_eq!(*given.last(), before);
+    given.step().unwrap();
 }
 
 #[test]

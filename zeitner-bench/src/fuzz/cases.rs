@@ -514,8 +514,8 @@ pub enum Call {
         v: StateChange,
         t: Time,
     },
-    /// `with_initial_multipliers`: it consumes the simulator, so an error ends the case.
-    WithInitialMultipliers(Vec<f64>),
+    /// `set_initial_multipliers`: an error must leave the simulator as it was.
+    SetInitialMultipliers(Vec<f64>),
     /// `step()` until it returns [`StopReason::Impact`] (at most `max_steps` calls), then
     /// `sample` within the (zero-length) report if given.
     StepUntilImpact {
@@ -552,7 +552,7 @@ impl fmt::Display for Case {
         writeln!(f, "  v0 = {:?}, t0 = {:e}", self.v0, self.t0)?;
         writeln!(f, "  options: {:?}", self.options)?;
         if let Some(lambda) = &self.initial_multipliers {
-            writeln!(f, "  with_initial_multipliers({lambda:?})")?;
+            writeln!(f, "  set_initial_multipliers({lambda:?})")?;
         }
         for (k, call) in self.calls.iter().enumerate() {
             writeln!(f, "  call {k}: {call:?}")?;
@@ -1075,7 +1075,7 @@ fn call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
                 _ => Time::Absolute(hostile(rng)),
             },
         },
-        _ => Call::WithInitialMultipliers(multipliers(rng, z)),
+        _ => Call::SetInitialMultipliers(multipliers(rng, z)),
     }
 }
 
@@ -2002,8 +2002,8 @@ fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     outcome
 }
 
-/// A case being run: the simulator (gone once `with_initial_multipliers` has consumed it with
-/// an error), the stop time in force as the documentation defines it, and what was seen.
+/// A case being run: the simulator, the stop time in force as the documentation defines it, and
+/// what was seen.
 struct Run<'s, 't, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     scene: &'s S,
     facts: ContactFacts,
@@ -2023,7 +2023,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
     fn all(&mut self, case: &Case) -> Check {
         self.started("new")?;
         if let Some(lambda) = &case.initial_multipliers {
-            self.with_initial_multipliers("with_initial_multipliers", lambda)?;
+            self.set_initial_multipliers("set_initial_multipliers", lambda)?;
         }
         for (k, call) in case.calls.iter().enumerate() {
             if self.sim.is_none() {
@@ -2050,8 +2050,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 Call::Sample(time) => self.sample(&name, *time)?,
                 Call::SetOptions(options) => self.set_options(&name, options)?,
                 Call::Reinitialise { q, v, t } => self.reinitialise(&name, (q, v), *t)?,
-                Call::WithInitialMultipliers(lambda) => {
-                    self.with_initial_multipliers(&name, lambda)?
+                Call::SetInitialMultipliers(lambda) => {
+                    self.set_initial_multipliers(&name, lambda)?
                 }
                 Call::StepUntilImpact {
                     max_steps,
@@ -2084,19 +2084,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
         Ok(())
     }
 
-    fn with_initial_multipliers(&mut self, call: &str, lambda: &[f64]) -> Check {
-        let sim = self.sim.take().expect("a simulator");
+    fn set_initial_multipliers(&mut self, call: &str, lambda: &[f64]) -> Check {
+        let mut sim = self.sim.take().expect("a simulator");
         let before = Snapshot::of(&sim);
-        let sim = match sim.with_initial_multipliers(Vector::<Z>::from_column_slice(lambda)) {
-            Ok(sim) => sim,
-            Err(error) => {
-                // The simulator is consumed: nothing left to check, the case ends.
-                self.error(&format!("{call}: with_initial_multipliers"), &error);
-                return Ok(());
-            }
-        };
-        (self.trace)(format!("{call}: with_initial_multipliers: Ok"));
-        let call = format!("{call} (with_initial_multipliers)");
+        let given = Vector::<Z>::from_column_slice(lambda);
+        if let Err(error) = sim.set_initial_multipliers(given) {
+            let call = format!("{call}: set_initial_multipliers");
+            before.unchanged(&sim, &call, &error)?;
+            self.error(&call, &error);
+            self.sim = Some(sim);
+            return Ok(());
+        }
+        (self.trace)(format!("{call}: set_initial_multipliers: Ok"));
+        let call = format!("{call} (set_initial_multipliers)");
         // The same state, accepted under the tolerance of its time (the options may have
         // changed since): finite, and the same residual.
         check_report(sim.last(), f64::INFINITY, 0, &call)?;

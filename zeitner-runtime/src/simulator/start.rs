@@ -14,10 +14,11 @@ use crate::output::{Point, StepReport};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
-    /// Starts from the given multipliers instead of those of the acceleration-level system: the
-    /// first step's Newton starts from them, and the quadratic model is anchored at them (for a
-    /// restart that continues a run exactly).
-    pub fn with_initial_multipliers(mut self, lambda: Vector<Z>) -> Result<Self, StepError> {
+    /// Goes on from the given multipliers instead of those of the acceleration-level system at
+    /// the current point: the next step's Newton starts from them, and the quadratic model is
+    /// anchored at them (for a restart that continues a run exactly). On an error (a
+    /// non-finite entry, or a model that fails there) nothing changed.
+    pub fn set_initial_multipliers(&mut self, lambda: Vector<Z>) -> Result<(), StepError> {
         if !lambda.iter().all(|x| x.is_finite()) {
             return Err(StepError::InvalidOption(InvalidOption::InitialMultipliers));
         }
@@ -32,7 +33,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.start_report.multipliers = lambda;
         self.start_report.multipliers_given = true;
         self.restart_method();
-        Ok(self)
+        Ok(())
     }
 
     /// Replaces the state — after an event, a change of parameters, or to restart — and makes
