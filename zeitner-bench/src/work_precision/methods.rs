@@ -10,40 +10,68 @@ pub struct Method {
     pub settings: Vec<(String, Options)>,
 }
 
-pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<Method> {
-    let steps: &[u32] = if quick {
-        &[100, 400]
-    } else {
-        &[50, 100, 200, 400, 800, 1600, 3200]
-    };
-    let rtols: &[f64] = if quick {
-        &[1e-5, 1e-8]
-    } else {
-        &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
-    };
-    let rtols: Vec<f64> = rtols
-        .iter()
-        .copied()
-        .filter(|&r| r >= tightest_rtol)
-        .collect();
-    let fixed = |options: fn(f64) -> Options| -> Vec<(String, Options)> {
-        steps
+/// The settings every method is run at on one scene: fixed steps dividing the end time, and
+/// relative tolerances down to the scene's tightest.
+struct Grid {
+    t_end: f64,
+    /// `ε`, the same for every setting.
+    tolerance: f64,
+    steps: &'static [u32],
+    rtols: Vec<f64>,
+}
+
+impl Grid {
+    fn new(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Self {
+        let steps: &[u32] = if quick {
+            &[100, 400]
+        } else {
+            &[50, 100, 200, 400, 800, 1600, 3200]
+        };
+        let rtols: &[f64] = if quick {
+            &[1e-5, 1e-8]
+        } else {
+            &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
+        };
+        let rtols = rtols
+            .iter()
+            .copied()
+            .filter(|&r| r >= tightest_rtol)
+            .collect();
+        Grid {
+            t_end,
+            tolerance,
+            steps,
+            rtols,
+        }
+    }
+
+    /// `options(h)` at each fixed step `h`.
+    fn fixed(&self, options: fn(f64) -> Options) -> Vec<(String, Options)> {
+        self.steps
             .iter()
             .map(|&n| {
-                let h = t_end / f64::from(n);
+                let h = self.t_end / f64::from(n);
                 (
                     format!("h={h:.3e}"),
                     Options {
-                        constraint_tolerance: tolerance,
+                        constraint_tolerance: self.tolerance,
                         max_newton_iterations: 30,
                         ..options(h)
                     },
                 )
             })
             .collect()
-    };
-    let adaptive = |sensitivity, velocity_projection, multipliers| -> Vec<(String, Options)> {
-        rtols
+    }
+
+    /// Dormand–Prince at each relative tolerance (`atol = rtol/1000`).
+    fn adaptive(
+        &self,
+        sensitivity: Sensitivity,
+        velocity_projection: VelocityProjection,
+        multipliers: MultiplierModel,
+    ) -> Vec<(String, Options)> {
+        let t_end = self.t_end;
+        self.rtols
             .iter()
             .map(|&rtol| {
                 let step = StepControl::Adaptive {
@@ -58,7 +86,7 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
                     multipliers,
                     step,
                     sensitivity,
-                    constraint_tolerance: tolerance,
+                    constraint_tolerance: self.tolerance,
                     max_newton_iterations: 30,
                     velocity_projection,
                     ..Options::default()
@@ -66,10 +94,11 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
                 (format!("rtol={rtol:.0e}"), options)
             })
             .collect()
-    };
-    // An adaptive implicit method with quadratic multipliers, down to `rtol_floor`.
-    let implicit = |method: InnerMethod, rtol_floor: f64| -> Vec<(String, Options)> {
-        adaptive(
+    }
+
+    /// An adaptive implicit method with quadratic multipliers, down to `rtol_floor`.
+    fn implicit(&self, method: InnerMethod, rtol_floor: f64) -> Vec<(String, Options)> {
+        self.adaptive(
             Sensitivity::Exact,
             VelocityProjection::Output,
             MultiplierModel::Quadratic,
@@ -80,83 +109,72 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
         })
         .map(|(setting, options)| (setting, Options { method, ..options }))
         .collect()
-    };
+    }
+}
+
+/// Fixed steps of `method` with constant multipliers and the exact sensitivity.
+fn fixed_constant(method: InnerMethod, h: f64) -> Options {
+    Options {
+        method,
+        multipliers: MultiplierModel::Constant,
+        step: StepControl::Fixed { step: h },
+        ..Options::default()
+    }
+}
+
+/// Every method, each with its settings on a scene ending at `t_end` with constraint tolerance
+/// `tolerance`: two of each with `quick`, none tighter than `tightest_rtol`.
+pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> Vec<Method> {
+    let grid = Grid::new(t_end, tolerance, quick, tightest_rtol);
+    let (exact, paper) = (Sensitivity::Exact, Sensitivity::Paper);
+    let (output, state) = (VelocityProjection::Output, VelocityProjection::State);
+    let (constant, quadratic) = (MultiplierModel::Constant, MultiplierModel::Quadratic);
+    let method = |name, settings| Method { name, settings };
     vec![
-        Method {
-            name: "zeitner-constant-lambda-rk4-paperQ-raw",
-            settings: fixed(Options::paper),
-        },
-        Method {
-            name: "zeitner-constant-lambda-rk4-exactQ",
-            settings: fixed(|h| Options {
-                method: InnerMethod::Rk4 { substeps: 1 },
-                multipliers: MultiplierModel::Constant,
-                step: StepControl::Fixed { step: h },
-                ..Options::default()
-            }),
-        },
-        Method {
-            name: "zeitner-constant-lambda-dopri5-exactQ",
-            settings: adaptive(
-                Sensitivity::Exact,
-                VelocityProjection::Output,
-                MultiplierModel::Constant,
-            ),
-        },
-        Method {
-            name: "zeitner-constant-lambda-dopri5-paperQ",
-            settings: adaptive(
-                Sensitivity::Paper,
-                VelocityProjection::Output,
-                MultiplierModel::Constant,
-            ),
-        },
-        Method {
-            name: "zeitner-constant-lambda-dopri5-exactQ-velocity-state",
-            settings: adaptive(
-                Sensitivity::Exact,
-                VelocityProjection::State,
-                MultiplierModel::Constant,
-            ),
-        },
-        Method {
-            name: "zeitner-quadratic-lambda-dopri5-exactQ",
-            settings: adaptive(
-                Sensitivity::Exact,
-                VelocityProjection::Output,
-                MultiplierModel::Quadratic,
-            ),
-        },
-        Method {
-            name: "zeitner-quadratic-lambda-esdirk32-exactQ",
-            // Order 3: below 1e-10 the steps get too many for a benchmark run.
-            settings: implicit(InnerMethod::Esdirk32, 1e-10),
-        },
-        Method {
-            name: "zeitner-quadratic-lambda-esdirk43-exactQ",
-            settings: implicit(InnerMethod::Esdirk43, 0.0),
-        },
-        Method {
-            name: "zeitner-quadratic-lambda-esdirk54-exactQ",
-            settings: implicit(InnerMethod::Esdirk54, 0.0),
-        },
-        Method {
-            name: "zeitner-constant-lambda-sdirk2-exactQ",
-            settings: fixed(|h| Options {
-                method: InnerMethod::Sdirk2,
-                multipliers: MultiplierModel::Constant,
-                step: StepControl::Fixed { step: h },
-                ..Options::default()
-            }),
-        },
-        Method {
-            name: "zeitner-constant-lambda-gen-alpha-0.5-exactQ",
-            settings: fixed(|h| Options {
-                method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
-                multipliers: MultiplierModel::Constant,
-                step: StepControl::Fixed { step: h },
-                ..Options::default()
-            }),
-        },
+        method(
+            "zeitner-constant-lambda-rk4-paperQ-raw",
+            grid.fixed(Options::paper),
+        ),
+        method(
+            "zeitner-constant-lambda-rk4-exactQ",
+            grid.fixed(|h| fixed_constant(InnerMethod::Rk4 { substeps: 1 }, h)),
+        ),
+        method(
+            "zeitner-constant-lambda-dopri5-exactQ",
+            grid.adaptive(exact, output, constant),
+        ),
+        method(
+            "zeitner-constant-lambda-dopri5-paperQ",
+            grid.adaptive(paper, output, constant),
+        ),
+        method(
+            "zeitner-constant-lambda-dopri5-exactQ-velocity-state",
+            grid.adaptive(exact, state, constant),
+        ),
+        method(
+            "zeitner-quadratic-lambda-dopri5-exactQ",
+            grid.adaptive(exact, output, quadratic),
+        ),
+        // Order 3: below 1e-10 the steps get too many for a benchmark run.
+        method(
+            "zeitner-quadratic-lambda-esdirk32-exactQ",
+            grid.implicit(InnerMethod::Esdirk32, 1e-10),
+        ),
+        method(
+            "zeitner-quadratic-lambda-esdirk43-exactQ",
+            grid.implicit(InnerMethod::Esdirk43, 0.0),
+        ),
+        method(
+            "zeitner-quadratic-lambda-esdirk54-exactQ",
+            grid.implicit(InnerMethod::Esdirk54, 0.0),
+        ),
+        method(
+            "zeitner-constant-lambda-sdirk2-exactQ",
+            grid.fixed(|h| fixed_constant(InnerMethod::Sdirk2, h)),
+        ),
+        method(
+            "zeitner-constant-lambda-gen-alpha-0.5-exactQ",
+            grid.fixed(|h| fixed_constant(InnerMethod::GeneralizedAlpha { rho_inf: 0.5 }, h)),
+        ),
     ]
 }
