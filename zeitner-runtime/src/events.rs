@@ -13,15 +13,8 @@ use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::gaps::GapSet;
 use crate::model::Model;
-use crate::output::{interpolate, Point};
+use crate::output::{interpolate, Direction, Point};
 use crate::system::{ConstrainedSystem, MAX_EVENTS, MAX_GAPS};
-
-/// Which way an event function crossed zero.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Direction {
-    Rising,
-    Falling,
-}
 
 /// A function the simulator watches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -56,7 +56,6 @@ mod testing;
 pub use consistency::StartReport;
 pub use contact::Impact;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
-pub use events::Direction;
 pub use gaps::GapSet;
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
@@ -64,7 +63,7 @@ pub use options::{
     ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
     StartPolicy, StepControl, VelocityProjection,
 };
-pub use output::{Point, StepReport, StopReason};
+pub use output::{Direction, Point, StepReport, StopReason};
 pub use simulator::{Observation, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;

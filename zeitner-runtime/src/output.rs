@@ -94,6 +94,13 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
     }
 }
 
+/// Which way an event function crossed zero.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    Rising,
+    Falling,
+}
+
 /// Why `Simulator::step` or `Simulator::advance_to` returned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
@@ -112,10 +119,7 @@ pub enum StopReason {
     /// [`crate::EventSettings::time_tolerance`]). Several at once are returned one per call
     /// (the later ones without a step). `advance_to` returns here, so that the caller can act
     /// (change parameters, `Simulator::reinitialise`).
-    Event {
-        index: usize,
-        direction: crate::Direction,
-    },
+    Event { index: usize, direction: Direction },
     /// A step was shortened to end at a zero crossing located on the dense output, but the
     /// crossing lies a little beyond its end: the next step goes on from nearer. `advance_to`
     /// goes on.

@@ -6,9 +6,9 @@ use super::{start_point, watch_at, Forget, Simulator};
 use crate::consistency::{consistent_point, end_report};
 use crate::contact;
 use crate::error::StepError;
-use crate::events::{self, Crossing, Direction, Values};
+use crate::events::{self, Crossing, Values};
 use crate::gaps::GapSet;
-use crate::output::{Point, StopReason};
+use crate::output::{Direction, Point, StopReason};
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
