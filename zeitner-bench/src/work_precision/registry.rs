@@ -20,7 +20,8 @@ use zeitner::{ConstrainedSystem, Options, Simulator, StepControl, Vector};
 use super::large::{large_scene, Large};
 use super::methods::Method;
 use super::scene::{
-    flattened, measure, no_own_methods, relative_to_largest, rust_peers, worst_relative, Scene,
+    flattened, measure, no_own_methods, relative_to_largest, rust_peers, worst_relative, Runner,
+    Scene,
 };
 
 /// One scene of the benchmark.
@@ -220,19 +221,12 @@ fn pendulum_scene() -> Result<Scene, String> {
             (Vector::<2>::new(1.0, 0.0), Vector::zeros()),
             t_end,
         ),
-        run: Box::new(move |method, setting, options, repeats| {
-            let start = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
-            measure(
-                "pendulum",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end(
+            "pendulum",
+            scene,
+            (Vector::<2>::new(1.0, 0.0), Vector::zeros()),
+            t_end,
+        ),
     })
 }
 
@@ -263,18 +257,7 @@ fn wall_pendulum_scene() -> Result<Scene, String> {
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 2, 2, 4, 6>(WallPendulum { ..scene }, start, t_end),
-        run: Box::new(move |method, setting, options, repeats| {
-            measure(
-                "wall_pendulum",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end("wall_pendulum", scene, start, t_end),
     })
 }
 
@@ -356,18 +339,7 @@ fn knife_edge_scene() -> Result<Scene, String> {
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 3, 1, 6, 7>(KnifeEdge::PAPER, start, t_end),
-        run: Box::new(move |method, setting, options, repeats| {
-            measure(
-                "knife_edge",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end("knife_edge", scene, start, t_end),
     })
 }
 
@@ -391,18 +363,7 @@ fn spring_support_scene() -> Result<Scene, String> {
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 4, 1, 8, 9>(SpringSupportedPendulum::STIFF, start, t_end),
-        run: Box::new(move |method, setting, options, repeats| {
-            measure(
-                "spring_support",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end("spring_support", scene, start, t_end),
     })
 }
 
@@ -469,19 +430,12 @@ fn andrews_scene() -> Result<Scene, String> {
             (Vector::from(Andrews::Q0), Vector::zeros()),
             t_end,
         ),
-        run: Box::new(move |method, setting, options, repeats| {
-            let start = (Vector::from(Andrews::Q0), Vector::zeros());
-            measure(
-                "andrews",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end(
+            "andrews",
+            scene,
+            (Vector::from(Andrews::Q0), Vector::zeros()),
+            t_end,
+        ),
     })
 }
 
@@ -506,18 +460,28 @@ fn slider_crank_scene() -> Result<Scene, String> {
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 4, 3, 8, 11>(SliderCrankOnAxis::nominal(), start, t_end),
-        run: Box::new(move |method, setting, options, repeats| {
-            measure(
-                "slider_crank",
-                method,
-                setting,
-                &scene,
-                start,
-                &[t_end],
-                options,
-                repeats,
-            )
-        }),
+        run: to_the_end("slider_crank", scene, start, t_end),
+    })
+}
+
+/// Runs a configuration of `scene` from `start` to `t_end` with the dense `Simulator`.
+fn to_the_end<S: ConstrainedSystem<N, Z> + 'static, const N: usize, const Z: usize>(
+    name: &'static str,
+    scene: S,
+    start: (Vector<N>, Vector<N>),
+    t_end: f64,
+) -> Runner {
+    Box::new(move |method, setting, options, repeats| {
+        measure(
+            name,
+            method,
+            setting,
+            &scene,
+            start,
+            &[t_end],
+            options,
+            repeats,
+        )
     })
 }
 

@@ -233,7 +233,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let estimate = match end.error {
             Some(estimate) if projected => Some(tangential(
                 &mut self.model,
-                (&end.q, &point.v, t_end),
+                (&end.q, t_end),
+                &gram,
                 estimate,
             )?),
             other => other,
