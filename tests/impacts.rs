@@ -26,6 +26,7 @@ impl ConstrainedSystem<1, 1> for Ball {
         functions: &[],
     };
     type Mass = DiagonalMass<1>;
+    type Storage = zeitner::storage::Dense;
     fn mass_matrix(&self, _: &Vector<1>, _: f64) -> DiagonalMass<1> {
         DiagonalMass(Vector::from([self.m]))
     }

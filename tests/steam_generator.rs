@@ -84,6 +84,7 @@ impl zeitner::ConstrainedSystem<3, 2> for WithoutTimeEvents<'_> {
     const SUMMARY: zeitner::SceneSummary =
         <SteamGenerator as zeitner::ConstrainedSystem<3, 2>>::SUMMARY;
     type Mass = <SteamGenerator as zeitner::ConstrainedSystem<3, 2>>::Mass;
+    type Storage = zeitner::storage::Dense;
     fn mass_matrix(&self, q: &Vector<3>, t: f64) -> Self::Mass {
         self.0.mass_matrix(q, t)
     }

@@ -5,10 +5,11 @@
 mod common;
 
 use common::modal::Modes;
-use common::structure::Structure16;
+use common::structure::{Structure100, Structure16};
+use zeitner::storage::Sparse;
 use zeitner::{
     ConstrainedSystem, InnerMethod, MultiplierModel, Options, Simulator, StepControl, StopReason,
-    Vector,
+    Vector, WithStorage,
 };
 
 /// Runs `scene` to just before the strut engages and to the impact, with `method`: the worst
@@ -59,12 +60,79 @@ fn relative(x: &[f64], r: &[f64]) -> f64 {
 fn the_column_follows_its_modes_until_the_strut_engages() {
     let scene = Structure16::paper();
     let modes = Modes::of(scene.0, Structure16::NODE_COUNT);
-    assert!(modes.highest_frequency() > 1e3, "{}", modes.highest_frequency());
+    assert!(
+        modes.highest_frequency() > 1e3,
+        "{}",
+        modes.highest_frequency()
+    );
     for method in [InnerMethod::Esdirk54, InnerMethod::DormandPrince54] {
         let (errors, impact) = against_modes(&scene, &modes, scene.start(), method, 1e-8);
         let contact = modes.first_contact();
         println!("{method:?}: errors {errors:?}, impact {impact} against {contact}");
         assert!(errors.iter().all(|e| *e < 1e-5), "{method:?}: {errors:?}");
-        assert!((impact - contact).abs() < 1e-6, "{impact} against {contact}");
+        assert!(
+            (impact - contact).abs() < 1e-6,
+            "{impact} against {contact}"
+        );
     }
+}
+
+/// 200 coordinates on the sparse storage, on a thread with the 2 MiB stack a test thread has:
+/// ESDIRK 5(4) with quadratic multipliers follows the modes and strikes the strut on time.
+#[test]
+fn two_hundred_coordinates_on_the_sparse_storage_follow_their_modes() {
+    let run = std::thread::Builder::new()
+        .stack_size(8 << 20)
+        .spawn(|| {
+            let scene = Structure100::paper();
+            let modes = Modes::of(scene.0, Structure100::NODE_COUNT);
+            let start = scene.start();
+            let (errors, impact) =
+                against_modes(&scene, &modes, start, InnerMethod::Esdirk54, 1e-8);
+            (
+                errors,
+                impact,
+                modes.first_contact(),
+                modes.highest_frequency(),
+            )
+        })
+        .unwrap();
+    let (errors, impact, contact, highest) = run.join().unwrap();
+    println!("errors {errors:?}, impact {impact} against {contact}, highest ω {highest:.3e}");
+    assert!(highest >= 1e4, "{highest}");
+    // The pin's horizontal force, a stiff spring's, is the hardest to get: 4e-4 at rtol 1e-6,
+    // 1.6e-5 at 1e-8, 1.3e-7 at 1e-10.
+    let within = [1e-8, 1e-5, 1e-4];
+    assert!(errors.iter().zip(within).all(|(e, w)| *e < w), "{errors:?}");
+    assert!(
+        (impact - contact).abs() < 1e-6,
+        "{impact} against {contact}"
+    );
+}
+
+/// The same scene on both storages: the same steps to rounding.
+#[test]
+fn both_storages_give_the_same_run() {
+    let scene = Structure16::paper();
+    let (q0, v0) = scene.start();
+    let options = Options {
+        method: InnerMethod::Esdirk54,
+        multipliers: MultiplierModel::Quadratic,
+        step: StepControl::adaptive(1e-8),
+        ..Options::default()
+    };
+    let sparse = WithStorage::<_, Sparse>::new(&scene);
+    let (q0, v0) = (Vector::from(q0), Vector::from(v0));
+    let mut on_dense = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+    let mut on_sparse = Simulator::new(&sparse, q0, v0, 0.0, options).unwrap();
+    on_dense.advance_to(0.1, |_| {}).unwrap();
+    on_sparse.advance_to(0.1, |_| {}).unwrap();
+    let (dense, sparse) = (on_dense.last().end, on_sparse.last().end);
+    let steps = (on_dense.statistics().steps, on_sparse.statistics().steps);
+    println!("steps {steps:?}");
+    assert!(steps.0.abs_diff(steps.1) <= steps.0 / 100, "{steps:?}");
+    for (x, y) in [(dense.q, sparse.q), (dense.v, sparse.v)] {
+        assert!((x - y).amax() <= 1e-9 * x.amax(), "{x} against {y}");
+    }
+    assert!((dense.lambda - sparse.lambda).amax() <= 1e-8 * dense.lambda.amax());
 }

@@ -439,6 +439,55 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         ],
     };
     type Mass = ::zeitner::__private::FullMass<7>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (2, 0),
+            (2, 1),
+            (2, 3),
+            (2, 4),
+            (3, 0),
+            (3, 1),
+            (3, 3),
+            (3, 4),
+            (4, 0),
+            (4, 1),
+            (4, 5),
+            (4, 6),
+            (5, 0),
+            (5, 1),
+            (5, 5),
+            (5, 6),
+        ],
+        force_jacobians: [
+            &[(0, 1), (1, 1), (2, 2), (3, 3), (4, 3), (5, 5), (6, 5)],
+            &[(0, 0), (0, 1), (1, 0), (3, 4), (4, 3), (4, 4), (5, 6), (6, 5), (6, 6)],
+        ],
+        constraint_force_jacobians: [
+            &[
+                (0, 0),
+                (0, 1),
+                (1, 0),
+                (1, 1),
+                (2, 2),
+                (3, 3),
+                (3, 4),
+                (4, 3),
+                (4, 4),
+                (5, 5),
+                (5, 6),
+                (6, 5),
+                (6, 6),
+            ],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<7>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -826,5 +875,108 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         values[19] = s9;
         values[20] = s11;
         values[21] = s11 - self.u * q[6].sin();
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[1].cos();
+        let s1 = q[3].sin();
+        let s2 = q[5].sin();
+        let s3 = q[2].cos();
+        let s4 = self.sd * s3;
+        let s5 = q[2].sin();
+        let s6 = self.sc * s5;
+        let s7 = s4 + s6;
+        let s8 = self.sd * s5;
+        let s9 = s3 * self.sc;
+        let s10 = s7 + self.xb - self.xc;
+        let s11 = s8 - s9 + self.yb - self.yc;
+        let s12 = (s10.powi(2) + s11.powi(2)).sqrt();
+        let s13 = self.c0 * (s12 - self.l0) / s12;
+        let s14 = self.rr * (self.m2 * self.da);
+        let s15 = v[1] * s14;
+        let s16 = v[1] + 2.0 * v[0];
+        let s17 = q[1].sin();
+        let s18 = v[0] * s14;
+        let s19 = s9 - s8;
+        let s20 = (self.e - self.ea) * (self.m4 * self.zt);
+        let s21 = v[4] * s20;
+        let s22 = q[3].cos();
+        let s23 = v[3] * s20;
+        let s24 = v[3] + 2.0 * v[4];
+        let s25 = (self.zf - self.fa) * (self.m6 * self.u);
+        let s26 = v[6] * s25;
+        let s27 = q[5].cos();
+        let s28 = v[5] * s25;
+        let s29 = v[5] + 2.0 * v[6];
+        let s30 = (s19 * (2.0 * s10) + s7 * (2.0 * s11)) * (1.0 / (2.0 * s12));
+        let s31 = (self.c0 * s30 - s13 * s30) / s12;
+        values[0] = -(s0 * (s15 * s16));
+        values[1] = s0 * (v[0] * s18);
+        values[2] = -(s19 * (s13 * s19 + s10 * s31) + s10 * s13 * (-s6 - s4))
+            - (s11 * s13 * s19 + s7 * (s7 * s13 + s11 * s31));
+        values[3] = -(s1 * (v[4] * s21));
+        values[4] = s1 * (s23 * s24);
+        values[5] = s2 * (v[6] * s26);
+        values[6] = -(s2 * (s28 * s29));
+        values[7] = -(s17 * (2.0 * s15));
+        values[8] = -(s17 * (s15 + s14 * s16));
+        values[9] = s17 * (2.0 * s18);
+        values[10] = s22 * (2.0 * s21);
+        values[11] = -(s22 * (s23 + s20 * s24));
+        values[12] = -(s22 * (2.0 * s23));
+        values[13] = -(s27 * (2.0 * s26));
+        values[14] = s27 * (s28 + s25 * s29);
+        values[15] = s27 * (2.0 * s28);
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<6>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[0] + q[1];
+        let s1 = self.d * s0.cos();
+        let s2 = self.d * s0.sin();
+        let s3 = q[3] + q[4];
+        let s4 = self.e * s3.sin();
+        let s5 = self.e * s3.cos();
+        let s6 = q[5] + q[6];
+        let s7 = self.zf * s6.cos();
+        let s8 = self.zf * s6.sin();
+        let s9 = s2 - self.rr * q[0].sin();
+        let s10 = s1 - self.rr * q[0].cos();
+        let s11 = s1 * lambda[0] + s2 * lambda[1] + s1 * lambda[2] + s2 * lambda[3]
+            + s1 * lambda[4] + s2 * lambda[5];
+        let s12 = s4 * lambda[2] - s5 * lambda[3];
+        let s13 = s7 * lambda[4] + s8 * lambda[5];
+        values[0] = s10 * lambda[0] + s9 * lambda[1] + s10 * lambda[2] + s9 * lambda[3]
+            + s10 * lambda[4] + s9 * lambda[5];
+        values[1] = s11;
+        values[2] = s11;
+        values[3] = s11;
+        values[4] = q[2].sin() * self.ss * lambda[0] - q[2].cos() * self.ss * lambda[1];
+        values[5] = s12;
+        values[6] = s12;
+        values[7] = s12;
+        values[8] = (s4 + self.zt * q[4].cos()) * lambda[2]
+            + (self.zt * q[4].sin() - s5) * lambda[3];
+        values[9] = s13;
+        values[10] = s13;
+        values[11] = s13;
+        values[12] = (s7 + self.u * q[6].sin()) * lambda[4]
+            + (s8 - self.u * q[6].cos()) * lambda[5];
     }
 }

@@ -273,7 +273,13 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<1>;
+    type Storage = ::zeitner::__private::Dense;
     const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<1>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -395,6 +401,29 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         values[0] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
     }
 }
 #[allow(dead_code)]
@@ -707,8 +736,14 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
     const UNILATERAL_CONSTRAINTS: usize = 1usize;
     const EVENTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -860,6 +895,32 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         values[0] = 2.0 * q[0];
         values[1] = 2.0 * q[1];
         values[2] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        values[0] = s0;
+        values[1] = s0;
     }
 }
 #[allow(dead_code)]
@@ -1142,7 +1203,13 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
     const UNILATERAL_CONSTRAINTS: usize = 2usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (1, 1), (1, 2), (2, 1), (2, 2)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(2, 2)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -1288,5 +1355,30 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         values[2] = -s0;
         values[3] = 1.0;
         values[4] = s0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].sin();
+        values[0] = s0 * lambda[1] - s0 * lambda[2];
     }
 }

@@ -278,6 +278,12 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 2), (1, 2)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -408,6 +414,31 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         use ::zeitner::__private::Real as _;
         values[0] = -q[2].sin();
         values[1] = q[2].cos();
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -(q[2].cos() * lambda[0]);
+        values[1] = -(q[2].sin() * lambda[0]);
     }
 }
 #[allow(dead_code)]
@@ -695,6 +726,12 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 2), (1, 0), (1, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 2), (1, 2)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -831,5 +868,30 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         values[0] = 1.0;
         values[1] = -q[2].sin();
         values[2] = q[2].cos();
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -(q[2].cos() * lambda[1]);
+        values[1] = -(q[2].sin() * lambda[1]);
     }
 }

@@ -740,6 +740,319 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<36>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 4),
+            (1, 5),
+            (1, 6),
+            (1, 7),
+            (2, 8),
+            (2, 9),
+            (2, 10),
+            (2, 11),
+            (3, 12),
+            (3, 13),
+            (3, 14),
+            (3, 15),
+            (4, 16),
+            (4, 17),
+            (4, 18),
+            (4, 19),
+            (5, 20),
+            (5, 21),
+            (5, 22),
+            (5, 23),
+            (6, 24),
+            (6, 25),
+            (6, 26),
+            (6, 27),
+            (7, 28),
+            (7, 29),
+            (7, 30),
+            (7, 31),
+            (8, 32),
+            (8, 33),
+            (8, 34),
+            (8, 35),
+            (9, 0),
+            (9, 1),
+            (9, 4),
+            (9, 5),
+            (10, 2),
+            (10, 3),
+            (10, 6),
+            (10, 7),
+            (11, 0),
+            (11, 1),
+            (11, 6),
+            (11, 7),
+            (12, 4),
+            (12, 5),
+            (12, 8),
+            (12, 9),
+            (13, 6),
+            (13, 7),
+            (13, 10),
+            (13, 11),
+            (14, 4),
+            (14, 5),
+            (14, 10),
+            (14, 11),
+            (15, 8),
+            (15, 9),
+            (15, 12),
+            (15, 13),
+            (16, 10),
+            (16, 11),
+            (16, 14),
+            (16, 15),
+            (17, 8),
+            (17, 9),
+            (17, 14),
+            (17, 15),
+            (18, 12),
+            (18, 13),
+            (18, 16),
+            (18, 17),
+            (19, 14),
+            (19, 15),
+            (19, 18),
+            (19, 19),
+            (20, 12),
+            (20, 13),
+            (20, 18),
+            (20, 19),
+            (21, 16),
+            (21, 17),
+            (21, 20),
+            (21, 21),
+            (22, 18),
+            (22, 19),
+            (22, 22),
+            (22, 23),
+            (23, 16),
+            (23, 17),
+            (23, 22),
+            (23, 23),
+            (24, 20),
+            (24, 21),
+            (24, 24),
+            (24, 25),
+            (25, 22),
+            (25, 23),
+            (25, 26),
+            (25, 27),
+            (26, 20),
+            (26, 21),
+            (26, 26),
+            (26, 27),
+            (27, 24),
+            (27, 25),
+            (27, 28),
+            (27, 29),
+            (28, 26),
+            (28, 27),
+            (28, 30),
+            (28, 31),
+            (29, 24),
+            (29, 25),
+            (29, 30),
+            (29, 31),
+            (30, 28),
+            (30, 29),
+            (30, 32),
+            (30, 33),
+            (31, 30),
+            (31, 31),
+            (31, 34),
+            (31, 35),
+            (32, 28),
+            (32, 29),
+            (32, 34),
+            (32, 35),
+            (33, 0),
+            (34, 1),
+        ],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [
+            &[
+                (0, 0),
+                (0, 2),
+                (0, 4),
+                (0, 6),
+                (1, 1),
+                (1, 3),
+                (1, 5),
+                (1, 7),
+                (2, 0),
+                (2, 2),
+                (2, 6),
+                (3, 1),
+                (3, 3),
+                (3, 7),
+                (4, 0),
+                (4, 4),
+                (4, 6),
+                (4, 8),
+                (4, 10),
+                (5, 1),
+                (5, 5),
+                (5, 7),
+                (5, 9),
+                (5, 11),
+                (6, 0),
+                (6, 2),
+                (6, 4),
+                (6, 6),
+                (6, 10),
+                (7, 1),
+                (7, 3),
+                (7, 5),
+                (7, 7),
+                (7, 11),
+                (8, 4),
+                (8, 8),
+                (8, 10),
+                (8, 12),
+                (8, 14),
+                (9, 5),
+                (9, 9),
+                (9, 11),
+                (9, 13),
+                (9, 15),
+                (10, 4),
+                (10, 6),
+                (10, 8),
+                (10, 10),
+                (10, 14),
+                (11, 5),
+                (11, 7),
+                (11, 9),
+                (11, 11),
+                (11, 15),
+                (12, 8),
+                (12, 12),
+                (12, 14),
+                (12, 16),
+                (12, 18),
+                (13, 9),
+                (13, 13),
+                (13, 15),
+                (13, 17),
+                (13, 19),
+                (14, 8),
+                (14, 10),
+                (14, 12),
+                (14, 14),
+                (14, 18),
+                (15, 9),
+                (15, 11),
+                (15, 13),
+                (15, 15),
+                (15, 19),
+                (16, 12),
+                (16, 16),
+                (16, 18),
+                (16, 20),
+                (16, 22),
+                (17, 13),
+                (17, 17),
+                (17, 19),
+                (17, 21),
+                (17, 23),
+                (18, 12),
+                (18, 14),
+                (18, 16),
+                (18, 18),
+                (18, 22),
+                (19, 13),
+                (19, 15),
+                (19, 17),
+                (19, 19),
+                (19, 23),
+                (20, 16),
+                (20, 20),
+                (20, 22),
+                (20, 24),
+                (20, 26),
+                (21, 17),
+                (21, 21),
+                (21, 23),
+                (21, 25),
+                (21, 27),
+                (22, 16),
+                (22, 18),
+                (22, 20),
+                (22, 22),
+                (22, 26),
+                (23, 17),
+                (23, 19),
+                (23, 21),
+                (23, 23),
+                (23, 27),
+                (24, 20),
+                (24, 24),
+                (24, 26),
+                (24, 28),
+                (24, 30),
+                (25, 21),
+                (25, 25),
+                (25, 27),
+                (25, 29),
+                (25, 31),
+                (26, 20),
+                (26, 22),
+                (26, 24),
+                (26, 26),
+                (26, 30),
+                (27, 21),
+                (27, 23),
+                (27, 25),
+                (27, 27),
+                (27, 31),
+                (28, 24),
+                (28, 28),
+                (28, 30),
+                (28, 32),
+                (28, 34),
+                (29, 25),
+                (29, 29),
+                (29, 31),
+                (29, 33),
+                (29, 35),
+                (30, 24),
+                (30, 26),
+                (30, 28),
+                (30, 30),
+                (30, 34),
+                (31, 25),
+                (31, 27),
+                (31, 29),
+                (31, 31),
+                (31, 35),
+                (32, 28),
+                (32, 32),
+                (32, 34),
+                (33, 29),
+                (33, 33),
+                (33, 35),
+                (34, 28),
+                (34, 30),
+                (34, 32),
+                (34, 34),
+                (35, 29),
+                (35, 31),
+                (35, 33),
+                (35, 35),
+            ],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<36>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -1860,6 +2173,314 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         values[132] = 1.0;
         values[133] = 1.0;
     }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        v: &::zeitner::__private::Vector<36>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        v: &::zeitner::__private::Vector<36>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<35>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        let s1 = 2.0 * lambda[9];
+        let s2 = 2.0 * lambda[11];
+        let s3 = s0 + s1 + s2;
+        let s4 = -2.0 * lambda[0];
+        let s5 = -2.0 * lambda[9];
+        let s6 = -2.0 * lambda[11];
+        let s7 = -s0;
+        let s8 = 2.0 * lambda[10];
+        let s9 = s8 - s4;
+        let s10 = -2.0 * lambda[10];
+        let s11 = -s1;
+        let s12 = 2.0 * lambda[1];
+        let s13 = 2.0 * lambda[12];
+        let s14 = 2.0 * lambda[14];
+        let s15 = s12 - s5 + s13 + s14;
+        let s16 = -2.0 * lambda[1];
+        let s17 = -2.0 * lambda[12];
+        let s18 = -2.0 * lambda[14];
+        let s19 = -s2;
+        let s20 = -s8;
+        let s21 = -s12;
+        let s22 = 2.0 * lambda[13];
+        let s23 = -s16 - s10 - s6 + s22;
+        let s24 = -2.0 * lambda[13];
+        let s25 = -s13;
+        let s26 = 2.0 * lambda[2];
+        let s27 = 2.0 * lambda[15];
+        let s28 = 2.0 * lambda[17];
+        let s29 = s26 - s17 + s27 + s28;
+        let s30 = -2.0 * lambda[2];
+        let s31 = -2.0 * lambda[15];
+        let s32 = -2.0 * lambda[17];
+        let s33 = -s14;
+        let s34 = -s22;
+        let s35 = -s26;
+        let s36 = 2.0 * lambda[16];
+        let s37 = -s30 - s24 - s18 + s36;
+        let s38 = -2.0 * lambda[16];
+        let s39 = -s27;
+        let s40 = 2.0 * lambda[3];
+        let s41 = 2.0 * lambda[18];
+        let s42 = 2.0 * lambda[20];
+        let s43 = s40 - s31 + s41 + s42;
+        let s44 = -2.0 * lambda[3];
+        let s45 = -2.0 * lambda[18];
+        let s46 = -2.0 * lambda[20];
+        let s47 = -s28;
+        let s48 = -s36;
+        let s49 = -s40;
+        let s50 = 2.0 * lambda[19];
+        let s51 = -s44 - s38 - s32 + s50;
+        let s52 = -2.0 * lambda[19];
+        let s53 = -s41;
+        let s54 = 2.0 * lambda[4];
+        let s55 = 2.0 * lambda[21];
+        let s56 = 2.0 * lambda[23];
+        let s57 = s54 - s45 + s55 + s56;
+        let s58 = -2.0 * lambda[4];
+        let s59 = -2.0 * lambda[21];
+        let s60 = -2.0 * lambda[23];
+        let s61 = -s42;
+        let s62 = -s50;
+        let s63 = -s54;
+        let s64 = 2.0 * lambda[22];
+        let s65 = -s58 - s52 - s46 + s64;
+        let s66 = -2.0 * lambda[22];
+        let s67 = -s55;
+        let s68 = 2.0 * lambda[5];
+        let s69 = 2.0 * lambda[24];
+        let s70 = 2.0 * lambda[26];
+        let s71 = s68 - s59 + s69 + s70;
+        let s72 = -2.0 * lambda[5];
+        let s73 = -2.0 * lambda[24];
+        let s74 = -2.0 * lambda[26];
+        let s75 = -s56;
+        let s76 = -s64;
+        let s77 = -s68;
+        let s78 = 2.0 * lambda[25];
+        let s79 = -s72 - s66 - s60 + s78;
+        let s80 = -2.0 * lambda[25];
+        let s81 = -s69;
+        let s82 = 2.0 * lambda[6];
+        let s83 = 2.0 * lambda[27];
+        let s84 = 2.0 * lambda[29];
+        let s85 = s82 - s73 + s83 + s84;
+        let s86 = -2.0 * lambda[6];
+        let s87 = -2.0 * lambda[27];
+        let s88 = -2.0 * lambda[29];
+        let s89 = -s70;
+        let s90 = -s78;
+        let s91 = -s82;
+        let s92 = 2.0 * lambda[28];
+        let s93 = -s86 - s80 - s74 + s92;
+        let s94 = -2.0 * lambda[28];
+        let s95 = -s83;
+        let s96 = 2.0 * lambda[7];
+        let s97 = 2.0 * lambda[30];
+        let s98 = 2.0 * lambda[32];
+        let s99 = s96 - s87 + s97 + s98;
+        let s100 = -2.0 * lambda[7];
+        let s101 = -2.0 * lambda[30];
+        let s102 = -2.0 * lambda[32];
+        let s103 = -s84;
+        let s104 = -s92;
+        let s105 = -s96;
+        let s106 = 2.0 * lambda[31];
+        let s107 = -s100 - s94 - s88 + s106;
+        let s108 = -2.0 * lambda[31];
+        let s109 = -s97;
+        let s110 = 2.0 * lambda[8];
+        let s111 = s110 - s101;
+        let s112 = -2.0 * lambda[8];
+        let s113 = -s98;
+        let s114 = -s106;
+        let s115 = -s110;
+        let s116 = -s112 - s108 - s102;
+        values[0] = s3;
+        values[1] = s4;
+        values[2] = s5;
+        values[3] = s6;
+        values[4] = s3;
+        values[5] = s4;
+        values[6] = s5;
+        values[7] = s6;
+        values[8] = s7;
+        values[9] = s9;
+        values[10] = s10;
+        values[11] = s7;
+        values[12] = s9;
+        values[13] = s10;
+        values[14] = s11;
+        values[15] = s15;
+        values[16] = s16;
+        values[17] = s17;
+        values[18] = s18;
+        values[19] = s11;
+        values[20] = s15;
+        values[21] = s16;
+        values[22] = s17;
+        values[23] = s18;
+        values[24] = s19;
+        values[25] = s20;
+        values[26] = s21;
+        values[27] = s23;
+        values[28] = s24;
+        values[29] = s19;
+        values[30] = s20;
+        values[31] = s21;
+        values[32] = s23;
+        values[33] = s24;
+        values[34] = s25;
+        values[35] = s29;
+        values[36] = s30;
+        values[37] = s31;
+        values[38] = s32;
+        values[39] = s25;
+        values[40] = s29;
+        values[41] = s30;
+        values[42] = s31;
+        values[43] = s32;
+        values[44] = s33;
+        values[45] = s34;
+        values[46] = s35;
+        values[47] = s37;
+        values[48] = s38;
+        values[49] = s33;
+        values[50] = s34;
+        values[51] = s35;
+        values[52] = s37;
+        values[53] = s38;
+        values[54] = s39;
+        values[55] = s43;
+        values[56] = s44;
+        values[57] = s45;
+        values[58] = s46;
+        values[59] = s39;
+        values[60] = s43;
+        values[61] = s44;
+        values[62] = s45;
+        values[63] = s46;
+        values[64] = s47;
+        values[65] = s48;
+        values[66] = s49;
+        values[67] = s51;
+        values[68] = s52;
+        values[69] = s47;
+        values[70] = s48;
+        values[71] = s49;
+        values[72] = s51;
+        values[73] = s52;
+        values[74] = s53;
+        values[75] = s57;
+        values[76] = s58;
+        values[77] = s59;
+        values[78] = s60;
+        values[79] = s53;
+        values[80] = s57;
+        values[81] = s58;
+        values[82] = s59;
+        values[83] = s60;
+        values[84] = s61;
+        values[85] = s62;
+        values[86] = s63;
+        values[87] = s65;
+        values[88] = s66;
+        values[89] = s61;
+        values[90] = s62;
+        values[91] = s63;
+        values[92] = s65;
+        values[93] = s66;
+        values[94] = s67;
+        values[95] = s71;
+        values[96] = s72;
+        values[97] = s73;
+        values[98] = s74;
+        values[99] = s67;
+        values[100] = s71;
+        values[101] = s72;
+        values[102] = s73;
+        values[103] = s74;
+        values[104] = s75;
+        values[105] = s76;
+        values[106] = s77;
+        values[107] = s79;
+        values[108] = s80;
+        values[109] = s75;
+        values[110] = s76;
+        values[111] = s77;
+        values[112] = s79;
+        values[113] = s80;
+        values[114] = s81;
+        values[115] = s85;
+        values[116] = s86;
+        values[117] = s87;
+        values[118] = s88;
+        values[119] = s81;
+        values[120] = s85;
+        values[121] = s86;
+        values[122] = s87;
+        values[123] = s88;
+        values[124] = s89;
+        values[125] = s90;
+        values[126] = s91;
+        values[127] = s93;
+        values[128] = s94;
+        values[129] = s89;
+        values[130] = s90;
+        values[131] = s91;
+        values[132] = s93;
+        values[133] = s94;
+        values[134] = s95;
+        values[135] = s99;
+        values[136] = s100;
+        values[137] = s101;
+        values[138] = s102;
+        values[139] = s95;
+        values[140] = s99;
+        values[141] = s100;
+        values[142] = s101;
+        values[143] = s102;
+        values[144] = s103;
+        values[145] = s104;
+        values[146] = s105;
+        values[147] = s107;
+        values[148] = s108;
+        values[149] = s103;
+        values[150] = s104;
+        values[151] = s105;
+        values[152] = s107;
+        values[153] = s108;
+        values[154] = s109;
+        values[155] = s111;
+        values[156] = s112;
+        values[157] = s109;
+        values[158] = s111;
+        values[159] = s112;
+        values[160] = s113;
+        values[161] = s114;
+        values[162] = s115;
+        values[163] = s116;
+        values[164] = s113;
+        values[165] = s114;
+        values[166] = s115;
+        values[167] = s116;
+    }
 }
 #[allow(dead_code)]
 impl PinnedLadder8 {
@@ -2610,6 +3231,321 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<36>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 4),
+            (1, 5),
+            (1, 6),
+            (1, 7),
+            (2, 8),
+            (2, 9),
+            (2, 10),
+            (2, 11),
+            (3, 12),
+            (3, 13),
+            (3, 14),
+            (3, 15),
+            (4, 16),
+            (4, 17),
+            (4, 18),
+            (4, 19),
+            (5, 20),
+            (5, 21),
+            (5, 22),
+            (5, 23),
+            (6, 24),
+            (6, 25),
+            (6, 26),
+            (6, 27),
+            (7, 28),
+            (7, 29),
+            (7, 30),
+            (7, 31),
+            (8, 32),
+            (8, 33),
+            (8, 34),
+            (8, 35),
+            (9, 0),
+            (9, 1),
+            (9, 4),
+            (9, 5),
+            (10, 2),
+            (10, 3),
+            (10, 6),
+            (10, 7),
+            (11, 0),
+            (11, 1),
+            (11, 6),
+            (11, 7),
+            (12, 4),
+            (12, 5),
+            (12, 8),
+            (12, 9),
+            (13, 6),
+            (13, 7),
+            (13, 10),
+            (13, 11),
+            (14, 4),
+            (14, 5),
+            (14, 10),
+            (14, 11),
+            (15, 8),
+            (15, 9),
+            (15, 12),
+            (15, 13),
+            (16, 10),
+            (16, 11),
+            (16, 14),
+            (16, 15),
+            (17, 8),
+            (17, 9),
+            (17, 14),
+            (17, 15),
+            (18, 12),
+            (18, 13),
+            (18, 16),
+            (18, 17),
+            (19, 14),
+            (19, 15),
+            (19, 18),
+            (19, 19),
+            (20, 12),
+            (20, 13),
+            (20, 18),
+            (20, 19),
+            (21, 16),
+            (21, 17),
+            (21, 20),
+            (21, 21),
+            (22, 18),
+            (22, 19),
+            (22, 22),
+            (22, 23),
+            (23, 16),
+            (23, 17),
+            (23, 22),
+            (23, 23),
+            (24, 20),
+            (24, 21),
+            (24, 24),
+            (24, 25),
+            (25, 22),
+            (25, 23),
+            (25, 26),
+            (25, 27),
+            (26, 20),
+            (26, 21),
+            (26, 26),
+            (26, 27),
+            (27, 24),
+            (27, 25),
+            (27, 28),
+            (27, 29),
+            (28, 26),
+            (28, 27),
+            (28, 30),
+            (28, 31),
+            (29, 24),
+            (29, 25),
+            (29, 30),
+            (29, 31),
+            (30, 28),
+            (30, 29),
+            (30, 32),
+            (30, 33),
+            (31, 30),
+            (31, 31),
+            (31, 34),
+            (31, 35),
+            (32, 28),
+            (32, 29),
+            (32, 34),
+            (32, 35),
+            (33, 0),
+            (34, 1),
+            (35, 32),
+            (36, 33),
+        ],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [
+            &[
+                (0, 0),
+                (0, 2),
+                (0, 4),
+                (0, 6),
+                (1, 1),
+                (1, 3),
+                (1, 5),
+                (1, 7),
+                (2, 0),
+                (2, 2),
+                (2, 6),
+                (3, 1),
+                (3, 3),
+                (3, 7),
+                (4, 0),
+                (4, 4),
+                (4, 6),
+                (4, 8),
+                (4, 10),
+                (5, 1),
+                (5, 5),
+                (5, 7),
+                (5, 9),
+                (5, 11),
+                (6, 0),
+                (6, 2),
+                (6, 4),
+                (6, 6),
+                (6, 10),
+                (7, 1),
+                (7, 3),
+                (7, 5),
+                (7, 7),
+                (7, 11),
+                (8, 4),
+                (8, 8),
+                (8, 10),
+                (8, 12),
+                (8, 14),
+                (9, 5),
+                (9, 9),
+                (9, 11),
+                (9, 13),
+                (9, 15),
+                (10, 4),
+                (10, 6),
+                (10, 8),
+                (10, 10),
+                (10, 14),
+                (11, 5),
+                (11, 7),
+                (11, 9),
+                (11, 11),
+                (11, 15),
+                (12, 8),
+                (12, 12),
+                (12, 14),
+                (12, 16),
+                (12, 18),
+                (13, 9),
+                (13, 13),
+                (13, 15),
+                (13, 17),
+                (13, 19),
+                (14, 8),
+                (14, 10),
+                (14, 12),
+                (14, 14),
+                (14, 18),
+                (15, 9),
+                (15, 11),
+                (15, 13),
+                (15, 15),
+                (15, 19),
+                (16, 12),
+                (16, 16),
+                (16, 18),
+                (16, 20),
+                (16, 22),
+                (17, 13),
+                (17, 17),
+                (17, 19),
+                (17, 21),
+                (17, 23),
+                (18, 12),
+                (18, 14),
+                (18, 16),
+                (18, 18),
+                (18, 22),
+                (19, 13),
+                (19, 15),
+                (19, 17),
+                (19, 19),
+                (19, 23),
+                (20, 16),
+                (20, 20),
+                (20, 22),
+                (20, 24),
+                (20, 26),
+                (21, 17),
+                (21, 21),
+                (21, 23),
+                (21, 25),
+                (21, 27),
+                (22, 16),
+                (22, 18),
+                (22, 20),
+                (22, 22),
+                (22, 26),
+                (23, 17),
+                (23, 19),
+                (23, 21),
+                (23, 23),
+                (23, 27),
+                (24, 20),
+                (24, 24),
+                (24, 26),
+                (24, 28),
+                (24, 30),
+                (25, 21),
+                (25, 25),
+                (25, 27),
+                (25, 29),
+                (25, 31),
+                (26, 20),
+                (26, 22),
+                (26, 24),
+                (26, 26),
+                (26, 30),
+                (27, 21),
+                (27, 23),
+                (27, 25),
+                (27, 27),
+                (27, 31),
+                (28, 24),
+                (28, 28),
+                (28, 30),
+                (28, 32),
+                (28, 34),
+                (29, 25),
+                (29, 29),
+                (29, 31),
+                (29, 33),
+                (29, 35),
+                (30, 24),
+                (30, 26),
+                (30, 28),
+                (30, 30),
+                (30, 34),
+                (31, 25),
+                (31, 27),
+                (31, 29),
+                (31, 31),
+                (31, 35),
+                (32, 28),
+                (32, 32),
+                (32, 34),
+                (33, 29),
+                (33, 33),
+                (33, 35),
+                (34, 28),
+                (34, 30),
+                (34, 32),
+                (34, 34),
+                (35, 29),
+                (35, 31),
+                (35, 33),
+                (35, 35),
+            ],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<36>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -3737,5 +4673,313 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         values[133] = 1.0;
         values[134] = 1.0;
         values[135] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        v: &::zeitner::__private::Vector<36>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        v: &::zeitner::__private::Vector<36>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<37>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        let s1 = 2.0 * lambda[9];
+        let s2 = 2.0 * lambda[11];
+        let s3 = s0 + s1 + s2;
+        let s4 = -2.0 * lambda[0];
+        let s5 = -2.0 * lambda[9];
+        let s6 = -2.0 * lambda[11];
+        let s7 = -s0;
+        let s8 = 2.0 * lambda[10];
+        let s9 = s8 - s4;
+        let s10 = -2.0 * lambda[10];
+        let s11 = -s1;
+        let s12 = 2.0 * lambda[1];
+        let s13 = 2.0 * lambda[12];
+        let s14 = 2.0 * lambda[14];
+        let s15 = s12 - s5 + s13 + s14;
+        let s16 = -2.0 * lambda[1];
+        let s17 = -2.0 * lambda[12];
+        let s18 = -2.0 * lambda[14];
+        let s19 = -s2;
+        let s20 = -s8;
+        let s21 = -s12;
+        let s22 = 2.0 * lambda[13];
+        let s23 = -s16 - s10 - s6 + s22;
+        let s24 = -2.0 * lambda[13];
+        let s25 = -s13;
+        let s26 = 2.0 * lambda[2];
+        let s27 = 2.0 * lambda[15];
+        let s28 = 2.0 * lambda[17];
+        let s29 = s26 - s17 + s27 + s28;
+        let s30 = -2.0 * lambda[2];
+        let s31 = -2.0 * lambda[15];
+        let s32 = -2.0 * lambda[17];
+        let s33 = -s14;
+        let s34 = -s22;
+        let s35 = -s26;
+        let s36 = 2.0 * lambda[16];
+        let s37 = -s30 - s24 - s18 + s36;
+        let s38 = -2.0 * lambda[16];
+        let s39 = -s27;
+        let s40 = 2.0 * lambda[3];
+        let s41 = 2.0 * lambda[18];
+        let s42 = 2.0 * lambda[20];
+        let s43 = s40 - s31 + s41 + s42;
+        let s44 = -2.0 * lambda[3];
+        let s45 = -2.0 * lambda[18];
+        let s46 = -2.0 * lambda[20];
+        let s47 = -s28;
+        let s48 = -s36;
+        let s49 = -s40;
+        let s50 = 2.0 * lambda[19];
+        let s51 = -s44 - s38 - s32 + s50;
+        let s52 = -2.0 * lambda[19];
+        let s53 = -s41;
+        let s54 = 2.0 * lambda[4];
+        let s55 = 2.0 * lambda[21];
+        let s56 = 2.0 * lambda[23];
+        let s57 = s54 - s45 + s55 + s56;
+        let s58 = -2.0 * lambda[4];
+        let s59 = -2.0 * lambda[21];
+        let s60 = -2.0 * lambda[23];
+        let s61 = -s42;
+        let s62 = -s50;
+        let s63 = -s54;
+        let s64 = 2.0 * lambda[22];
+        let s65 = -s58 - s52 - s46 + s64;
+        let s66 = -2.0 * lambda[22];
+        let s67 = -s55;
+        let s68 = 2.0 * lambda[5];
+        let s69 = 2.0 * lambda[24];
+        let s70 = 2.0 * lambda[26];
+        let s71 = s68 - s59 + s69 + s70;
+        let s72 = -2.0 * lambda[5];
+        let s73 = -2.0 * lambda[24];
+        let s74 = -2.0 * lambda[26];
+        let s75 = -s56;
+        let s76 = -s64;
+        let s77 = -s68;
+        let s78 = 2.0 * lambda[25];
+        let s79 = -s72 - s66 - s60 + s78;
+        let s80 = -2.0 * lambda[25];
+        let s81 = -s69;
+        let s82 = 2.0 * lambda[6];
+        let s83 = 2.0 * lambda[27];
+        let s84 = 2.0 * lambda[29];
+        let s85 = s82 - s73 + s83 + s84;
+        let s86 = -2.0 * lambda[6];
+        let s87 = -2.0 * lambda[27];
+        let s88 = -2.0 * lambda[29];
+        let s89 = -s70;
+        let s90 = -s78;
+        let s91 = -s82;
+        let s92 = 2.0 * lambda[28];
+        let s93 = -s86 - s80 - s74 + s92;
+        let s94 = -2.0 * lambda[28];
+        let s95 = -s83;
+        let s96 = 2.0 * lambda[7];
+        let s97 = 2.0 * lambda[30];
+        let s98 = 2.0 * lambda[32];
+        let s99 = s96 - s87 + s97 + s98;
+        let s100 = -2.0 * lambda[7];
+        let s101 = -2.0 * lambda[30];
+        let s102 = -2.0 * lambda[32];
+        let s103 = -s84;
+        let s104 = -s92;
+        let s105 = -s96;
+        let s106 = 2.0 * lambda[31];
+        let s107 = -s100 - s94 - s88 + s106;
+        let s108 = -2.0 * lambda[31];
+        let s109 = -s97;
+        let s110 = 2.0 * lambda[8];
+        let s111 = s110 - s101;
+        let s112 = -2.0 * lambda[8];
+        let s113 = -s98;
+        let s114 = -s106;
+        let s115 = -s110;
+        let s116 = -s112 - s108 - s102;
+        values[0] = s3;
+        values[1] = s4;
+        values[2] = s5;
+        values[3] = s6;
+        values[4] = s3;
+        values[5] = s4;
+        values[6] = s5;
+        values[7] = s6;
+        values[8] = s7;
+        values[9] = s9;
+        values[10] = s10;
+        values[11] = s7;
+        values[12] = s9;
+        values[13] = s10;
+        values[14] = s11;
+        values[15] = s15;
+        values[16] = s16;
+        values[17] = s17;
+        values[18] = s18;
+        values[19] = s11;
+        values[20] = s15;
+        values[21] = s16;
+        values[22] = s17;
+        values[23] = s18;
+        values[24] = s19;
+        values[25] = s20;
+        values[26] = s21;
+        values[27] = s23;
+        values[28] = s24;
+        values[29] = s19;
+        values[30] = s20;
+        values[31] = s21;
+        values[32] = s23;
+        values[33] = s24;
+        values[34] = s25;
+        values[35] = s29;
+        values[36] = s30;
+        values[37] = s31;
+        values[38] = s32;
+        values[39] = s25;
+        values[40] = s29;
+        values[41] = s30;
+        values[42] = s31;
+        values[43] = s32;
+        values[44] = s33;
+        values[45] = s34;
+        values[46] = s35;
+        values[47] = s37;
+        values[48] = s38;
+        values[49] = s33;
+        values[50] = s34;
+        values[51] = s35;
+        values[52] = s37;
+        values[53] = s38;
+        values[54] = s39;
+        values[55] = s43;
+        values[56] = s44;
+        values[57] = s45;
+        values[58] = s46;
+        values[59] = s39;
+        values[60] = s43;
+        values[61] = s44;
+        values[62] = s45;
+        values[63] = s46;
+        values[64] = s47;
+        values[65] = s48;
+        values[66] = s49;
+        values[67] = s51;
+        values[68] = s52;
+        values[69] = s47;
+        values[70] = s48;
+        values[71] = s49;
+        values[72] = s51;
+        values[73] = s52;
+        values[74] = s53;
+        values[75] = s57;
+        values[76] = s58;
+        values[77] = s59;
+        values[78] = s60;
+        values[79] = s53;
+        values[80] = s57;
+        values[81] = s58;
+        values[82] = s59;
+        values[83] = s60;
+        values[84] = s61;
+        values[85] = s62;
+        values[86] = s63;
+        values[87] = s65;
+        values[88] = s66;
+        values[89] = s61;
+        values[90] = s62;
+        values[91] = s63;
+        values[92] = s65;
+        values[93] = s66;
+        values[94] = s67;
+        values[95] = s71;
+        values[96] = s72;
+        values[97] = s73;
+        values[98] = s74;
+        values[99] = s67;
+        values[100] = s71;
+        values[101] = s72;
+        values[102] = s73;
+        values[103] = s74;
+        values[104] = s75;
+        values[105] = s76;
+        values[106] = s77;
+        values[107] = s79;
+        values[108] = s80;
+        values[109] = s75;
+        values[110] = s76;
+        values[111] = s77;
+        values[112] = s79;
+        values[113] = s80;
+        values[114] = s81;
+        values[115] = s85;
+        values[116] = s86;
+        values[117] = s87;
+        values[118] = s88;
+        values[119] = s81;
+        values[120] = s85;
+        values[121] = s86;
+        values[122] = s87;
+        values[123] = s88;
+        values[124] = s89;
+        values[125] = s90;
+        values[126] = s91;
+        values[127] = s93;
+        values[128] = s94;
+        values[129] = s89;
+        values[130] = s90;
+        values[131] = s91;
+        values[132] = s93;
+        values[133] = s94;
+        values[134] = s95;
+        values[135] = s99;
+        values[136] = s100;
+        values[137] = s101;
+        values[138] = s102;
+        values[139] = s95;
+        values[140] = s99;
+        values[141] = s100;
+        values[142] = s101;
+        values[143] = s102;
+        values[144] = s103;
+        values[145] = s104;
+        values[146] = s105;
+        values[147] = s107;
+        values[148] = s108;
+        values[149] = s103;
+        values[150] = s104;
+        values[151] = s105;
+        values[152] = s107;
+        values[153] = s108;
+        values[154] = s109;
+        values[155] = s111;
+        values[156] = s112;
+        values[157] = s109;
+        values[158] = s111;
+        values[159] = s112;
+        values[160] = s113;
+        values[161] = s114;
+        values[162] = s115;
+        values[163] = s116;
+        values[164] = s113;
+        values[165] = s114;
+        values[166] = s115;
+        values[167] = s116;
     }
 }

@@ -243,6 +243,12 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -360,5 +366,31 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         use ::zeitner::__private::Real as _;
         values[0] = 2.0 * q[0];
         values[1] = 2.0 * q[1];
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        values[0] = s0;
+        values[1] = s0;
     }
 }

@@ -294,7 +294,16 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
     const EVENTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (1, 3), (2, 3)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -467,5 +476,40 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         values[4] = s0;
         values[5] = s1;
         values[6] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -2.0 * lambda[1];
+        let s1 = 2.0 * lambda[0] - s0;
+        let s2 = 2.0 * lambda[1];
+        let s3 = -s2;
+        values[0] = s1;
+        values[1] = s3;
+        values[2] = s1;
+        values[3] = s3;
+        values[4] = s0;
+        values[5] = s2;
+        values[6] = s0;
+        values[7] = s2;
     }
 }

@@ -269,6 +269,15 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+        force_jacobians: [&[(0, 0), (1, 1)], &[(0, 0), (1, 1)]],
+        constraint_force_jacobians: [
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -416,5 +425,46 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         values[1] = -s1;
         values[2] = s0;
         values[3] = s1;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -self.k;
+        let s1 = -self.c;
+        values[0] = s0;
+        values[1] = s0;
+        values[2] = s1;
+        values[3] = s1;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -2.0 * lambda[0];
+        let s1 = -s0;
+        let s2 = 2.0 * lambda[0];
+        let s3 = -s2;
+        values[0] = s1;
+        values[1] = s3;
+        values[2] = s1;
+        values[3] = s3;
+        values[4] = s0;
+        values[5] = s2;
+        values[6] = s0;
+        values[7] = s2;
     }
 }

@@ -286,6 +286,12 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 2), (1, 0), (1, 1)],
+        force_jacobians: [&[], &[(0, 0)]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -430,6 +436,33 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         values[1] = -self.h3;
         values[2] = 2.0 * q[0];
         values[3] = 2.0 * (q[1] - self.h2);
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -self.d;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[1];
+        values[0] = s0;
+        values[1] = s0;
     }
 }
 #[allow(dead_code)]
@@ -756,7 +789,13 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
     const UNILATERAL_CONSTRAINTS: usize = 2usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0), (1, 2), (2, 0), (2, 2)],
+        force_jacobians: [&[], &[(0, 0)]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -921,5 +960,32 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         values[3] = self.base.h3;
         values[4] = 1.0;
         values[5] = -self.base.h3;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -self.base.d;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        values[0] = s0;
+        values[1] = s0;
     }
 }

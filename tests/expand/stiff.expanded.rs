@@ -263,6 +263,15 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1)],
+        force_jacobians: [
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+        ],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -405,6 +414,50 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         use ::zeitner::__private::Real as _;
         values[0] = 2.0 * q[0];
         values[1] = 2.0 * q[1];
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -self.k;
+        let s1 = -self.c;
+        values[0] = s0;
+        values[1] = self.k;
+        values[2] = s0;
+        values[3] = self.k;
+        values[4] = self.k;
+        values[5] = s0;
+        values[6] = self.k;
+        values[7] = s0;
+        values[8] = s1;
+        values[9] = self.c;
+        values[10] = s1;
+        values[11] = self.c;
+        values[12] = self.c;
+        values[13] = s1;
+        values[14] = self.c;
+        values[15] = s1;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        values[0] = s0;
+        values[1] = s0;
     }
 }
 #[allow(dead_code)]
@@ -664,6 +717,15 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (1, 3)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -813,6 +875,41 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         values[3] = -s1;
         values[4] = s0;
         values[5] = s1;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -2.0 * lambda[1];
+        let s1 = 2.0 * lambda[0] - s0;
+        let s2 = 2.0 * lambda[1];
+        let s3 = -s2;
+        values[0] = s1;
+        values[1] = s3;
+        values[2] = s1;
+        values[3] = s3;
+        values[4] = s0;
+        values[5] = s2;
+        values[6] = s0;
+        values[7] = s2;
     }
 }
 #[allow(dead_code)]
@@ -1063,6 +1160,12 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 0), (0, 2), (1, 1), (2, 0), (2, 2)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -1203,6 +1306,37 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         values[2] = -s1;
         values[3] = s0;
         values[4] = s1;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        let s1 = -2.0 * lambda[1];
+        let s2 = 2.0 * lambda[1];
+        values[0] = s0 - s1;
+        values[1] = -s2;
+        values[2] = s0 + s2;
+        values[3] = s1;
+        values[4] = s2;
     }
 }
 #[allow(dead_code)]
@@ -1479,6 +1613,28 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[
+            (0, 0),
+            (0, 1),
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (2, 2),
+            (2, 3),
+            (3, 0),
+            (3, 1),
+            (3, 2),
+            (3, 3),
+        ],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [
+            &[(0, 0), (0, 2), (1, 1), (1, 3), (2, 0), (2, 2), (3, 1), (3, 3)],
+            &[],
+        ],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -1667,6 +1823,43 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         values[9] = s1;
         values[10] = s4;
         values[11] = s5;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<4>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -2.0 * lambda[1];
+        let s1 = 2.0 * lambda[3];
+        let s2 = 2.0 * lambda[0] - s0 + s1;
+        let s3 = 2.0 * lambda[1];
+        let s4 = -s3;
+        let s5 = s1 + s3 + 2.0 * lambda[2];
+        values[0] = s2;
+        values[1] = s4;
+        values[2] = s2;
+        values[3] = s4;
+        values[4] = s0;
+        values[5] = s5;
+        values[6] = s0;
+        values[7] = s5;
     }
 }
 #[allow(dead_code)]
@@ -1914,6 +2107,12 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         ],
     };
     type Mass = ::zeitner::__private::FullMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -2033,6 +2232,32 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         use ::zeitner::__private::Real as _;
         values[0] = 2.0 * q[0];
         values[1] = 2.0 * q[1];
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * lambda[0];
+        values[0] = s0;
+        values[1] = s0;
     }
 }
 #[allow(dead_code)]
@@ -2280,6 +2505,12 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
+    });
     #[inline]
     fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
         #[allow(unused_imports)]
@@ -2398,5 +2629,31 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         use ::zeitner::__private::Real as _;
         values[0] = -(q[0].powi(2) + q[0] * (2.0 * q[0]));
         values[1] = 2.0 * q[1];
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        values: &mut [f64],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * q[0];
+        values[0] = -((s0 + 2.0 * s0) * lambda[0]);
+        values[1] = 2.0 * lambda[0];
     }
 }

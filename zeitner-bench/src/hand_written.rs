@@ -20,6 +20,7 @@ impl ConstrainedSystem<3, 2> for HandWritten {
         functions: &[],
     };
     type Mass = DiagonalMass<3>;
+    type Storage = zeitner::storage::Dense;
 
     fn mass_matrix(&self, _q: &Vector<3>, _t: f64) -> DiagonalMass<3> {
         DiagonalMass(Vector::<3>::new(self.0.m, self.0.m, self.0.j))

@@ -187,6 +187,10 @@ pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, Op
         .collect()
 }
 
+/// From this many coordinates on a scene keeps its N×N derivatives sparse: below it the dense
+/// storage's fixed-size matrices are faster and fit a thread's stack.
+const SPARSE_FROM_COORDINATES: usize = 64;
+
 fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call]) -> TokenStream {
     let rt = quote!(::zeitner::__private);
     let n = Literal::usize_unsuffixed(scene.sizes.n);
@@ -212,21 +216,27 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let gaps = (u > 0).then(|| quote!(const UNILATERAL_CONSTRAINTS: usize = #u;));
     let events = (e > 0).then(|| quote!(const EVENTS: usize = #e;));
     let gaps_and_events = quote!(#gaps #events);
-    // `G` by its nonzeros as well, for the sparse simulator.
-    let sparse_jacobian = scene
-        .functions
-        .iter()
-        .filter(|generated| generated.method == "constraint_jacobian")
-        .map(|generated| {
-            let body = emitter.sparse_body(generated, &rt);
-            let vec_n = quote!(#rt::Vector<#n>);
-            quote! {
-                #[inline]
-                fn constraint_jacobian_nonzeros(&self, q: &#vec_n, v: &#vec_n, t: f64, values: &mut [f64]) {
-                    #body
-                }
+    // The Jacobians by their structural nonzeros as well, for the sparse storage, and where
+    // those nonzeros are.
+    let vec_n = quote!(#rt::Vector<#n>);
+    let state = quote!(q: &#vec_n, v: &#vec_n, t: f64);
+    let sparse_methods = scene.functions.iter().filter_map(|generated| {
+        let arguments = match generated.method {
+            "constraint_jacobian" => quote!(#state),
+            "force_jacobians" => quote!(#state),
+            "constraint_force_jacobians" => quote!(#state, lambda: &#rt::Vector<#z>),
+            _ => return None,
+        };
+        let method = format_ident!("{}_nonzeros", generated.method.trim_end_matches('s'));
+        let body = emitter.sparse_body(generated, &rt);
+        Some(quote! {
+            #[inline]
+            fn #method(&self, #arguments, values: &mut [f64]) {
+                #body
             }
-        });
+        })
+    });
+    let sparsity = sparsity(scene, &rt);
     let (mass_type, mass_kind) = match (scene.full_mass, scene.mass_is_constant) {
         (false, true) => (quote!(#rt::DiagonalMass<#n>), quote!(ConstantDiagonal)),
         (false, false) => (quote!(#rt::DiagonalMass<#n>), quote!(Diagonal)),
@@ -234,6 +244,11 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
         (true, false) => (quote!(#rt::FullMass<#n>), quote!(Full)),
     };
     let summaries = scene.functions.iter().map(|g| function_summary(g, &rt));
+    let storage = if scene.sizes.n >= SPARSE_FROM_COORDINATES {
+        quote!(#rt::LargeSceneStorage)
+    } else {
+        quote!(#rt::Dense)
+    };
     let k = Literal::usize_unsuffixed(scene.sizes.k);
     let mass_is_constant = scene.mass_is_constant;
     let time_dependent = scene.time_dependent;
@@ -253,11 +268,52 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
                 functions: &[#(#summaries),*],
             };
             type Mass = #mass_type;
+            type Storage = #storage;
             #gaps_and_events
+            const SPARSITY: ::core::option::Option<#rt::Sparsity> = ::core::option::Option::Some(#sparsity);
             #(#methods)*
-            #(#sparse_jacobian)*
+            #(#sparse_methods)*
         }
     }
+}
+
+/// The `(row, column)` of every value the `_nonzeros` functions write, in their order: the
+/// entries each generated Jacobian computes (structural zeros left out).
+fn sparsity(scene: &Scene, rt: &TokenStream) -> TokenStream {
+    let pattern = |method: &str, block: usize| {
+        let Some(generated) = scene.functions.iter().find(|g| g.method == method) else {
+            return quote!(&[]);
+        };
+        let ranks = nonzero_ranks(generated);
+        let offset: usize = generated.blocks[..block]
+            .iter()
+            .map(|b| b.entries.len())
+            .sum();
+        let entries = generated.blocks[block]
+            .entries
+            .iter()
+            .enumerate()
+            .filter(|(e, _)| ranks[offset + e].is_some())
+            .map(|(_, &(row, col, _, _))| {
+                let (row, col) = (
+                    Literal::usize_unsuffixed(row),
+                    Literal::usize_unsuffixed(col),
+                );
+                quote!((#row, #col))
+            });
+        quote!(&[#(#entries),*])
+    };
+    let g = pattern("constraint_jacobian", 0);
+    let (fq, fv) = (pattern("force_jacobians", 0), pattern("force_jacobians", 1));
+    let (cq, cv) = (
+        pattern("constraint_force_jacobians", 0),
+        pattern("constraint_force_jacobians", 1),
+    );
+    quote!(#rt::Sparsity {
+        constraint_jacobian: #g,
+        force_jacobians: [#fq, #fv],
+        constraint_force_jacobians: [#cq, #cv],
+    })
 }
 
 /// The trait methods whose generated vector is read through another signature: one

@@ -367,7 +367,7 @@ mod tests {
 
     #[test]
     fn a_start_off_the_circle_moves_radially_onto_it_and_says_how_far() {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         let (q0, v0) = (Vector::<2>::new(3.0, 0.5), Vector::<2>::new(0.2, 1.0));
         model.prepare(&q0, 0.0).unwrap();
         let (point, report) =
@@ -389,7 +389,7 @@ mod tests {
 
     #[test]
     fn the_tangential_estimate_drops_the_normal_part_only() {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         // On the circle at (L, 0), G = (2L, 0) and the mass is the same in x and y: the normal
         // is x, and the tangential part of any estimate is its y part.
         let q = Vector::<2>::new(PENDULUM.length, 0.0);
@@ -403,7 +403,7 @@ mod tests {
 
     #[test]
     fn multipliers_at_rest_at_the_bottom_carry_the_weight() {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         let q = Vector::<2>::new(0.0, -PENDULUM.length);
         model.prepare(&q, 0.0).unwrap();
         let point = consistent_point(&mut model, 0.0, q, Vector::zeros()).unwrap();

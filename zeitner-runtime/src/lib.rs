@@ -49,6 +49,7 @@ mod polynomial;
 pub mod simulator;
 #[cfg(feature = "alloc")]
 pub mod sparse;
+pub mod storage;
 pub mod system;
 #[cfg(test)]
 mod testing;
@@ -67,9 +68,10 @@ pub use output::{Direction, Point, StepReport, StopReason};
 pub use simulator::{Observation, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
+pub use storage::WithStorage;
 pub use system::{
     BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,
-    Vector,
+    Sparsity, Vector,
 };
 
 /// What generated code names; not part of the public API.
@@ -78,7 +80,14 @@ pub mod __private {
     pub use crate::math::Real;
     pub use crate::{
         BlockSummary, ConstrainedSystem, DiagonalMass, FullMass, FunctionSummary, MassKind, Matrix,
-        OpCounts, SceneSummary, Vector,
+        OpCounts, SceneSummary, Sparsity, Vector,
     };
     pub use nalgebra;
+    /// The storage `#[constrained_system]` gives a scene with many coordinates: sparse where
+    /// the heap is available.
+    #[cfg(feature = "alloc")]
+    pub type LargeSceneStorage = crate::storage::Sparse;
+    #[cfg(not(feature = "alloc"))]
+    pub type LargeSceneStorage = crate::storage::Dense;
+    pub use crate::storage::Dense;
 }

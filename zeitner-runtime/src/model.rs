@@ -5,6 +5,7 @@ use crate::error::{ModelFunction, StepError};
 use crate::gaps::GapSet;
 use crate::linalg::all_finite;
 use crate::mass::{MassFactor, MassMatrix};
+use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// How often each model function was called.
@@ -46,10 +47,17 @@ pub(crate) struct Acceleration<F, const N: usize, const Z: usize> {
     pub jacobian: Matrix<Z, N>,
 }
 
-/// `∂a/∂q`, `∂a/∂q'`, `∂a/∂λ` of `a = M⁻¹(F - Gᵀλ)`.
-pub(crate) struct AccelerationJacobians<const N: usize, const Z: usize> {
-    pub dq: Matrix<N, N>,
-    pub dv: Matrix<N, N>,
+pub(crate) type StorageOf<S, const N: usize, const Z: usize> =
+    <S as ConstrainedSystem<N, Z>>::Storage;
+pub(crate) type SquareOf<S, const N: usize, const Z: usize> =
+    <StorageOf<S, N, Z> as Storage<N>>::Square;
+type DerivativesOf<S, const N: usize, const Z: usize> =
+    <StorageOf<S, N, Z> as Storage<N>>::Derivatives;
+
+/// `∂a/∂q`, `∂a/∂q'` (as the scene's storage keeps them), `∂a/∂λ` of `a = M⁻¹(F - Gᵀλ)`.
+pub(crate) struct AccelerationJacobians<'m, Q, const N: usize, const Z: usize> {
+    pub dq: &'m Q,
+    pub dv: &'m Q,
     pub dp: Matrix<N, Z>,
 }
 
@@ -127,6 +135,8 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
     open: OpenRows,
+    /// `∂a/∂q`, `∂a/∂q'` where they were evaluated last, in the scene's storage.
+    derivatives: DerivativesOf<S, N, Z>,
 }
 
 /// `value`, or the typed error naming `function` when an entry is not finite.
@@ -143,8 +153,9 @@ pub(crate) fn finite<const R: usize, const C: usize>(
 }
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S, N, Z> {
-    pub fn new(system: &'s S) -> Self {
-        Model {
+    /// The evaluation layer of `system`, or the refusal of its storage.
+    pub fn new(system: &'s S) -> Result<Self, StepError> {
+        Ok(Model {
             system,
             evaluations: Evaluations::default(),
             constant_factor: None,
@@ -152,7 +163,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
                 first: S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
                 open: GapSet::EMPTY,
             },
-        }
+            derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
+        })
     }
 
     /// The gaps whose contact is open (not enforced).
@@ -339,20 +351,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok(self.mask(finite(b, t, ModelFunction::ConstraintAccelerationBias)?))
     }
 
-    /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
+    /// `∂(Gᵀλ)/∂q · x` for fixed `λ`.
     #[inline]
-    pub fn constraint_force_jacobians(
+    pub fn constraint_force_times(
         &mut self,
-        q: &Vector<N>,
-        v: &Vector<N>,
-        t: f64,
+        (q, v, t): (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
-    ) -> Result<(Matrix<N, N>, Matrix<N, N>), StepError> {
-        self.evaluations.constraint_force_jacobians += 1;
+        x: &Vector<N>,
+    ) -> Result<Vector<N>, StepError> {
         let lambda = &self.mask(*lambda);
-        let (dq, dv) = self.system.constraint_force_jacobians(q, v, t, lambda);
-        let function = ModelFunction::ConstraintForceJacobians;
-        Ok((finite(dq, t, function)?, finite(dv, t, function)?))
+        let evaluations = &mut self.evaluations;
+        self.derivatives
+            .constraint_force_times(self.system, evaluations, (q, v, t), lambda, x)
     }
 
     /// `G`, `M⁻¹Gᵀ` and the mass factor at a point.
@@ -414,9 +424,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         })
     }
 
-    /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known. As in
-    /// [`Model::acceleration`], the results are checked and the model's outputs only to name
-    /// the one that was not finite.
+    /// The derivatives of `a = M⁻¹(F - Gᵀλ)` at a point whose acceleration is known, kept in
+    /// the scene's storage until the next call. As in [`Model::acceleration`], the results are
+    /// checked, and the model's outputs only to name the one that was not finite.
     #[inline]
     pub fn acceleration_jacobians(
         &mut self,
@@ -425,43 +435,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: f64,
         lambda: &Vector<Z>,
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
-    ) -> Result<AccelerationJacobians<N, Z>, StepError> {
-        self.evaluations.force_jacobians += 1;
-        self.evaluations.constraint_force_jacobians += 1;
-        let (force_dq, force_dv) = self.system.force_jacobians(q, v, t);
+    ) -> Result<AccelerationJacobians<'_, SquareOf<S, N, Z>, N, Z>, StepError> {
         let masked = self.mask(*lambda);
-        let (reaction_dq, reaction_dv) = self.system.constraint_force_jacobians(q, v, t, &masked);
-        let mut dq = force_dq - reaction_dq;
-        let mass_term = (!S::MASS_IS_CONSTANT).then(|| {
-            self.evaluations.mass_jacobian_products += 1;
-            self.system.mass_jacobian_product(q, t, &at.a)
-        });
-        if let Some(mass_term) = mass_term {
-            dq -= mass_term;
-        }
-        let dq = at.factor.solve(&dq);
-        let dv = if S::DYNAMICS_DEPEND_ON_VELOCITY {
-            at.factor.solve(&(force_dv - reaction_dv))
-        } else {
-            Matrix::zeros()
+        let point = AccelerationAt {
+            a: &at.a,
+            factor: &at.factor,
         };
-        if !(all_finite(&dq) && (!S::DYNAMICS_DEPEND_ON_VELOCITY || all_finite(&dv))) {
-            let reaction = ModelFunction::ConstraintForceJacobians;
-            finite(reaction_dq, t, reaction)?;
-            finite(reaction_dv, t, reaction)?;
-            finite(force_dq, t, ModelFunction::ForceJacobians)?;
-            if let Some(mass_term) = mass_term {
-                finite(mass_term, t, ModelFunction::MassJacobianProduct)?;
-            }
-            finite(force_dv, t, ModelFunction::ForceJacobians)?;
-            return Err(StepError::NonFinite {
-                t,
-                function: ModelFunction::State,
-            });
-        }
+        let evaluations = &mut self.evaluations;
+        self.derivatives
+            .evaluate(self.system, evaluations, (q, v, t), &masked, point)?;
         Ok(AccelerationJacobians {
-            dq,
-            dv,
+            dq: self.derivatives.dq(),
+            dv: self.derivatives.dv(),
             dp: -at.factor.solve(&at.jacobian.transpose()),
         })
     }

@@ -10,6 +10,7 @@ use crate::method::{Method, Start, StepEnd};
 use crate::model::Model;
 use crate::options::StepControl;
 use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::storage::Square;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The first guess of the next step's multipliers, from the last two recorded steps. Reset when
@@ -285,7 +286,7 @@ pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
 ) -> Result<NewtonOutcome<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
-    M: Method<N, Z>,
+    M: Method<N, Z, S::Storage>,
 {
     let paper = if settings.exact {
         None
@@ -454,8 +455,8 @@ where
     S: ConstrainedSystem<N, Z>,
 {
     let h = t_end - start.t;
-    let (stiffness, _) = model.constraint_force_jacobians(q, v, t_end, &dp)?;
-    let turn = model.mass_factor(q, t_end)?.solve(&(stiffness * dq));
+    let force_turn = model.constraint_force_times((q, v, t_end), &dp, &dq)?;
+    let turn = model.mass_factor(q, t_end)?.solve(&force_turn);
     let (eq, ev) = ((h * h / 12.0) * turn, (h / 3.0) * turn);
     if let StepControl::Adaptive { .. } = settings.step {
         let norm = error_norm(
@@ -594,8 +595,8 @@ where
         let mut dw_dq = Matrix::<Z, N>::zeros();
         for j in 0..r {
             let unit = Vector::<Z>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
-            let (hessian, _) = model.constraint_force_jacobians(q, v, t_end, &unit)?;
-            dw_dq.set_row(j, &(hessian * v).transpose());
+            let hessian_v = model.constraint_force_times((q, v, t_end), &unit, v)?;
+            dw_dq.set_row(j, &hessian_v.transpose());
         }
         for k in 0..K {
             blocks[1][k] = dw_dq * dq_dc[k] + dg_dq * dv_dc[k];
@@ -605,8 +606,9 @@ where
             let at = model.acceleration(q, v, t_end, &lambda)?;
             let jac = model.acceleration_jacobians(q, v, t_end, &lambda, &at)?;
             for k in 0..K {
-                let da =
-                    jac.dq * dq_dc[k] + jac.dv * dv_dc[k] + multipliers.weight(k, 1.0) * jac.dp;
+                let da = jac.dq.times(&dq_dc[k])
+                    + jac.dv.times(&dv_dc[k])
+                    + multipliers.weight(k, 1.0) * jac.dp;
                 let rows = at.jacobian * da;
                 blocks[1][k]
                     .rows_mut(r, Z - r)
@@ -713,13 +715,14 @@ mod tests {
     }
 
     fn newton_from_a_poor_guess(exact: bool) -> (f64, u32) {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
-        let mut method = AnyMethod::<2>::new(
-            InnerMethod::DormandPrince54,
-            StepControl::Fixed { step: 0.01 },
-        );
+        let mut method =
+            AnyMethod::<2, crate::storage::Dense>::new::<crate::testing::SpringPendulum, 1>(
+                InnerMethod::DormandPrince54,
+                StepControl::Fixed { step: 0.01 },
+            );
         let start = Start::<2, 1, 1>::at(0.0, q, v);
         let guess = Multipliers {
             base: Vector::zeros(),

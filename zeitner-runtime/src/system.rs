@@ -3,6 +3,7 @@
 
 pub use crate::dense::{Matrix, Vector};
 use crate::mass::MassMatrix;
+use crate::storage::Storage;
 
 /// A constrained mechanical system `M(q,t) q'' = F(q, q', t) - G(q, q', t)ᵀ λ`, `g(q, q', t) = 0`,
 /// with `N` coordinates and `Z` constraints: rows `0..POSITION_CONSTRAINTS` are position-level
@@ -22,6 +23,10 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     const SUMMARY: SceneSummary;
     /// The mass matrix's storage: [`crate::DiagonalMass`] or [`crate::FullMass`].
     type Mass: MassMatrix<N>;
+    /// How the step stores the N×N derivatives: [`crate::storage::Dense`] for small scenes,
+    /// [`crate::storage::Sparse`] (feature `alloc`) for many coordinates. `#[constrained_system]`
+    /// chooses by the number of coordinates; [`crate::WithStorage`] runs a scene on the other.
+    type Storage: Storage<N>;
 
     /// `M(q, t)`.
     fn mass_matrix(&self, q: &Vector<N>, t: f64) -> Self::Mass;
@@ -53,9 +58,12 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         t: f64,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>);
-    /// `G`'s structural nonzeros, in the order of [`jacobian_nonzeros`] of [`Self::SUMMARY`]
-    /// (all entries row by row when the summary does not list them): what the sparse
-    /// simulator evaluates instead of the dense `G`. The default gathers them from
+    /// Where the Jacobians below are nonzero, for the sparse storage: `None` (the default, for
+    /// hand-written models) reads every entry; `#[constrained_system]` lists the entries it
+    /// computes.
+    const SPARSITY: Option<Sparsity> = None;
+    /// `G`'s values at the entries [`Sparsity::constraint_jacobian`] lists (all entries, row by
+    /// row, without a [`Self::SPARSITY`]). The default gathers them from
     /// [`Self::constraint_jacobian`]; `#[constrained_system]` writes them directly.
     fn constraint_jacobian_nonzeros(
         &self,
@@ -64,19 +72,28 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         t: f64,
         values: &mut [f64],
     ) {
-        let dense = self.constraint_jacobian(q, v, t);
-        match jacobian_nonzeros(&Self::SUMMARY) {
-            Some(pattern) => {
-                for (value, &(row, col)) in values.iter_mut().zip(pattern) {
-                    *value = dense[(row, col)];
-                }
-            }
-            None => {
-                for (k, value) in values.iter_mut().enumerate().take(Z * N) {
-                    *value = dense[(k / N, k % N)];
-                }
-            }
-        }
+        let pattern = Self::SPARSITY.map(|s| s.constraint_jacobian);
+        gather(&self.constraint_jacobian(q, v, t), pattern, values);
+    }
+    /// `∂F/∂q`'s values at [`Sparsity::force_jacobians`]`[0]`, then `∂F/∂q'`'s at `[1]`.
+    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+        let (dq, dv) = self.force_jacobians(q, v, t);
+        let patterns = Self::SPARSITY.map(|s| s.force_jacobians);
+        gather_pair((&dq, &dv), patterns, values);
+    }
+    /// `∂(Gᵀλ)/∂q`'s values at [`Sparsity::constraint_force_jacobians`]`[0]`, then
+    /// `∂(Gᵀλ)/∂q'`'s at `[1]`.
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        values: &mut [f64],
+    ) {
+        let (dq, dv) = self.constraint_force_jacobians(q, v, t, lambda);
+        let patterns = Self::SPARSITY.map(|s| s.constraint_force_jacobians);
+        gather_pair((&dq, &dv), patterns, values);
     }
     /// `∂(M(q) a)/∂q` for fixed `a`; zero (the default) when `M` does not depend on `q`.
     fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
@@ -117,11 +134,49 @@ pub const MAX_GAPS: usize = 32;
 /// The most event functions a system may have.
 pub const MAX_EVENTS: usize = 32;
 
-/// The `(row, column)` of every structural nonzero of `G` as the scene's summary lists them,
-/// if it does.
-pub fn jacobian_nonzeros(summary: &SceneSummary) -> Option<&'static [(usize, usize)]> {
-    let function = summary.function("constraint_jacobian")?;
-    Some(function.blocks.first()?.nonzeros)
+/// Where a model's Jacobians are nonzero: the `(row, column)` of each value its `_nonzeros`
+/// functions write, in that order. `#[constrained_system]` emits it from the derivatives it
+/// computes, so that the sparse storage learns every pattern without evaluating anything.
+#[derive(Clone, Copy, Debug)]
+pub struct Sparsity {
+    /// `G`.
+    pub constraint_jacobian: &'static [(usize, usize)],
+    /// `∂F/∂q` and `∂F/∂q'`.
+    pub force_jacobians: [&'static [(usize, usize)]; 2],
+    /// `∂(Gᵀλ)/∂q` and `∂(Gᵀλ)/∂q'`.
+    pub constraint_force_jacobians: [&'static [(usize, usize)]; 2],
+}
+
+/// `matrix`'s entries at `pattern` (all, row by row, without one) into `values`.
+fn gather<const R: usize, const C: usize>(
+    matrix: &Matrix<R, C>,
+    pattern: Option<&[(usize, usize)]>,
+    values: &mut [f64],
+) -> usize {
+    match pattern {
+        Some(pattern) => {
+            for (value, &(row, col)) in values.iter_mut().zip(pattern) {
+                *value = matrix[(row, col)];
+            }
+            pattern.len()
+        }
+        None => {
+            for (k, value) in values.iter_mut().enumerate().take(R * C) {
+                *value = matrix[(k / C, k % C)];
+            }
+            R * C
+        }
+    }
+}
+
+/// Two matrices' entries at their patterns, one after the other.
+fn gather_pair<const N: usize>(
+    (first, second): (&Matrix<N, N>, &Matrix<N, N>),
+    patterns: Option<[&[(usize, usize)]; 2]>,
+    values: &mut [f64],
+) {
+    let written = gather(first, patterns.map(|p| p[0]), values);
+    gather(second, patterns.map(|p| p[1]), &mut values[written..]);
 }
 
 /// How the mass matrix is stored and whether it changes.

@@ -33,6 +33,7 @@ impl ConstrainedSystem<2, 1> for SpringPendulum {
         functions: &[],
     };
     type Mass = DiagonalMass<2>;
+    type Storage = crate::storage::Dense;
 
     fn mass_matrix(&self, _: &Vector<2>, _: f64) -> DiagonalMass<2> {
         DiagonalMass(Vector::from([self.m, self.m]))

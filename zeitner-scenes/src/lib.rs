@@ -13,5 +13,5 @@ pub mod reference;
 pub mod slider_crank;
 pub mod spring_support;
 pub mod steam_generator;
-pub mod structure;
 pub mod stiff;
+pub mod structure;

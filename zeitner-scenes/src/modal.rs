@@ -45,7 +45,11 @@ impl Modes {
             }
         }
         let eigen = SymmetricEigen::new(stiffness / lumped.node_mass);
-        let frequencies = eigen.eigenvalues.iter().map(|l| l.max(0.0).sqrt()).collect();
+        let frequencies = eigen
+            .eigenvalues
+            .iter()
+            .map(|l| l.max(0.0).sqrt())
+            .collect();
         Modes {
             lumped,
             nodes,
@@ -58,7 +62,8 @@ impl Modes {
     /// held at both ends has the largest eigenvalue `4 k_a/m · sin²(π (n-2) / (2 (n-1)))`.
     pub fn highest_frequency(&self) -> f64 {
         let n = self.nodes as f64;
-        let axial = 2.0 * (self.lumped.axial_spring / self.lumped.node_mass).sqrt()
+        let axial = 2.0
+            * (self.lumped.axial_spring / self.lumped.node_mass).sqrt()
             * (core::f64::consts::PI * (n - 2.0) / (2.0 * (n - 1.0))).sin();
         self.frequencies.iter().copied().fold(axial, f64::max)
     }
@@ -71,7 +76,13 @@ impl Modes {
         let mut du = vec![0.0; self.nodes - 1];
         for (mode, &omega) in self.frequencies.iter().enumerate() {
             // A load p0 s/rise from s = 0 on, less the same from s = rise on.
-            let ramp = |s: f64| if s > 0.0 { ramp_response(omega, s) } else { (0.0, 0.0) };
+            let ramp = |s: f64| {
+                if s > 0.0 {
+                    ramp_response(omega, s)
+                } else {
+                    (0.0, 0.0)
+                }
+            };
             let (r0, d0) = ramp(t);
             let (r1, d1) = ramp(t - rise);
             let weight = self.shapes[(top, mode)] * p0 / rise;

@@ -14,9 +14,9 @@
 //!
 //! The pin leaves the column free to swing about its base (the pendulum column carries it
 //! vertically only), so the load swings it until the strut engages; from then on the strut
-//! carries the load and the column rings in bending. The sizes run from 32 to 1 024 coordinates
-//! ([`Structure16`] … [`Structure512`]); [`Structure100`] (200 coordinates) is the scene of the
-//! benchmark.
+//! carries the load and the column rings in bending. The family: [`Structure16`] (32
+//! coordinates), [`Structure32`], [`Structure64`], [`Structure100`] (200 coordinates, the
+//! benchmark's scene).
 
 use zeitner::constrained_system;
 

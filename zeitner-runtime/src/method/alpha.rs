@@ -17,10 +17,10 @@
 use super::dirk::{serves_step, SLOW_STAGE, STAGE_ITERATIONS};
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
-use crate::linalg::IterationFactor;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
 use crate::polynomial::Multipliers;
+use crate::storage::{Combination, Iteration, Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The method's four parameters, from the spectral radius `ρ∞` at infinite frequency
@@ -62,15 +62,17 @@ struct Candidate<const N: usize> {
 }
 
 /// The method, its memory and its workspace.
-pub(crate) struct GeneralizedAlpha<const N: usize> {
+pub(crate) struct GeneralizedAlpha<const N: usize, D: Storage<N>> {
     parameters: Parameters,
     /// `ā` at the current state: the last accepted step's `ā₁`, or the true acceleration after
     /// a restart. `None` before the first restart; a step then takes `ā₀ = a₀`.
     committed: Option<Vector<N>>,
     /// What the last integration would commit; a failed or rejected step never commits it.
     candidate: Option<Candidate<N>>,
-    /// The step the iteration matrix was formed for and its factor.
-    iteration: Option<(f64, IterationFactor<N>)>,
+    /// The iteration matrix's factor and the step it was formed for (`None` before the first
+    /// and after a failed refresh).
+    iteration: D::Iteration,
+    formed_for: Option<f64>,
     factorizations: u64,
 }
 
@@ -87,42 +89,42 @@ struct Known<'m, const N: usize, const Z: usize> {
     hg: f64,
 }
 
-impl<const N: usize> GeneralizedAlpha<N> {
-    pub fn new(rho_inf: f64) -> Self {
+impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
+    pub fn new<S: ConstrainedSystem<N, Z>, const Z: usize>(rho_inf: f64) -> Self {
         GeneralizedAlpha {
             parameters: Parameters::new(rho_inf),
             committed: None,
             candidate: None,
-            iteration: None,
+            iteration: D::iteration::<S, Z>(),
+            formed_for: None,
             factorizations: 0,
         }
     }
 
     /// `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)`, factorised and kept for steps near
-    /// `h`.
-    fn refresh(
-        &mut self,
-        h: f64,
-        (dq, dv): (&Matrix<N, N>, &Matrix<N, N>),
-    ) -> Option<IterationFactor<N>> {
+    /// `h`; `false` where it is singular.
+    fn refresh(&mut self, h: f64, (dq, dv): (&D::Square, &D::Square)) -> bool {
         let p = self.parameters;
         let (hg, hhb) = (h * p.gamma, h * h * p.beta);
-        let matrix = (1.0 - p.alpha_m) * Matrix::<N, N>::identity()
-            - (1.0 - p.alpha_f) * (hg * dv + hhb * dq);
+        let combination = Combination {
+            identity: 1.0 - p.alpha_m,
+            dv: (1.0 - p.alpha_f) * hg,
+            dq: (1.0 - p.alpha_f) * hhb,
+        };
         self.factorizations += 1;
-        let lu = IterationFactor::new(matrix)?;
-        self.iteration = Some((h, lu));
-        Some(lu)
+        let formed = self.iteration.refresh(combination, dq, dv);
+        self.formed_for = formed.then_some(h);
+        formed
     }
 
-    /// The kept iteration matrix if it was formed for a step near `h`.
-    fn kept(&self, h: f64) -> Option<IterationFactor<N>> {
-        let (formed_for, lu) = self.iteration?;
-        serves_step(formed_for, h).then_some(lu)
+    /// Whether the kept iteration matrix was formed for a step near `h`.
+    fn kept(&self, h: f64) -> bool {
+        self.formed_for
+            .is_some_and(|formed_for| serves_step(formed_for, h))
     }
 }
 
-impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
+impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for GeneralizedAlpha<N, D> {
     fn order(&self) -> u32 {
         2
     }
@@ -156,7 +158,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
         }
     }
 
-    fn integrate<Sys: ConstrainedSystem<N, Z>, const K: usize>(
+    fn integrate<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
@@ -212,10 +214,10 @@ impl<const N: usize, const Z: usize> Method<N, Z> for GeneralizedAlpha<N> {
     }
 }
 
-impl<const N: usize> GeneralizedAlpha<N> {
+impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     /// Solves for `ā₁` from the guess `ā₀`: the kept iteration matrix gets a few sweeps, a fresh
     /// one (formed at the guess) all of them, once. `None` when it does not converge.
-    fn solve<Sys: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn solve<Sys: ConstrainedSystem<N, Z, Storage = D>, const Z: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         known: &Known<'_, N, Z>,
@@ -224,20 +226,18 @@ impl<const N: usize> GeneralizedAlpha<N> {
     ) -> Result<Option<Vector<N>>, StepError> {
         let mut kept = self.kept(h);
         loop {
-            let (lu, fresh) = match kept.take() {
-                Some(lu) => (lu, false),
-                None => {
-                    let (q, v) = (known.q + known.hhb * guess, known.v + known.hg * guess);
-                    let at = model.acceleration(&q, &v, known.t, known.lambda)?;
-                    let jac = model.acceleration_jacobians(&q, &v, known.t, known.lambda, &at)?;
-                    let Some(lu) = self.refresh(h, (&jac.dq, &jac.dv)) else {
-                        return Ok(None);
-                    };
-                    (lu, true)
+            let fresh = !kept;
+            if fresh {
+                let (q, v) = (known.q + known.hhb * guess, known.v + known.hg * guess);
+                let at = model.acceleration(&q, &v, known.t, known.lambda)?;
+                let jac = model.acceleration_jacobians(&q, &v, known.t, known.lambda, &at)?;
+                if !self.refresh(h, (jac.dq, jac.dv)) {
+                    return Ok(None);
                 }
-            };
+            }
+            kept = false;
             let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
-            if let Some(abar) = self.sweeps(model, &lu, known, guess, limit) {
+            if let Some(abar) = self.sweeps(model, known, guess, limit) {
                 return abar.map(Some);
             }
             if fresh {
@@ -248,10 +248,9 @@ impl<const N: usize> GeneralizedAlpha<N> {
 
     /// Newton on `ā₁` with the given iteration matrix, at most `limit` sweeps; `None` when it
     /// does not converge within them.
-    fn sweeps<Sys: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn sweeps<Sys: ConstrainedSystem<N, Z, Storage = D>, const Z: usize>(
         &self,
         model: &mut Model<'_, Sys, N, Z>,
-        lu: &IterationFactor<N>,
         known: &Known<'_, N, Z>,
         mut abar: Vector<N>,
         limit: usize,
@@ -265,7 +264,7 @@ impl<const N: usize> GeneralizedAlpha<N> {
                 Err(error) => return Some(Err(error)),
             };
             let residual = (1.0 - p.alpha_m) * abar - (1.0 - p.alpha_f) * a - known.rhs;
-            let delta = lu.solve(&residual);
+            let delta = self.iteration.solve(&residual);
             abar -= delta;
             let norm = delta.amax();
             let scale = abar.amax() + known.rhs.amax() + f64::MIN_POSITIVE;
@@ -287,7 +286,11 @@ impl<const N: usize> GeneralizedAlpha<N> {
     /// matrix). `da0`, `dabar0`: the sensitivities of `a₀` and `ā₀`. `None` when the matrix is
     /// singular.
     #[allow(clippy::type_complexity)]
-    fn end_sensitivity<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+    fn end_sensitivity<
+        Sys: ConstrainedSystem<N, Z, Storage = D>,
+        const Z: usize,
+        const K: usize,
+    >(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         end: &mut StepEnd<N, Z, K>,
@@ -297,23 +300,26 @@ impl<const N: usize> GeneralizedAlpha<N> {
     ) -> Option<Result<(), StepError>> {
         let p = self.parameters;
         let (t, lambda) = (start.t + h, multipliers.at(1.0));
-        let jacobians = model
-            .acceleration(&end.q, &end.v, t, &lambda)
-            .and_then(|at| model.acceleration_jacobians(&end.q, &end.v, t, &lambda, &at));
-        let jac = match jacobians {
+        let at = match model.acceleration(&end.q, &end.v, t, &lambda) {
+            Ok(at) => at,
+            Err(error) => return Some(Err(error)),
+        };
+        let jac = match model.acceleration_jacobians(&end.q, &end.v, t, &lambda, &at) {
             Ok(jac) => jac,
             Err(error) => return Some(Err(error)),
         };
-        let lu = self.refresh(h, (&jac.dq, &jac.dv))?;
+        if !self.refresh(h, (jac.dq, jac.dv)) {
+            return None;
+        }
         let (hg, hhb) = (h * p.gamma, h * h * p.beta);
         for k in 0..K {
             let (dq0, dv0) = (start.dq_dc[k], start.dv_dc[k]);
             let dq_known = dq0 + h * dv0 + (h * h * (0.5 - p.beta)) * dabar0[k];
             let dv_known = dv0 + (h * (1.0 - p.gamma)) * dabar0[k];
             let w = multipliers.weight(k, 1.0);
-            let forced = jac.dq * dq_known + jac.dv * dv_known + w * jac.dp;
+            let forced = jac.dq.times(&dq_known) + jac.dv.times(&dv_known) + w * jac.dp;
             let rhs = (1.0 - p.alpha_f) * forced + p.alpha_f * da0[k] - p.alpha_m * dabar0[k];
-            let dabar = lu.solve(&rhs);
+            let dabar = self.iteration.solve(&rhs);
             end.dq_dc[k] = dq_known + hhb * dabar;
             end.dv_dc[k] = dv_known + hg * dabar;
         }
@@ -341,7 +347,7 @@ fn start_sensitivity<
     if depends(&start.dq_dc) || depends(&start.dv_dc) {
         let jac = model.acceleration_jacobians(&start.q, &start.v, start.t, lambda, at)?;
         return Ok(core::array::from_fn(|k| {
-            jac.dq * start.dq_dc[k] + jac.dv * start.dv_dc[k] + weight(k) * jac.dp
+            jac.dq.times(&start.dq_dc[k]) + jac.dv.times(&start.dv_dc[k]) + weight(k) * jac.dp
         }));
     }
     if (0..K).all(|k| weight(k) == 0.0) {

@@ -11,10 +11,10 @@ use core::marker::PhantomData;
 
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
-use crate::linalg::IterationFactor;
-use crate::model::{Acceleration, FactorOf, Model};
+use crate::model::{Acceleration, FactorOf, Model, SquareOf};
 use crate::options::StepControl;
 use crate::polynomial::Multipliers;
+use crate::storage::{Combination, Iteration, Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A stiffly accurate DIRK tableau with `S` stages: the step end is the last stage.
@@ -288,14 +288,16 @@ pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
 
 /// The method and its workspace: the factorised iteration matrix and the step it was formed
 /// for.
-pub(crate) struct Dirk<T, const S: usize, const N: usize> {
+pub(crate) struct Dirk<T, const S: usize, const N: usize, D: Storage<N>> {
     tableau: PhantomData<T>,
     /// `(rtol, atol)` of adaptive steps, which the stage equations are solved against; fixed
     /// steps solve them to rounding.
     tolerances: Option<(f64, f64)>,
-    /// The step it was formed for, its factor, and `∂a/∂q` it was formed from (for filtering
-    /// the error estimate).
-    iteration: Option<(f64, IterationFactor<N>, Matrix<N, N>)>,
+    /// The iteration matrix's factor, with the `∂a/∂q` it was formed from (for filtering the
+    /// error estimate).
+    iteration: D::Iteration,
+    /// The step it was formed for; `None` before the first and after a failed refresh.
+    formed_for: Option<f64>,
     factorizations: u64,
 }
 
@@ -309,14 +311,15 @@ struct Stages<const S: usize, const N: usize, const Z: usize, const K: usize> {
     da: [[Matrix<N, Z>; K]; S],
 }
 
-impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
+impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N, D> {
     const TABLEAU: DirkTableau<S> = T::TABLEAU;
 
-    pub fn new(step: StepControl) -> Self {
+    pub fn new<Sys: ConstrainedSystem<N, Z>, const Z: usize>(step: StepControl) -> Self {
         Dirk {
             tableau: PhantomData,
             tolerances: tolerances(step),
-            iteration: None,
+            iteration: D::iteration::<Sys, Z>(),
+            formed_for: None,
             factorizations: 0,
         }
     }
@@ -325,29 +328,32 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
         self.tolerances = tolerances(step);
     }
 
-    /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`.
+    /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`; `false` where
+    /// it is singular.
     #[inline]
-    fn refresh(
-        &mut self,
-        h: f64,
-        (dq, dv): (&Matrix<N, N>, &Matrix<N, N>),
-    ) -> Option<IterationFactor<N>> {
+    fn refresh(&mut self, h: f64, (dq, dv): (&D::Square, &D::Square)) -> bool {
         let hg = h * Self::TABLEAU.gamma;
-        let matrix = Matrix::<N, N>::identity() - hg * dv - (hg * hg) * dq;
+        let combination = Combination {
+            identity: 1.0,
+            dv: hg,
+            dq: hg * hg,
+        };
         self.factorizations += 1;
-        let lu = IterationFactor::new(matrix)?;
-        self.iteration = Some((h, lu, *dq));
-        Some(lu)
+        let formed = self.iteration.refresh(combination, dq, dv);
+        self.formed_for = formed.then_some(h);
+        formed
     }
 
-    /// The kept iteration matrix if it was formed for a step near `h`.
-    fn kept(&self, h: f64) -> Option<IterationFactor<N>> {
-        let (formed_for, lu, _) = self.iteration?;
-        serves_step(formed_for, h).then_some(lu)
+    /// Whether the kept iteration matrix was formed for a step near `h`.
+    fn kept(&self, h: f64) -> bool {
+        self.formed_for
+            .is_some_and(|formed_for| serves_step(formed_for, h))
     }
 }
 
-impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z> for Dirk<T, S, N> {
+impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D>
+    for Dirk<T, S, N, D>
+{
     fn order(&self) -> u32 {
         Self::TABLEAU.order
     }
@@ -360,7 +366,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z>
         self.factorizations
     }
 
-    fn integrate<Sys: ConstrainedSystem<N, Z>, const K: usize>(
+    fn integrate<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
@@ -408,12 +414,12 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize> Method<N, Z>
     }
 }
 
-impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
+impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N, D> {
     /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
     #[inline]
-    fn implicit_stage<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+    fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>, const Z: usize, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
@@ -440,22 +446,20 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
         // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
         let mut kept = self.kept(h);
         loop {
-            let (lu, fresh) = match kept.take() {
-                Some(lu) => (lu, false),
-                None => {
-                    let q_guess = q_known + hg * guess;
-                    let at = model.acceleration(&q_guess, &guess, t, lambda)?;
-                    let jac = model.acceleration_jacobians(&q_guess, &guess, t, lambda, &at)?;
-                    let Some(lu) = self.refresh(h, (&jac.dq, &jac.dv)) else {
-                        return Ok(None);
-                    };
-                    (lu, true)
+            let fresh = !kept;
+            if fresh {
+                let q_guess = q_known + hg * guess;
+                let at = model.acceleration(&q_guess, &guess, t, lambda)?;
+                let jac = model.acceleration_jacobians(&q_guess, &guess, t, lambda, &at)?;
+                if !self.refresh(h, (jac.dq, jac.dv)) {
+                    return Ok(None);
                 }
-            };
+            }
+            kept = false;
             let limit = if fresh { STAGE_ITERATIONS } else { SLOW_STAGE };
             if let Some(v) = solve_stage(
                 model,
-                &lu,
+                &self.iteration,
                 (q_known, v_known),
                 guess,
                 (t, hg, lambda),
@@ -476,7 +480,11 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
     /// there, which then serves as the next iteration matrix. `None` when it is singular.
     #[allow(clippy::type_complexity)]
     #[inline]
-    fn stage_sensitivity<Sys: ConstrainedSystem<N, Z>, const Z: usize, const K: usize>(
+    fn stage_sensitivity<
+        Sys: ConstrainedSystem<N, Z, Storage = D>,
+        const Z: usize,
+        const K: usize,
+    >(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         (start, stages): (&Start<N, Z, K>, &mut Stages<S, N, Z, K>),
@@ -492,11 +500,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
             Err(error) => return Some(Err(error)),
         };
         let implicit = a[i][i] != 0.0;
-        let lu = if implicit {
-            Some(self.refresh(h, (&jac.dq, &jac.dv))?)
-        } else {
-            None
-        };
+        if implicit && !self.refresh(h, (jac.dq, jac.dv)) {
+            return None;
+        }
         for k in 0..K {
             let (mut dq, mut dv) = (start.dq_dc[k], start.dv_dc[k]);
             for j in 0..i {
@@ -504,13 +510,14 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
                 dv += (h * a[i][j]) * stages.da[j][k];
             }
             let w = multipliers.weight(k, c);
-            if let Some(lu) = &lu {
-                dv = lu.solve(&(dv + hg * (jac.dq * dq + w * jac.dp)));
+            if implicit {
+                let rhs = dv + hg * (jac.dq.times(&dq) + w * jac.dp);
+                dv = self.iteration.solve(&rhs);
                 dq += hg * dv;
             }
             stages.dq[i][k] = dq;
             stages.dv[i][k] = dv;
-            stages.da[i][k] = jac.dq * dq + jac.dv * dv + w * jac.dp;
+            stages.da[i][k] = jac.dq.times(&dq) + jac.dv.times(&dv) + w * jac.dp;
         }
         Some(Ok(()))
     }
@@ -533,15 +540,15 @@ impl<T: Tableau<S>, const S: usize, const N: usize> Dirk<T, S, N> {
                 eq += e * stages.v[j];
                 ev += e * stages.a[j];
             }
-            match &self.iteration {
-                // `(x, y)` with `x - hγ y = eq`, `-hγ ∂a/∂q x + (I - hγ ∂a/∂q') y = ev`.
-                Some((_, lu, dq)) => {
-                    let hg = h * Self::TABLEAU.gamma;
-                    let y = lu.solve(&(ev + hg * (dq * eq)));
-                    (eq + hg * y, y)
-                }
-                None => (eq, ev),
+            if self.formed_for.is_none() {
+                return (eq, ev);
             }
+            // `(x, y)` with `x - hγ y = eq`, `-hγ ∂a/∂q x + (I - hγ ∂a/∂q') y = ev`.
+            let hg = h * Self::TABLEAU.gamma;
+            let y = self
+                .iteration
+                .solve(&(ev + hg * self.iteration.formed_dq_times(&eq)));
+            (eq + hg * y, y)
         });
         StepEnd {
             q: stages.q[last],
@@ -572,7 +579,7 @@ fn stage_fraction(rtol: f64) -> f64 {
 #[allow(clippy::type_complexity)]
 fn solve_stage<Sys, const N: usize, const Z: usize>(
     model: &mut Model<'_, Sys, N, Z>,
-    lu: &IterationFactor<N>,
+    lu: &impl Iteration<N, SquareOf<Sys, N, Z>>,
     (q_known, v_known): (Vector<N>, Vector<N>),
     mut v: Vector<N>,
     (t, hg, lambda): (f64, f64, &Vector<Z>),

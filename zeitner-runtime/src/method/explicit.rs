@@ -1,9 +1,12 @@
 //! Explicit Runge–Kutta methods as data: a tableau and one stage engine for all of them.
 
+use core::marker::PhantomData;
+
 use super::{Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::model::Model;
 use crate::polynomial::Multipliers;
+use crate::storage::{Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// An explicit Runge–Kutta tableau with `S` stages.
@@ -100,22 +103,26 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
     embedded_order: Some(4),
 };
 
-/// An explicit method: its tableau, taken `substeps` times per step.
-pub(crate) struct Explicit<const ST: usize> {
+/// An explicit method: its tableau, taken `substeps` times per step, for storage `D`.
+pub(crate) struct Explicit<const ST: usize, D> {
     tableau: &'static Tableau<ST>,
     substeps: u32,
+    storage: PhantomData<D>,
 }
 
-impl<const ST: usize> Explicit<ST> {
+impl<const ST: usize, D> Explicit<ST, D> {
     pub fn new(tableau: &'static Tableau<ST>, substeps: u32) -> Self {
         Explicit {
             tableau,
             substeps: substeps.max(1),
+            storage: PhantomData,
         }
     }
 }
 
-impl<const N: usize, const Z: usize, const ST: usize> Method<N, Z> for Explicit<ST> {
+impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z, D>
+    for Explicit<ST, D>
+{
     fn order(&self) -> u32 {
         self.tableau.order
     }
@@ -126,7 +133,7 @@ impl<const N: usize, const Z: usize, const ST: usize> Method<N, Z> for Explicit<
     }
 
     #[inline]
-    fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
+    fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
@@ -211,9 +218,9 @@ where
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
                 dkq[i][k] = dv[k];
-                dkv[i][k] = jac.dq * dq[k] + multipliers.weight(k, s) * jac.dp;
+                dkv[i][k] = jac.dq.times(&dq[k]) + multipliers.weight(k, s) * jac.dp;
                 if S::DYNAMICS_DEPEND_ON_VELOCITY {
-                    dkv[i][k] += jac.dv * dv[k];
+                    dkv[i][k] += jac.dv.times(&dv[k]);
                 }
             }
         }

@@ -18,6 +18,7 @@ use crate::error::StepError;
 use crate::model::Model;
 use crate::options::{InnerMethod, StepControl};
 use crate::polynomial::Multipliers;
+use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
@@ -53,8 +54,8 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     pub error: Option<(Vector<N>, Vector<N>)>,
 }
 
-/// One inner method with the workspace it owns.
-pub(crate) trait Method<const N: usize, const Z: usize> {
+/// One inner method with the workspace it owns, in storage `D`.
+pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
     /// The order of the step map with the multipliers prescribed.
     fn order(&self) -> u32;
     /// The order of the embedded solution the error estimate compares with, if there is one.
@@ -63,7 +64,7 @@ pub(crate) trait Method<const N: usize, const Z: usize> {
     /// A method with memory reads the value it committed last (a fixed value: it does not
     /// depend on this step's coefficients) and keeps what this step would commit as a
     /// candidate, which the next integration replaces.
-    fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
+    fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
@@ -92,25 +93,29 @@ pub(crate) trait Method<const N: usize, const Z: usize> {
     }
 }
 
-/// The method the options name, with its workspace.
-pub(crate) enum AnyMethod<const N: usize> {
-    Explicit4(explicit::Explicit<4>),
-    Explicit7(explicit::Explicit<7>),
+/// The method the options name, with its workspace in storage `D`.
+pub(crate) enum AnyMethod<const N: usize, D: Storage<N>> {
+    Explicit4(explicit::Explicit<4, D>),
+    Explicit7(explicit::Explicit<7, D>),
     #[cfg(feature = "implicit")]
-    Dirk2(dirk::Dirk<dirk::Alexander2, 2, N>),
+    Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, D>),
     #[cfg(feature = "implicit")]
-    Dirk4(dirk::Dirk<dirk::Kvaerno3, 4, N>),
+    Dirk4(dirk::Dirk<dirk::Kvaerno3, 4, N, D>),
     #[cfg(feature = "implicit")]
-    Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N>),
+    Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N, D>),
     #[cfg(feature = "implicit")]
-    Dirk7(dirk::Dirk<dirk::KennedyCarpenter5, 7, N>),
+    Dirk7(dirk::Dirk<dirk::KennedyCarpenter5, 7, N, D>),
     #[cfg(feature = "implicit")]
-    Alpha(alpha::GeneralizedAlpha<N>),
+    Alpha(alpha::GeneralizedAlpha<N, D>),
 }
 
-impl<const N: usize> AnyMethod<N> {
-    /// The method, its stage equations solved against the tolerances of adaptive `step`s.
-    pub fn new(method: InnerMethod, step: StepControl) -> Self {
+impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
+    /// The method for scene `S`, its stage equations solved against the tolerances of
+    /// adaptive `step`s.
+    pub fn new<S: ConstrainedSystem<N, Z, Storage = D>, const Z: usize>(
+        method: InnerMethod,
+        step: StepControl,
+    ) -> Self {
         match method {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps))
@@ -119,22 +124,22 @@ impl<const N: usize> AnyMethod<N> {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
             }
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new(step)),
+            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new(step)),
+            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new(step)),
+            InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk54 => AnyMethod::Dirk7(dirk::Dirk::new(step)),
+            InnerMethod::Esdirk54 => AnyMethod::Dirk7(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
             InnerMethod::GeneralizedAlpha { rho_inf } => {
-                AnyMethod::Alpha(alpha::GeneralizedAlpha::new(rho_inf))
+                AnyMethod::Alpha(alpha::GeneralizedAlpha::new::<S, Z>(rho_inf))
             }
         }
     }
 }
 
-impl<const N: usize> AnyMethod<N> {
+impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     /// Solves stage equations against the tolerances of `step` from now on (a change of
     /// options that keeps the method keeps its workspace).
     pub fn use_step_control(&mut self, step: StepControl) {
@@ -154,44 +159,44 @@ impl<const N: usize> AnyMethod<N> {
     }
 }
 
-impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
+impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMethod<N, D> {
     fn order(&self) -> u32 {
         match self {
-            AnyMethod::Explicit4(m) => Method::<N, Z>::order(m),
-            AnyMethod::Explicit7(m) => Method::<N, Z>::order(m),
+            AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
+            AnyMethod::Explicit7(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk2(m) => Method::<N, Z>::order(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk4(m) => Method::<N, Z>::order(m),
+            AnyMethod::Dirk4(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk6(m) => Method::<N, Z>::order(m),
+            AnyMethod::Dirk6(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk7(m) => Method::<N, Z>::order(m),
+            AnyMethod::Dirk7(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Alpha(m) => Method::<N, Z>::order(m),
+            AnyMethod::Alpha(m) => Method::<N, Z, D>::order(m),
         }
     }
 
     #[inline]
     fn embedded_order(&self) -> Option<u32> {
         match self {
-            AnyMethod::Explicit4(m) => Method::<N, Z>::embedded_order(m),
-            AnyMethod::Explicit7(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Explicit4(m) => Method::<N, Z, D>::embedded_order(m),
+            AnyMethod::Explicit7(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk2(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk4(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Dirk4(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk6(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Dirk6(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk7(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Dirk7(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Alpha(m) => Method::<N, Z>::embedded_order(m),
+            AnyMethod::Alpha(m) => Method::<N, Z, D>::embedded_order(m),
         }
     }
 
     #[inline]
-    fn integrate<S: ConstrainedSystem<N, Z>, const K: usize>(
+    fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
@@ -219,22 +224,22 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => 0,
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk2(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk4(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Dirk4(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk6(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Dirk6(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Dirk7(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Dirk7(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
-            AnyMethod::Alpha(m) => Method::<N, Z>::factorizations(m),
+            AnyMethod::Alpha(m) => Method::<N, Z, D>::factorizations(m),
         }
     }
 
     fn restart(&mut self, acceleration: impl FnOnce() -> Result<Vector<N>, StepError>) {
         #[cfg(feature = "implicit")]
         if let AnyMethod::Alpha(m) = self {
-            return Method::<N, Z>::restart(m, acceleration);
+            return Method::<N, Z, D>::restart(m, acceleration);
         }
         let _ = acceleration;
     }
@@ -242,7 +247,7 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
     fn accepted(&mut self, v: &Vector<N>) {
         #[cfg(feature = "implicit")]
         if let AnyMethod::Alpha(m) = self {
-            Method::<N, Z>::accepted(m, v);
+            Method::<N, Z, D>::accepted(m, v);
         }
         let _ = v;
     }
@@ -252,7 +257,8 @@ impl<const N: usize, const Z: usize> Method<N, Z> for AnyMethod<N> {
 mod tests {
     use super::*;
     use crate::polynomial::Multipliers;
-    use crate::testing::{swinging, PENDULUM};
+    use crate::storage::Dense;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
 
     /// The exact sensitivity of a method's step map against central differences of the map,
     /// for every coefficient of the multipliers.
@@ -266,14 +272,15 @@ mod tests {
         multipliers: Multipliers<1, K>,
         memory: Option<Vector<2>>,
     ) {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, K>::at(0.0, q, v);
         let h = 0.05;
-        let mut stepper = AnyMethod::<2>::new(method, StepControl::Fixed { step: h });
+        let mut stepper =
+            AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(method, StepControl::Fixed { step: h });
         if let Some(memory) = memory {
-            Method::<2, 1>::restart(&mut stepper, || Ok(memory));
+            Method::<2, 1, Dense>::restart(&mut stepper, || Ok(memory));
         }
         let end = stepper
             .integrate(&mut model, &start, h, &multipliers, true)
@@ -384,7 +391,7 @@ mod tests {
     #[test]
     #[cfg(feature = "implicit")]
     fn generalized_alpha_commits_only_accepted_steps() {
-        let mut model = Model::new(&PENDULUM);
+        let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, 1>::at(0.0, q, v);
@@ -393,14 +400,16 @@ mod tests {
             coefficients: [Vector::from([-6.0])],
             first_power: 0,
         };
-        let mut stepper =
-            AnyMethod::<2>::new(InnerMethod::GeneralizedAlpha { rho_inf: 0.6 }, FIXED);
+        let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+            InnerMethod::GeneralizedAlpha { rho_inf: 0.6 },
+            FIXED,
+        );
         let a0 = model
             .acceleration(&q, &v, 0.0, &Vector::from([-6.0]))
             .unwrap()
             .a;
-        Method::<2, 1>::restart(&mut stepper, || Ok(a0));
-        let mut step = |stepper: &mut AnyMethod<2>, h: f64| {
+        Method::<2, 1, Dense>::restart(&mut stepper, || Ok(a0));
+        let mut step = |stepper: &mut AnyMethod<2, Dense>, h: f64| {
             stepper
                 .integrate(&mut model, &start, h, &multipliers, false)
                 .unwrap()
@@ -410,16 +419,21 @@ mod tests {
         step(&mut stepper, 0.02);
         let again = step(&mut stepper, 0.05);
         assert_eq!((first.q, first.v), (again.q, again.v));
-        Method::<2, 1>::accepted(&mut stepper, &again.v);
+        Method::<2, 1, Dense>::accepted(&mut stepper, &again.v);
         let after = step(&mut stepper, 0.05);
         assert!((after.v - first.v).amax() > 1e-6, "{} {}", after.v, first.v);
     }
 
     #[test]
     fn orders_are_those_of_the_tableaux() {
-        let order = |m: InnerMethod| Method::<2, 1>::order(&AnyMethod::<2>::new(m, FIXED));
-        let embedded =
-            |m: InnerMethod| Method::<2, 1>::embedded_order(&AnyMethod::<2>::new(m, FIXED));
+        let order = |m: InnerMethod| {
+            Method::<2, 1, Dense>::order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(m, FIXED))
+        };
+        let embedded = |m: InnerMethod| {
+            Method::<2, 1, Dense>::embedded_order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+                m, FIXED,
+            ))
+        };
         assert_eq!(order(InnerMethod::Rk4 { substeps: 1 }), 4);
         assert_eq!(embedded(InnerMethod::Rk4 { substeps: 1 }), None);
         assert_eq!(order(InnerMethod::DormandPrince54), 5);

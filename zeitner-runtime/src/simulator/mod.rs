@@ -49,7 +49,7 @@ pub struct Statistics {
 /// it untouched.
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
-    method: AnyMethod<N>,
+    method: AnyMethod<N, S::Storage>,
     options: Options,
     controller: Controller,
     predictor: Predictor<Z>,
@@ -135,13 +135,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if (0..S::UNILATERAL_CONSTRAINTS).any(|k| !(0.0..=1.0).contains(&system.restitution(k))) {
             return Err(StepError::InvalidOption(InvalidOption::Restitution));
         }
-        let mut model = Model::new(system);
+        let mut model = Model::new(system)?;
         let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
         let point = last.end;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
-            method: AnyMethod::new(options.method, options.step),
+            method: AnyMethod::new::<S, Z>(options.method, options.step),
             options,
             controller: Controller::new(),
             predictor: Predictor::default(),
@@ -174,7 +174,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     fn restart_method(&mut self) {
         let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
         let model = &mut self.model;
-        Method::<N, Z>::restart(&mut self.method, || {
+        Method::<N, Z, S::Storage>::restart(&mut self.method, || {
             Ok(model.acceleration(&q, &v, t, &lambda)?.a)
         });
     }
@@ -210,7 +210,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub fn statistics(&self) -> Statistics {
         Statistics {
             evaluations: self.model.evaluations,
-            iteration_matrix_factorizations: Method::<N, Z>::factorizations(&self.method),
+            iteration_matrix_factorizations: Method::<N, Z, S::Storage>::factorizations(
+                &self.method,
+            ),
             ..self.statistics
         }
     }
@@ -330,7 +332,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         self.predictor.reset();
         self.state_gram = None;
-        Method::<N, Z>::restart(&mut self.method, || Ok(point.a));
+        Method::<N, Z, S::Storage>::restart(&mut self.method, || Ok(point.a));
         if forget == Forget::Steps {
             self.t_carry = 0.0;
             self.controller = Controller::new();

@@ -24,7 +24,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)?;
         let new_method = options.method != self.options.method;
         let previous_method = new_method.then(|| {
-            let method = AnyMethod::new(options.method, options.step);
+            let method = AnyMethod::new::<S, Z>(options.method, options.step);
             core::mem::replace(&mut self.method, method)
         });
         let previous_options = core::mem::replace(&mut self.options, options);
@@ -53,7 +53,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
         };
         if let Some(method) = previous_method {
-            let factorizations = Method::<N, Z>::factorizations(&method);
+            let factorizations = Method::<N, Z, S::Storage>::factorizations(&method);
             self.statistics.iteration_matrix_factorizations += factorizations;
         }
         self.method.use_step_control(options.step);

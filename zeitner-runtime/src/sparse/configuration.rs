@@ -18,7 +18,7 @@ pub(crate) struct Structure {
 
 impl Structure {
     pub fn of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>() -> Self {
-        let pattern = crate::system::jacobian_nonzeros(&S::SUMMARY);
+        let pattern = S::SPARSITY.map(|s| s.constraint_jacobian);
         let gram = match pattern {
             Some(pattern) => GramStructure::new(Z, pattern),
             None => {

@@ -1,0 +1,114 @@
+//! A scene run on a storage other than its own.
+
+use core::marker::PhantomData;
+
+use super::Storage;
+use crate::system::{ConstrainedSystem, Matrix, SceneSummary, Sparsity, Vector};
+
+/// `scene` with storage `D` instead of the one `#[constrained_system]` chose for it: the same
+/// model, evaluated through the same functions. For example, to compare the storages, or to run
+/// a mid-sized scene on the sparse one:
+/// `Simulator::new(&WithStorage::<_, Sparse>::new(&scene), q0, v0, t0, options)`.
+pub struct WithStorage<'a, S, D> {
+    pub scene: &'a S,
+    storage: PhantomData<D>,
+}
+
+impl<'a, S, D> WithStorage<'a, S, D> {
+    pub fn new(scene: &'a S) -> Self {
+        WithStorage {
+            scene,
+            storage: PhantomData,
+        }
+    }
+}
+
+impl<S, D, const N: usize, const Z: usize> ConstrainedSystem<N, Z> for WithStorage<'_, S, D>
+where
+    S: ConstrainedSystem<N, Z>,
+    D: Storage<N>,
+{
+    const POSITION_CONSTRAINTS: usize = S::POSITION_CONSTRAINTS;
+    const MASS_IS_CONSTANT: bool = S::MASS_IS_CONSTANT;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = S::DYNAMICS_DEPEND_ON_VELOCITY;
+    const SUMMARY: SceneSummary = S::SUMMARY;
+    const SPARSITY: Option<Sparsity> = S::SPARSITY;
+    const UNILATERAL_CONSTRAINTS: usize = S::UNILATERAL_CONSTRAINTS;
+    const EVENTS: usize = S::EVENTS;
+    type Mass = S::Mass;
+    type Storage = D;
+
+    fn mass_matrix(&self, q: &Vector<N>, t: f64) -> S::Mass {
+        self.scene.mass_matrix(q, t)
+    }
+    fn applied_force(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<N> {
+        self.scene.applied_force(q, v, t)
+    }
+    fn constraint_residual(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+        self.scene.constraint_residual(q, v, t)
+    }
+    fn constraint_jacobian(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N> {
+        self.scene.constraint_jacobian(q, v, t)
+    }
+    fn constraint_position_partials(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N> {
+        self.scene.constraint_position_partials(q, v, t)
+    }
+    fn constraint_rate(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+        self.scene.constraint_rate(q, v, t)
+    }
+    fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+        self.scene.constraint_acceleration_bias(q, v, t)
+    }
+    fn force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> (Matrix<N, N>, Matrix<N, N>) {
+        self.scene.force_jacobians(q, v, t)
+    }
+    fn constraint_force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+    ) -> (Matrix<N, N>, Matrix<N, N>) {
+        self.scene.constraint_force_jacobians(q, v, t, lambda)
+    }
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        values: &mut [f64],
+    ) {
+        self.scene.constraint_jacobian_nonzeros(q, v, t, values)
+    }
+    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+        self.scene.force_jacobian_nonzeros(q, v, t, values)
+    }
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        values: &mut [f64],
+    ) {
+        self.scene
+            .constraint_force_jacobian_nonzeros(q, v, t, lambda, values)
+    }
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
+        self.scene.mass_jacobian_product(q, t, a)
+    }
+    fn restitution(&self, gap: usize) -> f64 {
+        self.scene.restitution(gap)
+    }
+    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+        self.scene.event_functions(q, v, t, values)
+    }
+    fn time_event_after(&self, t: f64) -> Option<f64> {
+        self.scene.time_event_after(t)
+    }
+}
