@@ -127,7 +127,15 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
             let (class, detail) = outcome
                 .failure
                 .map_or(("ok", String::new()), |f| (f.class.name(), f.detail));
-            format!("case {seed} {class} {} {errors} {detail}", outcome.steps)
+            let storage = if outcome.sparse_storage {
+                "sparse"
+            } else {
+                "dense"
+            };
+            format!(
+                "case {seed} {class} {} {storage} {errors} {detail}",
+                outcome.steps
+            )
         }
         Err(_) => format!("case {seed} panic 0 - {}", panic_message()),
     }
@@ -136,7 +144,13 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
 fn accuracy_verdict(seed: u64) -> String {
     let case = accuracy::generate(seed);
     let result = panic::catch_unwind(AssertUnwindSafe(|| accuracy::run(&case)));
-    let head = format!("{:?} {:e}", case.scene, case.rtol());
+    // The sparse storage's runs are a scene of their own in the summary.
+    let storage = if case.disturbances.sparse_storage {
+        "+sparse"
+    } else {
+        ""
+    };
+    let head = format!("{:?}{storage} {:e}", case.scene, case.rtol());
     match result {
         Ok(outcome @ AccuracyOutcome::Ok { .. }) => {
             // `wrong` is empty unless a ratio is over the threshold (or NaN).
@@ -266,6 +280,9 @@ struct Tally {
     runs: u64,
     steps: u64,
     ok: u64,
+    /// Runs on the sparse storage, and their accepted steps.
+    sparse_runs: u64,
+    sparse_steps: u64,
     /// Failure class (or `hang`, `crash`) → (seed, detail).
     failures: BTreeMap<String, Vec<(u64, String)>>,
     /// Typed errors by variant.
@@ -300,11 +317,16 @@ impl Tally {
             Event::Crash(seed) => return self.failure("crash", seed, String::new()),
             Event::Verdict(text) => text,
         };
-        let fields: Vec<&str> = text.splitn(6, ' ').collect();
+        let fields: Vec<&str> = text.splitn(7, ' ').collect();
         match fields.as_slice() {
-            ["case", seed, class, steps, errors, rest @ ..] => {
+            ["case", seed, class, steps, storage, errors, rest @ ..] => {
                 let seed = seed.parse().unwrap_or(u64::MAX);
-                self.steps += steps.parse::<u64>().unwrap_or(0);
+                let steps = steps.parse::<u64>().unwrap_or(0);
+                self.steps += steps;
+                if *storage == "sparse" {
+                    self.sparse_runs += 1;
+                    self.sparse_steps += steps;
+                }
                 for error in errors.split(',').filter(|e| *e != "-") {
                     *self.errors.entry(error.to_string()).or_default() += 1;
                 }
@@ -474,6 +496,10 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
         }
     } else {
         out.push_str(&format!("  accepted steps: {}\n", tally.steps));
+        out.push_str(&format!(
+            "  on the sparse storage: {} runs, {} accepted steps\n",
+            tally.sparse_runs, tally.sparse_steps
+        ));
         for class in FailureClass::ALL
             .iter()
             .map(|c| c.name())

@@ -204,3 +204,13 @@ structure!(
     Structure100,
     100
 );
+structure!(
+    /// 512 coordinates.
+    Structure256,
+    256
+);
+structure!(
+    /// 1 024 coordinates.
+    Structure512,
+    512
+);

@@ -16,9 +16,10 @@
 use std::fmt;
 
 use rand::RngExt;
+use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
-    StepError, Vector,
+    ConstrainedSystem, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity, Simulator,
+    StepControl, StepError, Vector, WithStorage,
 };
 
 use super::cases::{rng, variant, Rng};
@@ -45,6 +46,27 @@ pub enum AccuracyScene {
     Ball,
 }
 
+impl AccuracyScene {
+    /// Whether its mass is constant and diagonal, which the sparse storage needs.
+    fn constant_diagonal_mass(self) -> bool {
+        let kind = match self {
+            AccuracyScene::Pendulum => <Pendulum as ConstrainedSystem<2, 1>>::SUMMARY.mass,
+            AccuracyScene::SteamGenerator => {
+                <SteamGenerator as ConstrainedSystem<3, 2>>::SUMMARY.mass
+            }
+            AccuracyScene::DoublePendulum => {
+                <DoublePendulum as ConstrainedSystem<4, 2>>::SUMMARY.mass
+            }
+            AccuracyScene::Andrews => <Andrews as ConstrainedSystem<7, 6>>::SUMMARY.mass,
+            AccuracyScene::SliderCrank => {
+                <SliderCrankOnAxis as ConstrainedSystem<4, 3>>::SUMMARY.mass
+            }
+            AccuracyScene::Ball => <Ball as ConstrainedSystem<1, 1>>::SUMMARY.mass,
+        };
+        kind == MassKind::ConstantDiagonal
+    }
+}
+
 /// What a case does to the run on its way, besides stepping to the end: each of these left
 /// the answer as it was, until a short step after a stop or an event kicked it (issue #31).
 #[derive(Clone, Debug, Default)]
@@ -59,6 +81,8 @@ pub struct Disturbances {
     pub set_options_after: Option<(usize, Options)>,
     /// Run on `SparseSimulator` instead (constant multipliers, stops only).
     pub sparse: bool,
+    /// Run `Simulator` on the sparse storage (drawn for scenes with a constant diagonal mass).
+    pub sparse_storage: bool,
 }
 
 /// One accuracy case.
@@ -178,7 +202,10 @@ pub fn generate(seed: u64) -> AccuracyCase {
             rng.random_range(0.1..3.0),
         ),
     };
-    let disturbances = disturbances(&mut rng, scene, t_end, &options);
+    let mut disturbances = disturbances(&mut rng, scene, t_end, &options);
+    disturbances.sparse_storage = !disturbances.sparse
+        && scene.constant_diagonal_mass()
+        && super::cases::sparse_storage(seed);
     let mut options = options;
     if disturbances.sparse {
         options.multipliers = MultiplierModel::Constant;
@@ -259,6 +286,7 @@ fn disturbances(
         reinitialise_after,
         set_options_after,
         sparse,
+        sparse_storage: false,
     }
 }
 
@@ -438,6 +466,21 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     if disturbances.sparse {
         return integrate_sparse(scene, (q, v), case.options, (&stops, energy));
     }
+    if disturbances.sparse_storage {
+        let sparse = WithStorage::<_, Sparse>::new(scene);
+        return integrate_on(&sparse, (q, v), case, (&stops, energy));
+    }
+    integrate_on(scene, (q, v), case, (&stops, energy))
+}
+
+/// [`integrate`] on `scene`'s own storage.
+fn integrate_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v): (Vector<N>, Vector<N>),
+    case: &AccuracyCase,
+    (stops, energy): (&[f64], Energy<'_, N>),
+) -> Result<Run<N, Z>, StepError> {
+    let disturbances = &case.disturbances;
     let mut sim = Simulator::new(scene, q, v, 0.0, case.options)?;
     sim.set_time_events(&disturbances.time_events)?;
     let mut along = Along::from(&sim.last().end, energy);

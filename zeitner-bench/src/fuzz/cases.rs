@@ -39,11 +39,12 @@ use std::fmt;
 
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
+use zeitner::storage::Sparse;
 use zeitner::{
     ConstrainedSystem, ControllerSettings, Direction, EventSettings, GapSet, Impact, InnerMethod,
-    InvalidOption, MassMatrix, MultiplierModel, Options, Point, Sensitivity, Simulator,
+    InvalidOption, MassKind, MassMatrix, MultiplierModel, Options, Point, Sensitivity, Simulator,
     StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason, Vector,
-    VelocityProjection,
+    VelocityProjection, WithStorage,
 };
 
 use super::scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
@@ -536,6 +537,9 @@ pub struct Case {
     pub options: Options,
     pub initial_multipliers: Option<Vec<f64>>,
     pub calls: Vec<Call>,
+    /// Run on the sparse storage (scenes with a constant diagonal mass; the others keep their
+    /// own).
+    pub sparse_storage: bool,
 }
 
 impl fmt::Display for Case {
@@ -551,6 +555,9 @@ impl fmt::Display for Case {
         writeln!(f, "  q0 = {:?}", self.q0)?;
         writeln!(f, "  v0 = {:?}, t0 = {:e}", self.v0, self.t0)?;
         writeln!(f, "  options: {:?}", self.options)?;
+        if self.sparse_storage {
+            writeln!(f, "  on the sparse storage")?;
+        }
         if let Some(lambda) = &self.initial_multipliers {
             writeln!(f, "  set_initial_multipliers({lambda:?})")?;
         }
@@ -1109,7 +1116,18 @@ pub fn generate(seed: u64) -> Case {
         options,
         initial_multipliers,
         calls,
+        sparse_storage: sparse_storage(seed),
     }
+}
+
+/// Whether the case with `seed` runs on the sparse storage: one in four, drawn apart from the
+/// case's own stream so that every other draw stays what it was.
+pub fn sparse_storage(seed: u64) -> bool {
+    // SplitMix64's finaliser.
+    let mut x = seed ^ 0x5bd1_e995_9e37_79b9;
+    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    (x ^ (x >> 31)) % 4 == 0
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1192,6 +1210,8 @@ pub struct Outcome {
     pub steps: u64,
     /// Calls made, `new` included.
     pub calls: usize,
+    /// Whether it ran on the sparse storage.
+    pub sparse_storage: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
     /// largest step.
     recent_steps: std::collections::VecDeque<f64>,
@@ -1942,8 +1962,24 @@ fn change<const N: usize, const Z: usize>(
     }
 }
 
-/// Runs `case` on `scene`, checking every call; `trace` gets a line per call.
+/// Runs `case` on `scene`, on the storage the case draws.
 fn execute<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    case: &Case,
+    budget: &Budget,
+    trace: &mut dyn FnMut(String),
+) -> Outcome {
+    if case.sparse_storage && S::SUMMARY.mass == MassKind::ConstantDiagonal {
+        let sparse = WithStorage::<_, Sparse>::new(scene);
+        let mut outcome = execute_on(&sparse, case, budget, trace);
+        outcome.sparse_storage = true;
+        return outcome;
+    }
+    execute_on(scene, case, budget, trace)
+}
+
+/// Runs `case` on `scene`, checking every call; `trace` gets a line per call.
+fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     case: &Case,
     budget: &Budget,
