@@ -110,6 +110,7 @@ impl Lumped {
 macro_rules! structure {
     ($(#[$doc:meta])* $name:ident, $nodes:literal) => {
         $(#[$doc])*
+        #[derive(Clone, Copy, Debug)]
         pub struct $name(pub Lumped);
 
         impl $name {

@@ -1127,7 +1127,7 @@ pub fn sparse_storage(seed: u64) -> bool {
     let mut x = seed ^ 0x5bd1_e995_9e37_79b9;
     x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    (x ^ (x >> 31)) % 4 == 0
+    (x ^ (x >> 31)).is_multiple_of(4)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,11 +10,13 @@ use crate::scaling::scenes::{
 use crate::scenes::andrews::Andrews;
 use crate::scenes::contact::WallPendulum;
 use crate::scenes::knife_edge::KnifeEdge;
+use crate::scenes::modal::Modes;
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference::{self, State};
 use crate::scenes::slider_crank::{self, SliderCrankOnAxis};
 use crate::scenes::spring_support::SpringSupportedPendulum;
 use crate::scenes::steam_generator::SteamGenerator;
+use crate::scenes::structure::Structure100;
 use zeitner::{ConstrainedSystem, Options, Simulator, StepControl, Vector};
 
 use super::large::{large_scene, Large};
@@ -136,6 +138,19 @@ pub const SCENES: &[Entry] = &[
             start: "scenes::slider_crank::SliderCrankOnAxis::nominal()\
                     .at_rest(30f64.to_radians())",
             t_end: 2.0,
+        },
+    },
+    Entry {
+        name: "structure",
+        build: structure_scene,
+        script_peers: &[],
+        user_crate: SceneCrate {
+            scene: "structure",
+            source: Source::Example("structure"),
+            construct: "scenes::structure::Structure100::paper()",
+            start: "{ let (q, v) = scenes::structure::Structure100::paper().start(); \
+                    (Vector::from(q), Vector::from(v)) }",
+            t_end: 0.05,
         },
     },
     Entry {
@@ -364,6 +379,39 @@ fn spring_support_scene() -> Result<Scene, String> {
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 4, 1, 8, 9>(SpringSupportedPendulum::STIFF, start, t_end),
         run: to_the_end("spring_support", scene, start, t_end),
+    })
+}
+
+/// The paper's subject at 200 coordinates, to 0.05 s, before the strut engages (at 0.0585 s):
+/// the phase the modal reference gives in closed form.
+fn structure_scene() -> Result<Scene, String> {
+    let t_end = 0.05;
+    let scene = Structure100::paper();
+    let modes = Modes::of(scene.0, Structure100::NODE_COUNT);
+    if modes.first_contact() <= t_end {
+        return Err("the strut engages before the end: the modes no longer hold".into());
+    }
+    let reference = modes.state(t_end);
+    let (q0, v0) = scene.start();
+    let start = (Vector::from(q0), Vector::from(v0));
+    let flat = [reference.q, reference.v, reference.lambda.to_vec()].concat();
+    Ok(Scene {
+        name: "structure",
+        title: "A column on supports as a 200-coordinate beam (highest frequency 1.8e5 rad/s), \
+                to 0.05 s",
+        t_end,
+        constraint_tolerance: 1e-12,
+        // Beyond, Dormand–Prince's steps are bound by the beam's stiffness, not the tolerance.
+        tightest_rtol: 1e-10,
+        reference: (flat, 200, 4),
+        // The pin's force is a stiff spring's and the sag is 1e-5 of the swing: each relative
+        // to its group's largest component.
+        error_measure: relative_to_largest,
+        velocity_rows: false,
+        large: false,
+        own_methods: no_own_methods,
+        run_rust_peers: rust_peers::<_, 200, 4, 400, 404>(scene, start, t_end),
+        run: to_the_end("structure", scene, start, t_end),
     })
 }
 
