@@ -4,6 +4,9 @@ use zeitner::constrained_system;
 
 use super::families::{horizontal_chain, ladder_span, sagging_ladder};
 use super::Visit;
+use crate::scenes::structure::{
+    Structure100, Structure16, Structure256, Structure32, Structure512, Structure64,
+};
 
 chain!(Chain4, 4);
 chain!(Chain8, 8);
@@ -34,6 +37,21 @@ pub fn each(visit: &mut impl Visit) {
             visit.visit(&format!("ladder-{}", $name::NODES), "ladder", &$name::standard(), sagging_ladder());
         )*};
     }
+    macro_rules! structures {
+        ($($name:ident),*) => {$(
+            let scene = $name::paper();
+            let q0 = zeitner::Vector::from(scene.start().0);
+            visit.visit(&format!("structure-{}", $name::NODE_COUNT), "structure", &scene, q0);
+        )*};
+    }
     chains!(Chain4, Chain8, Chain16, Chain32, Chain64, Chain100, Chain128);
     ladders!(Ladder4, Ladder8, Ladder16, Ladder32, Ladder64);
+    structures!(
+        Structure16,
+        Structure32,
+        Structure64,
+        Structure100,
+        Structure256,
+        Structure512
+    );
 }

@@ -353,21 +353,26 @@ impl SparseIteration {
             solve_scratch,
             columns,
         };
-        // A first factorisation of a diagonally dominant matrix of the same pattern sizes the
-        // factor's storage, so that the step's factorisations find it allocated.
-        let (dq, dv) = (
-            SparseSquare::zeros(dq.clone()),
-            SparseSquare::zeros(dv.clone()),
-        );
-        iteration.form(
-            Combination {
-                identity: 1.0,
-                dv: 0.0,
-                dq: 0.0,
-            },
-            &dq,
-            &dv,
-        );
+        // First factorisations with every entry of the pattern size the factor's storage, so
+        // that the step's factorisations find it allocated: a diagonally dominant matrix (its
+        // fill without pivoting) and one whose off-diagonal entries dominate (the pivots moved
+        // off the diagonal, which a long step's `(hγ)² ∂a/∂q` does).
+        let varied = |p: &Pattern| SparseSquare {
+            values: (0..p.nonzeros())
+                .map(|k| 1.0 + (k % 7) as f64 / 7.0)
+                .collect(),
+            pattern: p.clone(),
+        };
+        let (dq, dv) = (varied(dq), varied(dv));
+        let weak = -1.0 / (4.0 * (n as f64 + 1.0));
+        for (identity, off) in [(1.0, weak), (1e-6, -1.0)] {
+            let combination = Combination {
+                identity,
+                dv: off,
+                dq: off,
+            };
+            iteration.form(combination, &dq, &dv);
+        }
         iteration
     }
 }
