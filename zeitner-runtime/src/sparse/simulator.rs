@@ -314,7 +314,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     /// leaves the state as it was.
     pub fn step(&mut self) -> Result<StopReason, StepError> {
         self.progress.check(self.time())?;
-        let limit = self.stop_time.unwrap_or(f64::INFINITY);
+        let stop = self.stop_time.unwrap_or(f64::INFINITY);
+        // The model's next time event, which steps land on as `Simulator`'s do.
+        let now = self.time();
+        let time_event = self.system.time_event_after(now).filter(|&t| t > now);
+        let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
         let (min_step, max_step) = bounds(self.options.step);
         let mut h = self
             .planned_step
@@ -332,9 +336,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             match outcome {
                 Ok((end, point, error)) => {
                     self.accept(end, point, (h_try, h, t_end), (error, landing))?;
-                    if landing {
+                    if landing && self.stop_time == Some(t_end) {
                         self.stop_time = None;
                         return Ok(StopReason::StopTimeReached);
+                    }
+                    if landing && time_event == Some(t_end) {
+                        // The multipliers' history says nothing about what follows a kink.
+                        self.predictor.reset();
+                        return Ok(StopReason::TimeEventReached);
                     }
                     return Ok(StopReason::StepTaken);
                 }
@@ -703,6 +712,12 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54
     ) {
         return refuse("an implicit inner method");
+    }
+    // Constant multipliers over adaptive steps leave velocity-level rows off by far more than
+    // the tolerance (`Simulator` refuses them too); `Automatic` would choose quadratic ones.
+    let velocity_rows = S::POSITION_CONSTRAINTS < Z;
+    if velocity_rows && matches!(options.step, StepControl::Adaptive { .. }) {
+        return refuse("velocity-level rows with adaptive steps (use fixed steps or Simulator)");
     }
     match options.multipliers {
         MultiplierModel::Automatic | MultiplierModel::Constant => Ok(()),
