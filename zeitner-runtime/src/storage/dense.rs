@@ -35,9 +35,18 @@ impl<const N: usize> Storage<N> for Dense {
 }
 
 impl<const N: usize> Square<N> for Matrix<N, N> {
+    /// Column by column, `Σ_j A[:, j] x[j, c]` in the order nalgebra's product takes (the same
+    /// roundings), written out so that it inlines into the stages' loops.
     #[inline(always)]
     fn times<const C: usize>(&self, x: &Matrix<N, C>) -> Matrix<N, C> {
-        self * x
+        let mut y = Matrix::<N, C>::zeros();
+        for c in 0..C {
+            let mut column = y.column_mut(c);
+            for j in 0..N {
+                column.axpy(x[(j, c)], &self.column(j), 1.0);
+            }
+        }
+        y
     }
 
     #[inline(always)]
