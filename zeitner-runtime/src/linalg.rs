@@ -1,7 +1,7 @@
 //! Small dense linear algebra on fixed sizes, with rank detection that names rows.
 
-use crate::error::RowSet;
-use crate::system::{Matrix, Vector};
+use crate::dense::{Matrix, Vector};
+use crate::error::{ModelFunction, RowSet, StepError};
 
 /// Whether every value is finite. Checked without an early exit: the model's outputs are
 /// checked on every evaluation and are nearly always finite, so one branch at the end is
@@ -190,6 +190,19 @@ pub fn keep_leading_rows<const Z: usize>(a: &mut Matrix<Z, Z>, rhs: &mut Vector<
         a.column_mut(j).fill(0.0);
         a[(j, j)] = 1.0;
         rhs[j] = 0.0;
+    }
+}
+
+/// `value`, or the typed error naming `function` when an entry is not finite.
+pub(crate) fn finite<const R: usize, const C: usize>(
+    value: Matrix<R, C>,
+    t: f64,
+    function: ModelFunction,
+) -> Result<Matrix<R, C>, StepError> {
+    if all_finite(&value) {
+        Ok(value)
+    } else {
+        Err(StepError::NonFinite { t, function })
     }
 }
 

@@ -3,7 +3,7 @@
 
 use crate::error::{ModelFunction, StepError};
 use crate::gaps::GapSet;
-use crate::linalg::all_finite;
+use crate::linalg::{all_finite, finite};
 use crate::mass::{MassFactor, MassMatrix};
 use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
@@ -137,19 +137,6 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     open: OpenRows,
     /// `∂a/∂q`, `∂a/∂q'` where they were evaluated last, in the scene's storage.
     derivatives: DerivativesOf<S, N, Z>,
-}
-
-/// `value`, or the typed error naming `function` when an entry is not finite.
-pub(crate) fn finite<const R: usize, const C: usize>(
-    value: Matrix<R, C>,
-    t: f64,
-    function: ModelFunction,
-) -> Result<Matrix<R, C>, StepError> {
-    if all_finite(&value) {
-        Ok(value)
-    } else {
-        Err(StepError::NonFinite { t, function })
-    }
 }
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S, N, Z> {
@@ -359,10 +346,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
+        self.evaluations.constraint_force_jacobians += 1;
         let lambda = &self.mask(*lambda);
-        let evaluations = &mut self.evaluations;
         self.derivatives
-            .constraint_force_times(self.system, evaluations, (q, v, t), lambda, x)
+            .constraint_force_times(self.system, (q, v, t), lambda, x)
     }
 
     /// `G`, `M⁻¹Gᵀ` and the mass factor at a point.
@@ -441,9 +428,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             a: &at.a,
             factor: &at.factor,
         };
-        let evaluations = &mut self.evaluations;
+        self.evaluations.force_jacobians += 1;
+        self.evaluations.constraint_force_jacobians += 1;
+        // A mass that depends on the configuration adds `∂(M a)/∂q`.
+        self.evaluations.mass_jacobian_products += u64::from(!S::MASS_IS_CONSTANT);
         self.derivatives
-            .evaluate(self.system, evaluations, (q, v, t), &masked, point)?;
+            .evaluate(self.system, (q, v, t), &masked, point)?;
         Ok(AccelerationJacobians {
             dq: self.derivatives.dq(),
             dv: self.derivatives.dv(),

@@ -15,9 +15,10 @@ use crate::control::{
     Progress, LARGEST_STEP,
 };
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
+use crate::linalg::finite;
 use crate::linalg::max_abs;
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
-use crate::model::{finite, Evaluations};
+use crate::model::Evaluations;
 use crate::multipliers::{carried_share, Predictor};
 use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,

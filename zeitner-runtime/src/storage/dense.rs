@@ -2,9 +2,8 @@
 
 use super::{AccelerationAt, Combination, Derivatives, Iteration, Square, Storage};
 use crate::error::{ModelFunction, StepError};
-use crate::linalg::{all_finite, IterationFactor};
+use crate::linalg::{all_finite, finite, IterationFactor};
 use crate::mass::MassFactor;
-use crate::model::{finite, Evaluations};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Fixed-size dense matrices on the stack: no heap, `no_std` without `alloc`. Its N×N
@@ -68,20 +67,14 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError> {
-        evaluations.force_jacobians += 1;
-        evaluations.constraint_force_jacobians += 1;
         let (force_dq, force_dv) = system.force_jacobians(q, v, t);
         let (reaction_dq, reaction_dv) = system.constraint_force_jacobians(q, v, t, lambda);
         let mut dq = force_dq - reaction_dq;
-        let mass_term = (!S::MASS_IS_CONSTANT).then(|| {
-            evaluations.mass_jacobian_products += 1;
-            system.mass_jacobian_product(q, t, at.a)
-        });
+        let mass_term = (!S::MASS_IS_CONSTANT).then(|| system.mass_jacobian_product(q, t, at.a));
         if let Some(mass_term) = mass_term {
             dq -= mass_term;
         }
@@ -121,12 +114,10 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
-        evaluations.constraint_force_jacobians += 1;
         let (dq, _) = system.constraint_force_jacobians(q, v, t, lambda);
         Ok(finite(dq, t, ModelFunction::ConstraintForceJacobians)? * x)
     }

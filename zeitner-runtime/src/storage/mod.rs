@@ -25,7 +25,6 @@ pub use with_storage::WithStorage;
 
 use crate::error::StepError;
 use crate::mass::MassFactor;
-use crate::model::Evaluations;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The storage of a scene with `N` coordinates: how its N×N derivatives are kept, evaluated,
@@ -61,25 +60,22 @@ pub struct AccelerationAt<'a, F, const N: usize> {
 
 /// `∂a/∂q` and `∂a/∂q'`, evaluated in place.
 pub trait Derivatives<const N: usize, Q> {
-    /// Evaluates both at `(q, v, t)` for the multipliers `lambda` (open gaps' rows masked),
-    /// counting the model's calls. A non-finite result is the typed error naming the model
-    /// function that produced it.
+    /// Evaluates both at `(q, v, t)` for the multipliers `lambda` (open gaps' rows masked).
+    /// A non-finite result is the typed error naming the model function that produced it.
     fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         point: (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError>;
     fn dq(&self) -> &Q;
     fn dv(&self) -> &Q;
-    /// `∂(Gᵀλ)/∂q · x` at `(q, v, t)` for fixed `λ`, counted and checked like
-    /// [`Derivatives::evaluate`]; the derivatives kept are left as they are.
+    /// `∂(Gᵀλ)/∂q · x` at `(q, v, t)` for fixed `λ`, checked like [`Derivatives::evaluate`];
+    /// the derivatives kept are left as they are.
     fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         point: (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         x: &Vector<N>,

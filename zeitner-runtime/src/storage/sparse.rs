@@ -16,7 +16,6 @@ use faer::{Conj, MatMut, Par};
 use super::{AccelerationAt, Combination, Derivatives, Iteration, Square, Storage};
 use crate::error::{InvalidOption, ModelFunction, StepError};
 use crate::mass::MassFactor;
-use crate::model::Evaluations;
 use crate::system::{ConstrainedSystem, MassKind, Matrix, Vector};
 
 /// The N×N derivatives by their structural nonzeros, on the heap: memory and work grow with
@@ -227,13 +226,10 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
     fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError> {
-        evaluations.force_jacobians += 1;
-        evaluations.constraint_force_jacobians += 1;
         system.force_jacobian_nonzeros(q, v, t, &mut self.force);
         system.constraint_force_jacobian_nonzeros(q, v, t, lambda, &mut self.reaction);
         self.dq.values.fill(0.0);
@@ -282,12 +278,10 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
     fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        evaluations: &mut Evaluations,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
-        evaluations.constraint_force_jacobians += 1;
         system.constraint_force_jacobian_nonzeros(q, v, t, lambda, &mut self.reaction);
         let mut y = Vector::<N>::zeros();
         for (&value, &(row, col)) in self.reaction.iter().zip(&self.reaction_dq) {
