@@ -47,11 +47,6 @@ impl<const N: usize> Square<N> for Matrix<N, N> {
         }
         y
     }
-
-    #[inline(always)]
-    fn copy_from(&mut self, other: &Self) {
-        *self = *other;
-    }
 }
 
 /// `∂a/∂q`, `∂a/∂q'` as dense matrices.

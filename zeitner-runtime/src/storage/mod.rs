@@ -48,8 +48,6 @@ pub trait Storage<const N: usize>: Sized + 'static {
 pub trait Square<const N: usize> {
     /// `self · x`.
     fn times<const C: usize>(&self, x: &Matrix<N, C>) -> Matrix<N, C>;
-    /// Takes `other`'s values (both of one scene, so of one pattern).
-    fn copy_from(&mut self, other: &Self);
 }
 
 /// What a point's `a = M⁻¹(F - Gᵀλ)` is known from, for its derivatives.

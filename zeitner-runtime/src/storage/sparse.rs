@@ -130,10 +130,6 @@ impl<const N: usize> Square<N> for SparseSquare {
         }
         y
     }
-
-    fn copy_from(&mut self, other: &Self) {
-        self.values.copy_from_slice(&other.values);
-    }
 }
 
 /// The scene's `(row, column)` lists of `∂F/∂q`, `∂F/∂q'`, `∂(Gᵀλ)/∂q`, `∂(Gᵀλ)/∂q'` in the
