@@ -82,7 +82,7 @@ fn the_column_follows_its_modes_until_the_strut_engages() {
 #[test]
 fn two_hundred_coordinates_on_the_sparse_storage_follow_their_modes() {
     let run = std::thread::Builder::new()
-        .stack_size(8 << 20)
+        .stack_size(2 << 20)
         .spawn(|| {
             let scene = Structure100::paper();
             let modes = Modes::of(scene.0, Structure100::NODE_COUNT);

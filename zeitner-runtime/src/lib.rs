@@ -50,9 +50,11 @@ pub mod simulator;
 #[cfg(feature = "alloc")]
 pub mod sparse;
 pub mod storage;
+mod summary;
 pub mod system;
 #[cfg(test)]
 mod testing;
+mod with_storage;
 
 pub use consistency::StartReport;
 pub use contact::Impact;
@@ -68,11 +70,11 @@ pub use output::{Direction, Point, StepReport, StopReason};
 pub use simulator::{Observation, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
-pub use storage::WithStorage;
 pub use system::{
     BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,
     Sparsity, Vector,
 };
+pub use with_storage::WithStorage;
 
 /// What generated code names; not part of the public API.
 #[doc(hidden)]

@@ -3,7 +3,10 @@
 
 pub use crate::dense::{Matrix, Vector};
 use crate::mass::MassMatrix;
-use crate::storage::Storage;
+use crate::storage::{JacobianSource, Storage};
+pub use crate::summary::{
+    BlockSummary, FunctionSummary, MassKind, OpCounts, SceneSummary, Sparsity,
+};
 
 /// A constrained mechanical system `M(q,t) q'' = F(q, q', t) - G(q, q', t)ᵀ λ`, `g(q, q', t) = 0`,
 /// with `N` coordinates and `Z` constraints: rows `0..POSITION_CONSTRAINTS` are position-level
@@ -134,19 +137,6 @@ pub const MAX_GAPS: usize = 32;
 /// The most event functions a system may have.
 pub const MAX_EVENTS: usize = 32;
 
-/// Where a model's Jacobians are nonzero: the `(row, column)` of each value its `_nonzeros`
-/// functions write, in that order. `#[constrained_system]` emits it from the derivatives it
-/// computes, so that the sparse storage learns every pattern without evaluating anything.
-#[derive(Clone, Copy, Debug)]
-pub struct Sparsity {
-    /// `G`.
-    pub constraint_jacobian: &'static [(usize, usize)],
-    /// `∂F/∂q` and `∂F/∂q'`.
-    pub force_jacobians: [&'static [(usize, usize)]; 2],
-    /// `∂(Gᵀλ)/∂q` and `∂(Gᵀλ)/∂q'`.
-    pub constraint_force_jacobians: [&'static [(usize, usize)]; 2],
-}
-
 /// `matrix`'s entries at `pattern` (all, row by row, without one) into `values`.
 fn gather<const R: usize, const C: usize>(
     matrix: &Matrix<R, C>,
@@ -179,112 +169,53 @@ fn gather_pair<const N: usize>(
     gather(second, patterns.map(|p| p[1]), &mut values[written..]);
 }
 
-/// How the mass matrix is stored and whether it changes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MassKind {
-    ConstantDiagonal,
-    Diagonal,
-    ConstantFull,
-    Full,
-}
+/// The storages read a scene's Jacobians through [`JacobianSource`]: every system is one.
+impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> JacobianSource<N, Z> for S {
+    const MASS_IS_CONSTANT: bool = S::MASS_IS_CONSTANT;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = S::DYNAMICS_DEPEND_ON_VELOCITY;
+    const MASS: MassKind = S::SUMMARY.mass;
+    const SPARSITY: Option<Sparsity> = <S as ConstrainedSystem<N, Z>>::SPARSITY;
 
-/// Operation counts of one generated function.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct OpCounts {
-    /// Additions, subtractions, negations.
-    pub adds: u64,
-    /// Multiplications (`powi(n)` counts `|n| - 1`).
-    pub muls: u64,
-    pub divs: u64,
-    /// `sqrt`, `sin`, `atan2`, `powf` and the other library calls.
-    pub transcendental: u64,
-    /// Calls of the user's own opaque methods.
-    pub opaque_calls: u64,
-}
-
-impl OpCounts {
-    pub const fn total(&self) -> u64 {
-        self.adds + self.muls + self.divs + self.transcendental + self.opaque_calls
+    #[inline(always)]
+    fn force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> (Matrix<N, N>, Matrix<N, N>) {
+        ConstrainedSystem::force_jacobians(self, q, v, t)
     }
-}
 
-/// One output array of a generated function and the entries it actually computes.
-#[derive(Clone, Copy, Debug)]
-pub struct BlockSummary {
-    pub name: &'static str,
-    pub rows: usize,
-    pub cols: usize,
-    /// `(row, column)` of every entry that is not structurally zero.
-    pub nonzeros: &'static [(usize, usize)],
-}
-
-/// One generated function: its outputs and what it costs.
-#[derive(Clone, Copy, Debug)]
-pub struct FunctionSummary {
-    pub name: &'static str,
-    pub blocks: &'static [BlockSummary],
-    /// After simplification and sharing of common subexpressions.
-    pub ops: OpCounts,
-    /// The same outputs as independent expression trees, without sharing.
-    pub ops_unshared: OpCounts,
-}
-
-/// What a scene's generated code carries.
-#[derive(Clone, Copy, Debug)]
-pub struct SceneSummary {
-    pub coordinates: usize,
-    pub position_constraints: usize,
-    pub velocity_constraints: usize,
-    pub mass: MassKind,
-    /// Whether `t` appears in the mass, forces or constraints.
-    pub time_dependent: bool,
-    pub functions: &'static [FunctionSummary],
-}
-
-impl SceneSummary {
-    /// The summary of the function with this name, if the scene carries it.
-    pub fn function(&self, name: &str) -> Option<&FunctionSummary> {
-        self.functions.iter().find(|f| f.name == name)
+    #[inline(always)]
+    fn constraint_force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+    ) -> (Matrix<N, N>, Matrix<N, N>) {
+        ConstrainedSystem::constraint_force_jacobians(self, q, v, t, lambda)
     }
-}
 
-impl core::fmt::Display for SceneSummary {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        writeln!(
-            f,
-            "{} coordinates, {} position and {} velocity constraints, mass {:?}{}",
-            self.coordinates,
-            self.position_constraints,
-            self.velocity_constraints,
-            self.mass,
-            if self.time_dependent {
-                ", time-dependent"
-            } else {
-                ", autonomous"
-            }
-        )?;
-        writeln!(
-            f,
-            "{:<30} {:>9} {:>6} {:>6} {:>6} {:>6} {:>9}",
-            "function", "nonzeros", "add", "mul", "div", "transc", "unshared"
-        )?;
-        for function in self.functions {
-            let nonzeros: usize = function.blocks.iter().map(|b| b.nonzeros.len()).sum();
-            let dense: usize = function.blocks.iter().map(|b| b.rows * b.cols).sum();
-            let ops = function.ops;
-            writeln!(
-                f,
-                "{:<30} {:>4}/{:<4} {:>6} {:>6} {:>6} {:>6} {:>9}",
-                function.name,
-                nonzeros,
-                dense,
-                ops.adds,
-                ops.muls,
-                ops.divs,
-                ops.transcendental + ops.opaque_calls,
-                function.ops_unshared.total()
-            )?;
-        }
-        Ok(())
+    #[inline(always)]
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
+        ConstrainedSystem::mass_jacobian_product(self, q, t, a)
+    }
+
+    #[inline(always)]
+    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+        ConstrainedSystem::force_jacobian_nonzeros(self, q, v, t, values)
+    }
+
+    #[inline(always)]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        values: &mut [f64],
+    ) {
+        ConstrainedSystem::constraint_force_jacobian_nonzeros(self, q, v, t, lambda, values)
     }
 }

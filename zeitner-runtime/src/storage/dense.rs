@@ -1,10 +1,10 @@
 //! The dense storage: fixed-size N×N matrices on the stack, LU with partial pivoting.
 
-use super::{AccelerationAt, Combination, Derivatives, Iteration, Square, Storage};
+use super::{AccelerationAt, Combination, Derivatives, Iteration, JacobianSource, Square, Storage};
+use crate::dense::{Matrix, Vector};
 use crate::error::{ModelFunction, StepError};
 use crate::linalg::{all_finite, finite, IterationFactor};
 use crate::mass::MassFactor;
-use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Fixed-size dense matrices on the stack: no heap, `no_std` without `alloc`. Its N×N
 /// matrices cost `8 N²` bytes each and their factorisation `N³`: for up to a few dozen
@@ -17,7 +17,7 @@ impl<const N: usize> Storage<N> for Dense {
     type Derivatives = DenseDerivatives<N>;
     type Iteration = DenseIteration<N>;
 
-    fn derivatives<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn derivatives<S: JacobianSource<N, Z>, const Z: usize>(
     ) -> Result<DenseDerivatives<N>, StepError> {
         Ok(DenseDerivatives {
             dq: Matrix::zeros(),
@@ -25,7 +25,7 @@ impl<const N: usize> Storage<N> for Dense {
         })
     }
 
-    fn iteration<S: ConstrainedSystem<N, Z>, const Z: usize>() -> DenseIteration<N> {
+    fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> DenseIteration<N> {
         DenseIteration {
             factor: IterationFactor::new(Matrix::identity()).expect("I is regular"),
             dq: Matrix::zeros(),
@@ -59,7 +59,7 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     /// As for the acceleration, only the results are checked, and the model's outputs only to
     /// name the one that was not finite.
     #[inline]
-    fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
@@ -106,7 +106,7 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     }
 
     #[inline]
-    fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),

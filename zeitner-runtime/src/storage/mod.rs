@@ -1,8 +1,9 @@
 //! Where a step keeps what grows as N²: `∂a/∂q` and `∂a/∂q'` of `a = M⁻¹(F - Gᵀλ)`, and the
 //! implicit methods' iteration matrix `c₀ I - c₁ ∂a/∂q' - c₂ ∂a/∂q` with its factor. The step
 //! (methods, multipliers, events, contacts) is written once over [`Storage`]; two storages
-//! implement it, and a scene names its own ([`crate::ConstrainedSystem::Storage`]; [`WithStorage`]
-//! runs it on the other):
+//! implement it, and a scene names its own ([`crate::ConstrainedSystem::Storage`];
+//! [`crate::WithStorage`] runs it on the other). A storage sees a scene only through
+//! [`JacobianSource`], the Jacobians and what they are known to be:
 //! - [`Dense`]: fixed-size matrices on the stack, no heap — the small scenes' storage, and the
 //!   only one without the `alloc` feature;
 //! - [`Sparse`] (feature `alloc`): only the structural nonzeros `#[constrained_system]` lists
@@ -16,16 +17,15 @@
 pub mod dense;
 #[cfg(feature = "alloc")]
 pub mod sparse;
-mod with_storage;
 
 pub use dense::Dense;
 #[cfg(feature = "alloc")]
 pub use sparse::Sparse;
-pub use with_storage::WithStorage;
 
+use crate::dense::{Matrix, Vector};
 use crate::error::StepError;
 use crate::mass::MassFactor;
-use crate::system::{ConstrainedSystem, Matrix, Vector};
+use crate::summary::{MassKind, Sparsity};
 
 /// The storage of a scene with `N` coordinates: how its N×N derivatives are kept, evaluated,
 /// multiplied and factorised.
@@ -38,10 +38,9 @@ pub trait Storage<const N: usize>: Sized + 'static {
     type Iteration: Iteration<N, Self::Square>;
 
     /// The derivatives' workspace for `S`, or the refusal naming what this storage cannot hold.
-    fn derivatives<S: ConstrainedSystem<N, Z>, const Z: usize>(
-    ) -> Result<Self::Derivatives, StepError>;
+    fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<Self::Derivatives, StepError>;
     /// An iteration matrix's workspace for `S`, nothing formed yet.
-    fn iteration<S: ConstrainedSystem<N, Z>, const Z: usize>() -> Self::Iteration;
+    fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> Self::Iteration;
 }
 
 /// An N×N matrix as a storage keeps it.
@@ -60,7 +59,7 @@ pub struct AccelerationAt<'a, F, const N: usize> {
 pub trait Derivatives<const N: usize, Q> {
     /// Evaluates both at `(q, v, t)` for the multipliers `lambda` (open gaps' rows masked).
     /// A non-finite result is the typed error naming the model function that produced it.
-    fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         point: (&Vector<N>, &Vector<N>, f64),
@@ -71,7 +70,7 @@ pub trait Derivatives<const N: usize, Q> {
     fn dv(&self) -> &Q;
     /// `∂(Gᵀλ)/∂q · x` at `(q, v, t)` for fixed `λ`, checked like [`Derivatives::evaluate`];
     /// the derivatives kept are left as they are.
-    fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         point: (&Vector<N>, &Vector<N>, f64),
@@ -97,4 +96,41 @@ pub trait Iteration<const N: usize, Q> {
     fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C>;
     /// The `∂a/∂q` the last factor was formed from, times `x`.
     fn formed_dq_times<const C: usize>(&self, x: &Matrix<N, C>) -> Matrix<N, C>;
+}
+
+/// What a storage reads from a scene: its Jacobians, dense or by their nonzeros, and what is
+/// known of them before anything is evaluated. Every [`crate::ConstrainedSystem`] is one.
+pub trait JacobianSource<const N: usize, const Z: usize> {
+    /// [`crate::ConstrainedSystem::MASS_IS_CONSTANT`].
+    const MASS_IS_CONSTANT: bool;
+    /// [`crate::ConstrainedSystem::DYNAMICS_DEPEND_ON_VELOCITY`].
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool;
+    /// How the mass matrix is stored.
+    const MASS: MassKind;
+    /// [`crate::ConstrainedSystem::SPARSITY`].
+    const SPARSITY: Option<Sparsity>;
+    /// `(∂F/∂q, ∂F/∂q')`.
+    fn force_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64)
+        -> (Matrix<N, N>, Matrix<N, N>);
+    /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
+    fn constraint_force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+    ) -> (Matrix<N, N>, Matrix<N, N>);
+    /// `∂(M(q) a)/∂q` for fixed `a`.
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N>;
+    /// `∂F/∂q`'s and `∂F/∂q'`'s values at their patterns.
+    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]);
+    /// `∂(Gᵀλ)/∂q`'s and `∂(Gᵀλ)/∂q'`'s values at their patterns.
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        values: &mut [f64],
+    );
 }

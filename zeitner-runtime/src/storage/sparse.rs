@@ -13,10 +13,11 @@ use faer::sparse::linalg::lu::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par};
 
-use super::{AccelerationAt, Combination, Derivatives, Iteration, Square, Storage};
+use super::{AccelerationAt, Combination, Derivatives, Iteration, JacobianSource, Square, Storage};
+use crate::dense::{Matrix, Vector};
 use crate::error::{InvalidOption, ModelFunction, StepError};
 use crate::mass::MassFactor;
-use crate::system::{ConstrainedSystem, MassKind, Matrix, Vector};
+use crate::summary::MassKind;
 
 /// The N×N derivatives by their structural nonzeros, on the heap: memory and work grow with
 /// the nonzeros, not with N². Needs a constant diagonal mass (refused otherwise with
@@ -29,9 +30,9 @@ impl<const N: usize> Storage<N> for Sparse {
     type Derivatives = SparseDerivatives;
     type Iteration = SparseIteration;
 
-    fn derivatives<S: ConstrainedSystem<N, Z>, const Z: usize>(
-    ) -> Result<SparseDerivatives, StepError> {
-        if S::SUMMARY.mass != MassKind::ConstantDiagonal {
+    fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<SparseDerivatives, StepError>
+    {
+        if S::MASS != MassKind::ConstantDiagonal {
             return Err(StepError::InvalidOption(
                 InvalidOption::NotForSparseSimulator("a full or configuration-dependent mass"),
             ));
@@ -39,7 +40,7 @@ impl<const N: usize> Storage<N> for Sparse {
         Ok(SparseDerivatives::new::<S, N, Z>())
     }
 
-    fn iteration<S: ConstrainedSystem<N, Z>, const Z: usize>() -> SparseIteration {
+    fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> SparseIteration {
         let [dq, dv] = derivative_patterns::<S, N, Z>();
         SparseIteration::new(N, (&dq, &dv), Z.max(1))
     }
@@ -135,7 +136,7 @@ impl<const N: usize> Square<N> for SparseSquare {
 /// The scene's `(row, column)` lists of `∂F/∂q`, `∂F/∂q'`, `∂(Gᵀλ)/∂q`, `∂(Gᵀλ)/∂q'` in the
 /// order its `_nonzeros` functions write them: its [`crate::Sparsity`], or every entry row by
 /// row without one.
-fn generated_patterns<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+fn generated_patterns<S: JacobianSource<N, Z>, const N: usize, const Z: usize>(
 ) -> [Vec<(usize, usize)>; 4] {
     match S::SPARSITY {
         Some(s) => [
@@ -153,8 +154,7 @@ fn generated_patterns<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize
 }
 
 /// The patterns of `∂a/∂q` and `∂a/∂q'`: with a diagonal mass, those of `∂F - ∂(Gᵀλ)`.
-fn derivative_patterns<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>() -> [Pattern; 2]
-{
+fn derivative_patterns<S: JacobianSource<N, Z>, const N: usize, const Z: usize>() -> [Pattern; 2] {
     let [fq, fv, rq, rv] = generated_patterns::<S, N, Z>();
     let dv = if S::DYNAMICS_DEPEND_ON_VELOCITY {
         Pattern::of(N, fv.into_iter().chain(rv), false)
@@ -179,7 +179,7 @@ pub struct SparseDerivatives {
 }
 
 impl SparseDerivatives {
-    fn new<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>() -> Self {
+    fn new<S: JacobianSource<N, Z>, const N: usize, const Z: usize>() -> Self {
         let [fq, fv, rq, rv] = generated_patterns::<S, N, Z>();
         let [dq, dv] = derivative_patterns::<S, N, Z>();
         let offset = dq.nonzeros();
@@ -219,7 +219,7 @@ impl SparseDerivatives {
 }
 
 impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
-    fn evaluate<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),
@@ -271,7 +271,7 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
         &self.dv
     }
 
-    fn constraint_force_times<S: ConstrainedSystem<N, Z>, const Z: usize>(
+    fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
         (q, v, t): (&Vector<N>, &Vector<N>, f64),

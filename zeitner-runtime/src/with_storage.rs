@@ -2,7 +2,7 @@
 
 use core::marker::PhantomData;
 
-use super::Storage;
+use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Matrix, SceneSummary, Sparsity, Vector};
 
 /// `scene` with storage `D` instead of the one `#[constrained_system]` chose for it: the same

@@ -1,0 +1,126 @@
+//! Plain data about a scene's generated code: what it carries, what it costs, where its
+//! Jacobians are nonzero. The storages read the patterns from here; nothing here evaluates a
+//! model.
+
+/// Where a model's Jacobians are nonzero: the `(row, column)` of each value its `_nonzeros`
+/// functions write, in that order. `#[constrained_system]` emits it from the derivatives it
+/// computes, so that the sparse storage learns every pattern without evaluating anything.
+#[derive(Clone, Copy, Debug)]
+pub struct Sparsity {
+    /// `G`.
+    pub constraint_jacobian: &'static [(usize, usize)],
+    /// `∂F/∂q` and `∂F/∂q'`.
+    pub force_jacobians: [&'static [(usize, usize)]; 2],
+    /// `∂(Gᵀλ)/∂q` and `∂(Gᵀλ)/∂q'`.
+    pub constraint_force_jacobians: [&'static [(usize, usize)]; 2],
+}
+
+/// How the mass matrix is stored and whether it changes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MassKind {
+    ConstantDiagonal,
+    Diagonal,
+    ConstantFull,
+    Full,
+}
+
+/// Operation counts of one generated function.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpCounts {
+    /// Additions, subtractions, negations.
+    pub adds: u64,
+    /// Multiplications (`powi(n)` counts `|n| - 1`).
+    pub muls: u64,
+    pub divs: u64,
+    /// `sqrt`, `sin`, `atan2`, `powf` and the other library calls.
+    pub transcendental: u64,
+    /// Calls of the user's own opaque methods.
+    pub opaque_calls: u64,
+}
+
+impl OpCounts {
+    pub const fn total(&self) -> u64 {
+        self.adds + self.muls + self.divs + self.transcendental + self.opaque_calls
+    }
+}
+
+/// One output array of a generated function and the entries it actually computes.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockSummary {
+    pub name: &'static str,
+    pub rows: usize,
+    pub cols: usize,
+    /// `(row, column)` of every entry that is not structurally zero.
+    pub nonzeros: &'static [(usize, usize)],
+}
+
+/// One generated function: its outputs and what it costs.
+#[derive(Clone, Copy, Debug)]
+pub struct FunctionSummary {
+    pub name: &'static str,
+    pub blocks: &'static [BlockSummary],
+    /// After simplification and sharing of common subexpressions.
+    pub ops: OpCounts,
+    /// The same outputs as independent expression trees, without sharing.
+    pub ops_unshared: OpCounts,
+}
+
+/// What a scene's generated code carries.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneSummary {
+    pub coordinates: usize,
+    pub position_constraints: usize,
+    pub velocity_constraints: usize,
+    pub mass: MassKind,
+    /// Whether `t` appears in the mass, forces or constraints.
+    pub time_dependent: bool,
+    pub functions: &'static [FunctionSummary],
+}
+
+impl SceneSummary {
+    /// The summary of the function with this name, if the scene carries it.
+    pub fn function(&self, name: &str) -> Option<&FunctionSummary> {
+        self.functions.iter().find(|f| f.name == name)
+    }
+}
+
+impl core::fmt::Display for SceneSummary {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        writeln!(
+            f,
+            "{} coordinates, {} position and {} velocity constraints, mass {:?}{}",
+            self.coordinates,
+            self.position_constraints,
+            self.velocity_constraints,
+            self.mass,
+            if self.time_dependent {
+                ", time-dependent"
+            } else {
+                ", autonomous"
+            }
+        )?;
+        writeln!(
+            f,
+            "{:<30} {:>9} {:>6} {:>6} {:>6} {:>6} {:>9}",
+            "function", "nonzeros", "add", "mul", "div", "transc", "unshared"
+        )?;
+        for function in self.functions {
+            let nonzeros: usize = function.blocks.iter().map(|b| b.nonzeros.len()).sum();
+            let dense: usize = function.blocks.iter().map(|b| b.rows * b.cols).sum();
+            let ops = function.ops;
+            writeln!(
+                f,
+                "{:<30} {:>4}/{:<4} {:>6} {:>6} {:>6} {:>6} {:>9}",
+                function.name,
+                nonzeros,
+                dense,
+                ops.adds,
+                ops.muls,
+                ops.divs,
+                ops.transcendental + ops.opaque_calls,
+                function.ops_unshared.total()
+            )?;
+        }
+        Ok(())
+    }
+}
