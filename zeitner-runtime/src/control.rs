@@ -144,6 +144,44 @@ impl Progress {
     }
 }
 
+/// Accepted steps in a row bound by stability that make a run stiff.
+pub(crate) const STIFF_STEPS: u32 = 15;
+/// Steps not bound by stability that clear a suspicion.
+pub(crate) const CALM_STEPS: u32 = 6;
+/// Where `h|λ|` of Dormand–Prince's step sits on the boundary of its stability region on the
+/// negative real axis (about 3.3).
+pub(crate) const STABILITY_BOUNDARY: f64 = 3.25;
+
+/// Hairer's stiffness test (Hairer & Wanner, *Solving ODEs II*, IV.2, as DOPRI5 runs it): a run
+/// whose accepted steps sit on the stability boundary ([`STABILITY_BOUNDARY`]) for
+/// [`STIFF_STEPS`] steps with fewer than [`CALM_STEPS`] in a row off it is stiff — an explicit
+/// method's steps there are set by the stability of modes long decayed, not by the accuracy.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct StiffnessTest {
+    on_boundary: u32,
+    off_boundary: u32,
+}
+
+impl StiffnessTest {
+    /// Records an accepted step's `h|λ|` estimate (none: the method has none, nothing is
+    /// learnt); whether the run is stiff now.
+    pub fn record(&mut self, h_lambda: Option<f64>) -> bool {
+        let Some(h_lambda) = h_lambda else {
+            return false;
+        };
+        if h_lambda > STABILITY_BOUNDARY {
+            self.off_boundary = 0;
+            self.on_boundary += 1;
+        } else {
+            self.off_boundary += 1;
+            if self.off_boundary >= CALM_STEPS {
+                self.on_boundary = 0;
+            }
+        }
+        self.on_boundary >= STIFF_STEPS
+    }
+}
+
 /// The step after the `attempts`-th rejection at time `t`, or the error that ends the run: fixed
 /// steps cannot shrink, adaptive ones not below `min_step`, nor below what still moves the
 /// time, nor more than [`MAX_ATTEMPTS`] times.
@@ -507,6 +545,34 @@ mod progress_tests {
             progress.record(1e-7, t);
         }
         assert_eq!(progress.check(t), Ok(()));
+    }
+}
+
+#[cfg(test)]
+mod stiffness_tests {
+    use super::*;
+
+    #[test]
+    fn steps_on_the_stability_boundary_make_a_run_stiff_and_calm_steps_clear_a_suspicion() {
+        let mut test = StiffnessTest::default();
+        for _ in 0..STIFF_STEPS - 1 {
+            assert!(!test.record(Some(3.3)));
+        }
+        // A few calm steps do not clear it; the next step on the boundary confirms it.
+        for _ in 0..CALM_STEPS - 1 {
+            assert!(!test.record(Some(1.0)));
+        }
+        assert!(test.record(Some(3.3)));
+        let mut test = StiffnessTest::default();
+        for _ in 0..STIFF_STEPS - 1 {
+            test.record(Some(3.3));
+        }
+        for _ in 0..CALM_STEPS {
+            test.record(Some(1.0));
+        }
+        assert!(!test.record(Some(3.3)), "{test:?}");
+        // Steps without an estimate say nothing.
+        assert!(!StiffnessTest::default().record(None));
     }
 }
 

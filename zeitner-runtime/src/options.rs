@@ -12,8 +12,13 @@ pub enum InnerMethod {
     /// error estimate: fixed steps only.
     Rk4 { substeps: u32 },
     /// Dormand–Prince 5(4): order 5 with an embedded order-4 error estimate for adaptive steps.
-    /// The default.
     DormandPrince54,
+    /// The method chosen for the scene as it runs: [`InnerMethod::DormandPrince54`] until
+    /// Hairer's stiffness test finds its steps bound by stability rather than accuracy (15
+    /// accepted steps on the boundary of its stability region), then [`InnerMethod::Esdirk54`]
+    /// for the rest of the run, from the state reached. [`crate::Simulator::method`] says which
+    /// one steps now. The default. Without the `implicit` feature, Dormand–Prince throughout.
+    Automatic,
     /// Alexander's 2-stage SDIRK: order 2, L-stable, stiffly accurate, for stiff forces; fixed
     /// steps. Uses `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
@@ -50,6 +55,24 @@ pub enum InnerMethod {
 }
 
 impl InnerMethod {
+    /// The method a run with this choice starts with: [`InnerMethod::Automatic`] resolved.
+    pub fn first(self) -> InnerMethod {
+        match self {
+            InnerMethod::Automatic => InnerMethod::DormandPrince54,
+            other => other,
+        }
+    }
+
+    /// The method [`InnerMethod::Automatic`] goes on with once the run is stiff; `None` for
+    /// every other choice, which is kept whatever the run.
+    pub fn when_stiff(self) -> Option<InnerMethod> {
+        #[cfg(feature = "implicit")]
+        if self == InnerMethod::Automatic {
+            return Some(InnerMethod::Esdirk54);
+        }
+        None
+    }
+
     /// Whether the method is one for stiff models (`Esdirk32`, `Esdirk43`, `Esdirk54`), for
     /// which the automatic multiplier model is the quadratic one.
     pub fn is_stiff(self) -> bool {
@@ -77,7 +100,7 @@ impl InnerMethod {
     /// Whether the method has an embedded error estimate, which adaptive steps need.
     pub fn has_error_estimate(self) -> bool {
         match self {
-            InnerMethod::DormandPrince54 => true,
+            InnerMethod::DormandPrince54 | InnerMethod::Automatic => true,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk32 | InnerMethod::Esdirk43 | InnerMethod::Esdirk54 => true,
             _ => false,
@@ -246,7 +269,7 @@ pub enum StartPolicy {
 /// Everything that steers the integration.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
-    /// The inner method. Default [`InnerMethod::DormandPrince54`].
+    /// The inner method. Default [`InnerMethod::Automatic`].
     pub method: InnerMethod,
     /// How the multipliers vary over a step. Default [`MultiplierModel::Automatic`].
     pub multipliers: MultiplierModel,
@@ -303,7 +326,7 @@ impl Default for EventSettings {
 impl Default for Options {
     fn default() -> Self {
         Options {
-            method: InnerMethod::DormandPrince54,
+            method: InnerMethod::Automatic,
             multipliers: MultiplierModel::Automatic,
             step: StepControl::adaptive(1e-8),
             #[cfg(feature = "exact-sensitivity")]

@@ -6,8 +6,9 @@
 //! Why it holds: the model is linear; the pin and the pendulum column fix `u₀`, `w₀`, `w_top`
 //! outright, so the free coordinates are the rest; `u` and `w` do not couple, and `w` starts at
 //! its static sag under gravity ([`Lumped::sag`]), where it stays. What remains is
-//! `m ü + K u = p(t) e_top` with `u(0) = u̇(0) = 0`, one rigid swing about the pin (ω = 0) and
-//! the bending modes.
+//! `m ü + βK u̇ + K u = p(t) e_top` with `u(0) = u̇(0) = 0`: the damping `βK` is diagonal in the
+//! modes (`ζ = βω/2`), so each is an oscillator of its own — one rigid swing about the pin
+//! (ω = 0) and the bending modes, the highest of them overdamped.
 
 use nalgebra::{DMatrix, SymmetricEigen};
 
@@ -45,10 +46,13 @@ impl Modes {
             }
         }
         let eigen = SymmetricEigen::new(stiffness / lumped.node_mass);
+        // The rigid swing's eigenvalue is zero; the solver returns it as rounding noise, which
+        // the damped closed form (a division by ω³) must not see.
+        let largest = eigen.eigenvalues.amax();
         let frequencies = eigen
             .eigenvalues
             .iter()
-            .map(|l| l.max(0.0).sqrt())
+            .map(|&l| if l > 1e-12 * largest { l.sqrt() } else { 0.0 })
             .collect();
         Modes {
             lumped,
@@ -76,9 +80,10 @@ impl Modes {
         let mut du = vec![0.0; self.nodes - 1];
         for (mode, &omega) in self.frequencies.iter().enumerate() {
             // A load p0 s/rise from s = 0 on, less the same from s = rise on.
+            let zeta = 0.5 * self.lumped.damping * omega;
             let ramp = |s: f64| {
                 if s > 0.0 {
-                    ramp_response(omega, s)
+                    ramp_response(omega, zeta, s)
                 } else {
                     (0.0, 0.0)
                 }
@@ -107,13 +112,14 @@ impl Modes {
             q[2 * k] = u[k - 1];
             v[2 * k] = du[k - 1];
         }
-        // Each held coordinate's row of M q'' = F - Gᵀλ with q'' = 0 there: λ = F.
+        // Each held coordinate's row of M q'' = F - Gᵀλ with q'' = 0 there: λ = F, the pin's
+        // horizontal one with its damper's share.
         let l = &self.lumped;
         let weight = l.node_mass * l.column.g;
         let top = 2 * self.nodes - 1;
         ModalState {
             lambda: [
-                l.bending_spring * (2.0 * q[2] - q[4]),
+                l.bending_spring * ((2.0 * q[2] - q[4]) + l.damping * (2.0 * v[2] - v[4])),
                 -weight + l.axial_spring * q[3],
                 -weight + l.axial_spring * q[top - 2],
                 0.0,
@@ -145,9 +151,49 @@ impl Modes {
     }
 }
 
-/// `(r, ṙ)` of `r̈ + ω² r = s`, `r(0) = ṙ(0) = 0`: `(s - sin(ωs)/ω)/ω²`, or `s³/6` for the
-/// rigid mode (by its series where `ωs` is small, which keeps the cancellation out).
-fn ramp_response(omega: f64, s: f64) -> (f64, f64) {
+/// `(r, ṙ)` of `r̈ + 2ζω ṙ + ω² r = s`, `r(0) = ṙ(0) = 0`: the particular solution
+/// `(s - 2ζ/ω)/ω²` plus the free response that starts it from rest, under-, critically or
+/// overdamped; undamped, `(s - sin(ωs)/ω)/ω²`, or `s³/6` for the rigid mode (by its series
+/// where `ωs` is small, which keeps the cancellation out).
+fn ramp_response(omega: f64, zeta: f64, s: f64) -> (f64, f64) {
+    if zeta == 0.0 {
+        return undamped_ramp_response(omega, s);
+    }
+    let w2 = omega * omega;
+    // The free response's start: r_h(0) = -r_p(0), ṙ_h(0) = -ṙ_p(0).
+    let (x0, v0) = (2.0 * zeta / (w2 * omega), -1.0 / w2);
+    let (free, free_rate) = if (zeta - 1.0).abs() < 1e-10 {
+        let decay = (-omega * s).exp();
+        let slope = v0 + omega * x0;
+        (
+            (x0 + slope * s) * decay,
+            (slope - omega * (x0 + slope * s)) * decay,
+        )
+    } else if zeta < 1.0 {
+        let wd = omega * (1.0 - zeta * zeta).sqrt();
+        let (a, b) = (x0, (v0 + zeta * omega * x0) / wd);
+        let decay = (-zeta * omega * s).exp();
+        let (sin, cos) = (wd * s).sin_cos();
+        (
+            decay * (a * cos + b * sin),
+            decay * ((wd * b - zeta * omega * a) * cos - (wd * a + zeta * omega * b) * sin),
+        )
+    } else {
+        // The slow root in the form without cancellation.
+        let root = (zeta * zeta - 1.0).sqrt();
+        let (slow, fast) = (-omega / (zeta + root), -omega * (zeta + root));
+        let c_slow = (fast * x0 - v0) / (fast - slow);
+        let c_fast = (v0 - slow * x0) / (fast - slow);
+        let (e_slow, e_fast) = ((slow * s).exp(), (fast * s).exp());
+        (
+            c_slow * e_slow + c_fast * e_fast,
+            c_slow * slow * e_slow + c_fast * fast * e_fast,
+        )
+    };
+    ((s - 2.0 * zeta / omega) / w2 + free, 1.0 / w2 + free_rate)
+}
+
+fn undamped_ramp_response(omega: f64, s: f64) -> (f64, f64) {
     let x = omega * s;
     if x < 0.1 {
         // Taylor series of (x - sin x)/ω³ and (1 - cos x)/ω², truncated after x⁶: the next
@@ -161,5 +207,60 @@ fn ramp_response(omega: f64, s: f64) -> (f64, f64) {
     } else {
         let w2 = omega * omega;
         ((s - x.sin() / omega) / w2, (1.0 - x.cos()) / w2)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `r̈ + 2ζω ṙ + ω² r = s` by classical Runge–Kutta at a step far below `1/ω`, to `s`.
+    fn integrated(omega: f64, zeta: f64, s: f64) -> (f64, f64) {
+        let steps = 200_000;
+        let h = s / steps as f64;
+        let rate =
+            |t: f64, (r, dr): (f64, f64)| (dr, t - 2.0 * zeta * omega * dr - omega * omega * r);
+        let (mut t, mut y) = (0.0, (0.0, 0.0));
+        for _ in 0..steps {
+            let k1 = rate(t, y);
+            let k2 = rate(t + h / 2.0, (y.0 + h / 2.0 * k1.0, y.1 + h / 2.0 * k1.1));
+            let k3 = rate(t + h / 2.0, (y.0 + h / 2.0 * k2.0, y.1 + h / 2.0 * k2.1));
+            let k4 = rate(t + h, (y.0 + h * k3.0, y.1 + h * k3.1));
+            y.0 += h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
+            y.1 += h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
+            t += h;
+        }
+        y
+    }
+
+    #[test]
+    fn the_ramp_response_solves_its_oscillator_at_every_damping() {
+        for (omega, zeta) in [
+            (0.0, 0.0),
+            (70.0, 0.0),
+            (70.0, 0.02),
+            (900.0, 1.0),
+            (900.0, 1.0 + 3e-8),
+            (900.0, 1.0 - 3e-8),
+            (900.0, 1.0 + 5e-11),
+            (2e3, 0.6),
+            (2e3, 4.0),
+            (2e3, 30.0),
+        ] {
+            for s in [1e-3, 0.02, 0.05] {
+                let (r, dr) = ramp_response(omega, zeta, s);
+                let (ri, dri) = integrated(omega, zeta, s);
+                let scale = (s * s * s / 6.0).min(s / (omega * omega).max(1e-300));
+                assert!(
+                    (r - ri).abs() <= 1e-9 * scale.max(ri.abs()),
+                    "ω {omega} ζ {zeta} s {s}: {r} against {ri}"
+                );
+                let rate_scale = (s * s / 2.0).min(1.0 / (omega * omega).max(1e-300));
+                assert!(
+                    (dr - dri).abs() <= 1e-9 * rate_scale.max(dri.abs()),
+                    "ω {omega} ζ {zeta} s {s}: ṙ {dr} against {dri}"
+                );
+            }
+        }
     }
 }

@@ -397,8 +397,8 @@ fn structure_scene() -> Result<Scene, String> {
     let flat = [reference.q, reference.v, reference.lambda.to_vec()].concat();
     Ok(Scene {
         name: "structure",
-        title: "A column on supports as a 200-coordinate beam (highest frequency 1.8e5 rad/s), \
-                to 0.05 s",
+        title: "A column on supports as a 200-coordinate beam (2 % damping, highest frequency \
+                1.8e5 rad/s), to 0.05 s",
         t_end,
         constraint_tolerance: 1e-12,
         // Beyond, Dormand–Prince's steps are bound by the beam's stiffness, not the tolerance.

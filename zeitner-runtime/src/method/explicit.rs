@@ -18,6 +18,9 @@ pub(crate) struct Tableau<const S: usize> {
     pub e: Option<[f64; S]>,
     pub order: u32,
     pub embedded_order: Option<u32>,
+    /// Two stages at the same time whose slopes estimate the stiffness `h‖Δf‖/‖Δy‖` (Hairer &
+    /// Wanner, *Solving ODEs II*, IV.2, as DOPRI5 does), if the tableau has such a pair.
+    pub stiffness_stages: Option<(usize, usize)>,
 }
 
 impl<const S: usize> Tableau<S> {
@@ -42,6 +45,7 @@ pub(crate) const RK4: Tableau<4> = Tableau {
     e: None,
     order: 4,
     embedded_order: None,
+    stiffness_stages: None,
 };
 
 /// The 5(4) pair of Dormand & Prince (1980), coefficients as in Hairer, Nørsett & Wanner,
@@ -101,6 +105,8 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
     ]),
     order: 5,
     embedded_order: Some(4),
+    // The last two stages, both at `t + h`; the last one's argument is the solution.
+    stiffness_stages: Some((5, 6)),
 };
 
 /// An explicit method: its tableau, taken `substeps` times per step, for storage `D`.
@@ -196,6 +202,8 @@ where
     let mut kv = [Vector::<N>::zeros(); ST];
     let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
     let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
+    // The arguments `q` of the stiffness estimate's two stages.
+    let mut stiffness_q = [start.q; 2];
     for i in 0..ST {
         let (mut q, mut v) = (start.q, start.v);
         let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
@@ -214,6 +222,11 @@ where
         let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
+        match tableau.stiffness_stages {
+            Some((first, _)) if first == i => stiffness_q[0] = q,
+            Some((_, second)) if second == i => stiffness_q[1] = q,
+            _ => {}
+        }
         if sensitivity && tableau.slope_enters_solution(i) {
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
@@ -231,6 +244,7 @@ where
         dq_dc: start.dq_dc,
         dv_dc: start.dv_dc,
         error: None,
+        stiffness: None,
     };
     for i in 0..ST {
         let w = h * tableau.b[i];
@@ -249,6 +263,14 @@ where
             ev += (h * e[i]) * kv[i];
         }
         end.error = Some((eq, ev));
+    }
+    if let Some((first, second)) = tableau.stiffness_stages {
+        // The state is (q, q'), its slope (q', q''): `h ‖Δ(q', q'')‖ / ‖Δ(q, q')‖` between the
+        // two stages.
+        let (dq, dv) = (stiffness_q[1] - stiffness_q[0], kq[second] - kq[first]);
+        let slope = (kv[second] - kv[first]).norm_squared() + dv.norm_squared();
+        let state = dq.norm_squared() + dv.norm_squared();
+        end.stiffness = (state > 0.0).then(|| h * libm::sqrt(slope / state));
     }
     Ok(end)
 }

@@ -52,6 +52,10 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     pub dv_dc: [Matrix<N, Z>; K],
     /// Embedded error estimate of `q` and `q'`, for methods that have one.
     pub error: Option<(Vector<N>, Vector<N>)>,
+    /// `h` times the estimate of the largest eigenvalue's modulus the step saw, for explicit
+    /// methods that estimate it: beyond about 3.3 Dormand–Prince's step is bound by its
+    /// stability, not its accuracy.
+    pub stiffness: Option<f64>,
 }
 
 /// One inner method with the workspace it owns, in storage `D`.
@@ -116,11 +120,11 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
         method: InnerMethod,
         step: StepControl,
     ) -> Self {
-        match method {
+        match method.first() {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps))
             }
-            InnerMethod::DormandPrince54 => {
+            InnerMethod::DormandPrince54 | InnerMethod::Automatic => {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
             }
             #[cfg(feature = "implicit")]

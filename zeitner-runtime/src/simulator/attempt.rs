@@ -25,6 +25,8 @@ pub(super) struct Accepted<const N: usize, const Z: usize> {
     pub(super) error_norm: f64,
     /// `G` and `G M⁻¹Gᵀ` at the end point.
     pub(super) gram: Gram<N, Z>,
+    /// The inner method's `h|λ|` estimate, if it makes one.
+    pub(super) stiffness: Option<f64>,
 }
 
 pub(super) enum Attempt<const N: usize, const Z: usize> {
@@ -95,7 +97,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (h, planned): (f64, f64),
         t_end: f64,
     ) -> Result<Attempt<N, Z>, StepError> {
-        let method = self.options.method;
+        let method = self.active;
         match self
             .options
             .multipliers
@@ -159,7 +161,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?;
         let settings = NewtonSettings {
             steady_velocity_tolerance: self.embedded_order().is_some_and(|order| order < 3)
-                || self.options.method.is_stiff(),
+                || self.active.is_stiff(),
             tolerance: newton_tolerance(
                 &self.options,
                 (&self.q, &self.v),
@@ -262,6 +264,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             integrations,
             error_norm: error,
             gram,
+            stiffness: end.stiffness,
         }))
     }
 
@@ -332,6 +335,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.statistics.steps += 1;
         self.statistics.max_newton_iterations =
             self.statistics.max_newton_iterations.max(step.integrations);
+        self.watch_stiffness(step.stiffness);
         Ok(())
     }
 

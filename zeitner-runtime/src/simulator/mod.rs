@@ -19,14 +19,14 @@ use attempt::Attempt;
 
 use crate::consistency::{Gram, StartReport};
 use crate::contact::Impact;
-use crate::control::{bounds, Controller, Progress, LARGEST_STEP};
+use crate::control::{bounds, Controller, Progress, StiffnessTest, LARGEST_STEP};
 use crate::error::{InvalidOption, StepError};
 use crate::events::Watch;
 use crate::gaps::GapSet;
 use crate::method::{AnyMethod, Method};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::Predictor;
-use crate::options::{MultiplierModel, Options, StepControl};
+use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
 use crate::output::{Point, StepReport, StopReason};
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
@@ -50,6 +50,10 @@ pub struct Statistics {
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
     method: AnyMethod<N, S::Storage>,
+    /// The method that steps now: the options' one, `Automatic` resolved.
+    active: InnerMethod,
+    /// Whether the steps are bound by stability, for `Automatic`'s change of method.
+    stiffness: StiffnessTest,
     options: Options,
     controller: Controller,
     predictor: Predictor<Z>,
@@ -142,6 +146,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut simulator = Simulator {
             model,
             method: AnyMethod::new::<S, Z>(options.method, options.step),
+            active: options.method.first(),
+            stiffness: StiffnessTest::default(),
             options,
             controller: Controller::new(),
             predictor: Predictor::default(),
@@ -166,17 +172,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         .with_next_time_event();
         simulator.restart_method();
         Ok(simulator)
-    }
-
-    /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
-    /// the acceleration at the current state with the consistent multipliers there (evaluated
-    /// only for a method with memory).
-    fn restart_method(&mut self) {
-        let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
-        let model = &mut self.model;
-        Method::<N, Z, S::Storage>::restart(&mut self.method, || {
-            Ok(model.acceleration(&q, &v, t, &lambda)?.a)
-        });
     }
 
     /// How the start (or the last re-initialised state) was made consistent.
@@ -225,7 +220,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// [`MultiplierModel::Automatic`] resolved for the inner method and the scene's rows
     /// ([`MultiplierModel::resolve`]).
     pub fn multiplier_model(&self) -> MultiplierModel {
-        let method = self.options.method;
+        let method = self.active;
         self.options
             .multipliers
             .resolve(method, S::POSITION_CONSTRAINTS, Z)

@@ -3,10 +3,10 @@
 
 use super::{suits_the_rows, watch_at, Forget, Simulator};
 use crate::consistency::{consistent_start, end_report};
-use crate::control::{bounds, Progress};
+use crate::control::{bounds, Progress, StiffnessTest};
 use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
-use crate::options::{Options, StepControl};
+use crate::options::{InnerMethod, Options, StepControl};
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -27,6 +27,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             let method = AnyMethod::new::<S, Z>(options.method, options.step);
             core::mem::replace(&mut self.method, method)
         });
+        let previous_active = self.active;
+        if new_method {
+            self.active = options.method.first();
+        }
         let previous_options = core::mem::replace(&mut self.options, options);
         let changed = match (reproject, new_method) {
             (true, _) => self.reproject(),
@@ -48,6 +52,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 self.options = previous_options;
                 if let Some(method) = previous_method {
                     self.method = method;
+                    self.active = previous_active;
                 }
                 return Err(error);
             }
@@ -55,6 +60,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if let Some(method) = previous_method {
             let factorizations = Method::<N, Z, S::Storage>::factorizations(&method);
             self.statistics.iteration_matrix_factorizations += factorizations;
+            self.stiffness = StiffnessTest::default();
         }
         self.method.use_step_control(options.step);
         self.watch = watch;
@@ -128,5 +134,42 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         given
             .chain(model)
             .fold(None, |next, t| Some(next.map_or(t, |n: f64| n.min(t))))
+    }
+}
+
+impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
+    /// The inner method that steps now: the options' one, or for [`InnerMethod::Automatic`]
+    /// the one it has chosen so far.
+    pub fn method(&self) -> InnerMethod {
+        self.active
+    }
+
+    /// Learns from an accepted step's `h|λ|` estimate whether the run is stiff; once it is,
+    /// [`InnerMethod::Automatic`] goes on with its implicit method from the state reached.
+    pub(super) fn watch_stiffness(&mut self, h_lambda: Option<f64>) {
+        if !self.stiffness.record(h_lambda) {
+            return;
+        }
+        let Some(next) = self.options.method.when_stiff() else {
+            return;
+        };
+        let method = AnyMethod::new::<S, Z>(next, self.options.step);
+        let previous = core::mem::replace(&mut self.method, method);
+        let factorizations = Method::<N, Z, S::Storage>::factorizations(&previous);
+        self.statistics.iteration_matrix_factorizations += factorizations;
+        self.active = next;
+        self.stiffness = StiffnessTest::default();
+        self.restart_method();
+    }
+
+    /// Starts the inner method's memory (generalised-α's algorithmic acceleration) afresh from
+    /// the acceleration at the current state with the consistent multipliers there (evaluated
+    /// only for a method with memory).
+    pub(super) fn restart_method(&mut self) {
+        let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
+        let model = &mut self.model;
+        Method::<N, Z, S::Storage>::restart(&mut self.method, || {
+            Ok(model.acceleration(&q, &v, t, &lambda)?.a)
+        });
     }
 }

@@ -710,7 +710,7 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     if !matches!(
         options.method,
-        InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54
+        InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54 | InnerMethod::Automatic
     ) {
         return refuse("an implicit inner method");
     }
