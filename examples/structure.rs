@@ -47,6 +47,8 @@ struct Args {
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum Method {
+    /// The default: Dormand–Prince until its steps are bound by stability, then ESDIRK 5(4).
+    Automatic,
     /// ESDIRK 5(4), L-stable: steps as long as the accuracy allows.
     Esdirk54,
     /// ESDIRK 3(2).
@@ -67,6 +69,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let contact = modes.first_contact();
     let options = Options {
         method: match args.method {
+            Method::Automatic => InnerMethod::Automatic,
             Method::Esdirk54 => InnerMethod::Esdirk54,
             Method::Esdirk32 => InnerMethod::Esdirk32,
             Method::DormandPrince => InnerMethod::DormandPrince54,

@@ -127,10 +127,11 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
             let (class, detail) = outcome
                 .failure
                 .map_or(("ok", String::new()), |f| (f.class.name(), f.detail));
-            let storage = if outcome.sparse_storage {
-                "sparse"
-            } else {
-                "dense"
+            let storage = match (outcome.sparse_storage, outcome.turned_implicit) {
+                (true, false) => "sparse",
+                (true, true) => "sparse+implicit",
+                (false, false) => "dense",
+                (false, true) => "dense+implicit",
             };
             format!(
                 "case {seed} {class} {} {storage} {errors} {detail}",
@@ -283,6 +284,8 @@ struct Tally {
     /// Runs on the sparse storage, and their accepted steps.
     sparse_runs: u64,
     sparse_steps: u64,
+    /// Runs in which `InnerMethod::Automatic` turned to its implicit method.
+    turned_implicit: u64,
     /// Failure class (or `hang`, `crash`) → (seed, detail).
     failures: BTreeMap<String, Vec<(u64, String)>>,
     /// Typed errors by variant.
@@ -323,9 +326,12 @@ impl Tally {
                 let seed = seed.parse().unwrap_or(u64::MAX);
                 let steps = steps.parse::<u64>().unwrap_or(0);
                 self.steps += steps;
-                if *storage == "sparse" {
+                if storage.starts_with("sparse") {
                     self.sparse_runs += 1;
                     self.sparse_steps += steps;
+                }
+                if storage.ends_with("+implicit") {
+                    self.turned_implicit += 1;
                 }
                 for error in errors.split(',').filter(|e| *e != "-") {
                     *self.errors.entry(error.to_string()).or_default() += 1;
@@ -499,6 +505,10 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
         out.push_str(&format!(
             "  on the sparse storage: {} runs, {} accepted steps\n",
             tally.sparse_runs, tally.sparse_steps
+        ));
+        out.push_str(&format!(
+            "  runs in which `Automatic` turned implicit: {}\n",
+            tally.turned_implicit
         ));
         for class in FailureClass::ALL
             .iter()

@@ -18,11 +18,11 @@ use std::fmt;
 use rand::RngExt;
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity, Simulator,
-    StepControl, StepError, Vector, WithStorage,
+    ConstrainedSystem, MassKind, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
+    StepError, Vector, WithStorage,
 };
 
-use super::cases::{rng, variant, Rng};
+use super::cases::{explicit_adaptive_method, rng, variant, Rng};
 use crate::scenes::andrews::{self, Andrews};
 use crate::scenes::contact::Ball;
 use crate::scenes::pendulum::Pendulum;
@@ -124,13 +124,13 @@ impl fmt::Display for AccuracyCase {
     }
 }
 
-/// Sensible options: Dormand–Prince, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
+/// Sensible options: Dormand–Prince or the default `Automatic`, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
 /// multiplier model and sensitivity; the defaults otherwise.
 fn sensible_options(rng: &mut Rng) -> Options {
     let rtol = 10f64.powf(rng.random_range(-10.0..=-6.0));
     let atol = rtol * 10f64.powf(rng.random_range(-4.0..=0.0));
     Options {
-        method: InnerMethod::DormandPrince54,
+        method: explicit_adaptive_method(rng),
         multipliers: if rng.random_bool(0.5) {
             MultiplierModel::Constant
         } else {

@@ -742,8 +742,19 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
             };
             InnerMethod::Rk4 { substeps }
         }
-        1 => InnerMethod::DormandPrince54,
+        1 => explicit_adaptive_method(rng),
         _ => implicit_method(rng, wild),
+    }
+}
+
+/// Dormand–Prince or the default `Automatic` (which starts with it), drawn from a stream of its
+/// own like [`implicit_method`], so that every case's model and settings stay as they were.
+pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
+    let mut side = Rng::seed_from_u64(rng.clone().random::<u64>() ^ 0xa070_3a71_c0de_5eed);
+    if side.random_bool(0.5) {
+        InnerMethod::Automatic
+    } else {
+        InnerMethod::DormandPrince54
     }
 }
 
@@ -775,6 +786,7 @@ fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
 fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
     let adaptive = match method {
         InnerMethod::DormandPrince54
+        | InnerMethod::Automatic
         | InnerMethod::Esdirk32
         | InnerMethod::Esdirk43
         | InnerMethod::Esdirk54 => rng.random_bool(0.75),
@@ -1212,6 +1224,8 @@ pub struct Outcome {
     pub calls: usize,
     /// Whether it ran on the sparse storage.
     pub sparse_storage: bool,
+    /// Whether `InnerMethod::Automatic` turned to its implicit method during the run.
+    pub turned_implicit: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
     /// largest step.
     recent_steps: std::collections::VecDeque<f64>,
@@ -2014,6 +2028,10 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let result = run.all(case);
     let mut outcome = std::mem::take(&mut run.outcome);
     outcome.failure = result.err();
+    outcome.turned_implicit = run.sim.as_ref().is_some_and(|sim| {
+        sim.options().method == InnerMethod::Automatic
+            && sim.method() != InnerMethod::DormandPrince54
+    });
     // Fixed steps, and steps at the options' `max_step`, advance as far as the options ask,
     // however little.
     let max_step = run

@@ -155,6 +155,12 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
             "zeitner-quadratic-lambda-dopri5-exactQ",
             grid.adaptive(exact, output, quadratic),
         ),
+        // The default inner method: Dormand–Prince until its steps are bound by stability,
+        // then ESDIRK 5(4).
+        method(
+            "zeitner-quadratic-lambda-automatic-exactQ",
+            grid.implicit(InnerMethod::Automatic, 0.0),
+        ),
         // Order 3: below 1e-10 the steps get too many for a benchmark run.
         method(
             "zeitner-quadratic-lambda-esdirk32-exactQ",

@@ -3,7 +3,7 @@
 use crate::measure::{cpu_seconds, median, Allocations};
 use crate::peers;
 use crate::scenes::reference::State;
-use zeitner::{ConstrainedSystem, Options, Simulator, Vector};
+use zeitner::{ConstrainedSystem, Options, Simulator, StopReason, Vector};
 
 use super::methods::Method;
 
@@ -88,17 +88,34 @@ pub fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     stops: &[f64],
     options: Options,
     repeats: usize,
+    // The most steps a run may take before it is reported as given up, if the scene sets one.
+    step_budget: Option<u64>,
 ) -> Row {
+    let budget = step_budget.unwrap_or(u64::MAX);
     let run = |max_g: &mut f64| -> Result<Outcome, String> {
         let mut sim =
             Simulator::new(scene, start.0, start.1, 0.0, options).map_err(|e| e.to_string())?;
         let allocations_before = Allocations::count();
         let cpu_before = cpu_seconds();
+        let mut steps = 0u64;
         for &stop in stops {
             // Through the scene's events: each ends a call.
             while sim.time() < stop {
-                sim.advance_to(stop, |r| *max_g = max_g.max(r.residual.amax()))
+                let reason = sim
+                    .advance_to(stop, |r| {
+                        *max_g = max_g.max(r.residual.amax());
+                        steps += 1;
+                        if steps >= budget {
+                            r.stop();
+                        }
+                    })
                     .map_err(|e| e.to_string())?;
+                if reason == StopReason::ObserverStopped {
+                    return Err(format!(
+                        "gave up after {budget} steps, at t = {:.3e}",
+                        sim.time()
+                    ));
+                }
             }
         }
         let cpu = cpu_seconds() - cpu_before;

@@ -113,14 +113,18 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
 pub(crate) struct Explicit<const ST: usize, D> {
     tableau: &'static Tableau<ST>,
     substeps: u32,
+    /// Whether the steps estimate the stiffness (for `InnerMethod::Automatic`; a method the
+    /// user chose is kept, and spared the estimate).
+    estimates_stiffness: bool,
     storage: PhantomData<D>,
 }
 
 impl<const ST: usize, D> Explicit<ST, D> {
-    pub fn new(tableau: &'static Tableau<ST>, substeps: u32) -> Self {
+    pub fn new(tableau: &'static Tableau<ST>, substeps: u32, estimates_stiffness: bool) -> Self {
         Explicit {
             tableau,
             substeps: substeps.max(1),
+            estimates_stiffness: estimates_stiffness && tableau.stiffness_stages.is_some(),
             storage: PhantomData,
         }
     }
@@ -156,7 +160,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
             hs,
             multipliers,
             (0.0, share),
-            sensitivity,
+            (sensitivity, self.estimates_stiffness),
         )?;
         for k in 1..self.substeps {
             let at = Start {
@@ -174,7 +178,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
                 hs,
                 multipliers,
                 (s0, share),
-                sensitivity,
+                (sensitivity, self.estimates_stiffness),
             )?;
         }
         Ok(end)
@@ -183,7 +187,8 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
 
 /// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
 /// `sensitivity` is set (the derivative of the discrete step map, so that Newton converges
-/// quadratically). `s0` is where the (sub)step starts in the step's `s`, `span` its share.
+/// quadratically). `s0` is where the (sub)step starts in the step's `s`, `span` its share;
+/// with `stiffness`, the step estimates `h|λ|` from the tableau's stiffness stages.
 fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     tableau: &Tableau<ST>,
@@ -191,7 +196,7 @@ fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     h: f64,
     multipliers: &Multipliers<Z, K>,
     (s0, span): (f64, f64),
-    sensitivity: bool,
+    (sensitivity, stiffness): (bool, bool),
 ) -> Result<StepEnd<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -222,7 +227,7 @@ where
         let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
-        match tableau.stiffness_stages {
+        match tableau.stiffness_stages.filter(|_| stiffness) {
             Some((first, _)) if first == i => stiffness_q[0] = q,
             Some((_, second)) if second == i => stiffness_q[1] = q,
             _ => {}
@@ -255,22 +260,39 @@ where
             end.dv_dc[k] += w * dkv[i][k];
         }
     }
-    if let Some(e) = tableau.e {
-        let mut eq = Vector::<N>::zeros();
-        let mut ev = Vector::<N>::zeros();
-        for i in 0..ST {
-            eq += (h * e[i]) * kq[i];
-            ev += (h * e[i]) * kv[i];
-        }
-        end.error = Some((eq, ev));
-    }
-    if let Some((first, second)) = tableau.stiffness_stages {
-        // The state is (q, q'), its slope (q', q''): `h ‖Δ(q', q'')‖ / ‖Δ(q, q')‖` between the
-        // two stages.
-        let (dq, dv) = (stiffness_q[1] - stiffness_q[0], kq[second] - kq[first]);
-        let slope = (kv[second] - kv[first]).norm_squared() + dv.norm_squared();
-        let state = dq.norm_squared() + dv.norm_squared();
-        end.stiffness = (state > 0.0).then(|| h * libm::sqrt(slope / state));
+    end.error = tableau.e.map(|e| embedded_error(h, &e, (&kq, &kv)));
+    if let Some((first, second)) = tableau.stiffness_stages.filter(|_| stiffness) {
+        let slopes = [(kq[first], kv[first]), (kq[second], kv[second])];
+        end.stiffness = stiffness_estimate(h, stiffness_q, slopes);
     }
     Ok(end)
+}
+
+/// `h Σ eᵢ kᵢ` for `q` and `q'`: the embedded solution's difference.
+#[inline(always)]
+fn embedded_error<const N: usize, const ST: usize>(
+    h: f64,
+    e: &[f64; ST],
+    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> (Vector<N>, Vector<N>) {
+    let mut eq = Vector::<N>::zeros();
+    let mut ev = Vector::<N>::zeros();
+    for i in 0..ST {
+        eq += (h * e[i]) * kq[i];
+        ev += (h * e[i]) * kv[i];
+    }
+    (eq, ev)
+}
+
+/// `h ‖Δf‖ / ‖Δy‖` between two stages at the same time, the state `y = (q, q')` and its slope
+/// `f = (q', q'')`: `h|λ|` of the eigenvalue the steps feel most, where the two differ.
+fn stiffness_estimate<const N: usize>(
+    h: f64,
+    [q_first, q_second]: [Vector<N>; 2],
+    [(v_first, a_first), (v_second, a_second)]: [(Vector<N>, Vector<N>); 2],
+) -> Option<f64> {
+    let dv = (v_second - v_first).norm_squared();
+    let slope = (a_second - a_first).norm_squared() + dv;
+    let state = (q_second - q_first).norm_squared() + dv;
+    (state > 0.0).then(|| h * libm::sqrt(slope / state))
 }

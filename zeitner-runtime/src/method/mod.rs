@@ -122,10 +122,11 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     ) -> Self {
         match method.first() {
             InnerMethod::Rk4 { substeps } => {
-                AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps))
+                AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps, false))
             }
             InnerMethod::DormandPrince54 | InnerMethod::Automatic => {
-                AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1))
+                let automatic = method.when_stiff().is_some();
+                AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1, automatic))
             }
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S, Z>(step)),

@@ -43,7 +43,8 @@ const ERROR_ORDER: u32 = 5;
 /// constraints are allowed: their multipliers are the minimum-norm ones, and
 /// [`StartReport::redundant_rows`] names them.
 ///
-/// What it runs: the explicit inner methods (`Rk4`, `DormandPrince54`), constant multipliers,
+/// What it runs: the explicit inner methods (`Rk4`, `DormandPrince54`; `Automatic` is
+/// Dormand–Prince throughout here), constant multipliers,
 /// and Newton on them with the paper's sensitivity `Δq = -τ²/2 M⁻¹GᵀΔp` (`Δq' = -τ M⁻¹GᵀΔp` for
 /// velocity-level rows) solved with `G M⁻¹Gᵀ` of the step start; a diagonal mass. Other options
 /// are refused with [`InvalidOption::NotForSparseSimulator`]. Every Newton update is followed by
