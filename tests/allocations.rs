@@ -8,7 +8,10 @@ use std::cell::Cell;
 
 use common::andrews::Andrews;
 use common::steam_generator::SteamGenerator;
-use zeitner::{InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector};
+use zeitner::storage::Dense;
+use zeitner::{
+    InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector, WithStorage,
+};
 
 struct Counting;
 
@@ -113,6 +116,31 @@ fn ten_thousand_steps_allocate_nothing() {
     )
     .unwrap();
     assert_eq!(allocations_during(&mut sim, 1_000), 0);
+}
+
+/// The default `Automatic` on the damped column (64 coordinates, on the dense storage): its
+/// Dormand–Prince steps are bound by stability within 50 steps and it hands over to ESDIRK 5(4);
+/// neither the hand-over nor the steps allocate. On a thread with a 16 MiB stack: this test's
+/// own frames are unoptimised.
+#[test]
+fn the_default_method_turns_implicit_without_allocating() {
+    let run = std::thread::Builder::new()
+        .stack_size(16 << 20)
+        .spawn(|| {
+            let scene = common::structure::Structure32::paper();
+            let dense = WithStorage::<_, Dense>::new(&scene);
+            let (q0, v0) = scene.start();
+            let (q0, v0) = (Vector::from(q0), Vector::from(v0));
+            let mut sim = Simulator::new(&dense, q0, v0, 0.0, Options::default()).unwrap();
+            let first = sim.method();
+            let allocations = allocations_during(&mut sim, 200);
+            (first, sim.method(), allocations)
+        })
+        .unwrap();
+    let (first, last, allocations) = run.join().unwrap();
+    assert_eq!(first, InnerMethod::DormandPrince54);
+    assert_eq!(last, InnerMethod::Esdirk54);
+    assert_eq!(allocations, 0);
 }
 
 #[test]

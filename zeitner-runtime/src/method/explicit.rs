@@ -207,8 +207,6 @@ where
     let mut kv = [Vector::<N>::zeros(); ST];
     let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
     let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
-    // The arguments `q` of the stiffness estimate's two stages.
-    let mut stiffness_q = [start.q; 2];
     for i in 0..ST {
         let (mut q, mut v) = (start.q, start.v);
         let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
@@ -227,11 +225,6 @@ where
         let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
-        match tableau.stiffness_stages.filter(|_| stiffness) {
-            Some((first, _)) if first == i => stiffness_q[0] = q,
-            Some((_, second)) if second == i => stiffness_q[1] = q,
-            _ => {}
-        }
         if sensitivity && tableau.slope_enters_solution(i) {
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
@@ -260,39 +253,41 @@ where
             end.dv_dc[k] += w * dkv[i][k];
         }
     }
-    end.error = tableau.e.map(|e| embedded_error(h, &e, (&kq, &kv)));
-    if let Some((first, second)) = tableau.stiffness_stages.filter(|_| stiffness) {
-        let slopes = [(kq[first], kv[first]), (kq[second], kv[second])];
-        end.stiffness = stiffness_estimate(h, stiffness_q, slopes);
+    if let Some(e) = tableau.e {
+        let mut eq = Vector::<N>::zeros();
+        let mut ev = Vector::<N>::zeros();
+        for i in 0..ST {
+            eq += (h * e[i]) * kq[i];
+            ev += (h * e[i]) * kv[i];
+        }
+        end.error = Some((eq, ev));
+    }
+    if stiffness {
+        end.stiffness = stiffness_estimate(tableau, &start.q, h, (&kq, &kv));
     }
     Ok(end)
 }
 
-/// `h Σ eᵢ kᵢ` for `q` and `q'`: the embedded solution's difference.
-#[inline(always)]
-fn embedded_error<const N: usize, const ST: usize>(
+/// `h ‖Δf‖ / ‖Δy‖` between the tableau's two stiffness stages (at the same time), the state
+/// `y = (q, q')` and its slope `f = (q', q'')`: `h|λ|` of the eigenvalue the steps feel most.
+/// Apart from the stage loop, which it would slow for every method (the stages' `q` are
+/// formed again from their slopes).
+fn stiffness_estimate<const N: usize, const ST: usize>(
+    tableau: &Tableau<ST>,
+    q0: &Vector<N>,
     h: f64,
-    e: &[f64; ST],
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
-) -> (Vector<N>, Vector<N>) {
-    let mut eq = Vector::<N>::zeros();
-    let mut ev = Vector::<N>::zeros();
-    for i in 0..ST {
-        eq += (h * e[i]) * kq[i];
-        ev += (h * e[i]) * kv[i];
-    }
-    (eq, ev)
-}
-
-/// `h ‖Δf‖ / ‖Δy‖` between two stages at the same time, the state `y = (q, q')` and its slope
-/// `f = (q', q'')`: `h|λ|` of the eigenvalue the steps feel most, where the two differ.
-fn stiffness_estimate<const N: usize>(
-    h: f64,
-    [q_first, q_second]: [Vector<N>; 2],
-    [(v_first, a_first), (v_second, a_second)]: [(Vector<N>, Vector<N>); 2],
 ) -> Option<f64> {
-    let dv = (v_second - v_first).norm_squared();
-    let slope = (a_second - a_first).norm_squared() + dv;
-    let state = (q_second - q_first).norm_squared() + dv;
+    let (first, second) = tableau.stiffness_stages?;
+    let stage_q = |i: usize| {
+        let mut q = *q0;
+        for (j, k) in kq.iter().enumerate().take(i) {
+            q += (h * tableau.a[i][j]) * k;
+        }
+        q
+    };
+    let dv = (kq[second] - kq[first]).norm_squared();
+    let slope = (kv[second] - kv[first]).norm_squared() + dv;
+    let state = (stage_q(second) - stage_q(first)).norm_squared() + dv;
     (state > 0.0).then(|| h * libm::sqrt(slope / state))
 }
