@@ -15,7 +15,8 @@
 //! - `multipliers`: the multipliers over a step, their predictor, and the one Newton on their
 //!   coefficients for every multiplier model;
 //! - `method`: inner one-step methods with their own workspace (explicit tableaux as data);
-//! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller;
+//! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller, the
+//!   stiffness test by which `InnerMethod::Automatic` turns implicit;
 //! - [`events`]: zero crossings of event functions, gaps and contact forces, located on the
 //!   dense output; [`contact`]: which gaps are closed, and the impulse when they close;
 //! - [`output`]: points, step reports, dense output, stop reasons, the observer's view;
