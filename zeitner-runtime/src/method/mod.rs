@@ -315,6 +315,57 @@ mod tests {
         }
     }
 
+    /// Dormand–Prince under `Automatic` estimates `h|λ|` of the stiff mode: a pendulum with
+    /// heavy damping `d` (its swing's fast eigenvalue about `-d/m`), one step from rest at its
+    /// bottom where nothing else moves fast. A method the user chose makes no estimate.
+    #[test]
+    fn dormand_prince_estimates_the_stiff_mode_under_automatic_only() {
+        let system = SpringPendulum {
+            d: 1e4,
+            k: 0.0,
+            ..PENDULUM
+        };
+        let lambda_fast = system.d / system.m;
+        let mut model = Model::new(&system).unwrap();
+        let (q, v) = (
+            Vector::<2>::new(0.0, -system.length),
+            Vector::<2>::new(1.0, 0.0),
+        );
+        model.prepare(&q, 0.0).unwrap();
+        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let lambda = Vector::<1>::new(system.m * system.g / (2.0 * system.length));
+        let multipliers = Multipliers {
+            base: Vector::zeros(),
+            coefficients: [lambda],
+            first_power: 0,
+        };
+        for (method, estimates) in [
+            (InnerMethod::Automatic, true),
+            (InnerMethod::DormandPrince54, false),
+        ] {
+            let h = 2e-4;
+            let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+                method,
+                StepControl::Fixed { step: h },
+            );
+            let end = stepper
+                .integrate(&mut model, &start, h, &multipliers, false)
+                .unwrap();
+            match end.stiffness {
+                Some(h_lambda) => {
+                    assert!(estimates, "{method:?}");
+                    let ratio = h_lambda / (h * lambda_fast);
+                    assert!(
+                        (0.8..1.25).contains(&ratio),
+                        "{method:?}: {h_lambda} against {}",
+                        h * lambda_fast
+                    );
+                }
+                None => assert!(!estimates, "{method:?}"),
+            }
+        }
+    }
+
     fn methods() -> [InnerMethod; 7] {
         [
             InnerMethod::Rk4 { substeps: 1 },
