@@ -17,7 +17,7 @@ use crate::scenes::slider_crank::{self, SliderCrankOnAxis};
 use crate::scenes::spring_support::SpringSupportedPendulum;
 use crate::scenes::steam_generator::SteamGenerator;
 use crate::scenes::structure::Structure100;
-use zeitner::{ConstrainedSystem, Options, Simulator, StepControl, Vector};
+use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, Vector};
 
 use super::large::{large_scene, Large};
 use super::methods::Method;
@@ -437,6 +437,7 @@ fn andrews_scene() -> Result<Scene, String> {
     let t_end = 0.03;
     let scene = Andrews::published();
     let options = Options {
+        method: InnerMethod::DormandPrince54,
         step: StepControl::Adaptive {
             initial_step: 1e-7,
             min_step: 1e-15,
