@@ -4,12 +4,12 @@
 
 mod common;
 
-use common::modal::Modes;
+use common::modal::{ModalState, Modes};
 use common::structure::{Column, Lumped, Structure100, Structure16};
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Simulator, StepControl, StopReason,
-    Vector, WithStorage,
+    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Point, Simulator, StepControl,
+    StopReason, Vector, WithStorage,
 };
 
 /// Runs `scene` to just before the strut engages and to the impact, with `method`: the worst
@@ -34,13 +34,7 @@ where
     let contact = modes.first_contact();
     let t = contact - 1e-3;
     sim.advance_to(t, |_| {}).unwrap();
-    let reference = modes.state(t);
-    let point = sim.last().end;
-    let errors = [
-        relative(point.q.as_slice(), &reference.q),
-        relative(point.v.as_slice(), &reference.v),
-        relative(point.lambda.as_slice(), &reference.lambda),
-    ];
+    let errors = against(&sim.last().end, &modes.state(t));
     let mut impact = f64::NAN;
     sim.advance_to(contact + 1e-2, |step| {
         if step.reason() == StopReason::Impact && impact.is_nan() {
@@ -51,9 +45,14 @@ where
     (errors, impact)
 }
 
+/// The worst relative error of q, q', λ of `point` against the modes' `reference`, each
 /// `max |x - r|` over `max |r|`.
-fn relative(x: &[f64], r: &[f64]) -> f64 {
-    common::relative_error(x, r)
+fn against<const N: usize>(point: &Point<N, 4>, reference: &ModalState) -> [f64; 3] {
+    [
+        common::relative_error(point.q.as_slice(), &reference.q),
+        common::relative_error(point.v.as_slice(), &reference.v),
+        common::relative_error(point.lambda.as_slice(), &reference.lambda),
+    ]
 }
 
 #[test]
@@ -134,13 +133,7 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
             assert_eq!(sim.method(), InnerMethod::DormandPrince54);
             let t = modes.first_contact() - 1e-3;
             sim.advance_to(t, |_| {}).unwrap();
-            let reference = modes.state(t);
-            let point = sim.last().end;
-            let errors = [
-                relative(point.q.as_slice(), &reference.q),
-                relative(point.v.as_slice(), &reference.v),
-                relative(point.lambda.as_slice(), &reference.lambda),
-            ];
+            let errors = against(&sim.last().end, &modes.state(t));
             (errors, sim.method(), sim.statistics().steps)
         })
         .unwrap();

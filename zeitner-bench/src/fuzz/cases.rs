@@ -750,7 +750,7 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
 /// Dormand–Prince or the default `Automatic` (which starts with it), drawn from a stream of its
 /// own like [`implicit_method`], so that every case's model and settings stay as they were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
-    let mut side = Rng::seed_from_u64(rng.clone().random::<u64>() ^ 0xa070_3a71_c0de_5eed);
+    let mut side = side_stream(rng, 0xa070_3a71_c0de_5eed);
     if side.random_bool(0.5) {
         InnerMethod::Automatic
     } else {
@@ -758,13 +758,18 @@ pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
     }
 }
 
+/// A stream of its own for a draw added after the cases were fixed, `salt` telling such draws
+/// apart. Seeded from the next word of `rng`, not drawn from it: the main stream draws that word
+/// next, and its top bits would tie the draw to that one (the tolerance's or the step's range).
+fn side_stream(rng: &Rng, salt: u64) -> Rng {
+    Rng::seed_from_u64(rng.clone().random::<u64>() ^ salt)
+}
+
 /// One of the implicit methods, drawn from a stream of its own: `rng` does not move, so the
 /// cases of the seeds drawn before ESDIRK 4(3) and generalised-α were fuzzed stay the same but
 /// for their implicit method.
 fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
-    // Seeded from the next word, not drawn from it: the main stream draws that word next, and
-    // its top bits would tie the method to that draw (the tolerance's or the step's range).
-    let mut side = Rng::seed_from_u64(rng.clone().random::<u64>() ^ 0x5eed_1a7e_a1f0_e5d1);
+    let mut side = side_stream(rng, 0x5eed_1a7e_a1f0_e5d1);
     match side.random_range(0..4) {
         0 => InnerMethod::Sdirk2,
         1 => InnerMethod::Esdirk32,
