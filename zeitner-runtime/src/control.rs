@@ -344,6 +344,22 @@ pub(crate) fn error_norm<const N: usize>(
     }
 }
 
+/// An error norm tempered by a lower-order one, as DOP853 combines its fifth- and third-order
+/// estimates (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.10): `e₅²/√(e₅² + 0.01 e₃²)`,
+/// which behaves as `e₅` where the two agree and shrinks as `h⁸` where the third-order
+/// estimate dominates.
+pub(crate) fn tempered(high: f64, low: f64) -> f64 {
+    if !(high.is_finite() && low.is_finite()) {
+        return f64::INFINITY;
+    }
+    let denominator = libm::sqrt(high * high + 0.01 * low * low);
+    if denominator > 0.0 {
+        high * high / denominator
+    } else {
+        high
+    }
+}
+
 /// The error from holding the multipliers fixed while `G` turns, which the embedded estimate of
 /// the inner method cannot see since it integrates the frozen-multiplier equations. With
 /// `ΔG = G(t₂) - G(t₁)` and `Δλ = λ(t₂) - λ(t₁)`, to leading order: in `q`,

@@ -179,7 +179,8 @@ pub enum InvalidOption {
     Restitution,
     /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
     SpectralRadius,
-    /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`.
+    /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`,
+    /// `EveryStage` with an implicit method.
     MultipliersForMethod,
     /// Constant multipliers with adaptive steps on a system with velocity-level rows: the step
     /// control cannot hold them to the tolerance.
@@ -243,9 +244,11 @@ impl fmt::Display for InvalidOption {
                  in one step; 0.5 to 0.9 are usual",
             ),
             InvalidOption::MultipliersForMethod => f.write_str(
-                "generalised-α evaluates the multipliers only at the step's ends, where the two \
-                 coefficients of `MultiplierModel::Quadratic` act alike: use `Constant` or \
-                 `Automatic` with it, or another inner method with quadratic multipliers",
+                "the inner method cannot take this multiplier model: generalised-α evaluates the \
+                 multipliers only at the step's ends, where the two coefficients of \
+                 `MultiplierModel::Quadratic` act alike, and `EveryStage` solves them at the \
+                 stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`); use \
+                 `Automatic`, or another inner method",
             ),
             InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(
                 "constant multipliers hold velocity-level rows to order 2 only, through an error \

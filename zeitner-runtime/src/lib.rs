@@ -30,6 +30,9 @@
 
 #[cfg(feature = "alloc")]
 extern crate alloc;
+// Unit tests may use the standard library (the order conditions' trees).
+#[cfg(test)]
+extern crate std;
 
 pub mod consistency;
 pub mod contact;

@@ -13,6 +13,13 @@ pub enum InnerMethod {
     Rk4 { substeps: u32 },
     /// Dormand–Prince 5(4): order 5 with an embedded order-4 error estimate for adaptive steps.
     DormandPrince54,
+    /// Dormand & Prince's 8(5,3) pair as Hairer's DOP853 runs it: order 8, 12 stages, its step
+    /// controlled by the fifth-order estimate tempered by the third-order one (Hairer, Nørsett
+    /// & Wanner, *Solving ODEs I*, II.10). For smooth scenes at tight tolerances. Its
+    /// automatic multiplier model solves the multipliers at every stage
+    /// ([`MultiplierModel::EveryStage`]): multipliers held polynomial over a step would cap
+    /// its order at 5.
+    Dop853,
     /// The method chosen for the scene as it runs: [`InnerMethod::DormandPrince54`] until
     /// Hairer's stiffness test finds its steps bound by stability rather than accuracy (15
     /// accepted steps on the boundary of its stability region), then [`InnerMethod::Esdirk54`]
@@ -97,10 +104,21 @@ impl InnerMethod {
         false
     }
 
+    /// Whether the method solves stage equations (the SDIRK, the ESDIRKs, generalised-α).
+    pub fn is_implicit(self) -> bool {
+        !matches!(
+            self,
+            InnerMethod::Rk4 { .. }
+                | InnerMethod::DormandPrince54
+                | InnerMethod::Dop853
+                | InnerMethod::Automatic
+        )
+    }
+
     /// Whether the method has an embedded error estimate, which adaptive steps need.
     pub fn has_error_estimate(self) -> bool {
         match self {
-            InnerMethod::DormandPrince54 | InnerMethod::Automatic => true,
+            InnerMethod::DormandPrince54 | InnerMethod::Dop853 | InnerMethod::Automatic => true,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk32 | InnerMethod::Esdirk43 | InnerMethod::Esdirk54 => true,
             _ => false,
@@ -162,6 +180,15 @@ pub enum MultiplierModel {
     /// the `quadratic-multipliers` feature.
     #[cfg(feature = "quadratic-multipliers")]
     Quadratic,
+    /// Solved at every stage from the acceleration-level system `G M⁻¹Gᵀ λ = G M⁻¹F + b`
+    /// (the index-1 formulation), with no Newton; each step's end is brought back onto the
+    /// constraints M-orthogonally — onto `ġ = 0` every step, onto `g = 0` where the step left
+    /// it by more than `constraint_tolerance` — and the next step goes on from there. Keeps the
+    /// inner method's full order in `q`, `q'` and `λ`, on position- and velocity-level rows
+    /// alike. Explicit inner methods only (`Rk4`, `DormandPrince54`, `Dop853`; with
+    /// `Automatic`, until it turns implicit, after which the implicit method's automatic model
+    /// applies). The automatic model for `Dop853`.
+    EveryStage,
 }
 
 impl MultiplierModel {
@@ -176,6 +203,12 @@ impl MultiplierModel {
         // Only the quadratic model looks at the rows and the method.
         let _ = (method, position_rows, rows);
         match self {
+            MultiplierModel::Automatic if method == InnerMethod::Dop853 => {
+                MultiplierModel::EveryStage
+            }
+            MultiplierModel::EveryStage if method.is_implicit() => {
+                MultiplierModel::Automatic.resolve(method, position_rows, rows)
+            }
             #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Automatic
                 if (rows > position_rows || method.has_error_estimate()) && !method.ends_only() =>
@@ -407,6 +440,9 @@ impl Options {
             if self.multipliers == MultiplierModel::Quadratic {
                 return refuse(InvalidOption::MultipliersForMethod);
             }
+        }
+        if self.multipliers == MultiplierModel::EveryStage && self.method.is_implicit() {
+            return refuse(InvalidOption::MultipliersForMethod);
         }
         let events = self.events;
         let time_tolerance = positive(events.time_tolerance) && events.time_tolerance <= 1e-3;

@@ -193,6 +193,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
             dq_dc: start.dq_dc,
             dv_dc: start.dv_dc,
             error: None,
+            error_low: None,
             stiffness: None,
         };
         if sensitivity {

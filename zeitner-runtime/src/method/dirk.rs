@@ -556,6 +556,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
             dq_dc: stages.dq[last],
             dv_dc: stages.dv[last],
             error,
+            error_low: None,
             stiffness: None,
         }
     }

@@ -3,6 +3,7 @@
 use core::marker::PhantomData;
 
 use super::{Method, Start, StepEnd};
+use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::polynomial::Multipliers;
@@ -16,6 +17,9 @@ pub(crate) struct Tableau<const S: usize> {
     pub c: [f64; S],
     /// `b - b̂` of the embedded method, if any.
     pub e: Option<[f64; S]>,
+    /// `b - b̂` of a second, lower-order embedded method that tempers the first's estimate
+    /// (DOP853's third-order one), if any.
+    pub e_low: Option<[f64; S]>,
     pub order: u32,
     pub embedded_order: Option<u32>,
     /// Two stages at the same time whose slopes estimate the stiffness `h‖Δf‖/‖Δy‖` (Hairer &
@@ -43,6 +47,7 @@ pub(crate) const RK4: Tableau<4> = Tableau {
     b: [1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
     c: [0.0, 0.5, 0.5, 1.0],
     e: None,
+    e_low: None,
     order: 4,
     embedded_order: None,
     stiffness_stages: None,
@@ -103,6 +108,7 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
         11.0 / 84.0 - 187.0 / 2100.0,
         -1.0 / 40.0,
     ]),
+    e_low: None,
     order: 5,
     embedded_order: Some(4),
     // The last two stages, both at `t + h`; the last one's argument is the solution.
@@ -183,6 +189,24 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
         }
         Ok(end)
     }
+
+    fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        (t, q, v): (f64, &Vector<N>, &Vector<N>),
+        h: f64,
+        first: Option<&Vector<N>>,
+    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+        let hs = h / f64::from(self.substeps);
+        let stiffness = self.estimates_stiffness;
+        let mut end = index1_stages(model, self.tableau, (t, q, v), hs, (first, stiffness));
+        for k in 1..self.substeps {
+            let Ok(at) = &end else { break };
+            let t = t + f64::from(k) * hs;
+            end = index1_stages(model, self.tableau, (t, &at.q, &at.v), hs, (None, false));
+        }
+        Some(end)
+    }
 }
 
 /// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
@@ -236,34 +260,81 @@ where
             }
         }
     }
-    let mut end = StepEnd {
-        q: start.q,
-        v: start.v,
-        dq_dc: start.dq_dc,
-        dv_dc: start.dv_dc,
-        error: None,
-        stiffness: None,
-    };
-    for i in 0..ST {
+    let mut end = solution(tableau, h, (&start.q, &start.v), (&kq, &kv));
+    (end.dq_dc, end.dv_dc) = (start.dq_dc, start.dv_dc);
+    for i in (0..ST).filter(|_| sensitivity) {
         let w = h * tableau.b[i];
-        end.q += w * kq[i];
-        end.v += w * kv[i];
-        for k in (0..K).filter(|_| sensitivity) {
+        for k in 0..K {
             end.dq_dc[k] += w * dkq[i][k];
             end.dv_dc[k] += w * dkv[i][k];
         }
     }
-    if let Some(e) = tableau.e {
-        let mut eq = Vector::<N>::zeros();
-        let mut ev = Vector::<N>::zeros();
-        for i in 0..ST {
-            eq += (h * e[i]) * kq[i];
-            ev += (h * e[i]) * kv[i];
-        }
-        end.error = Some((eq, ev));
-    }
     if stiffness {
         end.stiffness = stiffness_estimate(tableau, &start.q, h, (&kq, &kv));
+    }
+    Ok(end)
+}
+
+/// The step end from the stages' slopes `(q', q'')`, with the embedded estimates; nothing
+/// depends on multiplier coefficients yet.
+#[inline(always)]
+fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
+    tableau: &Tableau<ST>,
+    h: f64,
+    (q0, v0): (&Vector<N>, &Vector<N>),
+    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> StepEnd<N, Z, K> {
+    let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[f64; ST]| {
+        for i in 0..ST {
+            q += (h * w[i]) * kq[i];
+            v += (h * w[i]) * kv[i];
+        }
+        (q, v)
+    };
+    let zero = (Vector::zeros(), Vector::zeros());
+    let (q, v) = combine((*q0, *v0), &tableau.b);
+    StepEnd {
+        q,
+        v,
+        dq_dc: [Matrix::zeros(); K],
+        dv_dc: [Matrix::zeros(); K],
+        error: tableau.e.as_ref().map(|e| combine(zero, e)),
+        error_low: tableau.e_low.as_ref().map(|e| combine(zero, e)),
+        stiffness: None,
+    }
+}
+
+/// One explicit Runge–Kutta step with the multipliers solved at every stage from the
+/// acceleration-level system (index 1, [`crate::MultiplierModel::EveryStage`]). `first` is
+/// the acceleration at the start where it is known (the last step's consistent end point).
+fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    tableau: &Tableau<ST>,
+    (t0, q0, v0): (f64, &Vector<N>, &Vector<N>),
+    h: f64,
+    (first, stiffness): (Option<&Vector<N>>, bool),
+) -> Result<StepEnd<N, Z, 0>, StepError>
+where
+    S: ConstrainedSystem<N, Z>,
+{
+    let mut kq = [Vector::<N>::zeros(); ST];
+    let mut kv = [Vector::<N>::zeros(); ST];
+    for i in 0..ST {
+        let (mut q, mut v) = (*q0, *v0);
+        for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
+            let w = h * tableau.a[i][j];
+            q += w * kq[j];
+            v += w * kv[j];
+        }
+        kq[i] = v;
+        kv[i] = match first.filter(|_| i == 0) {
+            Some(a) => *a,
+            None => consistent_point(model, t0 + tableau.c[i] * h, q, v)?.a,
+        };
+    }
+    let mut end = solution(tableau, h, (q0, v0), (&kq, &kv));
+    if stiffness {
+        end.stiffness = stiffness_estimate(tableau, q0, h, (&kq, &kv));
     }
     Ok(end)
 }
@@ -290,4 +361,114 @@ fn stiffness_estimate<const N: usize, const ST: usize>(
     let slope = (kv[second] - kv[first]).norm_squared() + dv;
     let state = (stage_q(second) - stage_q(first)).norm_squared() + dv;
     (state > 0.0).then(|| h * libm::sqrt(slope / state))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::dop853::DOP853;
+    use super::*;
+    use std::vec::Vec;
+
+    /// Every rooted tree up to `max_order` as `(order, γ, Φ)`, `Φᵢ` its elementary weight at
+    /// stage `i` (Butcher, *Numerical Methods for ODEs*, 2016, ch. 3): a tree is a root with a
+    /// multiset of subtrees, `Φᵢ(t) = Πᵤ (A Φ(u))ᵢ` over the subtrees `u` and
+    /// `γ(t) = |t| Πᵤ γ(u)`. The counts are 1, 1, 2, 4, 9, 20, 48, 115 for orders 1 to 8.
+    fn trees<const S: usize>(a: &[[f64; S]; S], max_order: usize) -> Vec<(usize, f64, [f64; S])> {
+        let mut trees: Vec<(usize, f64, [f64; S])> = Vec::new();
+        for order in 1..=max_order {
+            // Subtrees as non-decreasing indices into the trees of lower order, orders summing
+            // to `order - 1`.
+            let mut stack: Vec<(Vec<usize>, usize)> = std::vec![(Vec::new(), 0)];
+            let lower = trees.len();
+            while let Some((children, from)) = stack.pop() {
+                let used: usize = children.iter().map(|&k| trees[k].0).sum();
+                if used == order - 1 {
+                    let mut phi = [1.0; S];
+                    let mut gamma = order as f64;
+                    for &k in &children {
+                        let (_, g, child) = trees[k];
+                        gamma *= g;
+                        for (i, p) in phi.iter_mut().enumerate() {
+                            *p *= (0..S).map(|j| a[i][j] * child[j]).sum::<f64>();
+                        }
+                    }
+                    trees.push((order, gamma, phi));
+                    continue;
+                }
+                for (k, tree) in trees.iter().enumerate().take(lower).skip(from) {
+                    if used + tree.0 < order {
+                        let mut more = children.clone();
+                        more.push(k);
+                        stack.push((more, k));
+                    }
+                }
+            }
+        }
+        trees
+    }
+
+    /// The largest `|Σ wᵢ Φᵢ(t) - 1/γ(t)|` over the trees of each order, from 1.
+    fn residuals<const S: usize>(tableau: &Tableau<S>, w: &[f64; S], max_order: usize) -> Vec<f64> {
+        let mut worst = std::vec![0.0_f64; max_order];
+        for (order, gamma, phi) in trees(&tableau.a, max_order) {
+            let sum: f64 = (0..S).map(|i| w[i] * phi[i]).sum();
+            worst[order - 1] = worst[order - 1].max((sum - 1.0 / gamma).abs());
+        }
+        worst
+    }
+
+    /// Weights that meet every condition up to `order` and miss one of the next.
+    fn check<const S: usize>(name: &str, tableau: &Tableau<S>, w: &[f64; S], order: usize) {
+        let worst = residuals(tableau, w, order + 1);
+        for (k, r) in worst.iter().enumerate().take(order) {
+            assert!(*r < 1e-13, "{name}: order {} condition off by {r:e}", k + 1);
+        }
+        assert!(worst[order] > 1e-6, "{name}: order {} holds too", order + 1);
+    }
+
+    fn embedded<const S: usize>(tableau: &Tableau<S>, e: Option<[f64; S]>) -> [f64; S] {
+        let e = e.unwrap();
+        core::array::from_fn(|i| tableau.b[i] - e[i])
+    }
+
+    #[test]
+    fn there_are_as_many_trees_as_butcher_counts() {
+        let counts = [1, 1, 2, 4, 9, 20, 48, 115];
+        let trees = trees(&DOP853.a, 8);
+        for (k, count) in counts.iter().enumerate() {
+            assert_eq!(trees.iter().filter(|t| t.0 == k + 1).count(), *count);
+        }
+    }
+
+    #[test]
+    fn tableaux_meet_their_order_conditions() {
+        check("RK4", &RK4, &RK4.b, 4);
+        check("DOPRI5", &DOPRI5, &DOPRI5.b, 5);
+        check("DOPRI5, embedded", &DOPRI5, &embedded(&DOPRI5, DOPRI5.e), 4);
+        check("DOP853", &DOP853, &DOP853.b, 8);
+        check(
+            "DOP853, fifth order",
+            &DOP853,
+            &embedded(&DOP853, DOP853.e),
+            5,
+        );
+        check(
+            "DOP853, third order",
+            &DOP853,
+            &embedded(&DOP853, DOP853.e_low),
+            3,
+        );
+    }
+
+    #[test]
+    fn stages_are_consistent() {
+        for i in 0..12 {
+            let row: f64 = DOP853.a[i].iter().sum();
+            assert!(
+                (row - DOP853.c[i]).abs() < 1e-14,
+                "stage {i}: {row} ≠ {}",
+                DOP853.c[i]
+            );
+        }
+    }
 }

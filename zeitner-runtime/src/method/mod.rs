@@ -12,6 +12,7 @@
 pub(crate) mod alpha;
 #[cfg(feature = "implicit")]
 pub(crate) mod dirk;
+pub(crate) mod dop853;
 pub(crate) mod explicit;
 
 use crate::error::StepError;
@@ -52,6 +53,8 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     pub dv_dc: [Matrix<N, Z>; K],
     /// Embedded error estimate of `q` and `q'`, for methods that have one.
     pub error: Option<(Vector<N>, Vector<N>)>,
+    /// A lower-order estimate that tempers `error` (DOP853's third-order one), if any.
+    pub error_low: Option<(Vector<N>, Vector<N>)>,
     /// `h` times the estimate of the largest eigenvalue's modulus the step saw, for explicit
     /// methods that estimate it: beyond about 3.3 Dormand–Prince's step is bound by its
     /// stability, not its accuracy.
@@ -76,6 +79,20 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError>;
+    /// Integrates one step of size `h` from `(t, q, q')` with the multipliers solved at every
+    /// stage from the acceleration-level system ([`crate::MultiplierModel::EveryStage`]);
+    /// `first` is the acceleration at the start where it is known. `None` for a method that
+    /// cannot (the implicit ones, whose stage equations hold the multipliers given).
+    fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        start: (f64, &Vector<N>, &Vector<N>),
+        h: f64,
+        first: Option<&Vector<N>>,
+    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+        let _ = (model, start, h, first);
+        None
+    }
     /// Factorisations of an iteration matrix so far (implicit methods).
     fn factorizations(&self) -> u64 {
         0
@@ -101,6 +118,7 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
 pub(crate) enum AnyMethod<const N: usize, D: Storage<N>> {
     Explicit4(explicit::Explicit<4, D>),
     Explicit7(explicit::Explicit<7, D>),
+    Explicit12(explicit::Explicit<12, D>),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, D>),
     #[cfg(feature = "implicit")]
@@ -128,6 +146,9 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
                 let automatic = method.when_stiff().is_some();
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1, automatic))
             }
+            InnerMethod::Dop853 => {
+                AnyMethod::Explicit12(explicit::Explicit::new(&dop853::DOP853, 1, false))
+            }
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
@@ -149,7 +170,7 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     /// options that keeps the method keeps its workspace).
     pub fn use_step_control(&mut self, step: StepControl) {
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => {}
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(_) => {}
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
@@ -169,6 +190,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::order(m),
+            AnyMethod::Explicit12(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
@@ -187,6 +209,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::embedded_order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::embedded_order(m),
+            AnyMethod::Explicit12(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
@@ -212,6 +235,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            AnyMethod::Explicit12(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
@@ -225,9 +249,25 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         }
     }
 
+    fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        start: (f64, &Vector<N>, &Vector<N>),
+        h: f64,
+        first: Option<&Vector<N>>,
+    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+        match self {
+            AnyMethod::Explicit4(m) => m.integrate_every_stage(model, start, h, first),
+            AnyMethod::Explicit7(m) => m.integrate_every_stage(model, start, h, first),
+            AnyMethod::Explicit12(m) => m.integrate_every_stage(model, start, h, first),
+            #[cfg(feature = "implicit")]
+            _ => None,
+        }
+    }
+
     fn factorizations(&self) -> u64 {
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => 0,
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(_) => 0,
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]

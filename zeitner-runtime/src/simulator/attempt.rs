@@ -4,7 +4,8 @@
 use super::Simulator;
 use crate::consistency::{end_point, end_report, tangential, Gram};
 use crate::control::{
-    error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, Controller,
+    error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, tempered,
+    Controller,
 };
 use crate::error::{RowSet, StepError};
 use crate::method::{Method, Start, StepEnd};
@@ -121,6 +122,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 };
                 self.attempt_with((h, planned), t_end, multipliers)
             }
+            MultiplierModel::EveryStage => self.attempt_every_stage(h, t_end),
         }
     }
 
@@ -241,13 +243,28 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             )?),
             other => other,
         };
+        let start = (&self.q, &self.v);
         let error = error_norm(
             self.options.step,
-            (&self.q, &self.v),
+            start,
             (&end.q, &end.v),
             estimate,
             (&frozen.0, &frozen.1),
         );
+        let error = match end.error_low {
+            Some(low) => {
+                let none = Vector::zeros();
+                let low = error_norm(
+                    self.options.step,
+                    start,
+                    (&end.q, &end.v),
+                    Some(low),
+                    (&none, &none),
+                );
+                tempered(error, low)
+            }
+            None => error,
+        };
         if !(error <= 1.0) {
             let factor = Controller::rejected(&self.options.controller, error, self.error_order());
             let cause = StepError::StepSizeTooSmall {

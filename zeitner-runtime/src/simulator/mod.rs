@@ -7,6 +7,7 @@
 
 mod attempt;
 mod crossings;
+mod every_stage;
 mod observation;
 mod reconfigure;
 mod start;

@@ -713,7 +713,7 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         options.method,
         InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54 | InnerMethod::Automatic
     ) {
-        return refuse("an implicit inner method");
+        return refuse("an implicit inner method or DOP853");
     }
     // Constant multipliers over adaptive steps leave velocity-level rows off by far more than
     // the tolerance (`Simulator` refuses them too); `Automatic` would choose quadratic ones.
@@ -723,6 +723,7 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     match options.multipliers {
         MultiplierModel::Automatic | MultiplierModel::Constant => Ok(()),
+        MultiplierModel::EveryStage => refuse("multipliers solved at every stage"),
         #[cfg(feature = "quadratic-multipliers")]
         MultiplierModel::Quadratic => refuse("multipliers that vary over a step"),
     }

@@ -1,0 +1,182 @@
+//! Multipliers solved at every stage (`MultiplierModel::EveryStage`, the index-1 equations with
+//! the step ends projected back onto the constraints): the explicit methods keep their full
+//! order in q, q' and λ — DOP853 its 8 — on position-level rows (the pendulum against its
+//! angle ODE) and on a velocity-level row (the knife edge against its closed form); adaptive
+//! steps follow the tolerance on the steam generator against its reduced-coordinate solution.
+
+mod common;
+
+use common::knife_edge::KnifeEdge;
+use common::pendulum::Pendulum;
+use common::reference::{pendulum_released_horizontally, steam_generator};
+use common::relative_error;
+use common::steam_generator::SteamGenerator;
+use zeitner::{
+    InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, StepControl, StepError, Vector,
+};
+
+fn fixed(method: InnerMethod, h: f64) -> Options {
+    Options {
+        method,
+        multipliers: MultiplierModel::EveryStage,
+        step: StepControl::Fixed { step: h },
+        constraint_tolerance: 1e-14,
+        ..Options::default()
+    }
+}
+
+fn assert_orders(label: &str, (coarse, fine): ([f64; 3], [f64; 3]), claim: f64) {
+    for (i, name) in ["q", "q'", "λ"].iter().enumerate() {
+        let order = (coarse[i] / fine[i]).log2();
+        eprintln!(
+            "{label}: {name} order {order:.2} (claimed {claim}; errors {:.1e} → {:.1e})",
+            coarse[i], fine[i]
+        );
+        assert!(
+            (order - claim).abs() <= 0.3,
+            "{label}: {name} order {order:.2}, claimed {claim}"
+        );
+    }
+}
+
+/// The pendulum released horizontally, 1 s in `n` fixed steps: relative errors of q, q', λ.
+fn pendulum_errors(method: InnerMethod, n: u32) -> [f64; 3] {
+    let scene = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let reference = pendulum_released_horizontally(&scene, 1.0);
+    let options = fixed(method, 1.0 / f64::from(n));
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+    sim.advance_to(1.0, |_| {}).unwrap();
+    let end = sim.last().end;
+    [
+        relative_error(end.q.as_slice(), &reference.q),
+        relative_error(end.v.as_slice(), &reference.v),
+        relative_error(end.lambda.as_slice(), &reference.lambda),
+    ]
+}
+
+#[test]
+fn on_position_rows_each_method_keeps_its_order() {
+    let orders = |method, n| (pendulum_errors(method, n), pendulum_errors(method, 2 * n));
+    assert_orders("RK4", orders(InnerMethod::Rk4 { substeps: 1 }, 100), 4.0);
+    assert_orders(
+        "Dormand–Prince",
+        orders(InnerMethod::DormandPrince54, 50),
+        5.0,
+    );
+    // DOP853 reaches the pendulum's rounding within a few steps; the steam generator shows
+    // its order over the range where the errors are well above it.
+    let scene = SteamGenerator::paper();
+    let reference = steam_generator(&scene, 1.0);
+    let errors = |h: f64| {
+        let options = Options {
+            constraint_tolerance: 1e-13,
+            ..fixed(InnerMethod::Dop853, h)
+        };
+        let mut sim =
+            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        // Stop at the kink of the load's ramp.
+        sim.advance_to(scene.rise, |_| {}).unwrap();
+        sim.advance_to(1.0, |_| {}).unwrap();
+        let end = sim.last().end;
+        [
+            relative_error(end.q.as_slice(), &reference.q),
+            relative_error(end.v.as_slice(), &reference.v),
+            relative_error(end.lambda.as_slice(), &reference.lambda),
+        ]
+    };
+    assert_orders("steam generator, DOP853", (errors(0.2), errors(0.1)), 8.0);
+}
+
+/// The knife edge on the inclined plane, 1 s in `n` fixed steps: errors of q, q', λ against
+/// the closed form, each scaled by the size of its reference.
+fn knife_edge_errors(method: InnerMethod, n: u32) -> [f64; 3] {
+    const OMEGA: f64 = 2.0;
+    let scene = KnifeEdge::PAPER;
+    let s = scene.exact(OMEGA, 0.0);
+    let (q, v) = (Vector::from(s.q), Vector::from(s.v));
+    let options = fixed(method, 1.0 / f64::from(n));
+    let mut sim = Simulator::new(&scene, q, v, 0.0, options).unwrap();
+    sim.advance_to(1.0, |_| {}).unwrap();
+    let end = sim.last().end;
+    let exact = scene.exact(OMEGA, 1.0);
+    let a = scene.g * scene.alpha.sin();
+    [
+        (end.q - Vector::from(exact.q)).amax() / (a / (OMEGA * OMEGA)),
+        (end.v - Vector::from(exact.v)).amax() / (a / OMEGA),
+        (end.lambda[0] - exact.lambda).abs() / (scene.m * a),
+    ]
+}
+
+#[test]
+fn on_a_velocity_level_row_dop853_keeps_its_order() {
+    let orders = |method, n| {
+        (
+            knife_edge_errors(method, n),
+            knife_edge_errors(method, 2 * n),
+        )
+    };
+    assert_orders("knife edge, DOP853", orders(InnerMethod::Dop853, 10), 8.0);
+}
+
+/// DOP853 with adaptive steps on the steam generator to 1 s: the error against the
+/// reduced-coordinate solution shrinks with the tolerance and stays near it.
+#[test]
+fn adaptive_steps_follow_the_tolerance() {
+    let scene = SteamGenerator::paper();
+    let reference = steam_generator(&scene, 1.0);
+    let run = |rtol: f64| {
+        let options = Options {
+            method: InnerMethod::Dop853,
+            step: StepControl::Adaptive {
+                initial_step: 1e-3,
+                min_step: 1e-12,
+                max_step: f64::INFINITY,
+                rtol,
+                atol: rtol * 1e-2,
+            },
+            ..Options::default()
+        };
+        let mut sim =
+            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        // Stop at the kink of the load's ramp.
+        sim.advance_to(scene.rise, |_| {}).unwrap();
+        sim.advance_to(1.0, |_| {}).unwrap();
+        let end = sim.last().end;
+        let error = relative_error(end.q.as_slice(), &reference.q)
+            .max(relative_error(end.v.as_slice(), &reference.v))
+            .max(relative_error(end.lambda.as_slice(), &reference.lambda));
+        (error, sim.statistics().steps)
+    };
+    let (loose, loose_steps) = run(1e-6);
+    let (tight, tight_steps) = run(1e-10);
+    eprintln!("rtol 1e-6: error {loose:.1e} in {loose_steps} steps; rtol 1e-10: {tight:.1e} in {tight_steps}");
+    assert!(loose < 1e-4 && tight < 1e-8, "{loose:e}, {tight:e}");
+    assert!(tight < 1e-2 * loose, "{loose:e} → {tight:e}");
+    assert!(tight_steps > loose_steps);
+}
+
+#[test]
+fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
+    let scene = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let options = Options {
+        method: InnerMethod::Esdirk54,
+        ..fixed(InnerMethod::Esdirk54, 1e-2)
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let refused = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options);
+    assert!(matches!(
+        refused.err(),
+        Some(StepError::InvalidOption(
+            InvalidOption::MultipliersForMethod
+        ))
+    ));
+}
