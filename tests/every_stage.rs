@@ -180,3 +180,28 @@ fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
         ))
     ));
 }
+
+/// Held multipliers would cap DOP853 at order 5 where its estimate assumes 8 (the accuracy
+/// fuzzer found runs up to 1e4 times their tolerance off before this refusal).
+#[test]
+fn dop853_refuses_held_multipliers() {
+    let scene = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    for multipliers in [MultiplierModel::Constant, MultiplierModel::Quadratic] {
+        let options = Options {
+            multipliers,
+            ..fixed(InnerMethod::Dop853, 1e-2)
+        };
+        let refused = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options);
+        assert!(matches!(
+            refused.err(),
+            Some(StepError::InvalidOption(
+                InvalidOption::MultipliersForMethod
+            ))
+        ));
+    }
+}

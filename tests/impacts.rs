@@ -1,8 +1,8 @@
 //! Gaps, impacts and events against closed forms: a ball dropped on a floor.
 
 use zeitner::{
-    ConstrainedSystem, DiagonalMass, MassKind, Matrix, Options, SceneSummary, Simulator,
-    StepControl, StopReason, Vector,
+    ConstrainedSystem, DiagonalMass, InnerMethod, MassKind, Matrix, Options, SceneSummary,
+    Simulator, StepControl, StopReason, Vector,
 };
 
 /// A ball of mass `m` above a floor: `y ≥ 0`, restitution `e`; written by hand.
@@ -317,7 +317,20 @@ fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_
     // The event y = -L/2: θ = 60° from the vertical, sin ψ = sin(θ/2)/k.
     let psi = ((std::f64::consts::PI / 6.0).sin() / k).asin();
     let event_time = (l / g).sqrt() * (complete_elliptic_k(k) - incomplete_elliptic_f(psi, k));
+    for method in [InnerMethod::Automatic, InnerMethod::Dop853] {
+        wall_pendulum_with(&pendulum, method, (quarter, event_time));
+    }
+}
+
+/// The wall pendulum's event and impact with `method` (and its automatic multipliers).
+fn wall_pendulum_with(
+    pendulum: &WallPendulum,
+    method: InnerMethod,
+    (quarter, event_time): (f64, f64),
+) {
+    let l = pendulum.length;
     let options = Options {
+        method,
         step: StepControl::Adaptive {
             initial_step: 1e-3,
             min_step: 1e-12,
@@ -329,7 +342,7 @@ fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_
         ..Options::default()
     };
     let mut sim = Simulator::new(
-        &pendulum,
+        pendulum,
         Vector::from([l, 0.0]),
         Vector::zeros(),
         0.0,
@@ -350,7 +363,7 @@ fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_
         (events[1].0, 2.0 * quarter - event_time),
     ] {
         println!(
-            "located {located:.15} s, closed form {expected:.15} s: {:.1e}",
+            "{method:?}: located {located:.15} s, closed form {expected:.15} s: {:.1e}",
             located - expected
         );
         assert!((located - expected).abs() < 1e-10);
@@ -366,7 +379,8 @@ fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_
 
 #[test]
 fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
-    for e in [0.0, 0.5] {
+    let methods = [InnerMethod::Automatic, InnerMethod::Dop853];
+    for (e, method) in [0.0, 0.5].into_iter().flat_map(|e| methods.map(|m| (e, m))) {
         let bar = FallingBar {
             m: 3.0,
             j: 0.4,
@@ -379,7 +393,10 @@ fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
             Vector::from([0.0, 0.3, 0.0]),
             Vector::zeros(),
             0.0,
-            Options::default(),
+            Options {
+                method,
+                ..Options::default()
+            },
         )
         .unwrap();
         let impacts = impacts_until(&mut sim, 0.3);
@@ -412,7 +429,19 @@ fn the_steam_generator_s_strut_engages_when_its_free_flight_says() {
     use common::steam_generator::SteamGeneratorWithGap;
     let scene = SteamGeneratorWithGap::paper();
     let expected = steam_generator_first_contact(&scene);
+    for method in [InnerMethod::Automatic, InnerMethod::Dop853] {
+        strut_engages_with(&scene, method, expected);
+    }
+}
+
+/// The steam generator's first contact with `method` (and its automatic multipliers).
+fn strut_engages_with(
+    scene: &common::steam_generator::SteamGeneratorWithGap,
+    method: InnerMethod,
+    expected: f64,
+) {
     let options = Options {
+        method,
         step: StepControl::Adaptive {
             initial_step: 1e-4,
             min_step: 1e-12,
@@ -422,11 +451,11 @@ fn the_steam_generator_s_strut_engages_when_its_free_flight_says() {
         },
         ..Options::default()
     };
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
     let (impacts, _) = run_until(&mut sim, 0.5);
     let first = impacts[0];
     println!(
-        "first contact at {:.12} s, free-flight reference {expected:.12} s ({:.1e}); strut impulse {:.4e} N s, approach {:.4e} m/s, energy lost {:.4e} J; {} impacts to 0.5 s",
+        "{method:?}: first contact at {:.12} s, free-flight reference {expected:.12} s ({:.1e}); strut impulse {:.4e} N s, approach {:.4e} m/s, energy lost {:.4e} J; {} impacts to 0.5 s",
         first.t,
         first.t - expected,
         first.impulse[2],

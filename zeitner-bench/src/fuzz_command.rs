@@ -127,12 +127,24 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
             let (class, detail) = outcome
                 .failure
                 .map_or(("ok", String::new()), |f| (f.class.name(), f.detail));
-            let storage = match (outcome.sparse_storage, outcome.turned_implicit) {
-                (true, false) => "sparse",
-                (true, true) => "sparse+implicit",
-                (false, false) => "dense",
-                (false, true) => "dense+implicit",
-            };
+            let storage = format!(
+                "{}{}{}",
+                if outcome.sparse_storage {
+                    "sparse"
+                } else {
+                    "dense"
+                },
+                if outcome.turned_implicit {
+                    "+implicit"
+                } else {
+                    ""
+                },
+                if outcome.every_stage {
+                    "+every-stage"
+                } else {
+                    ""
+                },
+            );
             format!(
                 "case {seed} {class} {} {storage} {errors} {detail}",
                 outcome.steps
@@ -286,6 +298,8 @@ struct Tally {
     sparse_steps: u64,
     /// Runs in which `InnerMethod::Automatic` turned to its implicit method.
     turned_implicit: u64,
+    /// Runs with the multipliers solved at every stage.
+    every_stage: u64,
     /// Failure class (or `hang`, `crash`) → (seed, detail).
     failures: BTreeMap<String, Vec<(u64, String)>>,
     /// Typed errors by variant.
@@ -330,8 +344,11 @@ impl Tally {
                     self.sparse_runs += 1;
                     self.sparse_steps += steps;
                 }
-                if storage.ends_with("+implicit") {
+                if storage.contains("+implicit") {
                     self.turned_implicit += 1;
+                }
+                if storage.contains("+every-stage") {
+                    self.every_stage += 1;
                 }
                 for error in errors.split(',').filter(|e| *e != "-") {
                     *self.errors.entry(error.to_string()).or_default() += 1;
@@ -509,6 +526,10 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
         out.push_str(&format!(
             "  runs in which `Automatic` turned implicit: {}\n",
             tally.turned_implicit
+        ));
+        out.push_str(&format!(
+            "  runs with the multipliers solved at every stage: {}\n",
+            tally.every_stage
         ));
         for class in FailureClass::ALL
             .iter()

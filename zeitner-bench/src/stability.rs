@@ -151,6 +151,14 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
             },
         ),
         (
+            "dop853-every-stage",
+            Options {
+                method: InnerMethod::Dop853,
+                step: adaptive,
+                ..base
+            },
+        ),
+        (
             "sdirk2-exactQ",
             Options {
                 method: InnerMethod::Sdirk2,
@@ -194,10 +202,11 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
 }
 
 /// The methods of the report, in its columns' order.
-const METHODS: [&str; 8] = [
+const METHODS: [&str; 9] = [
     "rk4-paperQ",
     "rk4-exactQ",
     "dopri5-adaptive",
+    "dop853-every-stage",
     "sdirk2-exactQ",
     "esdirk32-adaptive",
     "esdirk43-adaptive",

@@ -15,10 +15,10 @@ pub enum InnerMethod {
     DormandPrince54,
     /// Dormand & Prince's 8(5,3) pair as Hairer's DOP853 runs it: order 8, 12 stages, its step
     /// controlled by the fifth-order estimate tempered by the third-order one (Hairer, Nørsett
-    /// & Wanner, *Solving ODEs I*, II.10). For smooth scenes at tight tolerances. Its
-    /// automatic multiplier model solves the multipliers at every stage
-    /// ([`MultiplierModel::EveryStage`]): multipliers held polynomial over a step would cap
-    /// its order at 5.
+    /// & Wanner, *Solving ODEs I*, II.10). For smooth scenes at tight tolerances. It takes
+    /// the multipliers solved at every stage only ([`MultiplierModel::EveryStage`], its
+    /// automatic model): multipliers held polynomial over a step would cap its order at 5,
+    /// which its estimate does not see.
     Dop853,
     /// The method chosen for the scene as it runs: [`InnerMethod::DormandPrince54`] until
     /// Hairer's stiffness test finds its steps bound by stability rather than accuracy (15
@@ -442,6 +442,15 @@ impl Options {
             }
         }
         if self.multipliers == MultiplierModel::EveryStage && self.method.is_implicit() {
+            return refuse(InvalidOption::MultipliersForMethod);
+        }
+        // Held multipliers would cap DOP853 at order 5 while its estimate assumes 8: its steps
+        // would outrun the error they leave (accuracy fuzz: up to 1e4 times the tolerance).
+        let held = !matches!(
+            self.multipliers,
+            MultiplierModel::Automatic | MultiplierModel::EveryStage
+        );
+        if self.method == InnerMethod::Dop853 && held {
             return refuse(InvalidOption::MultipliersForMethod);
         }
         let events = self.events;

@@ -18,11 +18,11 @@ use std::fmt;
 use rand::RngExt;
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, MassKind, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
-    StepError, Vector, WithStorage,
+    ConstrainedSystem, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity, Simulator,
+    StepControl, StepError, Vector, WithStorage,
 };
 
-use super::cases::{explicit_adaptive_method, rng, variant, Rng};
+use super::cases::{explicit_adaptive_method, multiplier_model, rng, variant, Rng};
 use crate::scenes::andrews::{self, Andrews};
 use crate::scenes::contact::Ball;
 use crate::scenes::pendulum::Pendulum;
@@ -124,18 +124,26 @@ impl fmt::Display for AccuracyCase {
     }
 }
 
-/// Sensible options: Dormand–Prince or the default `Automatic`, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
+/// Sensible options: the default `Automatic`, Dormand–Prince or DOP853, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
 /// multiplier model and sensitivity; the defaults otherwise.
 fn sensible_options(rng: &mut Rng) -> Options {
     let rtol = 10f64.powf(rng.random_range(-10.0..=-6.0));
     let atol = rtol * 10f64.powf(rng.random_range(-4.0..=0.0));
+    let method = explicit_adaptive_method(rng);
+    let multipliers = if rng.random_bool(0.5) {
+        MultiplierModel::Constant
+    } else {
+        MultiplierModel::Quadratic
+    };
+    // DOP853 takes only the multipliers solved at every stage, its automatic model.
+    let multipliers = if method == InnerMethod::Dop853 {
+        MultiplierModel::Automatic
+    } else {
+        multipliers
+    };
     Options {
-        method: explicit_adaptive_method(rng),
-        multipliers: if rng.random_bool(0.5) {
-            MultiplierModel::Constant
-        } else {
-            MultiplierModel::Quadratic
-        },
+        method,
+        multipliers: multiplier_model(rng, method, multipliers),
         sensitivity: if rng.random_bool(0.5) {
             Sensitivity::Exact
         } else {
@@ -208,7 +216,11 @@ pub fn generate(seed: u64) -> AccuracyCase {
         && super::cases::sparse_storage(seed);
     let mut options = options;
     if disturbances.sparse {
+        // What the sparse simulator runs.
         options.multipliers = MultiplierModel::Constant;
+        if options.method == InnerMethod::Dop853 {
+            options.method = InnerMethod::DormandPrince54;
+        }
     }
     AccuracyCase {
         seed,
@@ -260,6 +272,11 @@ fn disturbances(
     let set_options_after = pick(rng).filter(|_| rng.random_bool(0.25)).map(|k| {
         let mut changed = *options;
         match rng.random_range(0..3) {
+            // DOP853 takes only its own multipliers: the change is to Dormand–Prince.
+            0 if options.method == InnerMethod::Dop853 => {
+                changed.method = InnerMethod::DormandPrince54;
+                changed.multipliers = MultiplierModel::Quadratic;
+            }
             0 => {
                 changed.multipliers = match options.multipliers {
                     MultiplierModel::Quadratic => MultiplierModel::Constant,

@@ -747,14 +747,31 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
     }
 }
 
-/// Dormand–Prince or the default `Automatic` (which starts with it), drawn from a stream of its
-/// own like [`implicit_method`], so that every case's model and settings stay as they were.
+/// The default `Automatic` (which starts with Dormand–Prince), Dormand–Prince or DOP853, drawn
+/// from a stream of its own like [`implicit_method`], so that every case's model and settings
+/// stay as they were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
     let mut side = side_stream(rng, 0xa070_3a71_c0de_5eed);
     if side.random_bool(0.5) {
         InnerMethod::Automatic
+    } else if side.random_bool(1.0 / 3.0) {
+        InnerMethod::Dop853
     } else {
         InnerMethod::DormandPrince54
+    }
+}
+
+/// `drawn`, or for an explicit method one time in four the multipliers solved at every stage,
+/// drawn from a stream of its own; for DOP853, which refuses held multipliers, its automatic
+/// model nine times in ten.
+pub fn multiplier_model(rng: &Rng, method: InnerMethod, drawn: MultiplierModel) -> MultiplierModel {
+    let mut side = side_stream(rng, 0xe7e2_5a9e_0f1d_ac3b);
+    if method == InnerMethod::Dop853 && side.random_bool(0.9) {
+        MultiplierModel::Automatic
+    } else if !method.is_implicit() && side.random_bool(0.25) {
+        MultiplierModel::EveryStage
+    } else {
+        drawn
     }
 }
 
@@ -791,6 +808,7 @@ fn implicit_method(rng: &Rng, wild: bool) -> InnerMethod {
 fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
     let adaptive = match method {
         InnerMethod::DormandPrince54
+        | InnerMethod::Dop853
         | InnerMethod::Automatic
         | InnerMethod::Esdirk32
         | InnerMethod::Esdirk43
@@ -953,13 +971,14 @@ pub fn options(rng: &mut Rng) -> Options {
         _ if wild => [0, 1001, u32::MAX][rng.random_range(0..3)],
         _ => 2,
     };
+    let multipliers = if rng.random_bool(0.6) {
+        MultiplierModel::Constant
+    } else {
+        MultiplierModel::Quadratic
+    };
     Options {
         method,
-        multipliers: if rng.random_bool(0.6) {
-            MultiplierModel::Constant
-        } else {
-            MultiplierModel::Quadratic
-        },
+        multipliers: multiplier_model(rng, method, multipliers),
         step: step_control(rng, method, wild),
         sensitivity: if rng.random_bool(0.6) {
             Sensitivity::Exact
@@ -1231,6 +1250,8 @@ pub struct Outcome {
     pub sparse_storage: bool,
     /// Whether `InnerMethod::Automatic` turned to its implicit method during the run.
     pub turned_implicit: bool,
+    /// Whether the run's multipliers were solved at every stage (at its end).
+    pub every_stage: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
     /// largest step.
     recent_steps: std::collections::VecDeque<f64>,
@@ -2033,6 +2054,13 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let result = run.all(case);
     let mut outcome = std::mem::take(&mut run.outcome);
     outcome.failure = result.err();
+    outcome.every_stage = run.sim.as_ref().is_some_and(|sim| {
+        let options = sim.options();
+        options
+            .multipliers
+            .resolve(sim.method(), S::POSITION_CONSTRAINTS, Z)
+            == MultiplierModel::EveryStage
+    });
     outcome.turned_implicit = run.sim.as_ref().is_some_and(|sim| {
         sim.options().method == InnerMethod::Automatic
             && sim.method() != InnerMethod::DormandPrince54

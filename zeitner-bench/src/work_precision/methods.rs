@@ -110,6 +110,21 @@ impl Grid {
         .map(|(setting, options)| (setting, Options { method, ..options }))
         .collect()
     }
+
+    /// An adaptive explicit method with the multipliers solved at every stage, its steps not
+    /// capped (with no Newton to converge, nothing asks for a cap; the peers have none).
+    fn every_stage(&self, method: InnerMethod) -> Vec<(String, Options)> {
+        let (exact, output) = (Sensitivity::Exact, VelocityProjection::Output);
+        self.adaptive(exact, output, MultiplierModel::EveryStage)
+            .into_iter()
+            .map(|(setting, mut options)| {
+                if let StepControl::Adaptive { max_step, .. } = &mut options.step {
+                    *max_step = f64::INFINITY;
+                }
+                (setting, Options { method, ..options })
+            })
+            .collect()
+    }
 }
 
 /// Fixed steps of `method` with constant multipliers and the exact sensitivity.
@@ -160,6 +175,15 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
         method(
             "zeitner-quadratic-lambda-automatic-exactQ",
             grid.implicit(InnerMethod::Automatic, 0.0),
+        ),
+        // The index-1 equations at every stage, the step ends projected: no Newton.
+        method(
+            "zeitner-every-stage-dopri5",
+            grid.every_stage(InnerMethod::DormandPrince54),
+        ),
+        method(
+            "zeitner-every-stage-dop853",
+            grid.every_stage(InnerMethod::Dop853),
         ),
         // Order 3: below 1e-10 the steps get too many for a benchmark run.
         method(
