@@ -13,7 +13,7 @@ use crate::multipliers::{self, NewtonOutcome, NewtonSettings};
 use crate::options::{MultiplierModel, StepControl, VelocityProjection};
 use crate::output::Point;
 use crate::polynomial::{Multipliers, StepPolynomial};
-use crate::system::{ConstrainedSystem, Vector};
+use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A step whose constraints hold and whose error is within tolerance.
 pub(super) struct Accepted<const N: usize, const Z: usize> {
@@ -74,6 +74,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// explains the failure better than the failure itself.
     pub(super) fn singular_configuration(&mut self) -> Result<Option<StepError>, StepError> {
         let g = self.model.jacobian(&self.q, &self.v, self.time())?;
+        Ok(self.vanishing_rows(&g, self.time()))
+    }
+
+    /// The error naming the rows of `g` (at time `t`) whose gradients have all but vanished,
+    /// if any: see [`Simulator::singular_configuration`].
+    pub(super) fn vanishing_rows(&self, g: &Matrix<Z, N>, t: f64) -> Option<StepError> {
         let mut rows = RowSet::new(S::POSITION_CONSTRAINTS);
         let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
         let open = self.model.open_gaps();
@@ -82,12 +88,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         for j in (0..Z).filter(|&j| vanishing(j) && !open_gap(j)) {
             rows.insert(j);
         }
-        Ok(
-            (!rows.is_empty()).then_some(StepError::RankDeficientConstraints {
-                t: self.time(),
-                dependent_rows: rows,
-            }),
-        )
+        (!rows.is_empty()).then_some(StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        })
     }
 
     /// One try of a step of size `h` ending at `t_end`, with the options' multiplier model;

@@ -66,6 +66,11 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
         let lambda_start = self.lambda;
         Ok(match self.conclude(end, &held, false, 1, (h, t_end))? {
             Attempt::Accepted(mut step) => {
+                // Nothing fails where a gradient vanishes (a cusp): the index-1 stages step
+                // through it. Named as the held multipliers' Newton names it.
+                if let Some(singular) = self.vanishing_rows(&step.gram.jacobian, t_end) {
+                    return Err(singular);
+                }
                 // The run goes on from the consistent end point; the multipliers' report is
                 // their line from the step's start to its end.
                 step.v = step.point.v;
