@@ -14,7 +14,9 @@
 //!   dense output, [`Simulator::reinitialise`]);
 //! - `multipliers`: the multipliers over a step, their predictor, and the one Newton on their
 //!   coefficients for every multiplier model;
-//! - `method`: inner one-step methods with their own workspace (explicit tableaux as data);
+//! - `method`: inner one-step methods with their own workspace (explicit tableaux as data,
+//!   DOP853's among them; the explicit ones also step with the multipliers solved at every
+//!   stage);
 //! - [`control`]: error norm, frozen-multiplier error estimate, PI step-size controller, the
 //!   stiffness test by which `InnerMethod::Automatic` turns implicit;
 //! - [`events`]: zero crossings of event functions, gaps and contact forces, located on the

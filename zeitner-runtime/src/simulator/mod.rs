@@ -1,9 +1,10 @@
 //! The orchestration of Zeitner's step: predict the multipliers, let Newton correct them until
 //! the constraints hold at the step end, test the error, accept or retry, report. Each of those
 //! is a part of its own (`multipliers`, `method`, [`crate::control`], [`crate::consistency`],
-//! [`crate::output`]); this module puts them in order: one step as a transaction in `attempt`,
-//! what the step found (events, gaps, impacts) in `crossings`, changes made mid-run in
-//! `reconfigure`, and what an observer sees in `observation`.
+//! [`crate::output`]); this module puts them in order: one step as a transaction in `attempt`
+//! (in `every_stage` for the multipliers solved at every stage, which need no Newton), what the
+//! step found (events, gaps, impacts) in `crossings`, changes made mid-run in `reconfigure`, and
+//! what an observer sees in `observation`.
 
 mod attempt;
 mod crossings;
