@@ -138,6 +138,8 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
         method: InnerMethod,
         step: StepControl,
     ) -> Self {
+        // Only the implicit methods solve stage equations against it.
+        let _ = step;
         match method.first() {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps, false))
@@ -169,6 +171,7 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     /// Solves stage equations against the tolerances of `step` from now on (a change of
     /// options that keeps the method keeps its workspace).
     pub fn use_step_control(&mut self, step: StepControl) {
+        let _ = step;
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(_) => {}
             #[cfg(feature = "implicit")]

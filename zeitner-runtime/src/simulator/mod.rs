@@ -29,7 +29,9 @@ use crate::method::{AnyMethod, Method};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::Predictor;
 use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
-use crate::output::{Point, StepReport, StopReason};
+#[cfg(feature = "dense-output")]
+use crate::output::Point;
+use crate::output::{StepReport, StopReason};
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.

@@ -2,9 +2,12 @@
 
 use super::Simulator;
 use crate::contact::Impact;
+#[cfg(feature = "dense-output")]
 use crate::error::StepError;
 use crate::gaps::GapSet;
-use crate::output::{Point, StepReport, StopReason};
+#[cfg(feature = "dense-output")]
+use crate::output::Point;
+use crate::output::{StepReport, StopReason};
 use crate::system::ConstrainedSystem;
 
 /// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
