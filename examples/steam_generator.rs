@@ -26,6 +26,8 @@ enum Method {
     Rk4,
     /// Dormand–Prince 5(4), adaptive.
     Dopri5,
+    /// DOP853, order 8, adaptive (with `--multipliers every-stage`).
+    Dop853,
     /// L-stable SDIRK, order 2 (fixed step).
     Sdirk2,
 }
@@ -36,6 +38,9 @@ enum Lambda {
     Constant,
     /// Quadratic in time over each step (order 5 in q, q' and λ; dopri5 or rk4).
     Quadratic,
+    /// Solved at every stage, the step ends projected (the method's own order; rk4, dopri5,
+    /// dop853).
+    EveryStage,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -85,11 +90,12 @@ fn options(args: &Args) -> Result<Options, String> {
     let method = match args.method {
         Method::Rk4 => InnerMethod::Rk4 { substeps: 1 },
         Method::Dopri5 => InnerMethod::DormandPrince54,
+        Method::Dop853 => InnerMethod::Dop853,
         Method::Sdirk2 => InnerMethod::Sdirk2,
     };
     let step = match (args.step, args.method) {
         (Some(step), _) => StepControl::Fixed { step },
-        (None, Method::Dopri5) => StepControl::Adaptive {
+        (None, Method::Dopri5 | Method::Dop853) => StepControl::Adaptive {
             initial_step: 1e-4,
             min_step: 1e-12,
             max_step: 0.05,
@@ -107,7 +113,14 @@ fn options(args: &Args) -> Result<Options, String> {
     let multipliers = match args.multipliers {
         Lambda::Constant => MultiplierModel::Constant,
         Lambda::Quadratic => MultiplierModel::Quadratic,
+        Lambda::EveryStage => MultiplierModel::EveryStage,
     };
+    if matches!(args.method, Method::Dop853) && !matches!(args.multipliers, Lambda::EveryStage) {
+        return Err(
+            "dop853 takes the multipliers solved at every stage: add --multipliers every-stage"
+                .into(),
+        );
+    }
     Ok(Options {
         method,
         multipliers,
