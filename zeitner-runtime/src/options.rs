@@ -445,7 +445,7 @@ impl Options {
             return refuse(InvalidOption::MultipliersForMethod);
         }
         // Held multipliers would cap DOP853 at order 5 while its estimate assumes 8: its steps
-        // would outrun the error they leave (accuracy fuzz: up to 1e4 times the tolerance).
+        // would outrun the error they leave (accuracy fuzz: up to 3.7e5 times the tolerance).
         let held = !matches!(
             self.multipliers,
             MultiplierModel::Automatic | MultiplierModel::EveryStage
