@@ -8,9 +8,9 @@ mod common;
 
 use common::knife_edge::KnifeEdge;
 use common::pendulum::Pendulum;
-use common::reference::{pendulum_released_horizontally, steam_generator};
-use common::relative_error;
+use common::reference::steam_generator;
 use common::steam_generator::SteamGenerator;
+use common::{relative_errors, steam_generator_errors};
 use zeitner::{
     InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, StepControl, StepError, Vector,
 };
@@ -41,22 +41,7 @@ fn assert_orders(label: &str, (coarse, fine): ([f64; 3], [f64; 3]), claim: f64) 
 
 /// The pendulum released horizontally, 1 s in `n` fixed steps: relative errors of q, q', λ.
 fn pendulum_errors(method: InnerMethod, n: u32) -> [f64; 3] {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
-    let reference = pendulum_released_horizontally(&scene, 1.0);
-    let options = fixed(method, 1.0 / f64::from(n));
-    let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
-    sim.advance_to(1.0, |_| {}).unwrap();
-    let end = sim.last().end;
-    [
-        relative_error(end.q.as_slice(), &reference.q),
-        relative_error(end.v.as_slice(), &reference.v),
-        relative_error(end.lambda.as_slice(), &reference.lambda),
-    ]
+    common::pendulum_errors(fixed(method, 1.0 / f64::from(n)))
 }
 
 #[test]
@@ -70,24 +55,11 @@ fn on_position_rows_each_method_keeps_its_order() {
     );
     // DOP853 reaches the pendulum's rounding within a few steps; the steam generator shows
     // its order over the range where the errors are well above it.
-    let scene = SteamGenerator::paper();
-    let reference = steam_generator(&scene, 1.0);
     let errors = |h: f64| {
-        let options = Options {
+        steam_generator_errors(Options {
             constraint_tolerance: 1e-13,
             ..fixed(InnerMethod::Dop853, h)
-        };
-        let mut sim =
-            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
-        // Stop at the kink of the load's ramp.
-        sim.advance_to(scene.rise, |_| {}).unwrap();
-        sim.advance_to(1.0, |_| {}).unwrap();
-        let end = sim.last().end;
-        [
-            relative_error(end.q.as_slice(), &reference.q),
-            relative_error(end.v.as_slice(), &reference.v),
-            relative_error(end.lambda.as_slice(), &reference.lambda),
-        ]
+        })
     };
     assert_orders("steam generator, DOP853", (errors(0.2), errors(0.1)), 8.0);
 }
@@ -147,9 +119,9 @@ fn adaptive_steps_follow_the_tolerance() {
         sim.advance_to(scene.rise, |_| {}).unwrap();
         sim.advance_to(1.0, |_| {}).unwrap();
         let end = sim.last().end;
-        let error = relative_error(end.q.as_slice(), &reference.q)
-            .max(relative_error(end.v.as_slice(), &reference.v))
-            .max(relative_error(end.lambda.as_slice(), &reference.lambda));
+        let error = relative_errors(&end, &reference)
+            .into_iter()
+            .fold(0.0, f64::max);
         (error, sim.statistics().steps)
     };
     let (loose, loose_steps) = run(1e-6);

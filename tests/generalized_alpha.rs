@@ -7,7 +7,7 @@ mod common;
 
 use common::contact::Ball;
 use common::pendulum::Pendulum;
-use common::reference::{pendulum_released_horizontally, spring_supported_pendulum};
+use common::reference::spring_supported_pendulum;
 use common::relative_error;
 use common::spring_support::SpringSupportedPendulum;
 use zeitner::{
@@ -33,17 +33,7 @@ fn fixed(rho_inf: f64, multipliers: MultiplierModel, step: f64) -> Options {
 
 /// Relative errors of `q`, `q'`, `λ` at t = 1 with fixed steps 1/n.
 fn pendulum_errors(rho_inf: f64, multipliers: MultiplierModel, n: u32) -> [f64; 3] {
-    let options = fixed(rho_inf, multipliers, 1.0 / f64::from(n));
-    let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
-    sim.advance_to(1.0, |_| {}).unwrap();
-    let end = sim.last().end;
-    let reference = pendulum_released_horizontally(&PENDULUM, 1.0);
-    [
-        relative_error(end.q.as_slice(), &reference.q),
-        relative_error(end.v.as_slice(), &reference.v),
-        relative_error(end.lambda.as_slice(), &reference.lambda),
-    ]
+    common::pendulum_errors(fixed(rho_inf, multipliers, 1.0 / f64::from(n)))
 }
 
 fn assert_order_2(label: &str, rho_inf: f64, multipliers: MultiplierModel, ns: [u32; 2]) {

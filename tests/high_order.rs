@@ -7,9 +7,8 @@ mod common;
 
 use common::andrews::{published_end, Andrews};
 use common::pendulum::Pendulum;
-use common::reference::{pendulum_released_horizontally, steam_generator};
-use common::relative_error;
-use common::steam_generator::SteamGenerator;
+use common::reference::pendulum_released_horizontally;
+use common::{pendulum_errors, steam_generator_errors};
 use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, Vector};
 
 fn quadratic(step: StepControl, tolerance: f64) -> Options {
@@ -45,61 +44,13 @@ fn assert_order_within(
 
 #[test]
 fn pendulum_converges_at_order_5_in_positions_velocities_and_multipliers() {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
-    let reference = pendulum_released_horizontally(&scene, 1.0);
-    let errors = |n: u32| {
-        let options = quadratic(
-            StepControl::Fixed {
-                step: 1.0 / f64::from(n),
-            },
-            1e-14,
-        );
-        let mut sim = Simulator::new(
-            &scene,
-            Vector::<2>::new(1.0, 0.0),
-            Vector::zeros(),
-            0.0,
-            options,
-        )
-        .unwrap();
-        sim.advance_to(1.0, |_| {}).unwrap();
-        let end = sim.last().end;
-        [
-            relative_error(end.q.as_slice(), &reference.q),
-            relative_error(end.v.as_slice(), &reference.v),
-            relative_error(end.lambda.as_slice(), &reference.lambda),
-        ]
-    };
+    let errors = |n: u32| quadratic_errors(InnerMethod::Automatic, n);
     assert_order("pendulum", errors(100), errors(200), 2.0, 5.0);
 }
 
 #[test]
 fn steam_generator_converges_at_order_5() {
-    let scene = SteamGenerator::paper();
-    let reference = steam_generator(&scene, 1.0);
-    let errors = |h: f64| {
-        let mut sim = Simulator::new(
-            &scene,
-            Vector::zeros(),
-            Vector::zeros(),
-            0.0,
-            quadratic(StepControl::Fixed { step: h }, 1e-13),
-        )
-        .unwrap();
-        // Stop at the kink of the load's ramp.
-        sim.advance_to(scene.rise, |_| {}).unwrap();
-        sim.advance_to(1.0, |_| {}).unwrap();
-        let end = sim.last().end;
-        [
-            relative_error(end.q.as_slice(), &reference.q),
-            relative_error(end.v.as_slice(), &reference.v),
-            relative_error(end.lambda.as_slice(), &reference.lambda),
-        ]
-    };
+    let errors = |h: f64| steam_generator_errors(quadratic(StepControl::Fixed { step: h }, 1e-13));
     assert_order("steam generator", errors(0.05), errors(0.025), 2.0, 5.0);
 }
 
@@ -197,30 +148,13 @@ fn dense_output_keeps_the_order_between_steps() {
 /// The errors of `method` with quadratic multipliers at `n` fixed steps over 1 s of the pendulum
 /// released horizontally, against its reference: q, q', λ.
 fn quadratic_errors(method: InnerMethod, n: u32) -> [f64; 3] {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
+    let step = StepControl::Fixed {
+        step: 1.0 / f64::from(n),
     };
-    let reference = pendulum_released_horizontally(&scene, 1.0);
-    let options = Options {
+    pendulum_errors(Options {
         method,
-        ..quadratic(
-            StepControl::Fixed {
-                step: 1.0 / f64::from(n),
-            },
-            1e-14,
-        )
-    };
-    let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
-    sim.advance_to(1.0, |_| {}).unwrap();
-    let end = sim.last().end;
-    [
-        relative_error(end.q.as_slice(), &reference.q),
-        relative_error(end.v.as_slice(), &reference.v),
-        relative_error(end.lambda.as_slice(), &reference.lambda),
-    ]
+        ..quadratic(step, 1e-14)
+    })
 }
 
 #[test]

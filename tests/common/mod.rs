@@ -12,3 +12,47 @@ pub fn relative_error(x: &[f64], reference: &[f64]) -> f64 {
         .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     diff / scale
 }
+
+/// The largest relative errors of `q`, `q'` and `λ` of `end` against `reference`.
+pub fn relative_errors<const N: usize, const Z: usize>(
+    end: &zeitner::Point<N, Z>,
+    reference: &reference::State<N, Z>,
+) -> [f64; 3] {
+    [
+        relative_error(end.q.as_slice(), &reference.q),
+        relative_error(end.v.as_slice(), &reference.v),
+        relative_error(end.lambda.as_slice(), &reference.lambda),
+    ]
+}
+
+/// A pendulum of 1 kg on 1 m released horizontally at rest and run to 1 s with `options`:
+/// [`relative_errors`] against its angle ODE.
+pub fn pendulum_errors(options: zeitner::Options) -> [f64; 3] {
+    let scene = pendulum::Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let q0 = zeitner::Vector::<2>::new(1.0, 0.0);
+    let mut sim = zeitner::Simulator::new(&scene, q0, zeitner::Vector::zeros(), 0.0, options)
+        .expect("the pendulum starts");
+    sim.advance_to(1.0, |_| {})
+        .expect("the pendulum runs to 1 s");
+    relative_errors(
+        &sim.last().end,
+        &reference::pendulum_released_horizontally(&scene, 1.0),
+    )
+}
+
+/// The paper's steam generator from rest to 1 s with `options`, stopping at the kink of its
+/// load's ramp: [`relative_errors`] against its reduced-coordinate solution.
+pub fn steam_generator_errors(options: zeitner::Options) -> [f64; 3] {
+    let scene = steam_generator::SteamGenerator::paper();
+    let zero = zeitner::Vector::zeros();
+    let mut sim = zeitner::Simulator::new(&scene, zero, zero, 0.0, options)
+        .expect("the steam generator starts");
+    sim.advance_to(scene.rise, |_| {})
+        .expect("it runs to the kink");
+    sim.advance_to(1.0, |_| {}).expect("it runs to 1 s");
+    relative_errors(&sim.last().end, &reference::steam_generator(&scene, 1.0))
+}

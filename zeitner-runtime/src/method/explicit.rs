@@ -232,13 +232,11 @@ where
     let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
     let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
     for i in 0..ST {
-        let (mut q, mut v) = (start.q, start.v);
+        let (q, v) = stage_state(tableau, i, h, (&start.q, &start.v), (&kq, &kv));
         let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
-        for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
+        for j in (0..i).filter(|&j| sensitivity && tableau.a[i][j] != 0.0) {
             let w = h * tableau.a[i][j];
-            q += w * kq[j];
-            v += w * kv[j];
-            for k in (0..K).filter(|_| sensitivity) {
+            for k in 0..K {
                 dq[k] += w * dkq[j][k];
                 dv[k] += w * dkv[j][k];
             }
@@ -260,8 +258,14 @@ where
             }
         }
     }
-    let mut end = solution(tableau, h, (&start.q, &start.v), (&kq, &kv));
-    (end.dq_dc, end.dv_dc) = (start.dq_dc, start.dv_dc);
+    let start_sensitivity = (start.dq_dc, start.dv_dc);
+    let mut end = solution(
+        tableau,
+        h,
+        (&start.q, &start.v),
+        start_sensitivity,
+        (&kq, &kv),
+    );
     for i in (0..ST).filter(|_| sensitivity) {
         let w = h * tableau.b[i];
         for k in 0..K {
@@ -270,18 +274,37 @@ where
         }
     }
     if stiffness {
-        end.stiffness = stiffness_estimate(tableau, &start.q, h, (&kq, &kv));
+        end.stiffness = stiffness_estimate(tableau, (&start.q, &start.v), h, (&kq, &kv));
     }
     Ok(end)
 }
 
-/// The step end from the stages' slopes `(q', q'')`, with the embedded estimates; nothing
-/// depends on multiplier coefficients yet.
+/// The state `(q, q')` of stage `i` from the start and the earlier stages' slopes `(q', q'')`.
+#[inline(always)]
+fn stage_state<const N: usize, const ST: usize>(
+    tableau: &Tableau<ST>,
+    i: usize,
+    h: f64,
+    (q0, v0): (&Vector<N>, &Vector<N>),
+    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> (Vector<N>, Vector<N>) {
+    let (mut q, mut v) = (*q0, *v0);
+    for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
+        let w = h * tableau.a[i][j];
+        q += w * kq[j];
+        v += w * kv[j];
+    }
+    (q, v)
+}
+
+/// The step end from the stages' slopes `(q', q'')`, with the embedded estimates; its
+/// sensitivities are the start's, to which the caller adds the stages' own.
 #[inline(always)]
 fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
     tableau: &Tableau<ST>,
     h: f64,
     (q0, v0): (&Vector<N>, &Vector<N>),
+    (dq_dc, dv_dc): ([Matrix<N, Z>; K], [Matrix<N, Z>; K]),
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
 ) -> StepEnd<N, Z, K> {
     let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[f64; ST]| {
@@ -296,8 +319,8 @@ fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
     StepEnd {
         q,
         v,
-        dq_dc: [Matrix::zeros(); K],
-        dv_dc: [Matrix::zeros(); K],
+        dq_dc,
+        dv_dc,
         error: tableau.e.as_ref().map(|e| combine(zero, e)),
         error_low: tableau.e_low.as_ref().map(|e| combine(zero, e)),
         stiffness: None,
@@ -320,21 +343,16 @@ where
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
     for i in 0..ST {
-        let (mut q, mut v) = (*q0, *v0);
-        for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
-            let w = h * tableau.a[i][j];
-            q += w * kq[j];
-            v += w * kv[j];
-        }
+        let (q, v) = stage_state(tableau, i, h, (q0, v0), (&kq, &kv));
         kq[i] = v;
         kv[i] = match first.filter(|_| i == 0) {
             Some(a) => *a,
             None => consistent_point(model, t0 + tableau.c[i] * h, q, v)?.a,
         };
     }
-    let mut end = solution(tableau, h, (q0, v0), (&kq, &kv));
+    let mut end = solution(tableau, h, (q0, v0), ([], []), (&kq, &kv));
     if stiffness {
-        end.stiffness = stiffness_estimate(tableau, q0, h, (&kq, &kv));
+        end.stiffness = stiffness_estimate(tableau, (q0, v0), h, (&kq, &kv));
     }
     Ok(end)
 }
@@ -345,18 +363,12 @@ where
 /// formed again from their slopes).
 fn stiffness_estimate<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
-    q0: &Vector<N>,
+    start: (&Vector<N>, &Vector<N>),
     h: f64,
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
 ) -> Option<f64> {
     let (first, second) = tableau.stiffness_stages?;
-    let stage_q = |i: usize| {
-        let mut q = *q0;
-        for (j, k) in kq.iter().enumerate().take(i) {
-            q += (h * tableau.a[i][j]) * k;
-        }
-        q
-    };
+    let stage_q = |i: usize| stage_state(tableau, i, h, start, (kq, kv)).0;
     let dv = (kq[second] - kq[first]).norm_squared();
     let slope = (kv[second] - kv[first]).norm_squared() + dv;
     let state = (stage_q(second) - stage_q(first)).norm_squared() + dv;
