@@ -119,7 +119,7 @@ fn ten_thousand_steps_allocate_nothing() {
 }
 
 /// The default `Automatic` on the damped column (64 coordinates, on the dense storage): its
-/// Dormand–Prince steps are bound by stability within 50 steps and it hands over to ESDIRK 5(4);
+/// DOP853 steps are bound by stability within 50 steps and it hands over to ESDIRK 5(4);
 /// neither the hand-over nor the steps allocate. On a thread with a 16 MiB stack: this test's
 /// own frames are unoptimised.
 #[test]
@@ -134,11 +134,14 @@ fn the_default_method_turns_implicit_without_allocating() {
             let mut sim = Simulator::new(&dense, q0, v0, 0.0, Options::default()).unwrap();
             let first = sim.method();
             let allocations = allocations_during(&mut sim, 200);
-            (first, sim.method(), allocations)
+            let after = sim.statistics().turned_implicit_after;
+            (first, sim.method(), allocations, after)
         })
         .unwrap();
-    let (first, last, allocations) = run.join().unwrap();
-    assert_eq!(first, InnerMethod::DormandPrince54);
+    let (first, last, allocations, after) = run.join().unwrap();
+    println!("turned implicit after {after:?} steps");
+    assert_eq!(first, InnerMethod::Dop853);
+    assert!(after.is_some_and(|steps| steps <= 50), "{after:?}");
     assert_eq!(last, InnerMethod::Esdirk54);
     assert_eq!(allocations, 0);
 }

@@ -280,8 +280,9 @@ fn vectors_of_any_size_are_built_from_arrays() {
     assert_eq!(Vector::<7>::from_column_slice(q.as_slice()), q);
 }
 
-/// `Automatic` says which model it chose: quadratic with adaptive steps, constant with fixed
-/// RK4 and with generalised-α (multipliers at the step ends only); a model asked for is kept.
+/// `Automatic` says which model it chose: solved at every stage with the default DOP853,
+/// quadratic with Dormand–Prince's adaptive steps, constant with fixed RK4 and with
+/// generalised-α (multipliers at the step ends only); a model asked for is kept.
 #[test]
 fn the_simulator_says_which_multiplier_model_automatic_chose() {
     let (q, v) = released();
@@ -290,7 +291,12 @@ fn the_simulator_says_which_multiplier_model_automatic_chose() {
             .unwrap()
             .multiplier_model()
     };
-    assert_eq!(chosen(Options::default()), MultiplierModel::Quadratic);
+    assert_eq!(chosen(Options::default()), MultiplierModel::EveryStage);
+    let dormand_prince = Options {
+        method: InnerMethod::DormandPrince54,
+        ..Options::default()
+    };
+    assert_eq!(chosen(dormand_prince), MultiplierModel::Quadratic);
     let rk4 = Options {
         method: InnerMethod::Rk4 { substeps: 1 },
         step: StepControl::Fixed { step: 1e-3 },

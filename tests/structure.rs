@@ -116,9 +116,9 @@ fn two_hundred_coordinates_on_the_sparse_storage_follow_their_modes() {
     );
 }
 
-/// The default options on the stiff column: Dormand–Prince finds its steps bound by the
-/// overdamped high modes' stability and hands over to ESDIRK 5(4), which follows the modes.
-/// Dormand–Prince alone needs about 500 000 steps here (`h|λ| ≤ 3.3` with `|λ| ≈ βω²_max`).
+/// The default options on the stiff column: DOP853 finds its steps bound by the overdamped
+/// high modes' stability and hands over to ESDIRK 5(4), which follows the modes. Dormand–Prince
+/// alone needs about 500 000 steps here (`h|λ| ≤ 3.3` with `|λ| ≈ βω²_max`).
 #[test]
 fn the_default_method_turns_implicit_on_the_stiff_column() {
     let run = std::thread::Builder::new()
@@ -130,16 +130,23 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
             let options = Options::default();
             let (q0, v0) = (Vector::from(q0), Vector::from(v0));
             let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
-            assert_eq!(sim.method(), InnerMethod::DormandPrince54);
+            assert_eq!(sim.method(), InnerMethod::Dop853);
             let t = modes.first_contact() - 1e-3;
             sim.advance_to(t, |_| {}).unwrap();
             let errors = against(&sim.last().end, &modes.state(t));
-            (errors, sim.method(), sim.statistics().steps)
+            let statistics = sim.statistics();
+            (
+                errors,
+                sim.method(),
+                statistics.steps,
+                statistics.turned_implicit_after,
+            )
         })
         .unwrap();
-    let (errors, method, steps) = run.join().unwrap();
-    println!("errors {errors:?}, {method:?} after {steps} steps");
+    let (errors, method, steps, turned) = run.join().unwrap();
+    println!("errors {errors:?}, {method:?} after {steps} steps, implicit after {turned:?}");
     assert_eq!(method, InnerMethod::Esdirk54);
+    assert!(turned.is_some_and(|steps| steps <= 50), "{turned:?}");
     assert!(steps < 5_000, "{steps}");
     let within = [5e-9, 1e-7, 5e-6];
     assert!(errors.iter().zip(within).all(|(e, w)| *e < w), "{errors:?}");

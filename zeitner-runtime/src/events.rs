@@ -335,11 +335,14 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     if !may_dip {
         return Ok(other_side);
     }
-    for j in 1..=INTERIOR_SAMPLES {
+    let mut samples = [(start.t, first); INTERIOR_SAMPLES + 2];
+    samples[INTERIOR_SAMPLES + 1] = (end.t, *end_values);
+    for (j, slot) in samples.iter_mut().enumerate().take(INTERIOR_SAMPLES + 1).skip(1) {
         let sample = match j == middle {
             true => centre,
             false => values(model, &interpolate(start, end, at(j)), watch)?,
         };
+        *slot = (at(j), sample);
         for index in sampled.clone() {
             let value = value_in(&sample, index);
             if other_side[index].is_none() && (value > 0.0) != watched(index, watch, open).1 {
@@ -347,15 +350,89 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             }
         }
     }
+    for index in sampled {
+        if other_side[index].is_some() {
+            continue;
+        }
+        let was_positive = watched(index, watch, open).1;
+        let function = (index, was_positive);
+        other_side[index] = dip_between_samples(model, (start, end), watch, function, &samples)?;
+    }
     Ok(other_side)
+}
+
+/// Parabolic steps from a sampled minimum towards where a function comes nearest zero.
+const MINIMUM_REFINEMENTS: usize = 6;
+
+/// A point on the other side of zero for a function (`index`, positive at the start or not)
+/// whose samples all stayed on the start's side, if it dips across between them: from its
+/// lowest interior sample (signed so that the start's side is positive), the vertices of the
+/// parabolas through the three points around the lowest one, while they promise to come within
+/// half the lowest value of zero. A long step's samples are far apart (DOP853's), and a crank
+/// that passes its axis and falls back within a few milliseconds falls between them.
+fn dip_between_samples<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (start, end): (&Point<N, Z>, &Point<N, Z>),
+    watch: &Watch,
+    (index, was_positive): (usize, bool),
+    samples: &[(f64, Values); INTERIOR_SAMPLES + 2],
+) -> Result<Option<(f64, f64)>, StepError> {
+    let side = if was_positive { 1.0 } else { -1.0 };
+    let signed = |j: usize| (samples[j].0, side * value_in(&samples[j].1, index));
+    let Some(j) = (0..=INTERIOR_SAMPLES).min_by(|&a, &b| signed(a).1.total_cmp(&signed(b).1))
+    else {
+        return Ok(None);
+    };
+    let mut around = if j == 0 {
+        // Lowest at the start: whether it heads towards zero first, from a probe just after.
+        let t = samples[0].0 + (samples[1].0 - samples[0].0) / 16.0;
+        let value = value_in(&values(model, &interpolate(start, end, t), watch)?, index);
+        if (value > 0.0) != was_positive {
+            return Ok(Some((t, value)));
+        }
+        [signed(0), (t, side * value), signed(1)]
+    } else {
+        [signed(j - 1), signed(j), signed(j + 1)]
+    };
+    for _ in 0..MINIMUM_REFINEMENTS {
+        let [(t0, f0), (t1, f1), (t2, f2)] = around;
+        if !(f1 < f0 && f1 < f2) {
+            return Ok(None);
+        }
+        // The parabola through the three points, in divided differences.
+        let (d01, d12) = ((f1 - f0) / (t1 - t0), (f2 - f1) / (t2 - t1));
+        let curvature = (d12 - d01) / (t2 - t0);
+        let vertex = 0.5 * (t0 + t1) - d01 / (2.0 * curvature);
+        let lowest = f1 - curvature * (vertex - t1) * (vertex - t1);
+        let inside = vertex > t0 && vertex < t2 && vertex != t1;
+        if !(curvature > 0.0 && inside && lowest < 0.5 * f1) {
+            return Ok(None);
+        }
+        let value = value_in(
+            &values(model, &interpolate(start, end, vertex), watch)?,
+            index,
+        );
+        if (value > 0.0) != was_positive {
+            return Ok(Some((vertex, value)));
+        }
+        let at_vertex = (vertex, side * value);
+        around = match (vertex < t1, at_vertex.1 < f1) {
+            (true, true) => [around[0], at_vertex, around[1]],
+            (true, false) => [at_vertex, around[1], around[2]],
+            (false, true) => [around[1], at_vertex, around[2]],
+            (false, false) => [around[0], around[1], at_vertex],
+        };
+    }
+    Ok(None)
 }
 
 /// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
 /// that the start's side is positive) may cross zero within the step: a value on the other side,
-/// or a parabola through them whose minimum inside the step comes within half the smaller end
-/// value of zero.
+/// a start much nearer zero than the rest (it may head towards zero first: a step that ended
+/// just short of a crossing), or a parabola through them whose minimum inside the step comes
+/// within half the smaller end value of zero.
 fn may_cross(a: f64, m: f64, b: f64) -> bool {
-    if !(m > 0.0 && b > 0.0) {
+    if !(m > 0.0 && b > 0.0) || a < 0.5 * m.min(b) {
         return true;
     }
     let curvature = 2.0 * a - 4.0 * m + 2.0 * b;

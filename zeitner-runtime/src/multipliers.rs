@@ -721,6 +721,7 @@ mod tests {
         let mut method =
             AnyMethod::<2, crate::storage::Dense>::new::<crate::testing::SpringPendulum, 1>(
                 InnerMethod::DormandPrince54,
+                crate::options::MultiplierModel::Constant,
                 StepControl::Fixed { step: 0.01 },
             );
         let start = Start::<2, 1, 1>::at(0.0, q, v);

@@ -20,11 +20,13 @@ pub enum InnerMethod {
     /// automatic model): multipliers held polynomial over a step would cap its order at 5,
     /// which its estimate does not see.
     Dop853,
-    /// The method chosen for the scene as it runs: [`InnerMethod::DormandPrince54`] until
-    /// Hairer's stiffness test finds its steps bound by stability rather than accuracy (15
-    /// accepted steps on the boundary of its stability region), then [`InnerMethod::Esdirk54`]
-    /// for the rest of the run, from the state reached. [`crate::Simulator::method`] says which
-    /// one steps now. The default. Without the `implicit` feature, Dormand–Prince throughout.
+    /// The method chosen for the scene as it runs: [`InnerMethod::Dop853`] with the
+    /// multipliers solved at every stage (with held multipliers, which DOP853 refuses,
+    /// [`InnerMethod::DormandPrince54`]) until Hairer's stiffness test finds its steps bound by
+    /// stability rather than accuracy (15 accepted steps on the boundary of its stability
+    /// region), then [`InnerMethod::Esdirk54`] for the rest of the run, from the state reached.
+    /// [`crate::Simulator::method`] says which one steps now, [`crate::Statistics`] when it
+    /// changed. The default. Without the `implicit` feature, the explicit method throughout.
     Automatic,
     /// Alexander's 2-stage SDIRK: order 2, L-stable, stiffly accurate, for stiff forces; fixed
     /// steps. Uses `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
@@ -62,11 +64,15 @@ pub enum InnerMethod {
 }
 
 impl InnerMethod {
-    /// The method a run with this choice starts with: [`InnerMethod::Automatic`] resolved.
-    pub fn first(self) -> InnerMethod {
-        match self {
-            InnerMethod::Automatic => InnerMethod::DormandPrince54,
-            other => other,
+    /// The method a run with this choice and `multipliers` starts with: [`InnerMethod::Automatic`]
+    /// resolved.
+    pub fn first(self, multipliers: MultiplierModel) -> InnerMethod {
+        match (self, multipliers) {
+            (InnerMethod::Automatic, MultiplierModel::Automatic | MultiplierModel::EveryStage) => {
+                InnerMethod::Dop853
+            }
+            (InnerMethod::Automatic, _) => InnerMethod::DormandPrince54,
+            (other, _) => other,
         }
     }
 
@@ -78,6 +84,16 @@ impl InnerMethod {
             return Some(InnerMethod::Esdirk54);
         }
         None
+    }
+
+    /// Whether the method can run with `multipliers`: DOP853 refuses held ones, which would cap
+    /// its order at 5 while its estimate assumes 8.
+    pub fn takes(self, multipliers: MultiplierModel) -> bool {
+        let held = !matches!(
+            multipliers,
+            MultiplierModel::Automatic | MultiplierModel::EveryStage
+        );
+        !(self == InnerMethod::Dop853 && held)
     }
 
     /// Whether the method is one for stiff models (`Esdirk32`, `Esdirk43`, `Esdirk54`), for
@@ -446,11 +462,7 @@ impl Options {
         }
         // Held multipliers would cap DOP853 at order 5 while its estimate assumes 8: its steps
         // would outrun the error they leave (accuracy fuzz: up to 3.7e5 times the tolerance).
-        let held = !matches!(
-            self.multipliers,
-            MultiplierModel::Automatic | MultiplierModel::EveryStage
-        );
-        if self.method == InnerMethod::Dop853 && held {
+        if !self.method.takes(self.multipliers) {
             return refuse(InvalidOption::MultipliersForMethod);
         }
         let events = self.events;

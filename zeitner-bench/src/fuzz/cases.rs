@@ -747,7 +747,8 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
     }
 }
 
-/// The default `Automatic` (which starts with Dormand–Prince), Dormand–Prince or DOP853, drawn
+/// The default `Automatic` (which starts with DOP853, or Dormand–Prince with held multipliers),
+/// Dormand–Prince or DOP853, drawn
 /// from a stream of its own like [`implicit_method`], so that every case's model and settings
 /// stay as they were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
@@ -2061,10 +2062,10 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             .resolve(sim.method(), S::POSITION_CONSTRAINTS, Z)
             == MultiplierModel::EveryStage
     });
-    outcome.turned_implicit = run.sim.as_ref().is_some_and(|sim| {
-        sim.options().method == InnerMethod::Automatic
-            && sim.method() != InnerMethod::DormandPrince54
-    });
+    outcome.turned_implicit = run
+        .sim
+        .as_ref()
+        .is_some_and(|sim| sim.statistics().turned_implicit_after.is_some());
     // Fixed steps, and steps at the options' `max_step`, advance as far as the options ask,
     // however little.
     let max_step = run

@@ -111,6 +111,28 @@ impl Grid {
         .collect()
     }
 
+    /// `Options::default()` at each relative tolerance (`atol = rtol/1000`) and the scene's
+    /// constraint tolerance: what a user gets who chooses nothing else.
+    fn defaults(&self) -> Vec<(String, Options)> {
+        let defaults = Options::default();
+        self.rtols
+            .iter()
+            .map(|&rtol| {
+                let mut options = Options {
+                    constraint_tolerance: self.tolerance,
+                    ..defaults
+                };
+                if let StepControl::Adaptive {
+                    rtol: r, atol: a, ..
+                } = &mut options.step
+                {
+                    (*r, *a) = (rtol, rtol * 1e-3);
+                }
+                (format!("rtol={rtol:.0e}"), options)
+            })
+            .collect()
+    }
+
     /// An adaptive explicit method with the multipliers solved at every stage, its steps not
     /// capped (with no Newton to converge, nothing asks for a cap; the peers have none).
     fn every_stage(&self, method: InnerMethod) -> Vec<(String, Options)> {
@@ -170,12 +192,9 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
             "zeitner-quadratic-lambda-dopri5-exactQ",
             grid.adaptive(exact, output, quadratic),
         ),
-        // The default inner method: Dormand–Prince until its steps are bound by stability,
-        // then ESDIRK 5(4).
-        method(
-            "zeitner-quadratic-lambda-automatic-exactQ",
-            grid.implicit(InnerMethod::Automatic, 0.0),
-        ),
+        // The default options: DOP853 with the multipliers at every stage until its steps are
+        // bound by stability, then ESDIRK 5(4) with quadratic multipliers.
+        method("zeitner-default", grid.defaults()),
         // The index-1 equations at every stage, the step ends projected: no Newton.
         method(
             "zeitner-every-stage-dopri5",

@@ -4,7 +4,12 @@
 // The coefficients keep the digits they are published with.
 #![allow(clippy::excessive_precision)]
 
-use super::explicit::Tableau;
+use super::explicit::{ProbeStates, StiffnessProbe, Tableau};
+use crate::consistency::consistent_point;
+use crate::error::StepError;
+use crate::model::Model;
+use crate::output::Point;
+use crate::system::{ConstrainedSystem, Vector};
 
 /// A row of the tableau from its nonzero entries.
 const fn row(entries: &[(usize, f64)]) -> [f64; 12] {
@@ -145,5 +150,236 @@ pub(crate) const DOP853: Tableau<12> = Tableau {
     // The fifth-order estimate tempered by the third-order one is controlled as of order 7,
     // with DOP853's exponent 1/8.
     embedded_order: Some(7),
-    stiffness_stages: None,
+    // The last stage at `t + h` against the solution's slope, with `dop853.f`'s boundary.
+    stiffness: Some(StiffnessProbe {
+        states: ProbeStates::LastStageAndEnd,
+        boundary: 6.1,
+    }),
 };
+
+/// Slopes of the continuous extension: the step's twelve stages, the end point's (the next
+/// step's first stage) and three extra stages.
+const SLOPES: usize = 16;
+
+/// A row over the continuous extension's slopes from its nonzero entries.
+const fn dense_row(entries: &[(usize, f64)]) -> [f64; SLOPES] {
+    let mut row = [0.0; SLOPES];
+    let mut k = 0;
+    while k < entries.len() {
+        row[entries[k].0] = entries[k].1;
+        k += 1;
+    }
+    row
+}
+
+/// The nodes of the extra stages (`dop853.f`'s `c14`, `c15`, `c16`).
+const EXTRA_C: [f64; 3] = [0.1, 0.2, 0.777777777777777777777777777778];
+
+/// The extra stages' coefficients on the slopes before them (`dop853.f`'s `a14j`, `a15j`,
+/// `a16j`; index 12 is the end point's slope).
+const EXTRA_A: [[f64; SLOPES]; 3] = [
+    dense_row(&[
+        (0, 5.61675022830479523392909219681e-2),
+        (6, 2.53500210216624811088794765333e-1),
+        (7, -2.46239037470802489917441475441e-1),
+        (8, -1.24191423263816360469010140626e-1),
+        (9, 1.5329179827876569731206322685e-1),
+        (10, 8.20105229563468988491666602057e-3),
+        (11, 7.56789766054569976138603589584e-3),
+        (12, -8.298e-3),
+    ]),
+    dense_row(&[
+        (0, 3.18346481635021405060768473261e-2),
+        (5, 2.83009096723667755288322961402e-2),
+        (6, 5.35419883074385676223797384372e-2),
+        (7, -5.49237485713909884646569340306e-2),
+        (10, -1.08347328697249322858509316994e-4),
+        (11, 3.82571090835658412954920192323e-4),
+        (12, -3.40465008687404560802977114492e-4),
+        (13, 1.41312443674632500278074618366e-1),
+    ]),
+    dense_row(&[
+        (0, -4.28896301583791923408573538692e-1),
+        (5, -4.69762141536116384314449447206),
+        (6, 7.68342119606259904184240953878),
+        (7, 4.06898981839711007970213554331),
+        (8, 3.56727187455281109270669543021e-1),
+        (12, -1.39902416515901462129418009734e-3),
+        (13, 2.9475147891527723389556272149),
+        (14, -9.15095847217987001081870187138),
+    ]),
+];
+
+/// The dense output's higher coefficients on the slopes (`dop853.f`'s `d4j` … `d7j`).
+const DENSE_D: [[f64; SLOPES]; 4] = [
+    dense_row(&[
+        (0, -0.84289382761090128651353491142e+01),
+        (5, 0.56671495351937776962531783590),
+        (6, -0.30689499459498916912797304727e+01),
+        (7, 0.23846676565120698287728149680e+01),
+        (8, 0.21170345824450282767155149946e+01),
+        (9, -0.87139158377797299206789907490),
+        (10, 0.22404374302607882758541771650e+01),
+        (11, 0.63157877876946881815570249290),
+        (12, -0.88990336451333310820698117400e-01),
+        (13, 0.18148505520854727256656404962e+02),
+        (14, -0.91946323924783554000451984436e+01),
+        (15, -0.44360363875948939664310572000e+01),
+    ]),
+    dense_row(&[
+        (0, 0.10427508642579134603413151009e+02),
+        (5, 0.24228349177525818288430175319e+03),
+        (6, 0.16520045171727028198505394887e+03),
+        (7, -0.37454675472269020279518312152e+03),
+        (8, -0.22113666853125306036270938578e+02),
+        (9, 0.77334326684722638389603898808e+01),
+        (10, -0.30674084731089398182061213626e+02),
+        (11, -0.93321305264302278729567221706e+01),
+        (12, 0.15697238121770843886131091075e+02),
+        (13, -0.31139403219565177677282850411e+02),
+        (14, -0.93529243588444783865713862664e+01),
+        (15, 0.35816841486394083752465898540e+02),
+    ]),
+    dense_row(&[
+        (0, 0.19985053242002433820987653617e+02),
+        (5, -0.38703730874935176555105901742e+03),
+        (6, -0.18917813819516756882830838328e+03),
+        (7, 0.52780815920542364900561016686e+03),
+        (8, -0.11573902539959630126141871134e+02),
+        (9, 0.68812326946963000169666922661e+01),
+        (10, -0.10006050966910838403183860980e+01),
+        (11, 0.77771377980534432092869265740),
+        (12, -0.27782057523535084065932004339e+01),
+        (13, -0.60196695231264120758267380846e+02),
+        (14, 0.84320405506677161018159903784e+02),
+        (15, 0.11992291136182789328035130030e+02),
+    ]),
+    dense_row(&[
+        (0, -0.25693933462703749003312586129e+02),
+        (5, -0.15418974869023643374053993627e+03),
+        (6, -0.23152937917604549567536039109e+03),
+        (7, 0.35763911791061412378285349910e+03),
+        (8, 0.93405324183624310003907691704e+02),
+        (9, -0.37458323136451633156875139351e+02),
+        (10, 0.10409964950896230045147246184e+03),
+        (11, 0.29840293426660503123344363579e+02),
+        (12, -0.43533456590011143754432175058e+02),
+        (13, 0.96324553959188282948394950600e+02),
+        (14, -0.39177261675615439165231486172e+02),
+        (15, -0.14972683625798562581422125276e+03),
+    ]),
+];
+
+/// The last step DOP853 integrated with the multipliers at every stage, kept for its
+/// continuous extension of order 7 (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.6, as
+/// `dop853.f`'s `contd8`): three more stages and a polynomial in `s = (t - t₀)/h`, formed when
+/// the step is first sampled. The step's own end point closes it (its end and its slope), so
+/// that it meets the projected end.
+pub(crate) struct Continuous<const N: usize> {
+    /// The stages' slopes `(q', q'')`, written by the integration.
+    pub slopes: ([Vector<N>; 12], [Vector<N>; 12]),
+    /// The step the slopes are of: its start `(t, q, q')` and size.
+    step: Option<(f64, Vector<N>, Vector<N>, f64)>,
+    /// The polynomial's coefficients for `(q, q')`, once formed.
+    coefficients: Option<[(Vector<N>, Vector<N>); 8]>,
+}
+
+impl<const N: usize> Continuous<N> {
+    pub fn new() -> Self {
+        Continuous {
+            slopes: ([Vector::zeros(); 12], [Vector::zeros(); 12]),
+            step: None,
+            coefficients: None,
+        }
+    }
+
+    /// The slopes now held are those of the step from `(t, q, q')` of size `h`.
+    pub fn integrated(&mut self, (t, q, v): (f64, &Vector<N>, &Vector<N>), h: f64) {
+        self.step = Some((t, *q, *v, h));
+        self.coefficients = None;
+    }
+
+    /// Forgets the step (a failed integration overwrote some of its slopes).
+    pub fn forget(&mut self) {
+        self.step = None;
+        self.coefficients = None;
+    }
+
+    /// The state at `t` within the step from `start` to `end` (its consistent point), if the
+    /// slopes held are that step's.
+    pub fn state<S: ConstrainedSystem<N, Z>, const Z: usize>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        (start, end): (&Point<N, Z>, &Point<N, Z>),
+        t: f64,
+    ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
+        let (t0, q0, v0, h) = self.step?;
+        // The step the slopes are of starts and ends where the one asked for does (its end to
+        // the rounding of the times).
+        let same_end = (t0 + h - end.t).abs() <= 4.0 * f64::EPSILON * end.t.abs().max(h);
+        if !(t0 == start.t && q0 == start.q && v0 == start.v && same_end) {
+            return None;
+        }
+        if self.coefficients.is_none() {
+            match self.coefficients_for(model, end) {
+                Ok(coefficients) => self.coefficients = Some(coefficients),
+                Err(error) => return Some(Err(error)),
+            }
+        }
+        let c = self.coefficients.as_ref()?;
+        let s = (t - t0) / h;
+        let s1 = 1.0 - s;
+        // `r₁ + s(r₂ + s₁(r₃ + s(r₄ + s₁(r₅ + s(r₆ + s₁(r₇ + s r₈))))))`.
+        let mut q = c[7].0;
+        let mut v = c[7].1;
+        for (k, (cq, cv)) in c.iter().enumerate().take(7).rev() {
+            let w = if k % 2 == 0 { s } else { s1 };
+            q = cq + w * q;
+            v = cv + w * v;
+        }
+        Some(Ok((q, v)))
+    }
+
+    /// `dop853.f`'s `rcont1` … `rcont8`, the three extra stages solved at every stage like
+    /// the step's own.
+    fn coefficients_for<S: ConstrainedSystem<N, Z>, const Z: usize>(
+        &self,
+        model: &mut Model<'_, S, N, Z>,
+        end: &Point<N, Z>,
+    ) -> Result<[(Vector<N>, Vector<N>); 8], StepError> {
+        let (t0, q0, v0, h) = self.step.expect("a step is held");
+        let mut kq = [Vector::<N>::zeros(); SLOPES];
+        let mut kv = [Vector::<N>::zeros(); SLOPES];
+        kq[..12].copy_from_slice(&self.slopes.0);
+        kv[..12].copy_from_slice(&self.slopes.1);
+        (kq[12], kv[12]) = (end.v, end.a);
+        for (i, (c, a)) in EXTRA_C.iter().zip(&EXTRA_A).enumerate() {
+            let (mut q, mut v) = (q0, v0);
+            for (j, &w) in a.iter().enumerate().filter(|(_, &w)| w != 0.0) {
+                q += (h * w) * kq[j];
+                v += (h * w) * kv[j];
+            }
+            kq[13 + i] = v;
+            kv[13 + i] = consistent_point(model, t0 + c * h, q, v)?.a;
+        }
+        let (dq, dv) = (end.q - q0, end.v - v0);
+        let (bq, bv) = (h * kq[0] - dq, h * kv[0] - dv);
+        let mut c = [
+            (q0, v0),
+            (dq, dv),
+            (bq, bv),
+            (dq - h * kq[12] - bq, dv - h * kv[12] - bv),
+            (Vector::zeros(), Vector::zeros()),
+            (Vector::zeros(), Vector::zeros()),
+            (Vector::zeros(), Vector::zeros()),
+            (Vector::zeros(), Vector::zeros()),
+        ];
+        for (row, d) in DENSE_D.iter().enumerate() {
+            for (j, &w) in d.iter().enumerate().filter(|(_, &w)| w != 0.0) {
+                c[4 + row].0 += (h * w) * kq[j];
+                c[4 + row].1 += (h * w) * kv[j];
+            }
+        }
+        Ok(c)
+    }
+}

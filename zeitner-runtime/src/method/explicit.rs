@@ -2,7 +2,7 @@
 
 use core::marker::PhantomData;
 
-use super::{Method, Start, StepEnd};
+use super::{Method, Start, StepEnd, Stiffness};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -22,9 +22,25 @@ pub(crate) struct Tableau<const S: usize> {
     pub e_low: Option<[f64; S]>,
     pub order: u32,
     pub embedded_order: Option<u32>,
-    /// Two stages at the same time whose slopes estimate the stiffness `h‖Δf‖/‖Δy‖` (Hairer &
-    /// Wanner, *Solving ODEs II*, IV.2, as DOPRI5 does), if the tableau has such a pair.
-    pub stiffness_stages: Option<(usize, usize)>,
+    /// How the steps estimate the stiffness, if they can.
+    pub stiffness: Option<StiffnessProbe>,
+}
+
+/// Hairer's stiffness test for a tableau (Hairer & Wanner, *Solving ODEs II*, IV.2): `h‖Δf‖/‖Δy‖`
+/// between two states at the step's end time, `y = (q, q')` and `f = (q', q'')`, estimates `h|λ|`
+/// of the eigenvalue the steps feel most; beyond `boundary`, where the stability region ends on
+/// the negative real axis, the step is bound by stability rather than accuracy.
+pub(crate) struct StiffnessProbe {
+    pub states: ProbeStates,
+    pub boundary: f64,
+}
+
+/// The two states a [`StiffnessProbe`] compares.
+pub(crate) enum ProbeStates {
+    /// Two stages (DOPRI5's last two).
+    Stages(usize, usize),
+    /// The last stage and the step end, whose slope is the next step's first stage (DOP853's).
+    LastStageAndEnd,
 }
 
 impl<const S: usize> Tableau<S> {
@@ -50,7 +66,7 @@ pub(crate) const RK4: Tableau<4> = Tableau {
     e_low: None,
     order: 4,
     embedded_order: None,
-    stiffness_stages: None,
+    stiffness: None,
 };
 
 /// The 5(4) pair of Dormand & Prince (1980), coefficients as in Hairer, Nørsett & Wanner,
@@ -111,8 +127,12 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
     e_low: None,
     order: 5,
     embedded_order: Some(4),
-    // The last two stages, both at `t + h`; the last one's argument is the solution.
-    stiffness_stages: Some((5, 6)),
+    // The last two stages, both at `t + h`; the last one's argument is the solution. The
+    // boundary as DOPRI5 (`dopri5.f`) tests it.
+    stiffness: Some(StiffnessProbe {
+        states: ProbeStates::Stages(5, 6),
+        boundary: 3.25,
+    }),
 };
 
 /// An explicit method: its tableau, taken `substeps` times per step, for storage `D`.
@@ -130,7 +150,7 @@ impl<const ST: usize, D> Explicit<ST, D> {
         Explicit {
             tableau,
             substeps: substeps.max(1),
-            estimates_stiffness: estimates_stiffness && tableau.stiffness_stages.is_some(),
+            estimates_stiffness: estimates_stiffness && tableau.stiffness.is_some(),
             storage: PhantomData,
         }
     }
@@ -193,19 +213,39 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
     fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        (t, q, v): (f64, &Vector<N>, &Vector<N>),
+        start: (f64, &Vector<N>, &Vector<N>),
         h: f64,
         first: Option<&Vector<N>>,
     ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+        let mut slopes = ([Vector::zeros(); ST], [Vector::zeros(); ST]);
+        Some(self.integrate_every_stage_into(model, start, h, first, &mut slopes))
+    }
+}
+
+impl<const ST: usize, D> Explicit<ST, D> {
+    /// [`Method::integrate_every_stage`], the last (sub)step's stage slopes `(q', q'')` left in
+    /// `slopes` (for a continuous extension).
+    pub fn integrate_every_stage_into<S, const N: usize, const Z: usize>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        (t, q, v): (f64, &Vector<N>, &Vector<N>),
+        h: f64,
+        first: Option<&Vector<N>>,
+        slopes: &mut ([Vector<N>; ST], [Vector<N>; ST]),
+    ) -> Result<StepEnd<N, Z, 0>, StepError>
+    where
+        S: ConstrainedSystem<N, Z>,
+    {
         let hs = h / f64::from(self.substeps);
         let stiffness = self.estimates_stiffness;
-        let mut end = index1_stages(model, self.tableau, (t, q, v), hs, (first, stiffness));
+        let tableau = self.tableau;
+        let mut end = index1_stages(model, tableau, (t, q, v), hs, (first, stiffness), slopes);
         for k in 1..self.substeps {
-            let Ok(at) = &end else { break };
+            let at = end?;
             let t = t + f64::from(k) * hs;
-            end = index1_stages(model, self.tableau, (t, &at.q, &at.v), hs, (None, false));
+            end = index1_stages(model, tableau, (t, &at.q, &at.v), hs, (None, false), slopes);
         }
-        Some(end)
+        end
     }
 }
 
@@ -336,43 +376,67 @@ fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
     (t0, q0, v0): (f64, &Vector<N>, &Vector<N>),
     h: f64,
     (first, stiffness): (Option<&Vector<N>>, bool),
+    (kq, kv): &mut ([Vector<N>; ST], [Vector<N>; ST]),
 ) -> Result<StepEnd<N, Z, 0>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
-    let mut kq = [Vector::<N>::zeros(); ST];
-    let mut kv = [Vector::<N>::zeros(); ST];
     for i in 0..ST {
-        let (q, v) = stage_state(tableau, i, h, (q0, v0), (&kq, &kv));
+        let (q, v) = stage_state(tableau, i, h, (q0, v0), (&*kq, &*kv));
         kq[i] = v;
         kv[i] = match first.filter(|_| i == 0) {
             Some(a) => *a,
             None => consistent_point(model, t0 + tableau.c[i] * h, q, v)?.a,
         };
     }
-    let mut end = solution(tableau, h, (q0, v0), ([], []), (&kq, &kv));
+    let mut end = solution(tableau, h, (q0, v0), ([], []), (&*kq, &*kv));
     if stiffness {
-        end.stiffness = stiffness_estimate(tableau, (q0, v0), h, (&kq, &kv));
+        end.stiffness = stiffness_estimate(tableau, (q0, v0), h, (&*kq, &*kv));
     }
     Ok(end)
 }
 
-/// `h ‖Δf‖ / ‖Δy‖` between the tableau's two stiffness stages (at the same time), the state
-/// `y = (q, q')` and its slope `f = (q', q'')`: `h|λ|` of the eigenvalue the steps feel most.
-/// Apart from the stage loop, which it would slow for every method (the stages' `q` are
-/// formed again from their slopes).
+/// The tableau's stiffness probe of a step: the ratio of its two stages, or the last stage kept
+/// for the step end. Apart from the stage loop, which it would slow for every method (the
+/// stages' `q` are formed again from their slopes).
 fn stiffness_estimate<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     start: (&Vector<N>, &Vector<N>),
     h: f64,
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> Option<Stiffness<N>> {
+    let probe = tableau.stiffness.as_ref()?;
+    let stage = |i: usize| {
+        let (q, v) = stage_state(tableau, i, h, start, (kq, kv));
+        (q, v, kv[i])
+    };
+    Some(match probe.states {
+        ProbeStates::Stages(first, second) => Stiffness::Ratio(stiffness_ratio(
+            h,
+            probe.boundary,
+            stage(first),
+            stage(second),
+        )?),
+        ProbeStates::LastStageAndEnd => Stiffness::LastStage {
+            state: stage(ST - 1),
+            h,
+            boundary: probe.boundary,
+        },
+    })
+}
+
+/// `h‖Δf‖/‖Δy‖` between two states `(q, q', q'')` at one time, over the stability `boundary`;
+/// none where they coincide.
+pub(crate) fn stiffness_ratio<const N: usize>(
+    h: f64,
+    boundary: f64,
+    (q1, v1, a1): (Vector<N>, Vector<N>, Vector<N>),
+    (q2, v2, a2): (Vector<N>, Vector<N>, Vector<N>),
 ) -> Option<f64> {
-    let (first, second) = tableau.stiffness_stages?;
-    let stage_q = |i: usize| stage_state(tableau, i, h, start, (kq, kv)).0;
-    let dv = (kq[second] - kq[first]).norm_squared();
-    let slope = (kv[second] - kv[first]).norm_squared() + dv;
-    let state = (stage_q(second) - stage_q(first)).norm_squared() + dv;
-    (state > 0.0).then(|| h * libm::sqrt(slope / state))
+    let dv = (v2 - v1).norm_squared();
+    let slope = (a2 - a1).norm_squared() + dv;
+    let state = (q2 - q1).norm_squared() + dv;
+    (state > 0.0).then(|| h * libm::sqrt(slope / state) / boundary)
 }
 
 #[cfg(test)]

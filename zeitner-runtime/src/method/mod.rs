@@ -17,7 +17,8 @@ pub(crate) mod explicit;
 
 use crate::error::StepError;
 use crate::model::Model;
-use crate::options::{InnerMethod, StepControl};
+use crate::options::{InnerMethod, MultiplierModel, StepControl};
+use crate::output::Point;
 use crate::polynomial::Multipliers;
 use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
@@ -55,10 +56,36 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     pub error: Option<(Vector<N>, Vector<N>)>,
     /// A lower-order estimate that tempers `error` (DOP853's third-order one), if any.
     pub error_low: Option<(Vector<N>, Vector<N>)>,
-    /// `h` times the estimate of the largest eigenvalue's modulus the step saw, for explicit
-    /// methods that estimate it: beyond about 3.3 Dormand–Prince's step is bound by its
-    /// stability, not its accuracy.
-    pub stiffness: Option<f64>,
+    /// What the step tells of the stiffness it felt, for explicit methods that estimate it.
+    pub stiffness: Option<Stiffness<N>>,
+}
+
+/// An explicit step's stiffness estimate (Hairer's test, [`explicit::StiffnessProbe`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Stiffness<const N: usize> {
+    /// `h|λ|` of the eigenvalue the step felt most, over the boundary of the method's stability
+    /// region: above 1 the step is bound by stability, not accuracy.
+    Ratio(f64),
+    /// The last stage's `(q, q', q'')`, at the step's end time, to be compared with the step
+    /// end's once that is known (DOP853's test).
+    LastStage {
+        state: (Vector<N>, Vector<N>, Vector<N>),
+        h: f64,
+        boundary: f64,
+    },
+}
+
+impl<const N: usize> Stiffness<N> {
+    /// The ratio, the step end `(q, q', q'')` given for a last stage's estimate.
+    pub fn ratio(self, end: Option<(Vector<N>, Vector<N>, Vector<N>)>) -> Option<f64> {
+        match (self, end) {
+            (Stiffness::Ratio(ratio), _) => Some(ratio),
+            (Stiffness::LastStage { state, h, boundary }, Some(end)) => {
+                explicit::stiffness_ratio(h, boundary, state, end)
+            }
+            (Stiffness::LastStage { .. }, None) => None,
+        }
+    }
 }
 
 /// One inner method with the workspace it owns, in storage `D`.
@@ -93,6 +120,18 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         let _ = (model, start, h, first);
         None
     }
+    /// The state `(q, q')` at `t` within the step between the points `ends`, by the method's
+    /// continuous extension of its own order (DOP853's, order 7); `None` where it has none or
+    /// its last integration was not that step.
+    fn dense_state<S: ConstrainedSystem<N, Z, Storage = D>>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        ends: (&Point<N, Z>, &Point<N, Z>),
+        t: f64,
+    ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
+        let _ = (model, ends, t);
+        None
+    }
     /// Factorisations of an iteration matrix so far (implicit methods).
     fn factorizations(&self) -> u64 {
         0
@@ -118,7 +157,8 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
 pub(crate) enum AnyMethod<const N: usize, D: Storage<N>> {
     Explicit4(explicit::Explicit<4, D>),
     Explicit7(explicit::Explicit<7, D>),
-    Explicit12(explicit::Explicit<12, D>),
+    /// DOP853, with the last step kept for its continuous extension.
+    Explicit12(explicit::Explicit<12, D>, dop853::Continuous<N>),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, D>),
     #[cfg(feature = "implicit")]
@@ -136,21 +176,24 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     /// adaptive `step`s.
     pub fn new<S: ConstrainedSystem<N, Z, Storage = D>, const Z: usize>(
         method: InnerMethod,
+        multipliers: MultiplierModel,
         step: StepControl,
     ) -> Self {
         // Only the implicit methods solve stage equations against it.
         let _ = step;
-        match method.first() {
+        // Only a method that may change estimates the stiffness.
+        let automatic = method.when_stiff().is_some();
+        match method.first(multipliers) {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps, false))
             }
             InnerMethod::DormandPrince54 | InnerMethod::Automatic => {
-                let automatic = method.when_stiff().is_some();
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1, automatic))
             }
-            InnerMethod::Dop853 => {
-                AnyMethod::Explicit12(explicit::Explicit::new(&dop853::DOP853, 1, false))
-            }
+            InnerMethod::Dop853 => AnyMethod::Explicit12(
+                explicit::Explicit::new(&dop853::DOP853, 1, automatic),
+                dop853::Continuous::new(),
+            ),
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S, Z>(step)),
             #[cfg(feature = "implicit")]
@@ -173,7 +216,7 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     pub fn use_step_control(&mut self, step: StepControl) {
         let _ = step;
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(_) => {}
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(..) => {}
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
@@ -193,7 +236,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::order(m),
-            AnyMethod::Explicit12(m) => Method::<N, Z, D>::order(m),
+            AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
@@ -212,7 +255,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::embedded_order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::embedded_order(m),
-            AnyMethod::Explicit12(m) => Method::<N, Z, D>::embedded_order(m),
+            AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
@@ -238,7 +281,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
-            AnyMethod::Explicit12(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            AnyMethod::Explicit12(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
@@ -262,15 +305,35 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => m.integrate_every_stage(model, start, h, first),
             AnyMethod::Explicit7(m) => m.integrate_every_stage(model, start, h, first),
-            AnyMethod::Explicit12(m) => m.integrate_every_stage(model, start, h, first),
+            AnyMethod::Explicit12(m, continuous) => {
+                let slopes = &mut continuous.slopes;
+                let end = m.integrate_every_stage_into(model, start, h, first, slopes);
+                match end {
+                    Ok(_) => continuous.integrated((start.0, start.1, start.2), h),
+                    Err(_) => continuous.forget(),
+                }
+                Some(end)
+            }
             #[cfg(feature = "implicit")]
+            _ => None,
+        }
+    }
+
+    fn dense_state<S: ConstrainedSystem<N, Z, Storage = D>>(
+        &mut self,
+        model: &mut Model<'_, S, N, Z>,
+        ends: (&Point<N, Z>, &Point<N, Z>),
+        t: f64,
+    ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
+        match self {
+            AnyMethod::Explicit12(_, continuous) => continuous.state(model, ends, t),
             _ => None,
         }
     }
 
     fn factorizations(&self) -> u64 {
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(_) => 0,
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(..) => 0,
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
@@ -304,9 +367,13 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::options::MultiplierModel;
     use crate::polynomial::Multipliers;
     use crate::storage::Dense;
     use crate::testing::{swinging, SpringPendulum, PENDULUM};
+
+    /// The tests integrate with held multipliers, which `Automatic` meets with Dormand–Prince.
+    const HELD: MultiplierModel = MultiplierModel::Constant;
 
     /// The exact sensitivity of a method's step map against central differences of the map,
     /// for every coefficient of the multipliers.
@@ -325,8 +392,11 @@ mod tests {
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, K>::at(0.0, q, v);
         let h = 0.05;
-        let mut stepper =
-            AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(method, StepControl::Fixed { step: h });
+        let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+            method,
+            HELD,
+            StepControl::Fixed { step: h },
+        );
         if let Some(memory) = memory {
             Method::<2, 1, Dense>::restart(&mut stepper, || Ok(memory));
         }
@@ -389,14 +459,17 @@ mod tests {
             let h = 2e-4;
             let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
                 method,
+                HELD,
                 StepControl::Fixed { step: h },
             );
             let end = stepper
                 .integrate(&mut model, &start, h, &multipliers, false)
                 .unwrap();
-            match end.stiffness {
-                Some(h_lambda) => {
+            let boundary = explicit::DOPRI5.stiffness.as_ref().unwrap().boundary;
+            match end.stiffness.and_then(|s| s.ratio(None)) {
+                Some(over_boundary) => {
                     assert!(estimates, "{method:?}");
+                    let h_lambda = over_boundary * boundary;
                     let ratio = h_lambda / (h * lambda_fast);
                     assert!(
                         (0.8..1.25).contains(&ratio),
@@ -501,6 +574,7 @@ mod tests {
         };
         let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
             InnerMethod::GeneralizedAlpha { rho_inf: 0.6 },
+            HELD,
             FIXED,
         );
         let a0 = model
@@ -526,11 +600,13 @@ mod tests {
     #[test]
     fn orders_are_those_of_the_tableaux() {
         let order = |m: InnerMethod| {
-            Method::<2, 1, Dense>::order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(m, FIXED))
+            Method::<2, 1, Dense>::order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+                m, HELD, FIXED,
+            ))
         };
         let embedded = |m: InnerMethod| {
             Method::<2, 1, Dense>::embedded_order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
-                m, FIXED,
+                m, HELD, FIXED,
             ))
         };
         assert_eq!(order(InnerMethod::Rk4 { substeps: 1 }), 4);

@@ -26,8 +26,10 @@ pub(super) struct Accepted<const N: usize, const Z: usize> {
     pub(super) error_norm: f64,
     /// `G` and `G M⁻¹Gᵀ` at the end point.
     pub(super) gram: Gram<N, Z>,
-    /// The inner method's `h|λ|` estimate, if it makes one.
+    /// The inner method's `h|λ|` over its stability boundary, if it estimates it.
     pub(super) stiffness: Option<f64>,
+    /// Whether a constraint gradient had all but vanished at the end point (a cusp).
+    pub(super) singular_end: bool,
 }
 
 pub(super) enum Attempt<const N: usize, const Z: usize> {
@@ -285,7 +287,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             integrations,
             error_norm: error,
             gram,
-            stiffness: end.stiffness,
+            stiffness: end.stiffness.and_then(|s| s.ratio(None)),
+            singular_end: false,
         }))
     }
 
@@ -312,6 +315,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         landing: bool,
     ) -> Result<(), StepError> {
         let step_multipliers = step.multipliers.at_end();
+        self.pending.singular = step.singular_end;
         let mut reported = step.point;
         if self.options.velocity_projection == VelocityProjection::Off {
             // Raw output: velocities and multipliers as the paper has them.

@@ -192,6 +192,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if let Some(reason) = self.next_event() {
             return Ok(Some(reason));
         }
+        if self.pending.singular {
+            if let Some(singular) = self.singular_configuration()? {
+                return Err(singular);
+            }
+        }
         if self.pending.impact.is_empty() {
             return Ok(None);
         }

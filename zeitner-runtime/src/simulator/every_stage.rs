@@ -64,16 +64,20 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             first_power: 0,
         };
         let lambda_start = self.lambda;
+        // DOP853's estimate compares its last stage with the end point's slope, known below.
+        let stiffness = end.stiffness.take();
         Ok(match self.conclude(end, &held, false, 1, (h, t_end))? {
             Attempt::Accepted(mut step) => {
-                // Nothing fails where a gradient vanishes (a cusp): the index-1 stages step
-                // through it. Named as the held multipliers' Newton names it.
-                if let Some(singular) = self.vanishing_rows(&step.gram.jacobian, t_end) {
-                    return Err(singular);
-                }
+                // Nothing fails where a gradient vanishes (a cusp): the index-1 stages would
+                // step through it. The step that reached it is kept, and the next one names it
+                // there, as the held multipliers' Newton does.
+                let jacobian = &step.gram.jacobian;
+                step.singular_end = self.vanishing_rows(jacobian, t_end).is_some();
                 // The run goes on from the consistent end point; the multipliers' report is
                 // their line from the step's start to its end.
                 step.v = step.point.v;
+                let point = &step.point;
+                step.stiffness = stiffness.and_then(|s| s.ratio(Some((point.q, point.v, point.a))));
                 let slope = step.point.lambda - lambda_start;
                 step.multipliers = StepPolynomial {
                     c: [lambda_start, slope, Vector::zeros()],

@@ -46,6 +46,9 @@ pub struct Statistics {
     pub max_newton_iterations: u32,
     /// Factorisations of an implicit method's iteration matrix.
     pub iteration_matrix_factorizations: u64,
+    /// The accepted steps after which [`InnerMethod::Automatic`] found the run stiff and went
+    /// on with its implicit method; none while it has not.
+    pub turned_implicit_after: Option<u64>,
     pub evaluations: Evaluations,
 }
 
@@ -99,6 +102,9 @@ struct Pending {
     events: u32,
     rising: u32,
     impact: GapSet,
+    /// The last step ended where a constraint gradient had all but vanished (a cusp), which
+    /// the multipliers solved at every stage would step through: the next step names it.
+    singular: bool,
 }
 
 /// How many times a step is integrated again to end nearer a crossing before it is taken as it
@@ -149,8 +155,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
-            method: AnyMethod::new::<S, Z>(options.method, options.step),
-            active: options.method.first(),
+            method: AnyMethod::new::<S, Z>(options.method, options.multipliers, options.step),
+            active: options.method.first(options.multipliers),
             stiffness: StiffnessTest::default(),
             options,
             controller: Controller::new(),
@@ -192,8 +198,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !(t >= start && t <= end) {
             return Err(StepError::InvalidOption(InvalidOption::SampleTime));
         }
-        let point = self.last.sample(t);
-        crate::consistency::consistent_point(&mut self.model, t, point.q, point.v)
+        // The method's own continuous extension where it has one (DOP853's), else the quintic
+        // Hermite interpolant between the step's consistent ends.
+        let ends = (&self.last.start, &self.last.end);
+        let model = &mut self.model;
+        let (q, v) = match Method::<N, Z, S::Storage>::dense_state(&mut self.method, model, ends, t)
+        {
+            Some(state) => state?,
+            None => {
+                let point = self.last.sample(t);
+                (point.q, point.v)
+            }
+        };
+        crate::consistency::consistent_point(&mut self.model, t, q, v)
     }
 
     /// The last accepted step (at the start: the consistent initial point).
@@ -331,6 +348,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         self.predictor.reset();
         self.state_gram = None;
+        self.pending.singular = false;
         Method::<N, Z, S::Storage>::restart(&mut self.method, || Ok(point.a));
         if forget == Forget::Steps {
             self.t_carry = 0.0;

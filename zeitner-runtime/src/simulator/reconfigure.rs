@@ -22,14 +22,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // that no step starts off its constraints (an open gap's level included).
         let reproject =
             tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)?;
-        let new_method = options.method != self.options.method;
+        // A method `Automatic` chose that the new multipliers do not suit starts afresh too.
+        let new_method =
+            options.method != self.options.method || !self.active.takes(options.multipliers);
         let previous_method = new_method.then(|| {
-            let method = AnyMethod::new::<S, Z>(options.method, options.step);
+            let method = AnyMethod::new::<S, Z>(options.method, options.multipliers, options.step);
             core::mem::replace(&mut self.method, method)
         });
         let previous_active = self.active;
         if new_method {
-            self.active = options.method.first();
+            self.active = options.method.first(options.multipliers);
         }
         let previous_options = core::mem::replace(&mut self.options, options);
         let changed = match (reproject, new_method) {
@@ -153,11 +155,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let Some(next) = self.options.method.when_stiff() else {
             return;
         };
-        let method = AnyMethod::new::<S, Z>(next, self.options.step);
+        let method = AnyMethod::new::<S, Z>(next, self.options.multipliers, self.options.step);
         let previous = core::mem::replace(&mut self.method, method);
         let factorizations = Method::<N, Z, S::Storage>::factorizations(&previous);
         self.statistics.iteration_matrix_factorizations += factorizations;
         self.active = next;
+        self.statistics.turned_implicit_after = Some(self.statistics.steps);
         self.stiffness = StiffnessTest::default();
         self.restart_method();
     }
