@@ -158,6 +158,15 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
                 ..base
             },
         ),
+        // The default method and multipliers: DOP853 until stiff, then ESDIRK 5(4).
+        (
+            "automatic-adaptive",
+            Options {
+                method: InnerMethod::Automatic,
+                step: adaptive,
+                ..base
+            },
+        ),
         (
             "sdirk2-exactQ",
             Options {
@@ -202,11 +211,12 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
 }
 
 /// The methods of the report, in its columns' order.
-const METHODS: [&str; 9] = [
+const METHODS: [&str; 10] = [
     "rk4-paperQ",
     "rk4-exactQ",
     "dopri5-adaptive",
     "dop853-every-stage",
+    "automatic-adaptive",
     "sdirk2-exactQ",
     "esdirk32-adaptive",
     "esdirk43-adaptive",
@@ -752,7 +762,7 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          typed error, named here, and the simulator keeps its last accepted state. Methods: \
          `rk4-paperQ` (the paper as published), `rk4-exactQ`, `dopri5-adaptive` (rtol 1e-6, the step \
          below is the initial one), `dop853-every-stage` (DOP853 with the multipliers solved at \
-         every stage, rtol 1e-6), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
+         every stage, rtol 1e-6), `automatic-adaptive` (the default method and multipliers: DOP853          with the multipliers at every stage until Hairer's stiffness test finds its steps bound by          stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
          (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers), \
          `esdirk43-adaptive` (Kennedy & Carpenter's ESDIRK 4(3), the same otherwise), \
          `esdirk54-adaptive` (their ESDIRK 5(4)7L[2]SA2, the same otherwise), \

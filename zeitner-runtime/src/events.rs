@@ -337,7 +337,12 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     let mut samples = [(start.t, first); INTERIOR_SAMPLES + 2];
     samples[INTERIOR_SAMPLES + 1] = (end.t, *end_values);
-    for (j, slot) in samples.iter_mut().enumerate().take(INTERIOR_SAMPLES + 1).skip(1) {
+    for (j, slot) in samples
+        .iter_mut()
+        .enumerate()
+        .take(INTERIOR_SAMPLES + 1)
+        .skip(1)
+    {
         let sample = match j == middle {
             true => centre,
             false => values(model, &interpolate(start, end, at(j)), watch)?,

@@ -4,7 +4,7 @@
 // The coefficients keep the digits they are published with.
 #![allow(clippy::excessive_precision)]
 
-use super::explicit::{ProbeStates, StiffnessProbe, Tableau};
+use super::explicit::{stiffness_against_end, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -303,6 +303,14 @@ impl<const N: usize> Continuous<N> {
     pub fn forget(&mut self) {
         self.step = None;
         self.coefficients = None;
+    }
+
+    /// The stiffness estimate of the step held against its end point `end` (`dop853.f`'s test:
+    /// the last stage against the solution's slope).
+    pub fn stiffness_against<const Z: usize>(&self, end: &Point<N, Z>) -> Option<f64> {
+        let (_, q0, v0, h) = self.step.as_ref()?;
+        let slopes = (&self.slopes.0, &self.slopes.1);
+        stiffness_against_end(&DOP853, ((q0, v0), *h), slopes, (end.q, end.v, end.a))
     }
 
     /// The state at `t` within the step from `start` to `end` (its consistent point), if the

@@ -2,7 +2,7 @@
 
 use core::marker::PhantomData;
 
-use super::{Method, Start, StepEnd, Stiffness};
+use super::{Method, Start, StepEnd};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -223,6 +223,11 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
 }
 
 impl<const ST: usize, D> Explicit<ST, D> {
+    /// Whether the steps estimate the stiffness.
+    pub fn estimates_stiffness(&self) -> bool {
+        self.estimates_stiffness
+    }
+
     /// [`Method::integrate_every_stage`], the last (sub)step's stage slopes `(q', q'')` left in
     /// `slopes` (for a continuous extension).
     pub fn integrate_every_stage_into<S, const N: usize, const Z: usize>(
@@ -396,38 +401,46 @@ where
     Ok(end)
 }
 
-/// The tableau's stiffness probe of a step: the ratio of its two stages, or the last stage kept
-/// for the step end. Apart from the stage loop, which it would slow for every method (the
-/// stages' `q` are formed again from their slopes).
+/// The tableau's stiffness estimate of a step between two of its stages, `h|λ|` over its
+/// stability boundary; none where it compares the last stage with the step end, which the
+/// caller knows later ([`stiffness_against_end`]). Apart from the stage loop, which it would slow
+/// for every method (the stages' `q` are formed again from their slopes).
 fn stiffness_estimate<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     start: (&Vector<N>, &Vector<N>),
     h: f64,
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
-) -> Option<Stiffness<N>> {
+) -> Option<f64> {
     let probe = tableau.stiffness.as_ref()?;
+    let ProbeStates::Stages(first, second) = probe.states else {
+        return None;
+    };
     let stage = |i: usize| {
         let (q, v) = stage_state(tableau, i, h, start, (kq, kv));
         (q, v, kv[i])
     };
-    Some(match probe.states {
-        ProbeStates::Stages(first, second) => Stiffness::Ratio(stiffness_ratio(
-            h,
-            probe.boundary,
-            stage(first),
-            stage(second),
-        )?),
-        ProbeStates::LastStageAndEnd => Stiffness::LastStage {
-            state: stage(ST - 1),
-            h,
-            boundary: probe.boundary,
-        },
-    })
+    stiffness_ratio(h, probe.boundary, stage(first), stage(second))
+}
+
+/// The stiffness estimate of a tableau that compares its last stage with the step end
+/// `(q, q', q'')` (DOP853's), from the step's start, size and stage slopes.
+pub(crate) fn stiffness_against_end<const N: usize, const ST: usize>(
+    tableau: &Tableau<ST>,
+    (start, h): ((&Vector<N>, &Vector<N>), f64),
+    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+    end: (Vector<N>, Vector<N>, Vector<N>),
+) -> Option<f64> {
+    let probe = tableau.stiffness.as_ref()?;
+    let ProbeStates::LastStageAndEnd = probe.states else {
+        return None;
+    };
+    let (q, v) = stage_state(tableau, ST - 1, h, start, (kq, kv));
+    stiffness_ratio(h, probe.boundary, (q, v, kv[ST - 1]), end)
 }
 
 /// `h‖Δf‖/‖Δy‖` between two states `(q, q', q'')` at one time, over the stability `boundary`;
 /// none where they coincide.
-pub(crate) fn stiffness_ratio<const N: usize>(
+fn stiffness_ratio<const N: usize>(
     h: f64,
     boundary: f64,
     (q1, v1, a1): (Vector<N>, Vector<N>, Vector<N>),

@@ -56,36 +56,10 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     pub error: Option<(Vector<N>, Vector<N>)>,
     /// A lower-order estimate that tempers `error` (DOP853's third-order one), if any.
     pub error_low: Option<(Vector<N>, Vector<N>)>,
-    /// What the step tells of the stiffness it felt, for explicit methods that estimate it.
-    pub stiffness: Option<Stiffness<N>>,
-}
-
-/// An explicit step's stiffness estimate (Hairer's test, [`explicit::StiffnessProbe`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Stiffness<const N: usize> {
-    /// `h|λ|` of the eigenvalue the step felt most, over the boundary of the method's stability
-    /// region: above 1 the step is bound by stability, not accuracy.
-    Ratio(f64),
-    /// The last stage's `(q, q', q'')`, at the step's end time, to be compared with the step
-    /// end's once that is known (DOP853's test).
-    LastStage {
-        state: (Vector<N>, Vector<N>, Vector<N>),
-        h: f64,
-        boundary: f64,
-    },
-}
-
-impl<const N: usize> Stiffness<N> {
-    /// The ratio, the step end `(q, q', q'')` given for a last stage's estimate.
-    pub fn ratio(self, end: Option<(Vector<N>, Vector<N>, Vector<N>)>) -> Option<f64> {
-        match (self, end) {
-            (Stiffness::Ratio(ratio), _) => Some(ratio),
-            (Stiffness::LastStage { state, h, boundary }, Some(end)) => {
-                explicit::stiffness_ratio(h, boundary, state, end)
-            }
-            (Stiffness::LastStage { .. }, None) => None,
-        }
-    }
+    /// `h|λ|` of the eigenvalue the step felt most over the boundary of the method's
+    /// stability region, for explicit methods that estimate it between two stages: above 1 the
+    /// step is bound by stability, not accuracy.
+    pub stiffness: Option<f64>,
 }
 
 /// One inner method with the workspace it owns, in storage `D`.
@@ -130,6 +104,12 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         t: f64,
     ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
         let _ = (model, ends, t);
+        None
+    }
+    /// The stiffness estimate of the last step integrated, whose end point is `end`, for a
+    /// method that compares its last stage with the end (DOP853, where it estimates it).
+    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<f64> {
+        let _ = end;
         None
     }
     /// Factorisations of an iteration matrix so far (implicit methods).
@@ -331,6 +311,15 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         }
     }
 
+    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<f64> {
+        match self {
+            AnyMethod::Explicit12(m, continuous) if m.estimates_stiffness() => {
+                continuous.stiffness_against(end)
+            }
+            _ => None,
+        }
+    }
+
     fn factorizations(&self) -> u64 {
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(..) => 0,
@@ -466,7 +455,7 @@ mod tests {
                 .integrate(&mut model, &start, h, &multipliers, false)
                 .unwrap();
             let boundary = explicit::DOPRI5.stiffness.as_ref().unwrap().boundary;
-            match end.stiffness.and_then(|s| s.ratio(None)) {
+            match end.stiffness {
                 Some(over_boundary) => {
                     assert!(estimates, "{method:?}");
                     let h_lambda = over_boundary * boundary;

@@ -287,7 +287,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             integrations,
             error_norm: error,
             gram,
-            stiffness: end.stiffness.and_then(|s| s.ratio(None)),
+            stiffness: end.stiffness,
             singular_end: false,
         }))
     }

@@ -64,8 +64,6 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             first_power: 0,
         };
         let lambda_start = self.lambda;
-        // DOP853's estimate compares its last stage with the end point's slope, known below.
-        let stiffness = end.stiffness.take();
         Ok(match self.conclude(end, &held, false, 1, (h, t_end))? {
             Attempt::Accepted(mut step) => {
                 // Nothing fails where a gradient vanishes (a cusp): the index-1 stages would
@@ -76,8 +74,10 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
                 // The run goes on from the consistent end point; the multipliers' report is
                 // their line from the step's start to its end.
                 step.v = step.point.v;
-                let point = &step.point;
-                step.stiffness = stiffness.and_then(|s| s.ratio(Some((point.q, point.v, point.a))));
+                // DOP853's estimate compares its last stage with the end point's slope.
+                let method = &self.method;
+                let at_end = Method::<N, Z, S::Storage>::stiffness_against_end(method, &step.point);
+                step.stiffness = step.stiffness.or(at_end);
                 let slope = step.point.lambda - lambda_start;
                 step.multipliers = StepPolynomial {
                     c: [lambda_start, slope, Vector::zeros()],
