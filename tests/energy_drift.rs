@@ -83,7 +83,10 @@ fn thousand_seconds_report() {
     let models = [
         ("constant", constant),
         ("constant, ε 1e-14", tight),
-        ("defaults (quadratic)", Options::default()),
+        (
+            "defaults (DOP853, multipliers at every stage)",
+            Options::default(),
+        ),
     ];
     for (name, options) in models {
         for rtol in [1e-8, 1e-9, 1e-10] {

@@ -352,7 +352,8 @@ impl fmt::Display for StepError {
             StepError::StepSizeTooSmall { t, step } => write!(
                 f,
                 "the step size fell to {step:e} at t = {t}, below `min_step` or below what moves \
-                 the time: loosen `rtol`/`atol`, or look for a singularity or discontinuity there"
+                 the time: loosen `rtol`/`atol`, choose an implicit method (`Esdirk54`) for forces \
+                 too stiff for an explicit one, or look for a singularity or discontinuity there"
             ),
             StepError::TooManyAttempts { t, step, attempts } => write!(
                 f,
