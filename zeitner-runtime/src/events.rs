@@ -323,47 +323,88 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
     let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
     let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
-    let may_dip = sampled.clone().any(|index| {
-        let side = if watched(index, watch, open).1 {
-            1.0
-        } else {
-            -1.0
-        };
-        let [a, m, b] = [&first, &centre, end_values].map(|v| side * value_in(v, index));
-        may_cross(a, m, b)
-    });
-    if !may_dip {
+    let side = |index: usize| match watched(index, watch, open).1 {
+        true => 1.0,
+        false => -1.0,
+    };
+    let signed = |v: &Values, index: usize| side(index) * value_in(v, index);
+    let (mut may_dip, mut near_start) = (false, false);
+    for index in sampled.clone() {
+        let [a, m, b] = [&first, &centre, end_values].map(|v| signed(v, index));
+        may_dip |= may_cross(a, m, b);
+        near_start |= starts_near_zero(a, m, b);
+    }
+    if !(may_dip || near_start) {
         return Ok(other_side);
     }
-    let mut samples = [(start.t, first); INTERIOR_SAMPLES + 2];
-    samples[INTERIOR_SAMPLES + 1] = (end.t, *end_values);
-    for (j, slot) in samples
-        .iter_mut()
-        .enumerate()
-        .take(INTERIOR_SAMPLES + 1)
-        .skip(1)
-    {
+    // Each function's lowest sample before the end, by its position and signed value.
+    let mut lowest = [(0usize, f64::INFINITY); MAX_EVENTS + MAX_GAPS];
+    for index in sampled.clone() {
+        lowest[index] = (0, signed(&first, index));
+    }
+    for j in (1..=INTERIOR_SAMPLES).filter(|_| may_dip) {
         let sample = match j == middle {
             true => centre,
             false => values(model, &interpolate(start, end, at(j)), watch)?,
         };
-        *slot = (at(j), sample);
         for index in sampled.clone() {
             let value = value_in(&sample, index);
             if other_side[index].is_none() && (value > 0.0) != watched(index, watch, open).1 {
                 other_side[index] = Some((at(j), value));
             }
+            if side(index) * value < lowest[index].1 {
+                lowest[index] = (j, side(index) * value);
+            }
         }
     }
+    // Where no sample crossed: a dip between the samples, or just after a start near zero.
+    let known = Known {
+        first: &first,
+        centre: (middle, &centre),
+        end: end_values,
+    };
     for index in sampled {
         if other_side[index].is_some() {
             continue;
         }
-        let was_positive = watched(index, watch, open).1;
-        let function = (index, was_positive);
-        other_side[index] = dip_between_samples(model, (start, end), watch, function, &samples)?;
+        let (j, _) = lowest[index];
+        let [a, m, b] = [&first, &centre, end_values].map(|v| signed(v, index));
+        if !(may_dip || j == 0 && starts_near_zero(a, m, b)) {
+            continue;
+        }
+        // Without the interior samples the middle is the start's neighbour.
+        let right = if may_dip { 1 } else { middle };
+        let function = (index, watched(index, watch, open).1);
+        other_side[index] = dip(model, (start, end), watch, function, (j, right), &known)?;
     }
     Ok(other_side)
+}
+
+/// The watched functions' values already known at a step's sample positions: the start (0),
+/// one interior sample and the end (`INTERIOR_SAMPLES + 1`).
+struct Known<'a> {
+    first: &'a Values,
+    centre: (usize, &'a Values),
+    end: &'a Values,
+}
+
+/// Function `index`'s value at sample position `j` of the step from `start` to `end`: known,
+/// or interpolated and evaluated.
+fn sample_value<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (start, end): (&Point<N, Z>, &Point<N, Z>),
+    watch: &Watch,
+    (index, j): (usize, usize),
+    known: &Known<'_>,
+) -> Result<(f64, f64), StepError> {
+    let t = start.t + (end.t - start.t) * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+    let value = match j {
+        0 => value_in(known.first, index),
+        j if j == known.centre.0 => value_in(known.centre.1, index),
+        j if j == INTERIOR_SAMPLES + 1 => value_in(known.end, index),
+        _ => value_in(&values(model, &interpolate(start, end, t), watch)?, index),
+    };
+    Ok((t, value))
 }
 
 /// Parabolic steps from a sampled minimum towards where a function comes nearest zero.
@@ -371,33 +412,34 @@ const MINIMUM_REFINEMENTS: usize = 6;
 
 /// A point on the other side of zero for a function (`index`, positive at the start or not)
 /// whose samples all stayed on the start's side, if it dips across between them: from its
-/// lowest interior sample (signed so that the start's side is positive), the vertices of the
-/// parabolas through the three points around the lowest one, while they promise to come within
-/// half the lowest value of zero. A long step's samples are far apart (DOP853's), and a crank
-/// that passes its axis and falls back within a few milliseconds falls between them.
-fn dip_between_samples<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+/// lowest sample `j` (signed so that the start's side is positive; at the start, `right` is its
+/// neighbour and a probe just after the start the middle point), the vertices of the parabolas
+/// through the three points around the lowest one, while they promise to come within half the
+/// lowest value of zero. A long step's samples are far apart (DOP853's), and a crank that
+/// passes its axis and falls back within a few milliseconds falls between them.
+fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (start, end): (&Point<N, Z>, &Point<N, Z>),
+    ends: (&Point<N, Z>, &Point<N, Z>),
     watch: &Watch,
     (index, was_positive): (usize, bool),
-    samples: &[(f64, Values); INTERIOR_SAMPLES + 2],
+    (j, right): (usize, usize),
+    known: &Known<'_>,
 ) -> Result<Option<(f64, f64)>, StepError> {
     let side = if was_positive { 1.0 } else { -1.0 };
-    let signed = |j: usize| (samples[j].0, side * value_in(&samples[j].1, index));
-    let Some(j) = (0..=INTERIOR_SAMPLES).min_by(|&a, &b| signed(a).1.total_cmp(&signed(b).1))
-    else {
-        return Ok(None);
-    };
+    let (start, end) = ends;
+    let mut signed_at =
+        |j: usize| sample_value(model, ends, watch, (index, j), known).map(|(t, v)| (t, side * v));
     let mut around = if j == 0 {
-        // Lowest at the start: whether it heads towards zero first, from a probe just after.
-        let t = samples[0].0 + (samples[1].0 - samples[0].0) / 16.0;
+        let (t0, f0) = signed_at(0)?;
+        let neighbour = signed_at(right)?;
+        let t = t0 + (neighbour.0 - t0) / (16 * right) as f64;
         let value = value_in(&values(model, &interpolate(start, end, t), watch)?, index);
         if (value > 0.0) != was_positive {
             return Ok(Some((t, value)));
         }
-        [signed(0), (t, side * value), signed(1)]
+        [(t0, f0), (t, side * value), neighbour]
     } else {
-        [signed(j - 1), signed(j), signed(j + 1)]
+        [signed_at(j - 1)?, signed_at(j)?, signed_at(j + 1)?]
     };
     for _ in 0..MINIMUM_REFINEMENTS {
         let [(t0, f0), (t1, f1), (t2, f2)] = around;
@@ -432,12 +474,18 @@ fn dip_between_samples<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
 }
 
 /// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
+/// that the start's side is positive) starts much nearer zero than the rest of the step: it may
+/// head towards zero first (a step that ended just short of a crossing).
+fn starts_near_zero(a: f64, m: f64, b: f64) -> bool {
+    m > 0.0 && b > 0.0 && a < 0.5 * m.min(b)
+}
+
+/// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
 /// that the start's side is positive) may cross zero within the step: a value on the other side,
-/// a start much nearer zero than the rest (it may head towards zero first: a step that ended
-/// just short of a crossing), or a parabola through them whose minimum inside the step comes
-/// within half the smaller end value of zero.
+/// or a parabola through them whose minimum inside the step comes within half the smaller end
+/// value of zero.
 fn may_cross(a: f64, m: f64, b: f64) -> bool {
-    if !(m > 0.0 && b > 0.0) || a < 0.5 * m.min(b) {
+    if !(m > 0.0 && b > 0.0) {
         return true;
     }
     let curvature = 2.0 * a - 4.0 * m + 2.0 * b;
