@@ -64,24 +64,34 @@ fn on_position_rows_each_method_keeps_its_order() {
     assert_orders("steam generator, DOP853", (errors(0.2), errors(0.1)), 8.0);
 }
 
-/// The knife edge on the inclined plane, 1 s in `n` fixed steps: errors of q, q', λ against
-/// the closed form, each scaled by the size of its reference.
-fn knife_edge_errors(method: InnerMethod, n: u32) -> [f64; 3] {
-    const OMEGA: f64 = 2.0;
-    let scene = KnifeEdge::PAPER;
-    let s = scene.exact(OMEGA, 0.0);
+/// The knife edge's turning rate in these tests.
+const OMEGA: f64 = 2.0;
+
+/// The knife edge on the inclined plane from its closed form's start, with `options`.
+fn knife_edge(options: Options) -> Simulator<'static, KnifeEdge, 3, 1> {
+    let s = KnifeEdge::PAPER.exact(OMEGA, 0.0);
     let (q, v) = (Vector::from(s.q), Vector::from(s.v));
-    let options = fixed(method, 1.0 / f64::from(n));
-    let mut sim = Simulator::new(&scene, q, v, 0.0, options).unwrap();
-    sim.advance_to(1.0, |_| {}).unwrap();
-    let end = sim.last().end;
-    let exact = scene.exact(OMEGA, 1.0);
+    Simulator::new(&KnifeEdge::PAPER, q, v, 0.0, options).unwrap()
+}
+
+/// The errors of q, q', λ at `point` against the knife edge's closed form, each scaled by the
+/// size of its reference.
+fn knife_edge_point_errors(point: &zeitner::Point<3, 1>) -> [f64; 3] {
+    let scene = KnifeEdge::PAPER;
+    let exact = scene.exact(OMEGA, point.t);
     let a = scene.g * scene.alpha.sin();
     [
-        (end.q - Vector::from(exact.q)).amax() / (a / (OMEGA * OMEGA)),
-        (end.v - Vector::from(exact.v)).amax() / (a / OMEGA),
-        (end.lambda[0] - exact.lambda).abs() / (scene.m * a),
+        (point.q - Vector::from(exact.q)).amax() / (a / (OMEGA * OMEGA)),
+        (point.v - Vector::from(exact.v)).amax() / (a / OMEGA),
+        (point.lambda[0] - exact.lambda).abs() / (scene.m * a),
     ]
+}
+
+/// The knife edge, 1 s in `n` fixed steps: [`knife_edge_point_errors`] at the end.
+fn knife_edge_errors(method: InnerMethod, n: u32) -> [f64; 3] {
+    let mut sim = knife_edge(fixed(method, 1.0 / f64::from(n)));
+    sim.advance_to(1.0, |_| {}).unwrap();
+    knife_edge_point_errors(&sim.last().end)
 }
 
 #[test]
@@ -96,14 +106,10 @@ fn on_a_velocity_level_row_dop853_keeps_its_order() {
 }
 
 /// The knife edge in `n` fixed steps of DOP853, sampled within the last step at `s = 0.4`:
-/// the errors of q, q', λ there against the closed form, scaled as in [`knife_edge_errors`].
+/// [`knife_edge_point_errors`] there.
 fn knife_edge_sample_errors(n: u32) -> [f64; 3] {
-    const OMEGA: f64 = 2.0;
-    let scene = KnifeEdge::PAPER;
-    let s = scene.exact(OMEGA, 0.0);
-    let (q, v) = (Vector::from(s.q), Vector::from(s.v));
     let h = 1.0 / f64::from(n);
-    let mut sim = Simulator::new(&scene, q, v, 0.0, fixed(InnerMethod::Dop853, h)).unwrap();
+    let mut sim = knife_edge(fixed(InnerMethod::Dop853, h));
     let t = 1.0 - 0.6 * h;
     let mut sampled = None;
     sim.advance_to(1.0, |step| {
@@ -112,14 +118,7 @@ fn knife_edge_sample_errors(n: u32) -> [f64; 3] {
         }
     })
     .unwrap();
-    let point = sampled.expect("the last step was sampled");
-    let exact = scene.exact(OMEGA, t);
-    let a = scene.g * scene.alpha.sin();
-    [
-        (point.q - Vector::from(exact.q)).amax() / (a / (OMEGA * OMEGA)),
-        (point.v - Vector::from(exact.v)).amax() / (a / OMEGA),
-        (point.lambda[0] - exact.lambda).abs() / (scene.m * a),
-    ]
+    knife_edge_point_errors(&sampled.expect("the last step was sampled"))
 }
 
 /// DOP853's dense output is its own continuous extension of order 7 (Hairer's `contd8`): a

@@ -11,9 +11,10 @@ use crate::model::Model;
 use crate::output::Point;
 use crate::system::{ConstrainedSystem, Vector};
 
-/// A row of the tableau from its nonzero entries.
-const fn row(entries: &[(usize, f64)]) -> [f64; 12] {
-    let mut row = [0.0; 12];
+/// A row of `L` coefficients from its nonzero entries (the tableau's over its twelve stages,
+/// the continuous extension's over its sixteen slopes).
+const fn row<const L: usize>(entries: &[(usize, f64)]) -> [f64; L] {
+    let mut row = [0.0; L];
     let mut k = 0;
     while k < entries.len() {
         row[entries[k].0] = entries[k].1;
@@ -161,24 +162,13 @@ pub(crate) const DOP853: Tableau<12> = Tableau {
 /// step's first stage) and three extra stages.
 const SLOPES: usize = 16;
 
-/// A row over the continuous extension's slopes from its nonzero entries.
-const fn dense_row(entries: &[(usize, f64)]) -> [f64; SLOPES] {
-    let mut row = [0.0; SLOPES];
-    let mut k = 0;
-    while k < entries.len() {
-        row[entries[k].0] = entries[k].1;
-        k += 1;
-    }
-    row
-}
-
 /// The nodes of the extra stages (`dop853.f`'s `c14`, `c15`, `c16`).
 const EXTRA_C: [f64; 3] = [0.1, 0.2, 0.777777777777777777777777777778];
 
 /// The extra stages' coefficients on the slopes before them (`dop853.f`'s `a14j`, `a15j`,
 /// `a16j`; index 12 is the end point's slope).
 const EXTRA_A: [[f64; SLOPES]; 3] = [
-    dense_row(&[
+    row(&[
         (0, 5.61675022830479523392909219681e-2),
         (6, 2.53500210216624811088794765333e-1),
         (7, -2.46239037470802489917441475441e-1),
@@ -188,7 +178,7 @@ const EXTRA_A: [[f64; SLOPES]; 3] = [
         (11, 7.56789766054569976138603589584e-3),
         (12, -8.298e-3),
     ]),
-    dense_row(&[
+    row(&[
         (0, 3.18346481635021405060768473261e-2),
         (5, 2.83009096723667755288322961402e-2),
         (6, 5.35419883074385676223797384372e-2),
@@ -198,7 +188,7 @@ const EXTRA_A: [[f64; SLOPES]; 3] = [
         (12, -3.40465008687404560802977114492e-4),
         (13, 1.41312443674632500278074618366e-1),
     ]),
-    dense_row(&[
+    row(&[
         (0, -4.28896301583791923408573538692e-1),
         (5, -4.69762141536116384314449447206),
         (6, 7.68342119606259904184240953878),
@@ -212,7 +202,7 @@ const EXTRA_A: [[f64; SLOPES]; 3] = [
 
 /// The dense output's higher coefficients on the slopes (`dop853.f`'s `d4j` … `d7j`).
 const DENSE_D: [[f64; SLOPES]; 4] = [
-    dense_row(&[
+    row(&[
         (0, -0.84289382761090128651353491142e+01),
         (5, 0.56671495351937776962531783590),
         (6, -0.30689499459498916912797304727e+01),
@@ -226,7 +216,7 @@ const DENSE_D: [[f64; SLOPES]; 4] = [
         (14, -0.91946323924783554000451984436e+01),
         (15, -0.44360363875948939664310572000e+01),
     ]),
-    dense_row(&[
+    row(&[
         (0, 0.10427508642579134603413151009e+02),
         (5, 0.24228349177525818288430175319e+03),
         (6, 0.16520045171727028198505394887e+03),
@@ -240,7 +230,7 @@ const DENSE_D: [[f64; SLOPES]; 4] = [
         (14, -0.93529243588444783865713862664e+01),
         (15, 0.35816841486394083752465898540e+02),
     ]),
-    dense_row(&[
+    row(&[
         (0, 0.19985053242002433820987653617e+02),
         (5, -0.38703730874935176555105901742e+03),
         (6, -0.18917813819516756882830838328e+03),
@@ -254,7 +244,7 @@ const DENSE_D: [[f64; SLOPES]; 4] = [
         (14, 0.84320405506677161018159903784e+02),
         (15, 0.11992291136182789328035130030e+02),
     ]),
-    dense_row(&[
+    row(&[
         (0, -0.25693933462703749003312586129e+02),
         (5, -0.15418974869023643374053993627e+03),
         (6, -0.23152937917604549567536039109e+03),
@@ -329,7 +319,7 @@ impl<const N: usize> Continuous<N> {
             return None;
         }
         if self.coefficients.is_none() {
-            match self.coefficients_for(model, end) {
+            match coefficients_for(model, (t0, q0, v0, h), &self.slopes, end) {
                 Ok(coefficients) => self.coefficients = Some(coefficients),
                 Err(error) => return Some(Err(error)),
             }
@@ -347,47 +337,52 @@ impl<const N: usize> Continuous<N> {
         }
         Some(Ok((q, v)))
     }
+}
 
-    /// `dop853.f`'s `rcont1` … `rcont8`, the three extra stages solved at every stage like
-    /// the step's own.
-    fn coefficients_for<S: ConstrainedSystem<N, Z>, const Z: usize>(
-        &self,
-        model: &mut Model<'_, S, N, Z>,
-        end: &Point<N, Z>,
-    ) -> Result<[(Vector<N>, Vector<N>); 8], StepError> {
-        let (t0, q0, v0, h) = self.step.expect("a step is held");
-        let mut kq = [Vector::<N>::zeros(); SLOPES];
-        let mut kv = [Vector::<N>::zeros(); SLOPES];
-        kq[..12].copy_from_slice(&self.slopes.0);
-        kv[..12].copy_from_slice(&self.slopes.1);
-        (kq[12], kv[12]) = (end.v, end.a);
-        for (i, (c, a)) in EXTRA_C.iter().zip(&EXTRA_A).enumerate() {
-            let (mut q, mut v) = (q0, v0);
-            for (j, &w) in a.iter().enumerate().filter(|(_, &w)| w != 0.0) {
-                q += (h * w) * kq[j];
-                v += (h * w) * kv[j];
-            }
-            kq[13 + i] = v;
-            kv[13 + i] = consistent_point(model, t0 + c * h, q, v)?.a;
-        }
-        let (dq, dv) = (end.q - q0, end.v - v0);
-        let (bq, bv) = (h * kq[0] - dq, h * kv[0] - dv);
-        let mut c = [
-            (q0, v0),
-            (dq, dv),
-            (bq, bv),
-            (dq - h * kq[12] - bq, dv - h * kv[12] - bv),
-            (Vector::zeros(), Vector::zeros()),
-            (Vector::zeros(), Vector::zeros()),
-            (Vector::zeros(), Vector::zeros()),
-            (Vector::zeros(), Vector::zeros()),
-        ];
-        for (row, d) in DENSE_D.iter().enumerate() {
-            for (j, &w) in d.iter().enumerate().filter(|(_, &w)| w != 0.0) {
-                c[4 + row].0 += (h * w) * kq[j];
-                c[4 + row].1 += (h * w) * kv[j];
-            }
-        }
-        Ok(c)
+/// `dop853.f`'s `rcont1` … `rcont8` for the step from `(t₀, q₀, q₀')` of size `h` with the stage
+/// slopes `slopes` to `end`, the three extra stages solved at every stage like the step's own.
+fn coefficients_for<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (t0, q0, v0, h): (f64, Vector<N>, Vector<N>, f64),
+    slopes: &([Vector<N>; 12], [Vector<N>; 12]),
+    end: &Point<N, Z>,
+) -> Result<[(Vector<N>, Vector<N>); 8], StepError> {
+    let mut kq = [Vector::<N>::zeros(); SLOPES];
+    let mut kv = [Vector::<N>::zeros(); SLOPES];
+    kq[..12].copy_from_slice(&slopes.0);
+    kv[..12].copy_from_slice(&slopes.1);
+    (kq[12], kv[12]) = (end.v, end.a);
+    for (i, (c, a)) in EXTRA_C.iter().zip(&EXTRA_A).enumerate() {
+        let (q, v) = weighted((q0, v0), h, a, (&kq, &kv));
+        kq[13 + i] = v;
+        kv[13 + i] = consistent_point(model, t0 + c * h, q, v)?.a;
     }
+    let (dq, dv) = (end.q - q0, end.v - v0);
+    let (bq, bv) = (h * kq[0] - dq, h * kv[0] - dv);
+    let zero = (Vector::zeros(), Vector::zeros());
+    let [d4, d5, d6, d7] = DENSE_D.map(|d| weighted(zero, h, &d, (&kq, &kv)));
+    Ok([
+        (q0, v0),
+        (dq, dv),
+        (bq, bv),
+        (dq - h * kq[12] - bq, dv - h * kv[12] - bv),
+        d4,
+        d5,
+        d6,
+        d7,
+    ])
+}
+
+/// `from + h Σ wⱼ kⱼ` over the continuous extension's slopes, for `q` and `q'`.
+fn weighted<const N: usize>(
+    (mut q, mut v): (Vector<N>, Vector<N>),
+    h: f64,
+    w: &[f64; SLOPES],
+    (kq, kv): (&[Vector<N>; SLOPES], &[Vector<N>; SLOPES]),
+) -> (Vector<N>, Vector<N>) {
+    for (j, &w) in w.iter().enumerate().filter(|(_, &w)| w != 0.0) {
+        q += (h * w) * kq[j];
+        v += (h * w) * kv[j];
+    }
+    (q, v)
 }
