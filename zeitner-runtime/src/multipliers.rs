@@ -314,10 +314,14 @@ where
             let cause = not_converged::<S, N, Z>(start.t, h, iteration, worst);
             return Ok(failed(cause, iteration));
         }
-        let sensitivities = paper.unwrap_or((end.dq_dc, end.dv_dc));
+        // Borrowed, not copied: 4K N×Z blocks, megabytes at a thousand coordinates.
+        let sensitivities = match &paper {
+            Some((dq_dc, dv_dc)) => (dq_dc, dv_dc),
+            None => (&end.dq_dc, &end.dv_dc),
+        };
         let linear = LinearStep {
             end: &end,
-            sensitivities: &sensitivities,
+            sensitivities,
         };
         let span = (start, t_end);
         let aim = (conditions, targets);
@@ -368,7 +372,7 @@ impl NewtonProgress {
 /// `x(c) ≈ x(c₀) + Q (c - c₀)`.
 struct LinearStep<'a, const N: usize, const Z: usize, const K: usize> {
     end: &'a StepEnd<N, Z, K>,
-    sensitivities: &'a Sensitivities<N, Z, K>,
+    sensitivities: SensitivitiesRef<'a, N, Z, K>,
 }
 
 /// What Newton through the linearised step map came to.
@@ -546,6 +550,8 @@ where
 
 type Sensitivities<const N: usize, const Z: usize, const K: usize> =
     ([Matrix<N, Z>; K], [Matrix<N, Z>; K]);
+type SensitivitiesRef<'a, const N: usize, const Z: usize, const K: usize> =
+    (&'a [Matrix<N, Z>; K], &'a [Matrix<N, Z>; K]);
 
 /// The paper's estimate (eq. 7), generalised to a coefficient of `s^m`: with `B = -M⁻¹Gᵀ` frozen
 /// at the step start, `∂q/∂c = τ²/((m+1)(m+2)) B` and `∂q'/∂c = τ/(m+1) B` (for `m = 0` the
@@ -719,7 +725,7 @@ mod tests {
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
         let mut method =
-            AnyMethod::<2, crate::storage::Dense>::new::<crate::testing::SpringPendulum, 1>(
+            AnyMethod::<2, 1, crate::storage::Dense>::new::<crate::testing::SpringPendulum>(
                 InnerMethod::DormandPrince54,
                 crate::options::MultiplierModel::Constant,
                 StepControl::Fixed { step: 0.01 },

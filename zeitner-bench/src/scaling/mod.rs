@@ -309,18 +309,30 @@ fn distance(q: &[f64], reference: &[f64]) -> f64 {
         .fold(0.0, |m, (a, b)| f64::max(m, (a - b).abs()))
 }
 
-/// The smallest power-of-two stack (KiB) on which building the simulator and ten steps
-/// succeed, each size tried in a child process (an overflow kills the process).
+/// The smallest stack (KiB, to within 64 KiB) on which building the simulator and ten steps
+/// succeed: powers of two until one suffices, then halving the interval below it. Each size is
+/// tried in a child process (an overflow kills the process).
 fn smallest_stack(scene: &str, path: Stepper) -> Option<usize> {
     let exe = std::env::current_exe().ok()?;
-    (5..=18).map(|k| 1usize << k).find(|&kib| {
+    let suffices = |kib: usize| {
         std::process::Command::new(&exe)
             .args(["scaling-probe", "--scene", scene, "--path", path.name()])
             .args(["--stack-kib", &kib.to_string()])
             .stderr(std::process::Stdio::null())
             .status()
             .is_ok_and(|status| status.success())
-    })
+    };
+    let mut high = (5..=18).map(|k| 1usize << k).find(|&kib| suffices(kib))?;
+    let mut low = high / 2;
+    while high - low > 64 {
+        let middle = (low + high) / 2;
+        if suffices(middle) {
+            high = middle;
+        } else {
+            low = middle;
+        }
+    }
+    Some(high)
 }
 
 /// The child process: one short run of `scene` on a thread of the given stack.

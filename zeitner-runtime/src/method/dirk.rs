@@ -9,7 +9,7 @@
 
 use core::marker::PhantomData;
 
-use super::{Method, Start, StepEnd};
+use super::{Blocks, Method, Start, StepEnd, MAX_COEFFICIENTS};
 use crate::error::StepError;
 use crate::model::{Acceleration, FactorOf, Model, SquareOf};
 use crate::options::StepControl;
@@ -287,8 +287,8 @@ pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
 }
 
 /// The method and its workspace: the factorised iteration matrix and the step it was formed
-/// for.
-pub(crate) struct Dirk<T, const S: usize, const N: usize, D: Storage<N>> {
+/// for, and the stages' sensitivities, kept in storage `D`.
+pub(crate) struct Dirk<T, const S: usize, const N: usize, const Z: usize, D: Storage<N>> {
     tableau: PhantomData<T>,
     /// `(rtol, atol)` of adaptive steps, which the stage equations are solved against; fixed
     /// steps solve them to rounding.
@@ -299,28 +299,44 @@ pub(crate) struct Dirk<T, const S: usize, const N: usize, D: Storage<N>> {
     /// The step it was formed for; `None` before the first and after a failed refresh.
     formed_for: Option<f64>,
     factorizations: u64,
+    /// Each stage's sensitivities, written and read within one step.
+    sensitivities: D::Rows<StageSensitivity<N, Z>, S>,
 }
 
-/// The stages' velocities, accelerations and their sensitivities.
-struct Stages<const S: usize, const N: usize, const Z: usize, const K: usize> {
+/// The stages' positions, velocities and accelerations.
+struct Stages<const S: usize, const N: usize> {
     q: [Vector<N>; S],
     v: [Vector<N>; S],
     a: [Vector<N>; S],
-    dq: [[Matrix<N, Z>; K]; S],
-    dv: [[Matrix<N, Z>; K]; S],
-    da: [[Matrix<N, Z>; K]; S],
 }
 
-impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N, D> {
+/// The sensitivities of one stage's position, velocity and acceleration to the multipliers'
+/// coefficients.
+#[derive(Clone, Copy)]
+pub(crate) struct StageSensitivity<const N: usize, const Z: usize> {
+    dq: Blocks<N, Z>,
+    dv: Blocks<N, Z>,
+    da: Blocks<N, Z>,
+}
+
+impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N>>
+    Dirk<T, S, N, Z, D>
+{
     const TABLEAU: DirkTableau<S> = T::TABLEAU;
 
-    pub fn new<Sys: ConstrainedSystem<N, Z>, const Z: usize>(step: StepControl) -> Self {
+    pub fn new<Sys: ConstrainedSystem<N, Z>>(step: StepControl) -> Self {
+        let zero = [Matrix::zeros(); MAX_COEFFICIENTS];
         Dirk {
             tableau: PhantomData,
             tolerances: tolerances(step),
             iteration: D::iteration::<Sys, Z>(),
             formed_for: None,
             factorizations: 0,
+            sensitivities: D::rows(StageSensitivity {
+                dq: zero,
+                dv: zero,
+                da: zero,
+            }),
         }
     }
 
@@ -352,7 +368,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
 }
 
 impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D>
-    for Dirk<T, S, N, D>
+    for Dirk<T, S, N, Z, D>
 {
     fn order(&self) -> u32 {
         Self::TABLEAU.order
@@ -374,14 +390,12 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError> {
+        const { assert!(K <= MAX_COEFFICIENTS) };
         let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
         let mut stages = Stages {
             q: [start.q; S],
             v: [start.v; S],
             a: [Vector::zeros(); S],
-            dq: [start.dq_dc; S],
-            dv: [start.dv_dc; S],
-            da: [[Matrix::zeros(); K]; S],
         };
         let stall = || StepError::StageDidNotConverge {
             t: start.t,
@@ -400,30 +414,26 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
             stages.a[i] = acceleration.a;
             if sensitivity {
                 let lambdas = (multipliers, &lambda);
-                self.stage_sensitivity(
-                    model,
-                    (start, &mut stages),
-                    (i, t, h),
-                    lambdas,
-                    &acceleration,
-                )
-                .ok_or_else(stall)??;
+                self.stage_sensitivity(model, (start, &stages), (i, t, h), lambdas, &acceleration)
+                    .ok_or_else(stall)??;
             }
         }
-        Ok(self.end(&stages, h))
+        Ok(self.end(&stages, h, start, sensitivity))
     }
 }
 
-impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N, D> {
+impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N>>
+    Dirk<T, S, N, Z, D>
+{
     /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
     #[inline]
-    fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>, const Z: usize, const K: usize>(
+    fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
-        stages: &mut Stages<S, N, Z, K>,
+        stages: &mut Stages<S, N>,
         i: usize,
         h: f64,
         lambda: &Vector<Z>,
@@ -480,14 +490,10 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
     /// there, which then serves as the next iteration matrix. `None` when it is singular.
     #[allow(clippy::type_complexity)]
     #[inline]
-    fn stage_sensitivity<
-        Sys: ConstrainedSystem<N, Z, Storage = D>,
-        const Z: usize,
-        const K: usize,
-    >(
+    fn stage_sensitivity<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        (start, stages): (&Start<N, Z, K>, &mut Stages<S, N, Z, K>),
+        (start, stages): (&Start<N, Z, K>, &Stages<S, N>),
         (i, t, h): (usize, f64, f64),
         (multipliers, lambda): (&Multipliers<Z, K>, &Vector<Z>),
         acceleration: &Acceleration<FactorOf<Sys, N, Z>, N, Z>,
@@ -503,11 +509,12 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
         if implicit && !self.refresh(h, (jac.dq, jac.dv)) {
             return None;
         }
+        let rows = self.sensitivities.as_mut();
         for k in 0..K {
             let (mut dq, mut dv) = (start.dq_dc[k], start.dv_dc[k]);
             for j in 0..i {
-                dq += (h * a[i][j]) * stages.dv[j][k];
-                dv += (h * a[i][j]) * stages.da[j][k];
+                dq += (h * a[i][j]) * rows[j].dv[k];
+                dv += (h * a[i][j]) * rows[j].da[k];
             }
             let w = multipliers.weight(k, c);
             if implicit {
@@ -515,9 +522,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
                 dv = self.iteration.solve(&rhs);
                 dq += hg * dv;
             }
-            stages.dq[i][k] = dq;
-            stages.dv[i][k] = dv;
-            stages.da[i][k] = jac.dq.times(&dq) + jac.dv.times(&dv) + w * jac.dp;
+            rows[i].dq[k] = dq;
+            rows[i].dv[k] = dv;
+            rows[i].da[k] = jac.dq.times(&dq) + jac.dv.times(&dv) + w * jac.dp;
         }
         Some(Ok(()))
     }
@@ -527,10 +534,13 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
     /// Radau IIA (*Solving ODEs II*, IV.8): the embedded solution is not L-stable, so the raw
     /// difference keeps a stiff component's size however short the step, and the controller
     /// would shrink the step without end; filtered, it decays like the method's own solution.
-    fn end<const Z: usize, const K: usize>(
+    /// Its sensitivities are the last stage's, or without `sensitivity` the start's.
+    fn end<const K: usize>(
         &self,
-        stages: &Stages<S, N, Z, K>,
+        stages: &Stages<S, N>,
         h: f64,
+        start: &Start<N, Z, K>,
+        sensitivity: bool,
     ) -> StepEnd<N, Z, K> {
         let last = S - 1;
         let error = Self::TABLEAU.embedded.map(|embedded| {
@@ -550,11 +560,20 @@ impl<T: Tableau<S>, const S: usize, const N: usize, D: Storage<N>> Dirk<T, S, N,
                 .solve(&(ev + hg * self.iteration.formed_dq_times(&eq)));
             (eq + hg * y, y)
         });
+        let (dq_dc, dv_dc) = if sensitivity {
+            let row = &self.sensitivities.as_ref()[last];
+            (
+                core::array::from_fn(|k| row.dq[k]),
+                core::array::from_fn(|k| row.dv[k]),
+            )
+        } else {
+            (start.dq_dc, start.dv_dc)
+        };
         StepEnd {
             q: stages.q[last],
             v: stages.v[last],
-            dq_dc: stages.dq[last],
-            dv_dc: stages.dv[last],
+            dq_dc,
+            dv_dc,
             error,
             error_low: None,
             stiffness: None,

@@ -1,8 +1,6 @@
 //! Explicit Runge–Kutta methods as data: a tableau and one stage engine for all of them.
 
-use core::marker::PhantomData;
-
-use super::{Method, Start, StepEnd};
+use super::{Blocks, Method, Start, StepEnd, MAX_COEFFICIENTS};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -135,29 +133,38 @@ pub(crate) const DOPRI5: Tableau<7> = Tableau {
     }),
 };
 
-/// An explicit method: its tableau, taken `substeps` times per step, for storage `D`.
-pub(crate) struct Explicit<const ST: usize, D> {
+/// The sensitivities of one stage's slopes `(q', q'')` to the multipliers' coefficients.
+#[derive(Clone, Copy)]
+pub(crate) struct SlopeSensitivity<const N: usize, const Z: usize> {
+    dq: Blocks<N, Z>,
+    dv: Blocks<N, Z>,
+}
+
+/// An explicit method: its tableau, taken `substeps` times per step, for storage `D`, with its
+/// stages' slope sensitivities kept in that storage.
+pub(crate) struct Explicit<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> {
     tableau: &'static Tableau<ST>,
     substeps: u32,
     /// Whether the steps estimate the stiffness (for `InnerMethod::Automatic`; a method the
     /// user chose is kept, and spared the estimate).
     estimates_stiffness: bool,
-    storage: PhantomData<D>,
+    sensitivities: D::Rows<SlopeSensitivity<N, Z>, ST>,
 }
 
-impl<const ST: usize, D> Explicit<ST, D> {
+impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST, N, Z, D> {
     pub fn new(tableau: &'static Tableau<ST>, substeps: u32, estimates_stiffness: bool) -> Self {
+        let zero = [Matrix::zeros(); MAX_COEFFICIENTS];
         Explicit {
             tableau,
             substeps: substeps.max(1),
             estimates_stiffness: estimates_stiffness && tableau.stiffness.is_some(),
-            storage: PhantomData,
+            sensitivities: D::rows(SlopeSensitivity { dq: zero, dv: zero }),
         }
     }
 }
 
 impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z, D>
-    for Explicit<ST, D>
+    for Explicit<ST, N, Z, D>
 {
     fn order(&self) -> u32 {
         self.tableau.order
@@ -179,9 +186,10 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
     ) -> Result<StepEnd<N, Z, K>, StepError> {
         let share = 1.0 / f64::from(self.substeps);
         let hs = h * share;
+        let workspace = self.sensitivities.as_mut();
         let mut end = stages(
             model,
-            self.tableau,
+            (self.tableau, &mut *workspace),
             start,
             hs,
             multipliers,
@@ -199,7 +207,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
             let s0 = f64::from(k) * share;
             end = stages(
                 model,
-                self.tableau,
+                (self.tableau, &mut *workspace),
                 &at,
                 hs,
                 multipliers,
@@ -222,7 +230,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
     }
 }
 
-impl<const ST: usize, D> Explicit<ST, D> {
+impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST, N, Z, D> {
     /// Whether the steps estimate the stiffness.
     pub fn estimates_stiffness(&self) -> bool {
         self.estimates_stiffness
@@ -230,7 +238,7 @@ impl<const ST: usize, D> Explicit<ST, D> {
 
     /// [`Method::integrate_every_stage`], the last (sub)step's stage slopes `(q', q'')` left in
     /// `slopes` (for a continuous extension).
-    pub fn integrate_every_stage_into<S, const N: usize, const Z: usize>(
+    pub fn integrate_every_stage_into<S>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         (t, q, v): (f64, &Vector<N>, &Vector<N>),
@@ -256,11 +264,12 @@ impl<const ST: usize, D> Explicit<ST, D> {
 
 /// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
 /// `sensitivity` is set (the derivative of the discrete step map, so that Newton converges
-/// quadratically). `s0` is where the (sub)step starts in the step's `s`, `span` its share;
-/// with `stiffness`, the step estimates `h|λ|` from the tableau's stiffness stages.
+/// quadratically) in the stages' rows `dk`, which only this step reads. `s0` is where the
+/// (sub)step starts in the step's `s`, `span` its share; with `stiffness`, the step estimates
+/// `h|λ|` from the tableau's stiffness stages.
 fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    tableau: &Tableau<ST>,
+    (tableau, dk): (&Tableau<ST>, &mut [SlopeSensitivity<N, Z>]),
     start: &Start<N, Z, K>,
     h: f64,
     multipliers: &Multipliers<Z, K>,
@@ -271,19 +280,19 @@ where
     S: ConstrainedSystem<N, Z>,
 {
     // Without the feature the sensitivity code is compiled out, not just skipped.
+    const { assert!(K <= MAX_COEFFICIENTS) };
     let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
-    let mut dkq = [[Matrix::<N, Z>::zeros(); K]; ST];
-    let mut dkv = [[Matrix::<N, Z>::zeros(); K]; ST];
     for i in 0..ST {
         let (q, v) = stage_state(tableau, i, h, (&start.q, &start.v), (&kq, &kv));
         let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
+        // Only stages written in this step are read: those whose slope enters.
         for j in (0..i).filter(|&j| sensitivity && tableau.a[i][j] != 0.0) {
             let w = h * tableau.a[i][j];
             for k in 0..K {
-                dq[k] += w * dkq[j][k];
-                dv[k] += w * dkv[j][k];
+                dq[k] += w * dk[j].dq[k];
+                dv[k] += w * dk[j].dv[k];
             }
         }
         let t = start.t + tableau.c[i] * h;
@@ -295,10 +304,10 @@ where
         if sensitivity && tableau.slope_enters_solution(i) {
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
-                dkq[i][k] = dv[k];
-                dkv[i][k] = jac.dq.times(&dq[k]) + multipliers.weight(k, s) * jac.dp;
+                dk[i].dq[k] = dv[k];
+                dk[i].dv[k] = jac.dq.times(&dq[k]) + multipliers.weight(k, s) * jac.dp;
                 if S::DYNAMICS_DEPEND_ON_VELOCITY {
-                    dkv[i][k] += jac.dv.times(&dv[k]);
+                    dk[i].dv[k] += jac.dv.times(&dv[k]);
                 }
             }
         }
@@ -311,11 +320,11 @@ where
         start_sensitivity,
         (&kq, &kv),
     );
-    for i in (0..ST).filter(|_| sensitivity) {
+    for i in (0..ST).filter(|&i| sensitivity && tableau.b[i] != 0.0) {
         let w = h * tableau.b[i];
         for k in 0..K {
-            end.dq_dc[k] += w * dkq[i][k];
-            end.dv_dc[k] += w * dkv[i][k];
+            end.dq_dc[k] += w * dk[i].dq[k];
+            end.dv_dc[k] += w * dk[i].dv[k];
         }
     }
     if stiffness {

@@ -23,6 +23,14 @@ use crate::polynomial::Multipliers;
 use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
+/// The most multiplier coefficients a step's sensitivity follows (quadratic multipliers' two).
+pub(crate) const MAX_COEFFICIENTS: usize = 2;
+
+/// One stage's sensitivities to each multiplier coefficient, of which a step with `K`
+/// coefficients uses the first `K`: the rows the methods keep in their storage's
+/// [`Storage::Rows`] from step to step.
+pub(crate) type Blocks<const N: usize, const Z: usize> = [Matrix<N, Z>; MAX_COEFFICIENTS];
+
 /// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
 pub(crate) struct Start<const N: usize, const Z: usize, const K: usize> {
     pub t: f64,
@@ -134,27 +142,27 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
 }
 
 /// The method the options name, with its workspace in storage `D`.
-pub(crate) enum AnyMethod<const N: usize, D: Storage<N>> {
-    Explicit4(explicit::Explicit<4, D>),
-    Explicit7(explicit::Explicit<7, D>),
+pub(crate) enum AnyMethod<const N: usize, const Z: usize, D: Storage<N>> {
+    Explicit4(explicit::Explicit<4, N, Z, D>),
+    Explicit7(explicit::Explicit<7, N, Z, D>),
     /// DOP853, with the last step kept for its continuous extension.
-    Explicit12(explicit::Explicit<12, D>, dop853::Continuous<N>),
+    Explicit12(explicit::Explicit<12, N, Z, D>, dop853::Continuous<N>),
     #[cfg(feature = "implicit")]
-    Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, D>),
+    Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, Z, D>),
     #[cfg(feature = "implicit")]
-    Dirk4(dirk::Dirk<dirk::Kvaerno3, 4, N, D>),
+    Dirk4(dirk::Dirk<dirk::Kvaerno3, 4, N, Z, D>),
     #[cfg(feature = "implicit")]
-    Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N, D>),
+    Dirk6(dirk::Dirk<dirk::KennedyCarpenter4, 6, N, Z, D>),
     #[cfg(feature = "implicit")]
-    Dirk7(dirk::Dirk<dirk::KennedyCarpenter5, 7, N, D>),
+    Dirk7(dirk::Dirk<dirk::KennedyCarpenter5, 7, N, Z, D>),
     #[cfg(feature = "implicit")]
     Alpha(alpha::GeneralizedAlpha<N, D>),
 }
 
-impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
+impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
     /// The method for scene `S`, its stage equations solved against the tolerances of
     /// adaptive `step`s.
-    pub fn new<S: ConstrainedSystem<N, Z, Storage = D>, const Z: usize>(
+    pub fn new<S: ConstrainedSystem<N, Z, Storage = D>>(
         method: InnerMethod,
         multipliers: MultiplierModel,
         step: StepControl,
@@ -175,13 +183,13 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
                 dop853::Continuous::new(),
             ),
             #[cfg(feature = "implicit")]
-            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S, Z>(step)),
+            InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new::<S, Z>(step)),
+            InnerMethod::Esdirk32 => AnyMethod::Dirk4(dirk::Dirk::new::<S>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new::<S, Z>(step)),
+            InnerMethod::Esdirk43 => AnyMethod::Dirk6(dirk::Dirk::new::<S>(step)),
             #[cfg(feature = "implicit")]
-            InnerMethod::Esdirk54 => AnyMethod::Dirk7(dirk::Dirk::new::<S, Z>(step)),
+            InnerMethod::Esdirk54 => AnyMethod::Dirk7(dirk::Dirk::new::<S>(step)),
             #[cfg(feature = "implicit")]
             InnerMethod::GeneralizedAlpha { rho_inf } => {
                 AnyMethod::Alpha(alpha::GeneralizedAlpha::new::<S, Z>(rho_inf))
@@ -190,7 +198,7 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     }
 }
 
-impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
+impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
     /// Solves stage equations against the tolerances of `step` from now on (a change of
     /// options that keeps the method keeps its workspace).
     pub fn use_step_control(&mut self, step: StepControl) {
@@ -211,7 +219,7 @@ impl<const N: usize, D: Storage<N>> AnyMethod<N, D> {
     }
 }
 
-impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMethod<N, D> {
+impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMethod<N, Z, D> {
     fn order(&self) -> u32 {
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
@@ -381,7 +389,7 @@ mod tests {
         model.prepare(&q, 0.0).unwrap();
         let start = Start::<2, 1, K>::at(0.0, q, v);
         let h = 0.05;
-        let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+        let mut stepper = AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
             method,
             HELD,
             StepControl::Fixed { step: h },
@@ -446,7 +454,7 @@ mod tests {
             (InnerMethod::DormandPrince54, false),
         ] {
             let h = 2e-4;
-            let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+            let mut stepper = AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
                 method,
                 HELD,
                 StepControl::Fixed { step: h },
@@ -561,7 +569,7 @@ mod tests {
             coefficients: [Vector::from([-6.0])],
             first_power: 0,
         };
-        let mut stepper = AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+        let mut stepper = AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
             InnerMethod::GeneralizedAlpha { rho_inf: 0.6 },
             HELD,
             FIXED,
@@ -571,7 +579,7 @@ mod tests {
             .unwrap()
             .a;
         Method::<2, 1, Dense>::restart(&mut stepper, || Ok(a0));
-        let mut step = |stepper: &mut AnyMethod<2, Dense>, h: f64| {
+        let mut step = |stepper: &mut AnyMethod<2, 1, Dense>, h: f64| {
             stepper
                 .integrate(&mut model, &start, h, &multipliers, false)
                 .unwrap()
@@ -589,12 +597,12 @@ mod tests {
     #[test]
     fn orders_are_those_of_the_tableaux() {
         let order = |m: InnerMethod| {
-            Method::<2, 1, Dense>::order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+            Method::<2, 1, Dense>::order(&AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
                 m, HELD, FIXED,
             ))
         };
         let embedded = |m: InnerMethod| {
-            Method::<2, 1, Dense>::embedded_order(&AnyMethod::<2, Dense>::new::<SpringPendulum, 1>(
+            Method::<2, 1, Dense>::embedded_order(&AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
                 m, HELD, FIXED,
             ))
         };

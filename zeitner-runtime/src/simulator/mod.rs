@@ -3,9 +3,11 @@
 //! is a part of its own (`multipliers`, `method`, [`crate::control`], [`crate::consistency`],
 //! [`crate::output`]); this module puts them in order: one step as a transaction in `attempt`
 //! (in `every_stage` for the multipliers solved at every stage, which need no Newton), what the
-//! step found (events, gaps, impacts) in `crossings`, changes made mid-run in `reconfigure`, and
-//! what an observer sees in `observation`.
+//! step found (events, gaps, impacts) in `crossings`, changes made mid-run in `reconfigure`, the
+//! one re-anchoring at a consistent point in `anchor`, and what an observer sees in
+//! `observation`.
 
+mod anchor;
 mod attempt;
 mod crossings;
 mod every_stage;
@@ -17,6 +19,7 @@ use start::{start_point, suits_the_rows, watch_at};
 
 pub use observation::Observation;
 
+use anchor::Forget;
 use attempt::Attempt;
 
 use crate::consistency::{Gram, StartReport};
@@ -56,7 +59,7 @@ pub struct Statistics {
 /// it untouched.
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
-    method: AnyMethod<N, S::Storage>,
+    method: AnyMethod<N, Z, S::Storage>,
     /// The method that steps now: the options' one, `Automatic` resolved.
     active: InnerMethod,
     /// Whether the steps are bound by stability, for `Automatic`'s change of method.
@@ -115,17 +118,6 @@ const RELOCATIONS: u32 = 64;
 /// How many of those aim at the crossing located on the dense output; the rest halve the step.
 const AIMED_RELOCATIONS: u32 = 8;
 
-/// What re-anchoring the run at a consistent point forgets besides the multipliers' history
-/// and the inner method's memory.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Forget {
-    /// Nothing more: the step size and its controller go on (a re-projection).
-    History,
-    /// The step size, its controller and the remainder carried towards stop times too (a new
-    /// state, an impact).
-    Steps,
-}
-
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// Starts at `(q0, v0)` at time `t0`. With the default [`crate::StartPolicy::Project`] the
     /// start is first made consistent — positions projected onto `g = 0` and velocities onto
@@ -155,7 +147,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
-            method: AnyMethod::new::<S, Z>(options.method, options.multipliers, options.step),
+            method: AnyMethod::new::<S>(options.method, options.multipliers, options.step),
             active: options.method.first(options.multipliers),
             stiffness: StiffnessTest::default(),
             options,
@@ -326,44 +318,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The gaps whose contact is closed now.
     pub fn closed_gaps(&self) -> GapSet {
         GapSet::first(S::UNILATERAL_CONSTRAINTS).without(self.model.open_gaps())
-    }
-
-    /// Goes on from a consistent point `last.end` made at a new state, a re-projection or an
-    /// impact: the one transaction that re-anchors the run there. The state, the report, the
-    /// watched functions' values and (where the point was made as a start) the start report are
-    /// replaced; the multipliers' history and the inner method's memory start afresh from the
-    /// point's acceleration, and with [`Forget::Steps`] the step size too. Cold: off the step's
-    /// hot path.
-    #[cold]
-    fn anchor(
-        &mut self,
-        (last, watch, start): (StepReport<N, Z>, Watch, Option<StartReport<N, Z>>),
-        forget: Forget,
-    ) {
-        let point = last.end;
-        (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        (self.last, self.watch) = (last, watch);
-        if let Some(report) = start {
-            self.start_report = report;
-        }
-        self.predictor.reset();
-        self.state_gram = None;
-        self.pending.singular = false;
-        Method::<N, Z, S::Storage>::restart(&mut self.method, || Ok(point.a));
-        if forget == Forget::Steps {
-            self.t_carry = 0.0;
-            self.controller = Controller::new();
-            self.planned_step = first_step(self.options.step);
-        }
-    }
-
-    /// After a discontinuity the multipliers' history, and the inner method's memory, say
-    /// nothing about what follows. Cold: kept out of the step's hot path.
-    #[cold]
-    fn restart_predictors(&mut self) {
-        self.predictor.reset();
-        self.state_gram = None;
-        self.restart_method();
     }
 
     /// Steps to `t_end`, calling `observer` after every accepted step; the observer sees the

@@ -26,7 +26,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let new_method =
             options.method != self.options.method || !self.active.takes(options.multipliers);
         let previous_method = new_method.then(|| {
-            let method = AnyMethod::new::<S, Z>(options.method, options.multipliers, options.step);
+            let method = AnyMethod::new::<S>(options.method, options.multipliers, options.step);
             core::mem::replace(&mut self.method, method)
         });
         let previous_active = self.active;
@@ -155,7 +155,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let Some(next) = self.options.method.when_stiff() else {
             return;
         };
-        let method = AnyMethod::new::<S, Z>(next, self.options.multipliers, self.options.step);
+        let method = AnyMethod::new::<S>(next, self.options.multipliers, self.options.step);
         let previous = core::mem::replace(&mut self.method, method);
         let factorizations = Method::<N, Z, S::Storage>::factorizations(&previous);
         self.statistics.iteration_matrix_factorizations += factorizations;

@@ -16,6 +16,7 @@ impl<const N: usize> Storage<N> for Dense {
     type Square = Matrix<N, N>;
     type Derivatives = DenseDerivatives<N>;
     type Iteration = DenseIteration<N>;
+    type Rows<T: Copy + 'static, const L: usize> = [T; L];
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>(
     ) -> Result<DenseDerivatives<N>, StepError> {
@@ -30,6 +31,10 @@ impl<const N: usize> Storage<N> for Dense {
             factor: IterationFactor::new(Matrix::identity()).expect("I is regular"),
             dq: Matrix::zeros(),
         }
+    }
+
+    fn rows<T: Copy + 'static, const L: usize>(fill: T) -> [T; L] {
+        [fill; L]
     }
 }
 

@@ -36,11 +36,17 @@ pub trait Storage<const N: usize>: Sized + 'static {
     type Derivatives: Derivatives<N, Self::Square>;
     /// An iteration matrix and its factor, kept by an implicit method.
     type Iteration: Iteration<N, Self::Square>;
+    /// `L` rows of `T` a method keeps from step to step, the stages' N×Z sensitivity blocks:
+    /// in place where the scene is small, on the heap (allocated when the method is built)
+    /// where a thousand coordinates would put megabytes on a thread's stack.
+    type Rows<T: Copy + 'static, const L: usize>: AsRef<[T]> + AsMut<[T]>;
 
     /// The derivatives' workspace for `S`, or the refusal naming what this storage cannot hold.
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<Self::Derivatives, StepError>;
     /// An iteration matrix's workspace for `S`, nothing formed yet.
     fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> Self::Iteration;
+    /// `L` rows, each `fill`.
+    fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Self::Rows<T, L>;
 }
 
 /// An N×N matrix as a storage keeps it.

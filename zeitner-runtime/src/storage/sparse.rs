@@ -2,6 +2,7 @@
 //! iteration matrix factorised by faer's sparse LU (COLAMD ordering and symbolic analysis once,
 //! when the simulator is built; each refresh is a numeric factorisation into kept storage).
 
+use alloc::boxed::Box;
 use alloc::vec;
 use alloc::vec::Vec;
 use core::cell::RefCell;
@@ -29,6 +30,7 @@ impl<const N: usize> Storage<N> for Sparse {
     type Square = SparseSquare;
     type Derivatives = SparseDerivatives;
     type Iteration = SparseIteration;
+    type Rows<T: Copy + 'static, const L: usize> = Box<[T]>;
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<SparseDerivatives, StepError>
     {
@@ -43,6 +45,10 @@ impl<const N: usize> Storage<N> for Sparse {
     fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> SparseIteration {
         let [dq, dv] = derivative_patterns::<S, N, Z>();
         SparseIteration::new(N, (&dq, &dv), Z.max(1))
+    }
+
+    fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Box<[T]> {
+        vec![fill; L].into_boxed_slice()
     }
 }
 
