@@ -125,12 +125,68 @@ fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    match Cli::parse().command {
+    run(Cli::parse().command)
+}
+
+fn run(command: Command) -> Result<(), Box<dyn std::error::Error>> {
+    match command {
         Command::WorkPrecision(args) => work_precision::run(args),
         Command::Stability(args) => stability_report(args),
         Command::Fuzz(args) => fuzz_command::fuzz(args),
         Command::FuzzWorker(args) => fuzz_command::worker(args),
         Command::Scaling(args) => scaling::report(args),
         Command::ScalingProbe(args) => scaling::probe(args),
+    }
+}
+
+/// The benchmark's command line as a user types it, run in this process: the tables and figures
+/// it writes. Unit tests rather than an integration test, which would build the benchmark a
+/// second time.
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HEADER: &str = "scene,method,setting,error_q,error_v,error_lambda,max_g,steps,newton_iterations,cpu_seconds,allocations";
+
+    /// `work-precision --quick` on `scenes` into a fresh directory: each scene's CSV has the
+    /// documented header and rows, and its figure is written.
+    fn quick_run_writes(scenes: &[&str], name: &str) {
+        let dir = std::env::temp_dir().join(format!("zeitner-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let output = dir.to_str().expect("a UTF-8 temporary directory");
+        let line = [
+            "zeitner-bench",
+            "work-precision",
+            "--quick",
+            "--output-dir",
+            output,
+        ];
+        let scene_list = scenes.join(",");
+        let cli = Cli::try_parse_from(line.into_iter().chain(["--scenes", &scene_list]))
+            .expect("the command line parses");
+        run(cli.command).expect("the run succeeds");
+        for scene in scenes {
+            let csv = std::fs::read_to_string(dir.join(format!("{scene}.csv"))).expect("a CSV");
+            let mut lines = csv.lines();
+            assert_eq!(lines.next(), Some(HEADER), "{scene}");
+            assert!(lines.next().is_some(), "{scene}: no rows");
+            let png = std::fs::metadata(dir.join(format!("{scene}.png"))).expect("a figure");
+            assert!(png.len() > 0, "{scene}: empty figure");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_quick_work_precision_run_writes_its_tables_and_figures() {
+        quick_run_writes(&["pendulum", "steam_generator", "andrews"], "quick");
+    }
+
+    /// Every scene, about a minute at the tests' opt-level 1: CI runs it
+    /// (`cargo test --workspace --bin zeitner-bench -- --ignored every_scene`).
+    #[test]
+    #[ignore = "about a minute; CI runs it"]
+    fn every_scene_runs_quickly_and_writes_its_tables_and_figures() {
+        let scenes: Vec<&str> = work_precision::registry::names().collect();
+        quick_run_writes(&scenes, "every-scene");
     }
 }
