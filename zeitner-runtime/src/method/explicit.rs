@@ -279,8 +279,8 @@ fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
 where
     S: ConstrainedSystem<N, Z>,
 {
-    // Without the feature the sensitivity code is compiled out, not just skipped.
     const { assert!(K <= MAX_COEFFICIENTS) };
+    // Without the feature the sensitivity code is compiled out, not just skipped.
     let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
