@@ -35,8 +35,8 @@ pub struct Args {
     #[arg(long)]
     quick: bool,
     /// Also run the peers: CasADi's IDAS and Exudyn, installed into a virtual environment under
-    /// the output folder on first use, and the Rust peers built with `--features diffsol` and
-    /// `--features differential-equations`.
+    /// the output folder on first use, and the Rust peers (the features `diffsol` and
+    /// `differential-equations`, on by default).
     #[arg(long)]
     peers: bool,
     /// Folder for the CSVs and plots.

@@ -260,7 +260,7 @@ pub fn rust_peers<
 /// Runs one configuration: `(method, setting, options, repeats)`.
 pub type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
 /// Runs the in-process peers for these relative tolerances: `(method, run)` for each peer
-/// built (`--features diffsol`, `--features differential-equations`).
+/// built (the features `diffsol` and `differential-equations`, on by default).
 pub type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<(&'static str, peers::PeerRun)>>;
 
 /// How an end state's error is measured against the reference's, per part (q, q' or λ).

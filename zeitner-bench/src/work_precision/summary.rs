@@ -71,11 +71,11 @@ pub fn peer_rows(
         );
     }
     if !cfg!(feature = "diffsol") {
-        println!("peer-diffsol-bdf not built: add --features diffsol");
+        println!("peer-diffsol-bdf not built: the feature diffsol is off");
     }
     if !cfg!(feature = "differential-equations") {
         println!(
-            "the differential-equations peers not built: add --features differential-equations"
+            "the differential-equations peers not built: the feature differential-equations is off"
         );
     }
     (rows, setups)
@@ -186,9 +186,9 @@ fn preamble(repeats: usize) -> String {
          with its dense full-pivoting LU, which passes over their dependent rows; not the wall \
          pendulum, whose contact Exudyn models as a penalty spring; its adaptiveStep off, so a \
          setting whose Newton fails is a failure, not silently shorter steps); in process, calling the scenes' generated functions and with the Jacobians of \
-         their generated derivatives: with `--features diffsol`, diffsol 0.18's BDF, ESDIRK 3(4) and \
-         TR-BDF2 on the index-1 formulation (the multipliers out of the error test); with \
-         `--features differential-equations`, differential-equations 0.7's Radau5 on the index-3 and \
+         their generated derivatives: diffsol 0.18's BDF, ESDIRK 3(4) and \
+         TR-BDF2 on the index-1 formulation (the multipliers out of the error test); \
+         differential-equations 0.7's Radau5 on the index-3 and \
          index-2 formulations (variables' indices declared as RADAU5 asks) and its DOP853 on the \
          index-1 ODE, projected back onto the constraints when it leaves them by more than atol \
          (over the last four first-step lengths, where the crate cannot restart, only the end \

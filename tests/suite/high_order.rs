@@ -3,7 +3,7 @@
 //! ODE and the steam generator's reduced-coordinate solution; Andrews' mechanism agrees with the
 //! published values within their reliability.
 
-mod common;
+use crate::common;
 
 use common::andrews::{published_end, Andrews};
 use common::pendulum::Pendulum;

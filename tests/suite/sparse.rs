@@ -1,7 +1,7 @@
 //! The sparse simulator against independent references: the pendulum's angle ODE, the knife
 //! edge's closed form (velocity-level rows), and the dense simulator on a chain.
 
-mod common;
+use crate::common;
 
 use common::andrews::Andrews;
 use common::chain::{Chain100, Chain16};

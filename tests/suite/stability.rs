@@ -2,7 +2,7 @@
 //! stay stable, and the cases that must fail do so with the right typed error while the
 //! simulator keeps its last accepted state.
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use common::steam_generator::SteamGenerator;

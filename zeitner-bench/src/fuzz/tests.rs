@@ -3,17 +3,11 @@
 //! may panic, hang or break a promise of the runtime. A failing seed replays with
 //! `cargo run --release -p zeitner-bench -- fuzz --seed S --runs 1 --trace`.
 
-use zeitner_scenes as scenes;
-
-#[allow(dead_code)]
-#[path = "../zeitner-bench/src/fuzz/mod.rs"]
-mod fuzz;
-
 use std::panic::{self, AssertUnwindSafe};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use fuzz::cases::{self, Budget, FailureClass};
+use super::cases::{self, Budget, FailureClass};
 
 /// The seeds of this run: fixed, so that a failure here is a failure every time.
 const SEEDS: std::ops::Range<u64> = 0..300;
@@ -92,11 +86,11 @@ fn a_seeded_fuzz_run_breaks_no_promise() {
 
 // ---------------------------------------------------------------------------------------------
 // Minimal repros of the runtime bugs the fuzzer found, ignored until they are fixed (run them
-// with `cargo test --test fuzz -- --ignored`). Each states the promise it checks; once its bug
+// with `cargo test -p zeitner-bench fuzz -- --ignored`). Each states the promise it checks; once its bug
 // is fixed, remove its `#[ignore]` and it guards the fix.
 
-use fuzz::scenes::{FollowerPendulum, Sleigh};
-use scenes::pendulum::Pendulum;
+use super::scenes::{FollowerPendulum, Sleigh};
+use crate::scenes::pendulum::Pendulum;
 use zeitner::{ControllerSettings, Options, Simulator, StepControl, Vector, VelocityProjection};
 
 const PENDULUM: Pendulum = Pendulum {
@@ -371,7 +365,7 @@ fn contact_scene_seeds_of_the_long_run() {
 // ---------------------------------------------------------------------------------------------
 // Contact scenes: gaps that must not be passed through. Both fail today (not fixed yet).
 
-use scenes::contact::{Ball, FallingBar};
+use crate::scenes::contact::{Ball, FallingBar};
 
 /// The lowest gap value at any step end of `advance_to(t_end)` with the default options.
 fn lowest_gap<const N: usize, const Z: usize, S: zeitner::ConstrainedSystem<N, Z>>(
@@ -443,7 +437,7 @@ fn a_bar_started_into_one_contact_must_not_sink_its_other_end() {
 /// its end time, or stop with a typed error, within a bounded number of steps.
 #[test]
 fn a_two_link_arm_must_not_stall() {
-    use fuzz::scenes::TwoLinkArm;
+    use super::scenes::TwoLinkArm;
     use zeitner::{MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector};
     for sensitivity in [Sensitivity::Paper, Sensitivity::Exact] {
         let q0 = Vector::<2>::new(-0.000414, 0.0470);

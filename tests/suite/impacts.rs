@@ -111,7 +111,7 @@ fn a_ball_bounces_at_the_closed_form_times() {
     assert_eq!(impacts.len(), 11);
 }
 
-mod common;
+use crate::common;
 use common::contact::{Ball as GeneratedBall, FallingBar, WallPendulum};
 
 /// A generated ball dropped from 1 m at rest, default options.

@@ -2,7 +2,7 @@
 //! column and struck by a strut after a clearance — against its modal reference: the phase
 //! before the strut engages in closed form, and the time it engages.
 
-mod common;
+use crate::common;
 
 use common::modal::{ModalState, Modes};
 use common::structure::{Column, Lumped, Structure100, Structure16};

@@ -1,6 +1,6 @@
 //! Bad input gets a typed error, never a panic, and a failed step loses nothing.
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use proptest::prelude::*;

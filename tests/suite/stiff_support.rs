@@ -2,7 +2,7 @@
 //! L-stable ESDIRKs 3(2), 4(3) and 5(4) follow their tolerance with steps far longer than the support's period,
 //! and Dormand–Prince gets there too, with the steps its stability allows.
 
-mod common;
+use crate::common;
 
 use common::reference::spring_supported_pendulum;
 use common::relative_error;

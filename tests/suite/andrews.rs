@@ -3,7 +3,7 @@
 //! 1e-7 in q', 1e-5 in λ.
 #![allow(clippy::excessive_precision)] // the published digits, as published
 
-mod common;
+use crate::common;
 
 use common::andrews::{published_end, Andrews};
 use zeitner::{

@@ -1,7 +1,7 @@
 //! Velocity-level (nonholonomic) constraints: the knife edge on an inclined plane against its
 //! closed form.
 
-mod common;
+use crate::common;
 
 use common::knife_edge::{KnifeEdge, SteeredKnifeEdge};
 use zeitner::{

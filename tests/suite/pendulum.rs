@@ -2,7 +2,7 @@
 //! (`../shared/references/pendulum.md`): θ'' = -(g/L) sin θ, x = L sin θ, y = -L cos θ,
 //! and λ from the radial balance m L θ'² + m g cos θ = 2 L λ (G = (2x, 2y)).
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use common::reference::pendulum_released_horizontally;

@@ -2,9 +2,9 @@
 //! differences of the generated values themselves (the user's equations), and Andrews' `G`
 //! against dual numbers of an independent transcription of the published constraints.
 
-mod common;
+use crate::common;
 #[allow(dead_code)]
-#[path = "ui/pass/full_grammar.rs"]
+#[path = "../ui/pass/full_grammar.rs"]
 mod full_grammar;
 
 use common::andrews::Andrews;

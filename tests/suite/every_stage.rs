@@ -4,7 +4,7 @@
 //! angle ODE) and on a velocity-level row (the knife edge against its closed form); adaptive
 //! steps follow the tolerance on the steam generator against its reduced-coordinate solution.
 
-mod common;
+use crate::common;
 
 use common::knife_edge::KnifeEdge;
 use common::pendulum::Pendulum;

@@ -1,7 +1,7 @@
 //! After construction the simulation loop allocates nothing: a counting global allocator sees
 //! zero allocations over 10⁴ steps, for the explicit, adaptive and implicit inner methods.
 
-mod common;
+use crate::common;
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;

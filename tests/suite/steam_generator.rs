@@ -1,7 +1,7 @@
 //! The paper's steam generator against an independent reduced-coordinate solution
 //! (derived in `zeitner-scenes/src/reference.rs`).
 
-mod common;
+use crate::common;
 
 use common::reference::steam_generator as reference;
 use common::relative_error;

@@ -4,7 +4,7 @@
 //! advance the time must end with a typed error, not go on for ever. References: the energy
 //! (conserved in every scene here) and the run without the short step.
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use common::reference::steam_generator as steam_reference;

@@ -2,7 +2,7 @@
 //! initial multipliers, a start that is refused or projected with a report, re-initialisation,
 //! and options refused with a sentence that says what to change.
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use zeitner::{

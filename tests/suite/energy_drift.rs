@@ -6,7 +6,7 @@
 //! grew as the tolerance fell. The energy is that of the integration state (raw velocities,
 //! `VelocityProjection::Off`; the integration is the same as with the default `Output`).
 
-mod common;
+use crate::common;
 
 use common::stiff::DoublePendulum;
 use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector, VelocityProjection};
@@ -66,7 +66,7 @@ fn twenty_seconds_of_a_double_pendulum_keep_their_energy_at_tight_tolerances() {
     }
 }
 
-/// The long run: `cargo test --release --test energy_drift -- --ignored --nocapture`.
+/// The long run: `cargo test --release --test suite energy_drift:: -- --ignored --nocapture`.
 /// Constant multipliers (as the README's table), constant with `constraint_tolerance: 1e-14`,
 /// and the defaults (`Automatic`: quadratic with Dormand–Prince).
 #[test]

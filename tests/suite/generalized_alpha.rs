@@ -3,7 +3,7 @@
 //! pendulum against the reduced-coordinate reference, and that its memory (the algorithmic
 //! acceleration) is committed only by accepted steps.
 
-mod common;
+use crate::common;
 
 use common::contact::Ball;
 use common::pendulum::Pendulum;
