@@ -140,7 +140,7 @@ fn the_default_method_turns_implicit_without_allocating() {
         .unwrap();
     let (first, last, allocations, after) = run.join().unwrap();
     println!("turned implicit after {after:?} steps");
-    assert_eq!(first, InnerMethod::Dop853);
+    assert_eq!(first, InnerMethod::Verner98);
     assert!(after.is_some_and(|steps| steps <= 50), "{after:?}");
     assert_eq!(last, InnerMethod::Esdirk54);
     assert_eq!(allocations, 0);

@@ -243,26 +243,49 @@ fn steered_knife_edge_orders() {
     }
 }
 
-/// Adaptive steps with the default (quadratic) multipliers: the error falls with the tolerance
-/// over four decades, by at least a factor 4 per decade (`rtol^(4/5)` is the slope of an order-4
-/// error with the error per step controlled).
+/// The largest of q, q', λ's errors for each of `rtols` with adaptive steps, `method` and
+/// `multipliers`.
+fn worst_errors(rtols: &[f64], method: InnerMethod, multipliers: MultiplierModel) -> Vec<f64> {
+    rtols
+        .iter()
+        .map(|&rtol| {
+            let options = Options {
+                method,
+                ..adaptive(rtol, multipliers)
+            };
+            errors(options).into_iter().fold(0.0, f64::max)
+        })
+        .collect()
+}
+
+/// Adaptive steps of Dormand–Prince with quadratic multipliers: the error falls with the
+/// tolerance over four decades, by at least a factor 4 per decade (`rtol^(4/5)` is the slope of
+/// an order-4 error with the error per step controlled).
 #[test]
 fn adaptive_error_follows_the_tolerance() {
     let rtols = [1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
-    let worst: Vec<f64> = rtols
-        .iter()
-        .map(|&rtol| {
-            errors(adaptive(rtol, MultiplierModel::Automatic))
-                .into_iter()
-                .fold(0.0, f64::max)
-        })
-        .collect();
+    let method = InnerMethod::DormandPrince54;
+    let worst = worst_errors(&rtols, method, MultiplierModel::Quadratic);
     eprintln!("errors for rtol 1e-6 … 1e-10: {worst:?}");
     for pair in worst.windows(2) {
         assert!(pair[1] < pair[0] / 4.0, "{worst:?}");
     }
     let slope = (worst[0] / worst[4]).log10() / 4.0;
     assert!((0.7..=1.2).contains(&slope), "log–log slope {slope:.2}");
+}
+
+/// The default options (Verner's 9(8) pair at these tolerances) stay within the tolerance and
+/// their error falls over the four decades: its order keeps it far below the tolerance at the
+/// loose end (9e-10 at rtol 1e-6), so it need not fall by a factor per decade there.
+#[test]
+fn the_default_stays_within_the_tolerance() {
+    let rtols = [1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+    let worst = worst_errors(&rtols, InnerMethod::Automatic, MultiplierModel::Automatic);
+    eprintln!("errors for rtol 1e-6 … 1e-10: {worst:?}");
+    for (error, rtol) in worst.iter().zip(rtols) {
+        assert!(*error <= rtol, "{worst:?}");
+    }
+    assert!(worst[4] < worst[0] / 100.0, "{worst:?}");
 }
 
 /// Constant multipliers with adaptive steps on the knife edge's velocity-level row: the step

@@ -130,7 +130,7 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
             let options = Options::default();
             let (q0, v0) = (Vector::from(q0), Vector::from(v0));
             let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
-            assert_eq!(sim.method(), InnerMethod::Dop853);
+            assert_eq!(sim.method(), InnerMethod::Verner98);
             let t = modes.first_contact() - 1e-3;
             sim.advance_to(t, |_| {}).unwrap();
             let errors = against(&sim.last().end, &modes.state(t));

@@ -164,7 +164,15 @@ mod tests {
         let scene_list = scenes.join(",");
         let cli = Cli::try_parse_from(line.into_iter().chain(["--scenes", &scene_list]))
             .expect("the command line parses");
-        run(cli.command).expect("the run succeeds");
+        // On a stack like the benchmark's main thread (8 MiB), not a test thread's 2 MiB: the
+        // dense chains' fixed-size blocks need more in some builds (CI's, non-incremental).
+        std::thread::Builder::new()
+            .stack_size(8 << 20)
+            .spawn(move || run(cli.command).map_err(|error| error.to_string()))
+            .expect("a thread for the run")
+            .join()
+            .expect("the run does not panic")
+            .expect("the run succeeds");
         for scene in scenes {
             let csv = std::fs::read_to_string(dir.join(format!("{scene}.csv"))).expect("a CSV");
             let mut lines = csv.lines();

@@ -158,6 +158,14 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
                 ..base
             },
         ),
+        (
+            "verner98-every-stage",
+            Options {
+                method: InnerMethod::Verner98,
+                step: adaptive,
+                ..base
+            },
+        ),
         // The default method and multipliers: DOP853 until stiff, then ESDIRK 5(4).
         (
             "automatic-adaptive",

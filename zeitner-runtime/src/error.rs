@@ -180,7 +180,7 @@ pub enum InvalidOption {
     /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
     SpectralRadius,
     /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`,
-    /// `EveryStage` with an implicit method, held multipliers with `Dop853`.
+    /// `EveryStage` with an implicit method, held multipliers with `Dop853` or `Verner98`.
     MultipliersForMethod,
     /// Constant multipliers with adaptive steps on a system with velocity-level rows: the step
     /// control cannot hold them to the tolerance.
@@ -247,9 +247,9 @@ impl fmt::Display for InvalidOption {
                 "the inner method cannot take this multiplier model: generalised-α evaluates the \
                  multipliers only at the step's ends, where the two coefficients of \
                  `MultiplierModel::Quadratic` act alike; `EveryStage` solves them at the \
-                 stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`); and \
-                 `Dop853` takes only `EveryStage`, since held multipliers would cap its order \
-                 at 5 where its error estimate assumes 8. Use `Automatic`, or another inner \
+                 stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`, \
+                 `Verner98`); and `Dop853` and `Verner98` take only `EveryStage`, since held \
+                 multipliers would cap their order at 5 where their error estimates assume 8. Use `Automatic`, or another inner \
                  method",
             ),
             InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(

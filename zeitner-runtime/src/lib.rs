@@ -70,7 +70,7 @@ pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use model::Evaluations;
 pub use options::{
     ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
-    StartPolicy, StepControl, VelocityProjection,
+    StartPolicy, StepControl, VelocityProjection, VERNER_FROM_RTOL,
 };
 pub use output::{Direction, Point, StepReport, StopReason};
 pub use simulator::{Observation, Simulator, Statistics};

@@ -135,8 +135,9 @@ fn sensible_options(rng: &mut Rng) -> Options {
     } else {
         MultiplierModel::Quadratic
     };
-    // DOP853 takes only the multipliers solved at every stage, its automatic model.
-    let multipliers = if method == InnerMethod::Dop853 {
+    // The high-order pairs take only the multipliers solved at every stage, their automatic
+    // model.
+    let multipliers = if method.needs_every_stage() {
         MultiplierModel::Automatic
     } else {
         multipliers
@@ -218,7 +219,7 @@ pub fn generate(seed: u64) -> AccuracyCase {
     if disturbances.sparse {
         // What the sparse simulator runs.
         options.multipliers = MultiplierModel::Constant;
-        if options.method == InnerMethod::Dop853 {
+        if options.method.needs_every_stage() {
             options.method = InnerMethod::DormandPrince54;
         }
     }
@@ -272,8 +273,9 @@ fn disturbances(
     let set_options_after = pick(rng).filter(|_| rng.random_bool(0.25)).map(|k| {
         let mut changed = *options;
         match rng.random_range(0..3) {
-            // DOP853 takes only its own multipliers: the change is to Dormand–Prince.
-            0 if options.method == InnerMethod::Dop853 => {
+            // The high-order pairs take only their own multipliers: the change is to
+            // Dormand–Prince.
+            0 if options.method.needs_every_stage() => {
                 changed.method = InnerMethod::DormandPrince54;
                 changed.multipliers = MultiplierModel::Quadratic;
             }

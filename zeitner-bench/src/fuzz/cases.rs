@@ -748,26 +748,28 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
 }
 
 /// The default `Automatic` (which starts with DOP853, or Dormand–Prince with held multipliers),
-/// Dormand–Prince or DOP853, drawn
-/// from a stream of its own like [`implicit_method`], so that every case's model and settings
-/// stay as they were.
+/// Dormand–Prince, or one of the high-order pairs (DOP853, Verner's 9(8)), drawn from a stream
+/// of its own like [`implicit_method`], so that every case's model and settings stay as they
+/// were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
     let mut side = side_stream(rng, 0xa070_3a71_c0de_5eed);
     if side.random_bool(0.5) {
         InnerMethod::Automatic
     } else if side.random_bool(1.0 / 3.0) {
-        InnerMethod::Dop853
+        // One draw more on the side stream: the cases drawn before Verner's pair stay the same
+        // but for their pair.
+        [InnerMethod::Dop853, InnerMethod::Verner98][side.random_range(0..2)]
     } else {
         InnerMethod::DormandPrince54
     }
 }
 
 /// `drawn`, or for an explicit method one time in four the multipliers solved at every stage,
-/// drawn from a stream of its own; for DOP853, which refuses held multipliers, its automatic
-/// model nine times in ten.
+/// drawn from a stream of its own; for the high-order pairs, which refuse held multipliers,
+/// their automatic model nine times in ten.
 pub fn multiplier_model(rng: &Rng, method: InnerMethod, drawn: MultiplierModel) -> MultiplierModel {
     let mut side = side_stream(rng, 0xe7e2_5a9e_0f1d_ac3b);
-    if method == InnerMethod::Dop853 && side.random_bool(0.9) {
+    if method.needs_every_stage() && side.random_bool(0.9) {
         MultiplierModel::Automatic
     } else if !method.is_implicit() && side.random_bool(0.25) {
         MultiplierModel::EveryStage
@@ -810,6 +812,7 @@ fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
     let adaptive = match method {
         InnerMethod::DormandPrince54
         | InnerMethod::Dop853
+        | InnerMethod::Verner98
         | InnerMethod::Automatic
         | InnerMethod::Esdirk32
         | InnerMethod::Esdirk43

@@ -204,6 +204,10 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
             "zeitner-every-stage-dop853",
             grid.every_stage(InnerMethod::Dop853),
         ),
+        method(
+            "zeitner-every-stage-verner98",
+            grid.every_stage(InnerMethod::Verner98),
+        ),
         // Order 3: below 1e-10 the steps get too many for a benchmark run.
         method(
             "zeitner-quadratic-lambda-esdirk32-exactQ",

@@ -4,24 +4,13 @@
 // The coefficients keep the digits they are published with.
 #![allow(clippy::excessive_precision)]
 
-use super::explicit::{stiffness_against_end, ProbeStates, StiffnessProbe, Tableau};
+use super::continuous::{self, Extension};
+use super::explicit::{row, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::output::Point;
 use crate::system::{ConstrainedSystem, Vector};
-
-/// A row of `L` coefficients from its nonzero entries (the tableau's over its twelve stages,
-/// the continuous extension's over its sixteen slopes).
-const fn row<const L: usize>(entries: &[(usize, f64)]) -> [f64; L] {
-    let mut row = [0.0; L];
-    let mut k = 0;
-    while k < entries.len() {
-        row[entries[k].0] = entries[k].1;
-        k += 1;
-    }
-    row
-}
 
 /// The weights of the eighth-order solution. `dop853.f`'s thirteenth stage, the solution's
 /// slope, serves the next step (first same as last) and the dense output, not the estimates.
@@ -260,72 +249,27 @@ const DENSE_D: [[f64; SLOPES]; 4] = [
     ]),
 ];
 
-/// The last step DOP853 integrated with the multipliers at every stage, kept for its
-/// continuous extension of order 7 (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.6, as
-/// `dop853.f`'s `contd8`): three more stages and a polynomial in `s = (t - t₀)/h`, formed when
-/// the step is first sampled. The step's own end point closes it (its end and its slope), so
-/// that it meets the projected end.
-pub(crate) struct Continuous<const N: usize> {
-    /// The stages' slopes `(q', q'')`, written by the integration.
-    pub slopes: ([Vector<N>; 12], [Vector<N>; 12]),
-    /// The step the slopes are of: its start `(t, q, q')` and size.
-    step: Option<(f64, Vector<N>, Vector<N>, f64)>,
-    /// The polynomial's coefficients for `(q, q')`, once formed.
-    coefficients: Option<[(Vector<N>, Vector<N>); 8]>,
-}
+/// DOP853's continuous extension of order 7 (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.6,
+/// as `dop853.f`'s `contd8`): three more stages and a polynomial in `s`, closed by the step's
+/// own end point (its end and its slope), so that it meets the projected end.
+pub(crate) struct Dense;
 
-impl<const N: usize> Continuous<N> {
-    pub fn new() -> Self {
-        Continuous {
-            slopes: ([Vector::zeros(); 12], [Vector::zeros(); 12]),
-            step: None,
-            coefficients: None,
-        }
-    }
+/// The last step DOP853 integrated with the multipliers at every stage.
+pub(crate) type Continuous<const N: usize> = continuous::Continuous<N, 12, Dense>;
 
-    /// The slopes now held are those of the step from `(t, q, q')` of size `h`.
-    pub fn integrated(&mut self, (t, q, v): (f64, &Vector<N>, &Vector<N>), h: f64) {
-        self.step = Some((t, *q, *v, h));
-        self.coefficients = None;
-    }
+impl<const N: usize> Extension<N, 12> for Dense {
+    type Polynomial = [(Vector<N>, Vector<N>); 8];
 
-    /// Forgets the step (a failed integration overwrote some of its slopes).
-    pub fn forget(&mut self) {
-        self.step = None;
-        self.coefficients = None;
-    }
-
-    /// The stiffness estimate of the step held against its end point `end` (`dop853.f`'s test:
-    /// the last stage against the solution's slope).
-    pub fn stiffness_against<const Z: usize>(&self, end: &Point<N, Z>) -> Option<f64> {
-        let (_, q0, v0, h) = self.step.as_ref()?;
-        let slopes = (&self.slopes.0, &self.slopes.1);
-        stiffness_against_end(&DOP853, ((q0, v0), *h), slopes, (end.q, end.v, end.a))
-    }
-
-    /// The state at `t` within the step from `start` to `end` (its consistent point), if the
-    /// slopes held are that step's.
-    pub fn state<S: ConstrainedSystem<N, Z>, const Z: usize>(
-        &mut self,
+    fn polynomial<S: ConstrainedSystem<N, Z>, const Z: usize>(
         model: &mut Model<'_, S, N, Z>,
-        (start, end): (&Point<N, Z>, &Point<N, Z>),
-        t: f64,
-    ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
-        let (t0, q0, v0, h) = self.step?;
-        // The step the slopes are of starts and ends where the one asked for does (its end to
-        // the rounding of the times).
-        let same_end = (t0 + h - end.t).abs() <= 4.0 * f64::EPSILON * end.t.abs().max(h);
-        if !(t0 == start.t && q0 == start.q && v0 == start.v && same_end) {
-            return None;
-        }
-        if self.coefficients.is_none() {
-            match coefficients_for(model, (t0, q0, v0, h), &self.slopes, end) {
-                Ok(coefficients) => self.coefficients = Some(coefficients),
-                Err(error) => return Some(Err(error)),
-            }
-        }
-        let c = self.coefficients.as_ref()?;
-        let s = (t - t0) / h;
+        start: (f64, Vector<N>, Vector<N>, f64),
+        slopes: &([Vector<N>; 12], [Vector<N>; 12]),
+        end: &Point<N, Z>,
+    ) -> Result<Self::Polynomial, StepError> {
+        coefficients_for(model, start, slopes, end)
+    }
+
+    fn evaluate(c: &Self::Polynomial, s: f64) -> (Vector<N>, Vector<N>) {
         let s1 = 1.0 - s;
         // `r₁ + s(r₂ + s₁(r₃ + s(r₄ + s₁(r₅ + s(r₆ + s₁(r₇ + s r₈))))))`.
         let mut q = c[7].0;
@@ -335,7 +279,7 @@ impl<const N: usize> Continuous<N> {
             q = cq + w * q;
             v = cv + w * v;
         }
-        Some(Ok((q, v)))
+        (q, v)
     }
 }
 

@@ -8,6 +8,18 @@ use crate::polynomial::Multipliers;
 use crate::storage::{Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
+/// A row of `L` coefficients from its nonzero entries (a tableau's, whose published rows list
+/// only those).
+pub(crate) const fn row<const L: usize>(entries: &[(usize, f64)]) -> [f64; L] {
+    let mut row = [0.0; L];
+    let mut k = 0;
+    while k < entries.len() {
+        row[entries[k].0] = entries[k].1;
+        k += 1;
+    }
+    row
+}
+
 /// An explicit Runge–Kutta tableau with `S` stages.
 pub(crate) struct Tableau<const S: usize> {
     pub a: [[f64; S]; S],
@@ -234,6 +246,10 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
     /// Whether the steps estimate the stiffness.
     pub fn estimates_stiffness(&self) -> bool {
         self.estimates_stiffness
+    }
+
+    pub fn tableau(&self) -> &'static Tableau<ST> {
+        self.tableau
     }
 
     /// [`Method::integrate_every_stage`], the last (sub)step's stage slopes `(q', q'')` left in
@@ -464,6 +480,7 @@ fn stiffness_ratio<const N: usize>(
 #[cfg(test)]
 mod tests {
     use super::super::dop853::DOP853;
+    use super::super::verner::VERNER98;
     use super::*;
     use std::vec::Vec;
 
@@ -556,17 +573,25 @@ mod tests {
             &embedded(&DOP853, DOP853.e_low),
             3,
         );
+        check("Verner 9(8)", &VERNER98, &VERNER98.b, 9);
+        check(
+            "Verner 9(8), embedded",
+            &VERNER98,
+            &embedded(&VERNER98, VERNER98.e),
+            8,
+        );
     }
 
     #[test]
     fn stages_are_consistent() {
-        for i in 0..12 {
-            let row: f64 = DOP853.a[i].iter().sum();
-            assert!(
-                (row - DOP853.c[i]).abs() < 1e-14,
-                "stage {i}: {row} ≠ {}",
-                DOP853.c[i]
-            );
+        fn rows_sum_to_nodes<const S: usize>(name: &str, tableau: &Tableau<S>) {
+            for i in 0..S {
+                let row: f64 = tableau.a[i].iter().sum();
+                let c = tableau.c[i];
+                assert!((row - c).abs() < 1e-14, "{name}, stage {i}: {row} ≠ {c}");
+            }
         }
+        rows_sum_to_nodes("DOP853", &DOP853);
+        rows_sum_to_nodes("Verner 9(8)", &VERNER98);
     }
 }

@@ -10,10 +10,12 @@
 
 #[cfg(feature = "implicit")]
 pub(crate) mod alpha;
+pub(crate) mod continuous;
 #[cfg(feature = "implicit")]
 pub(crate) mod dirk;
 pub(crate) mod dop853;
 pub(crate) mod explicit;
+pub(crate) mod verner;
 
 use crate::error::StepError;
 use crate::model::Model;
@@ -147,6 +149,8 @@ pub(crate) enum AnyMethod<const N: usize, const Z: usize, D: Storage<N>> {
     Explicit7(explicit::Explicit<7, N, Z, D>),
     /// DOP853, with the last step kept for its continuous extension.
     Explicit12(explicit::Explicit<12, N, Z, D>, dop853::Continuous<N>),
+    /// Verner's 9(8) pair, with the last step kept for its interpolant.
+    Explicit16(explicit::Explicit<16, N, Z, D>, verner::Continuous<N>),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, Z, D>),
     #[cfg(feature = "implicit")]
@@ -167,11 +171,9 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
         multipliers: MultiplierModel,
         step: StepControl,
     ) -> Self {
-        // Only the implicit methods solve stage equations against it.
-        let _ = step;
         // Only a method that may change estimates the stiffness.
         let automatic = method.when_stiff().is_some();
-        match method.first(multipliers) {
+        match method.first(multipliers, step) {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps, false))
             }
@@ -181,6 +183,10 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
             InnerMethod::Dop853 => AnyMethod::Explicit12(
                 explicit::Explicit::new(&dop853::DOP853, 1, automatic),
                 dop853::Continuous::new(),
+            ),
+            InnerMethod::Verner98 => AnyMethod::Explicit16(
+                explicit::Explicit::new(&verner::VERNER98, 1, automatic),
+                verner::Continuous::new(),
             ),
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S>(step)),
@@ -204,7 +210,10 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
     pub fn use_step_control(&mut self, step: StepControl) {
         let _ = step;
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(..) => {}
+            AnyMethod::Explicit4(_)
+            | AnyMethod::Explicit7(_)
+            | AnyMethod::Explicit12(..)
+            | AnyMethod::Explicit16(..) => {}
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
@@ -225,6 +234,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::order(m),
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::order(m),
+            AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
@@ -244,6 +254,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::embedded_order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::embedded_order(m),
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::embedded_order(m),
+            AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
@@ -270,6 +281,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit12(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
+            AnyMethod::Explicit16(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
@@ -294,13 +306,10 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit4(m) => m.integrate_every_stage(model, start, h, first),
             AnyMethod::Explicit7(m) => m.integrate_every_stage(model, start, h, first),
             AnyMethod::Explicit12(m, continuous) => {
-                let slopes = &mut continuous.slopes;
-                let end = m.integrate_every_stage_into(model, start, h, first, slopes);
-                match end {
-                    Ok(_) => continuous.integrated((start.0, start.1, start.2), h),
-                    Err(_) => continuous.forget(),
-                }
-                Some(end)
+                Some(kept_for_dense_output(m, continuous, model, start, h, first))
+            }
+            AnyMethod::Explicit16(m, continuous) => {
+                Some(kept_for_dense_output(m, continuous, model, start, h, first))
             }
             #[cfg(feature = "implicit")]
             _ => None,
@@ -315,6 +324,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
     ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
         match self {
             AnyMethod::Explicit12(_, continuous) => continuous.state(model, ends, t),
+            AnyMethod::Explicit16(_, continuous) => continuous.state(model, ends, t),
             _ => None,
         }
     }
@@ -322,7 +332,10 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
     fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<f64> {
         match self {
             AnyMethod::Explicit12(m, continuous) if m.estimates_stiffness() => {
-                continuous.stiffness_against(end)
+                continuous.stiffness_against(m.tableau(), end)
+            }
+            AnyMethod::Explicit16(m, continuous) if m.estimates_stiffness() => {
+                continuous.stiffness_against(m.tableau(), end)
             }
             _ => None,
         }
@@ -330,7 +343,10 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
 
     fn factorizations(&self) -> u64 {
         match self {
-            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) | AnyMethod::Explicit12(..) => 0,
+            AnyMethod::Explicit4(_)
+            | AnyMethod::Explicit7(_)
+            | AnyMethod::Explicit12(..)
+            | AnyMethod::Explicit16(..) => 0,
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
@@ -359,6 +375,29 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         }
         let _ = v;
     }
+}
+
+/// [`Method::integrate_every_stage`] of a pair with a continuous extension: the step's slopes
+/// kept for it, or forgotten where the integration failed part way.
+fn kept_for_dense_output<S, E, const N: usize, const Z: usize, const ST: usize, D>(
+    method: &mut explicit::Explicit<ST, N, Z, D>,
+    continuous: &mut continuous::Continuous<N, ST, E>,
+    model: &mut Model<'_, S, N, Z>,
+    start: (f64, &Vector<N>, &Vector<N>),
+    h: f64,
+    first: Option<&Vector<N>>,
+) -> Result<StepEnd<N, Z, 0>, StepError>
+where
+    S: ConstrainedSystem<N, Z, Storage = D>,
+    E: continuous::Extension<N, ST>,
+    D: Storage<N>,
+{
+    let end = method.integrate_every_stage_into(model, start, h, first, &mut continuous.slopes);
+    match end {
+        Ok(_) => continuous.integrated(start, h),
+        Err(_) => continuous.forget(),
+    }
+    end
 }
 
 #[cfg(test)]

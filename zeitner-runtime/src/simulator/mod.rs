@@ -148,7 +148,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut simulator = Simulator {
             model,
             method: AnyMethod::new::<S>(options.method, options.multipliers, options.step),
-            active: options.method.first(options.multipliers),
+            active: options.method.first(options.multipliers, options.step),
             stiffness: StiffnessTest::default(),
             options,
             controller: Controller::new(),

@@ -22,16 +22,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // that no step starts off its constraints (an open gap's level included).
         let reproject =
             tolerance < self.options.constraint_tolerance && !self.state_within(tolerance)?;
-        // A method `Automatic` chose that the new multipliers do not suit starts afresh too.
-        let new_method =
-            options.method != self.options.method || !self.active.takes(options.multipliers);
+        // A method `Automatic` chose that the new multipliers or tolerance do not suit starts
+        // afresh too; one it turned to for stiffness is kept.
+        let first = options.method.first(options.multipliers, options.step);
+        let new_method = options.method != self.options.method
+            || !self.active.takes(options.multipliers)
+            || (self.active != first && !self.active.is_implicit());
         let previous_method = new_method.then(|| {
             let method = AnyMethod::new::<S>(options.method, options.multipliers, options.step);
             core::mem::replace(&mut self.method, method)
         });
         let previous_active = self.active;
         if new_method {
-            self.active = options.method.first(options.multipliers);
+            self.active = first;
         }
         let previous_options = core::mem::replace(&mut self.options, options);
         let changed = match (reproject, new_method) {
