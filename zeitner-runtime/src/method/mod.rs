@@ -334,9 +334,6 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit12(m, continuous) if m.estimates_stiffness() => {
                 continuous.stiffness_against(m.tableau(), end)
             }
-            AnyMethod::Explicit16(m, continuous) if m.estimates_stiffness() => {
-                continuous.stiffness_against(m.tableau(), end)
-            }
             _ => None,
         }
     }

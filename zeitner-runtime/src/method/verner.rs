@@ -375,10 +375,11 @@ const fn leading<const L: usize>(a: &[[f64; STAGES]; STAGES]) -> [[f64; L]; L] {
 }
 
 /// The pair: order 9, its step controlled by the eighth-order estimate. Its stiffness test is
-/// DOP853's (`dop853.f`): the last stage, at `t + h`, against the step end, whose slope is the
-/// next step's first stage; its boundary is where the ninth-order solution's stability
-/// function leaves the unit disc on the negative real axis, `|R(x)| ≤ 1` for `-4.47 ≤ x ≤ 0`
-/// (from the tableau; a test checks it).
+/// Hairer's between its last two stages, both at `t + h` (as DOPRI5's), against 4.0: the
+/// ninth-order solution's stability function leaves the unit disc on the negative real axis at
+/// -4.47 (from the tableau; a test checks it), and the probe reads below `h|λ|` there. On the
+/// pendulum on a stiff spring support at rtol 1e-9 a boundary of 4.47 turned implicit only
+/// after 1 964 steps; 4.0 turns after 16, as DOP853 does; on Andrews' squeezer neither turns.
 pub(crate) const VERNER98: Tableau<16> = Tableau {
     a: leading(&A),
     b: B,
@@ -404,8 +405,8 @@ pub(crate) const VERNER98: Tableau<16> = Tableau {
     order: 9,
     embedded_order: Some(8),
     stiffness: Some(StiffnessProbe {
-        states: ProbeStates::LastStageAndEnd,
-        boundary: 4.47,
+        states: ProbeStates::Stages(14, 15),
+        boundary: 4.0,
     }),
 };
 
@@ -514,13 +515,16 @@ mod tests {
         1.0 + x * (0..16).map(|i| VERNER98.b[i] * y[i]).sum::<f64>()
     }
 
+    /// The stability region reaches -4.47 on the negative real axis, and the stiffness test's
+    /// boundary lies within it.
     #[test]
-    fn the_stiffness_boundary_is_where_the_stability_region_ends() {
-        let boundary = VERNER98.stiffness.as_ref().unwrap().boundary;
-        let inside = (1..=1000).map(|k| -boundary * f64::from(k) / 1000.0);
-        for x in inside {
+    fn the_stiffness_boundary_lies_within_the_stability_region() {
+        let end = 4.47;
+        for x in (1..=1000).map(|k| -end * f64::from(k) / 1000.0) {
             assert!(stability(x).abs() <= 1.0, "|R({x})| > 1");
         }
-        assert!(stability(-boundary - 0.01).abs() > 1.0);
+        assert!(stability(-end - 0.01).abs() > 1.0);
+        let boundary = VERNER98.stiffness.as_ref().unwrap().boundary;
+        assert!(boundary < end);
     }
 }
