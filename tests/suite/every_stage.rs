@@ -290,3 +290,34 @@ fn the_high_order_pairs_refuse_held_multipliers() {
         ));
     }
 }
+
+/// `Automatic` chooses the pair for the tolerance when the run starts, and again when
+/// `set_options` moves the tolerance across [`zeitner::VERNER_FROM_RTOL`].
+#[test]
+fn the_default_chooses_the_pair_for_the_tolerance() {
+    let scene = Pendulum {
+        m: 1.0,
+        length: 1.0,
+        g: 9.81,
+    };
+    let q0 = Vector::<2>::new(1.0, 0.0);
+    let at = |rtol: f64| Options {
+        step: StepControl::adaptive(rtol),
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, at(1e-4)).unwrap();
+    assert_eq!(sim.method(), InnerMethod::Dop853);
+    sim.advance_to(0.1, |_| {}).unwrap();
+    sim.set_options(at(1e-8)).unwrap();
+    assert_eq!(sim.method(), InnerMethod::Verner98);
+    sim.advance_to(0.2, |_| {}).unwrap();
+    sim.set_options(at(1e-5)).unwrap();
+    assert_eq!(sim.method(), InnerMethod::Dop853);
+    sim.advance_to(0.3, |_| {}).unwrap();
+    let fixed = Options {
+        step: StepControl::Fixed { step: 1e-2 },
+        ..Options::default()
+    };
+    let sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, fixed).unwrap();
+    assert_eq!(sim.method(), InnerMethod::Dop853);
+}
