@@ -5,7 +5,7 @@
 
 use std::panic::{self, AssertUnwindSafe};
 use std::sync::mpsc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use super::cases::{self, Budget, FailureClass};
 
@@ -13,9 +13,9 @@ use super::cases::{self, Budget, FailureClass};
 const SEEDS: std::ops::Range<u64> = 0..300;
 /// A case still running after this long counts as a hang (debug build, sharing two cores with
 /// the other tests of this file: seed 93, a Chain4 case of 16 ms in release, took over 2 s).
+/// The only clock in the test: every seed of [`SEEDS`] runs, however fast the machine (the whole
+/// run takes about 2 s at the tests' opt-level 1).
 const CASE_LIMIT: Duration = Duration::from_secs(5);
-/// The run stops starting cases after this long, so that the test stays short.
-const RUN_LIMIT: Duration = Duration::from_secs(20);
 
 /// KNOWN RUNTIME BUGS: seeds of this run that break a promise through a bug of
 /// `zeitner-runtime` not fixed yet, with the class of failure they must still show. Once the
@@ -50,13 +50,12 @@ fn run(seed: u64) -> Option<Option<(FailureClass, String)>> {
 
 #[test]
 fn a_seeded_fuzz_run_breaks_no_promise() {
-    let clock = Instant::now();
     let mut failures = Vec::new();
     let mut runs = 0;
     for seed in SEEDS {
         // Over 100 substeps or Newton integrations per step: seconds per step in a debug build
         // (the release fuzz runs them).
-        if clock.elapsed() > RUN_LIMIT || cases::generate(seed).is_costly() {
+        if cases::generate(seed).is_costly() {
             continue;
         }
         runs += 1;
@@ -74,7 +73,7 @@ fn a_seeded_fuzz_run_breaks_no_promise() {
             (Some(None), None) => {}
         }
     }
-    assert!(runs >= 100, "only {runs} cases within {RUN_LIMIT:?}");
+    assert!(runs >= 100, "only {runs} of the seeds are not costly");
     assert!(
         failures.is_empty(),
         "{} of {runs} fuzz cases broke a promise (replay: cargo run --release -p zeitner-bench \
