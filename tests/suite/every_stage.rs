@@ -15,6 +15,13 @@ use zeitner::{
     InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, StepControl, StepError, Vector,
 };
 
+/// The pendulum of these tests: 1 kg on 1 m.
+const PENDULUM: Pendulum = Pendulum {
+    m: 1.0,
+    length: 1.0,
+    g: 9.81,
+};
+
 fn fixed(method: InnerMethod, h: f64) -> Options {
     Options {
         method,
@@ -85,11 +92,7 @@ fn on_position_rows_each_method_keeps_its_order() {
 #[test]
 fn verner_s_pair_keeps_its_order_9() {
     let one_step = |h: f64| {
-        let pendulum = Pendulum {
-            m: 1.0,
-            length: 1.0,
-            g: 9.81,
-        };
+        let pendulum = PENDULUM;
         // From mid-swing: a step from rest has special, smaller errors.
         let t0 = 0.3;
         let start = common::reference::pendulum_released_horizontally(&pendulum, t0);
@@ -244,11 +247,7 @@ fn adaptive_steps_follow_the_tolerance() {
 
 #[test]
 fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
+    let scene = PENDULUM;
     let options = Options {
         method: InnerMethod::Esdirk54,
         ..fixed(InnerMethod::Esdirk54, 1e-2)
@@ -268,11 +267,7 @@ fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
 /// refusal).
 #[test]
 fn the_high_order_pairs_refuse_held_multipliers() {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
+    let scene = PENDULUM;
     let q0 = Vector::<2>::new(1.0, 0.0);
     let methods = [InnerMethod::Dop853, InnerMethod::Verner98];
     let held = [MultiplierModel::Constant, MultiplierModel::Quadratic];
@@ -295,11 +290,7 @@ fn the_high_order_pairs_refuse_held_multipliers() {
 /// `set_options` moves the tolerance across [`zeitner::VERNER_FROM_RTOL`].
 #[test]
 fn the_default_chooses_the_pair_for_the_tolerance() {
-    let scene = Pendulum {
-        m: 1.0,
-        length: 1.0,
-        g: 9.81,
-    };
+    let scene = PENDULUM;
     let q0 = Vector::<2>::new(1.0, 0.0);
     let at = |rtol: f64| Options {
         step: StepControl::adaptive(rtol),

@@ -98,3 +98,18 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
         Some(Ok(E::evaluate(polynomial, (t - t0) / h)))
     }
 }
+
+/// `from + h Σ wⱼ kⱼ` over an extension's `L` slopes `(q', q'')`, for `q` and `q'`: an extra
+/// stage's state, or a term of the polynomial.
+pub(crate) fn weighted<const N: usize, const L: usize>(
+    (mut q, mut v): (Vector<N>, Vector<N>),
+    h: f64,
+    w: &[f64; L],
+    (kq, kv): (&[Vector<N>; L], &[Vector<N>; L]),
+) -> (Vector<N>, Vector<N>) {
+    for (j, &w) in w.iter().enumerate().filter(|(_, &w)| w != 0.0) {
+        q += (h * w) * kq[j];
+        v += (h * w) * kv[j];
+    }
+    (q, v)
+}

@@ -4,7 +4,7 @@
 // The coefficients keep the digits they are published with.
 #![allow(clippy::excessive_precision)]
 
-use super::continuous::{self, Extension};
+use super::continuous::{self, weighted, Extension};
 use super::explicit::{row, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
@@ -315,18 +315,4 @@ fn coefficients_for<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         d6,
         d7,
     ])
-}
-
-/// `from + h Σ wⱼ kⱼ` over the continuous extension's slopes, for `q` and `q'`.
-fn weighted<const N: usize>(
-    (mut q, mut v): (Vector<N>, Vector<N>),
-    h: f64,
-    w: &[f64; SLOPES],
-    (kq, kv): (&[Vector<N>; SLOPES], &[Vector<N>; SLOPES]),
-) -> (Vector<N>, Vector<N>) {
-    for (j, &w) in w.iter().enumerate().filter(|(_, &w)| w != 0.0) {
-        q += (h * w) * kq[j];
-        v += (h * w) * kv[j];
-    }
-    (q, v)
 }

@@ -8,7 +8,7 @@
 // The coefficients keep the digits they are published with.
 #![allow(clippy::excessive_precision)]
 
-use super::continuous::{self, Extension};
+use super::continuous::{self, weighted, Extension};
 use super::explicit::{row, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
@@ -127,17 +127,8 @@ const A: [[f64; STAGES]; STAGES] = [
         (11, -34.26354448030451782929251177395134170515),
         (12, 1.264756521695642578827783499806516664686),
     ]),
-    row(&[
-        (0, 0.01461197685842315252051541915018784713459),
-        (7, -0.3915211862331339089410228267288242030810),
-        (8, 0.2310932500289506415909675644868993669908),
-        (9, 0.1274766769992852382560589467488989175618),
-        (10, 0.2246434176204157731566981937082069688984),
-        (11, 0.5684352689748512932705226972873692126743),
-        (12, 0.05825871557215827200814768021863420902155),
-        (13, 0.1364317403482215641609022744494239843327),
-        (14, 0.03057013983082797397721005067920369646664),
-    ]),
+    // Stage 17 is the solution: its row is the ninth-order weights.
+    padded(&B),
     row(&[
         (0, 0.01549973668189559302279946863304789372788),
         (7, 0.3355153219059635054403439303177105512242),
@@ -359,6 +350,17 @@ const P: [[f64; STAGES]; 8] = [
     ]),
 ];
 
+/// `b` as a row over all the stages.
+const fn padded(b: &[f64; 16]) -> [f64; STAGES] {
+    let mut row = [0.0; STAGES];
+    let mut i = 0;
+    while i < 16 {
+        row[i] = b[i];
+        i += 1;
+    }
+    row
+}
+
 /// The leading `L × L` block of the stages' coefficients.
 const fn leading<const L: usize>(a: &[[f64; STAGES]; STAGES]) -> [[f64; L]; L] {
     let mut block = [[0.0; L]; L];
@@ -442,22 +444,12 @@ impl<const N: usize> Extension<N, 16> for Dense {
         kv[..16].copy_from_slice(&slopes.1);
         (kq[16], kv[16]) = (end.v, end.a);
         for i in 17..STAGES {
-            let (mut q, mut v) = (q0, v0);
-            for (j, &a) in A[i].iter().enumerate().take(i).filter(|(_, &a)| a != 0.0) {
-                q += (h * a) * kq[j];
-                v += (h * a) * kv[j];
-            }
+            let (q, v) = weighted((q0, v0), h, &A[i], (&kq, &kv));
             kq[i] = v;
             kv[i] = consistent_point(model, t0 + C[i] * h, q, v)?.a;
         }
-        let terms = P.map(|weights| {
-            let (mut q, mut v) = (Vector::zeros(), Vector::zeros());
-            for (j, &w) in weights.iter().enumerate().filter(|(_, &w)| w != 0.0) {
-                q += (h * w) * kq[j];
-                v += (h * w) * kv[j];
-            }
-            (q, v)
-        });
+        let zero = (Vector::zeros(), Vector::zeros());
+        let terms = P.map(|weights| weighted(zero, h, &weights, (&kq, &kv)));
         let (mut q1, mut v1) = (q0, v0);
         for (q, v) in &terms {
             q1 += q;
