@@ -231,3 +231,136 @@ where
     root.present()?;
     Ok(())
 }
+
+/// One map of a value over a plane: `(x, y, value)` points, on a grid (drawn as cells) or
+/// scattered (drawn as dots), with a colour bar and an optional marked point.
+pub struct Heatmap<'a> {
+    pub title: &'a str,
+    pub x_label: &'a str,
+    pub y_label: &'a str,
+    pub value_label: &'a str,
+    pub points: Vec<(f64, f64, f64)>,
+    pub marker: Option<(f64, f64)>,
+}
+
+/// Writes the maps side by side to `<stem>.svg` and `<stem>.png`.
+pub fn write_heatmaps(stem: &Path, maps: &[Heatmap<'_>]) -> Result<(), Box<dyn std::error::Error>> {
+    register_fonts();
+    let size = (620 * maps.len() as u32, 520);
+    let svg = stem.with_extension("svg");
+    draw_heatmaps(SVGBackend::new(&svg, size).into_drawing_area(), maps)?;
+    let png = stem.with_extension("png");
+    draw_heatmaps(BitMapBackend::new(&png, size).into_drawing_area(), maps)?;
+    Ok(())
+}
+
+/// Viridis at five stops, interpolated linearly: ordered in lightness, readable in grey.
+fn viridis(u: f64) -> RGBColor {
+    const STOPS: [(f64, f64, f64); 5] = [
+        (68.0, 1.0, 84.0),
+        (59.0, 82.0, 139.0),
+        (33.0, 145.0, 140.0),
+        (94.0, 201.0, 98.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let u = if u.is_finite() {
+        u.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let s = u * 4.0;
+    let i = (s.floor() as usize).min(3);
+    let f = s - i as f64;
+    let mix = |a: f64, b: f64| (a + (b - a) * f).round() as u8;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut v: Vec<f64> = values.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
+}
+
+fn draw_heatmaps<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    maps: &[Heatmap<'_>],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE)?;
+    for (map, area) in maps.iter().zip(root.split_evenly((1, maps.len()))) {
+        let (plot, bar) = area.split_horizontally(area.dim_in_pixel().0 as i32 - 110);
+        let xs = distinct(map.points.iter().map(|p| p.0));
+        let ys = distinct(map.points.iter().map(|p| p.1));
+        let finite = map.points.iter().map(|p| p.2).filter(|v| v.is_finite());
+        let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+        let span = if hi > lo { hi - lo } else { 1.0 };
+        let half = |axis: &[f64]| {
+            if axis.len() > 1 {
+                0.5 * (axis[axis.len() - 1] - axis[0]) / (axis.len() - 1) as f64
+            } else {
+                0.5
+            }
+        };
+        let (dx, dy) = (half(&xs), half(&ys));
+        let (x0, x1) = (xs[0] - dx, xs[xs.len() - 1] + dx);
+        let (y0, y1) = (ys[0] - dy, ys[ys.len() - 1] + dy);
+        let mut chart = ChartBuilder::on(&plot)
+            .caption(map.title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(60)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(map.x_label)
+            .y_desc(map.y_label)
+            .label_style(("sans-serif", 14))
+            .draw()?;
+        let on_grid = xs.len() * ys.len() == map.points.len();
+        for &(x, y, v) in &map.points {
+            let color = viridis((v - lo) / span);
+            if on_grid {
+                chart.draw_series(std::iter::once(Rectangle::new(
+                    [(x - dx, y - dy), (x + dx, y + dy)],
+                    color.filled(),
+                )))?;
+            } else {
+                chart.draw_series(std::iter::once(Circle::new((x, y), 4, color.filled())))?;
+            }
+        }
+        if let Some((x, y)) = map.marker {
+            chart.draw_series(std::iter::once(Cross::new((x, y), 9, RED.stroke_width(3))))?;
+        }
+        let mut scale = ChartBuilder::on(&bar)
+            .margin_top(44)
+            .margin_bottom(57)
+            .margin_right(8)
+            .y_label_area_size(70)
+            .caption(map.value_label, ("sans-serif", 14))
+            .build_cartesian_2d(0.0..1.0, lo..lo + span)?;
+        scale
+            .configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .y_label_formatter(&|v| tick(*v, hi.abs().max(lo.abs())))
+            .label_style(("sans-serif", 13))
+            .draw()?;
+        let steps = 100;
+        scale.draw_series((0..steps).map(|i| {
+            let (a, b) = (i as f64 / steps as f64, (i + 1) as f64 / steps as f64);
+            Rectangle::new(
+                [(0.0, lo + a * span), (1.0, lo + b * span)],
+                viridis(a).filled(),
+            )
+        }))?;
+    }
+    root.present()?;
+    Ok(())
+}

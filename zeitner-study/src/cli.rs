@@ -9,7 +9,7 @@ use clap::{Args, Subcommand};
 use crate::study::{Case, Results, RunSettings, Shard, Study, StudyError};
 use crate::table::CaseTable;
 
-/// Where the cases come from (one of them; a grid of 11 points per parameter by default).
+/// Where the cases come from (one of them; a grid of 21 points per parameter by default).
 #[derive(Args, Clone, Debug, Default)]
 #[group(multiple = false)]
 pub struct CaseSource {
@@ -128,7 +128,7 @@ where
             format!("file {}", path.display()),
         ),
         CaseSource { grid, .. } => {
-            let points = grid.clone().unwrap_or_else(|| vec![11]);
+            let points = grid.clone().unwrap_or_else(|| vec![21]);
             let text: Vec<String> = points.iter().map(|p| p.to_string()).collect();
             (
                 CaseTable::grid(space, &points)?,
