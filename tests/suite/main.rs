@@ -16,6 +16,7 @@ mod impacts;
 mod nonholonomic;
 mod pendulum;
 mod runtime_api;
+mod sensitivities;
 mod short_steps;
 mod sparse;
 mod stability;

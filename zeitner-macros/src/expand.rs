@@ -197,20 +197,32 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let z = Literal::usize_unsuffixed(scene.sizes.z());
     let r = Literal::usize_unsuffixed(scene.sizes.r);
     let emitter = Emitter { vars, calls };
-    let methods = scene.functions.iter().map(|generated| {
-        let method = format_ident!("{}", generated.method);
-        let body = emitter.body(generated, &rt);
-        if let Some(wrapped) = values_only(generated, &body, &n, &rt) {
-            return wrapped;
-        }
-        let (arguments, output) = signature(generated.method, &n, &z, &rt);
-        quote! {
-            #[inline]
-            fn #method(&self, #arguments) -> #output {
-                #body
+    let is_parameter_function = |g: &&Generated| {
+        g.method.starts_with("parameter_")
+            || matches!(
+                g.method,
+                "rate_jacobians" | "acceleration_constraint_jacobians"
+            )
+    };
+    let parametrised = parametrised_impl(self_ty, scene, &emitter, &rt);
+    let methods = scene
+        .functions
+        .iter()
+        .filter(|g| !is_parameter_function(g))
+        .map(|generated| {
+            let method = format_ident!("{}", generated.method);
+            let body = emitter.body(generated, &rt);
+            if let Some(wrapped) = values_only(generated, &body, &n, &rt) {
+                return wrapped;
             }
-        }
-    });
+            let (arguments, output) = signature(generated.method, &n, &z, &rt);
+            quote! {
+                #[inline]
+                fn #method(&self, #arguments) -> #output {
+                    #body
+                }
+            }
+        });
     // Only what the scene has: the trait's defaults are none.
     let (u, e) = (scene.sizes.u, scene.sizes.e);
     let gaps = (u > 0).then(|| quote!(const UNILATERAL_CONSTRAINTS: usize = #u;));
@@ -274,7 +286,56 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
             #(#methods)*
             #(#sparse_methods)*
         }
+        #parametrised
     }
+}
+
+/// `impl ParametrisedSystem` for a model with `parameters`: their names, values and the
+/// derivatives by them; nothing for a model without.
+fn parametrised_impl(
+    self_ty: &syn::Type,
+    scene: &Scene,
+    emitter: &Emitter<'_>,
+    rt: &TokenStream,
+) -> Option<TokenStream> {
+    let function = |name: &str| scene.functions.iter().find(|g| g.method == name);
+    let values = function("parameter_values")?;
+    let (n, z) = (scene.sizes.n, scene.sizes.z());
+    let p = values.blocks[0].rows;
+    let names = &scene.parameter_names;
+    let [n, z, p] = [n, z, p].map(Literal::usize_unsuffixed);
+    let vec_n = quote!(#rt::Vector<#n>);
+    let values_body = emitter.body(values, rt);
+    let force_body = emitter.body(function("parameter_force")?, rt);
+    let constraints_body = emitter.body(function("parameter_constraints")?, rt);
+    let rate_body = emitter.body(function("rate_jacobians")?, rt);
+    let level_body = emitter.body(function("acceleration_constraint_jacobians")?, rt);
+    Some(quote! {
+        #[allow(unused_variables, unused_mut, clippy::all)]
+        impl #rt::ParametrisedSystem<#n, #z, #p> for #self_ty {
+            const PARAMETER_NAMES: [&'static str; #p] = [#(#names),*];
+            #[inline]
+            fn parameter_values(&self) -> #rt::Vector<#p> {
+                #values_body
+            }
+            #[inline]
+            fn parameter_force(&self, q: &#vec_n, v: &#vec_n, t: f64, lambda: &#rt::Vector<#z>, a: &#vec_n) -> #rt::Matrix<#n, #p> {
+                #force_body
+            }
+            #[inline]
+            fn parameter_constraints(&self, q: &#vec_n, v: &#vec_n, t: f64) -> (#rt::Matrix<#z, #p>, #rt::Matrix<#z, #p>) {
+                #constraints_body
+            }
+            #[inline]
+            fn rate_jacobians(&self, q: &#vec_n, v: &#vec_n, t: f64) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>) {
+                #rate_body
+            }
+            #[inline]
+            fn acceleration_constraint_jacobians(&self, q: &#vec_n, v: &#vec_n, t: f64, a: &#vec_n) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>, #rt::Matrix<#z, #p>) {
+                #level_body
+            }
+        }
+    })
 }
 
 /// The `(row, column)` of every value the `_nonzeros` functions write, in their order: the

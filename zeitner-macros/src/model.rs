@@ -23,10 +23,12 @@ pub enum Role {
     Events,
     /// Times at which the model's functions are not smooth.
     TimeEvents,
+    /// Fields `self.x` whose sensitivities the runtime may follow.
+    Parameters,
 }
 
 impl Role {
-    pub const ALL: [Role; 8] = [
+    pub const ALL: [Role; 9] = [
         Role::Mass,
         Role::Force,
         Role::Constraints,
@@ -35,6 +37,7 @@ impl Role {
         Role::Restitution,
         Role::Events,
         Role::TimeEvents,
+        Role::Parameters,
     ];
 
     pub fn name(self) -> &'static str {
@@ -47,6 +50,7 @@ impl Role {
             Role::Restitution => "restitution",
             Role::Events => "events",
             Role::TimeEvents => "time_events",
+            Role::Parameters => "parameters",
         }
     }
 
@@ -57,7 +61,10 @@ impl Role {
 
     /// Whether the function may take the state at all (the others depend on parameters only).
     pub fn takes_state(self) -> bool {
-        !matches!(self, Role::Restitution | Role::TimeEvents)
+        !matches!(
+            self,
+            Role::Restitution | Role::TimeEvents | Role::Parameters
+        )
     }
 
     /// Whether its rows are constraints, differentiated for `G`.
@@ -80,6 +87,7 @@ impl Role {
             Role::Restitution => "fn restitution(&self) -> [f64; U]",
             Role::Events => "fn events(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; E]",
             Role::TimeEvents => "fn time_events(&self) -> [f64; K]",
+            Role::Parameters => "fn parameters(&self) -> [f64; P]",
         }
     }
 }
@@ -189,7 +197,7 @@ impl<'a> Model<'a> {
                     errors.error_spanned_by(
                         other,
                         "only the model functions (`mass`, `force`, `constraints`, `velocity_constraints`, \
-                         `gaps`, `restitution`, `events`, `time_events`), helper methods and `const`s may \
+                         `gaps`, `restitution`, `events`, `time_events`, `parameters`), helper methods and `const`s may \
                          stand in a #[constrained_system] impl; put other items in a second `impl` block",
                     );
                     continue;

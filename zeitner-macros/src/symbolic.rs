@@ -38,6 +38,8 @@ pub struct Scene {
     pub time_dependent: bool,
     /// Whether `∂F/∂q'` or `∂(Gᵀλ)/∂q'` has an entry that is not structurally zero.
     pub dynamics_depend_on_velocity: bool,
+    /// The fields named by `parameters`, as `x` or `a.b` for `self.x`, `self.a.b`.
+    pub parameter_names: Vec<String>,
     pub functions: Vec<Generated>,
 }
 
@@ -334,7 +336,9 @@ pub fn build(
         }
         bias.push((j, b, row.span));
     }
+    let rate_rows = rate.clone();
     functions.push(("constraint_rate", vec![vector("w", z, rate)]));
+    let bias_rows = bias.clone();
     functions.push(("constraint_acceleration_bias", vec![vector("b", z, bias)]));
 
     // ∂F/∂q, ∂F/∂v
@@ -428,6 +432,152 @@ pub fn build(
         ));
     }
 
+    // Parameters: each a field `self.x` of the model; the derivatives by them of the step's
+    // right-hand side `F - Gᵀλ - M a` (at fixed λ and a) and of the constraints' two levels.
+    let parameters = entries_of(Role::Parameters);
+    let mut parameter_names = Vec::new();
+    if !parameters.is_empty() {
+        let fields = parameter_fields(&parameters, derive.graph, vars, derive.errors);
+        let used = |deps: &mut Dependencies, graph: &Graph, var: u32| {
+            mass.iter()
+                .chain(&force)
+                .chain(&constraints)
+                .any(|e| deps.any(graph, e.id, |v| v == var))
+        };
+        for (p, &var) in fields.iter().enumerate() {
+            if var.is_some_and(|var| !used(&mut deps, derive.graph, var)) {
+                derive.errors.error_at(
+                    parameters[p].span,
+                    "this parameter appears in no model function (`mass`, `force`, `constraints`, \
+                     `velocity_constraints`, `gaps`): nothing depends on it. A field read only inside an \
+                     opaque method (one outside the #[constrained_system] impl) is not seen: move the \
+                     method into the impl, where it is inlined and differentiated",
+                );
+            }
+        }
+        if derive.errors.is_empty() {
+            let fields: Vec<u32> = fields.into_iter().flatten().collect();
+            parameter_names = fields
+                .iter()
+                .map(|&v| match &vars.kinds[v as usize] {
+                    VarKind::Parameter(tokens) => {
+                        let text = tokens.to_string().replace(' ', "");
+                        text.trim_start_matches("self.").to_string()
+                    }
+                    _ => String::new(),
+                })
+                .collect();
+            let accelerations: Vec<Id> = (0..n)
+                .map(|i| {
+                    let var = vars.push(VarKind::Acceleration(i));
+                    derive.graph.var(var)
+                })
+                .collect();
+            let mut d_dp: Vec<Differentiator> =
+                fields.iter().map(|&v| Differentiator::new(v)).collect();
+            // F_i - Σ_j G_ji λ_j - Σ_c M_ic a_c.
+            let mut rhs = Vec::with_capacity(n);
+            for (i, f) in force.iter().enumerate() {
+                let mut value = f.id;
+                for &(j, g) in &jacobian_columns[i] {
+                    let term = derive.graph.mul(g, multipliers[j]);
+                    value = derive.graph.sub(value, term);
+                }
+                let columns = if full_mass { 0..n } else { i..i + 1 };
+                for c in columns {
+                    let entry = &mass[if full_mass { i * n + c } else { i }];
+                    let term = derive.graph.mul(entry.id, accelerations[c]);
+                    value = derive.graph.sub(value, term);
+                }
+                rhs.push((i, value, f.span));
+            }
+            let mut by_parameters = |rows: &[(usize, Id, Span)],
+                                     role: Role,
+                                     derive: &mut Derive| {
+                let mut entries = Vec::new();
+                for &(i, id, span) in rows {
+                    for (p, differentiator) in d_dp.iter_mut().enumerate() {
+                        if derive.graph.depends_on(id, fields[p]) {
+                            entries.push((i, p, derive.by(differentiator, id, span, role), span));
+                        }
+                    }
+                }
+                entries
+            };
+            let p = fields.len();
+            let force_dp = by_parameters(&rhs, Role::Force, &mut derive);
+            let residual: Vec<(usize, Id, Span)> = constraints
+                .iter()
+                .enumerate()
+                .map(|(j, e)| (j, e.id, e.span))
+                .collect();
+            let residual_dp = by_parameters(&residual, Role::Constraints, &mut derive);
+            let rate_dp = by_parameters(&rate_rows, Role::Constraints, &mut derive);
+            // `∂w/∂q`, `∂w/∂q'`; and `∂(G a + b)/∂(q, q', θ)` along fixed accelerations `a`, the
+            // acceleration-level constraint's linearisation.
+            let mut by_state = |rows: &[(usize, Id, Span)], derive: &mut Derive| {
+                let (mut dq, mut dv) = (Vec::new(), Vec::new());
+                for &(j, id, span) in rows {
+                    let (by_q, by_v) = state_of(&mut deps, derive.graph, id);
+                    for c in by_q {
+                        dq.push((
+                            j,
+                            c,
+                            derive.by(&mut d_dq[c], id, span, Role::Constraints),
+                            span,
+                        ));
+                    }
+                    for c in by_v {
+                        dv.push((
+                            j,
+                            c,
+                            derive.by(&mut d_dv[c], id, span, Role::Constraints),
+                            span,
+                        ));
+                    }
+                }
+                (dq, dv)
+            };
+            let (rate_dq, rate_dv) = by_state(&rate_rows, &mut derive);
+            let mut acceleration_rows = Vec::with_capacity(z);
+            for &(j, b, span) in &bias_rows {
+                let mut value = b;
+                for &(i, g) in &jacobian_rows[j] {
+                    let term = derive.graph.mul(g, accelerations[i]);
+                    value = derive.graph.add(value, term);
+                }
+                acceleration_rows.push((j, value, span));
+            }
+            let (level_dq, level_dv) = by_state(&acceleration_rows, &mut derive);
+            let level_dp = by_parameters(&acceleration_rows, Role::Constraints, &mut derive);
+            functions.push((
+                "rate_jacobians",
+                vec![matrix("wq", z, n, rate_dq), matrix("wv", z, n, rate_dv)],
+            ));
+            functions.push((
+                "acceleration_constraint_jacobians",
+                vec![
+                    matrix("cq", z, n, level_dq),
+                    matrix("cv", z, n, level_dv),
+                    matrix("cp", z, p, level_dp),
+                ],
+            ));
+            let values = parameters
+                .iter()
+                .enumerate()
+                .map(|(i, e)| (i, e.id, e.span));
+            functions.push((
+                "parameter_values",
+                vec![vector("theta", p, values.collect())],
+            ));
+            functions.push(("parameter_force", vec![matrix("df", n, p, force_dp)]));
+            functions.push((
+                "parameter_constraints",
+                vec![matrix("dg", z, p, residual_dp), matrix("dw", z, p, rate_dp)],
+            ));
+        }
+    }
+
     // Restitution, event functions and time events: values only, nothing differentiated.
     let values_only = [
         (Role::Restitution, "restitution", "e"),
@@ -476,6 +626,7 @@ pub fn build(
         mass_is_constant,
         time_dependent,
         dynamics_depend_on_velocity,
+        parameter_names,
         functions,
     })
 }
@@ -526,4 +677,47 @@ impl Derive<'_> {
             }
         }
     }
+}
+
+/// The field each parameter entry reads (`self.x`, `self.a.b`), by its variable; `None` (and an
+/// error at the entry) for anything else, or for a field named twice.
+fn parameter_fields(
+    parameters: &[Entry],
+    graph: &Graph,
+    vars: &Vars,
+    errors: &mut Errors,
+) -> Vec<Option<u32>> {
+    let mut seen: Vec<u32> = Vec::new();
+    parameters
+        .iter()
+        .map(|entry| {
+            let field = match graph.node(entry.id) {
+                zeitner_symbolic::Node::Var(v) => match &vars.kinds[*v as usize] {
+                    VarKind::Parameter(tokens) if is_field(tokens) => {
+                        Some(*v)
+                    }
+                    _ => None,
+                },
+                _ => None,
+            };
+            match field {
+                None => errors.error_at(
+                    entry.span,
+                    "a parameter is a field of the model read as it stands, `self.x` or `self.a.b`, \
+                     whose value the runtime follows the sensitivities to",
+                ),
+                Some(v) if seen.contains(&v) => {
+                    errors.error_at(entry.span, "this parameter is named twice");
+                    return None;
+                }
+                Some(v) => seen.push(v),
+            }
+            field
+        })
+        .collect()
+}
+
+/// Whether a parameter's tokens read a field of `self` (rather than a constant path).
+fn is_field(tokens: &proc_macro2::TokenStream) -> bool {
+    tokens.to_string().replace(' ', "").starts_with("self.")
 }

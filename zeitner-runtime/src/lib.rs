@@ -77,8 +77,8 @@ pub use simulator::{Observation, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
 pub use system::{
-    BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts, SceneSummary,
-    Sparsity, Vector,
+    BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts,
+    ParametrisedSystem, SceneSummary, Sparsity, Vector,
 };
 pub use with_storage::WithStorage;
 
@@ -88,7 +88,7 @@ pub mod __private {
     pub use crate::math::Real;
     pub use crate::{
         BlockSummary, ConstrainedSystem, DiagonalMass, FullMass, FunctionSummary, MassKind, Matrix,
-        OpCounts, SceneSummary, Sparsity, Vector,
+        OpCounts, ParametrisedSystem, SceneSummary, Sparsity, Vector,
     };
     pub use nalgebra;
     /// The storage `#[constrained_system]` gives a scene with many coordinates: sparse where

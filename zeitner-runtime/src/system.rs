@@ -132,6 +132,46 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     }
 }
 
+/// A model with parameters — fields named in its `parameters` function — and the derivatives by
+/// them that forward sensitivities need. `#[constrained_system]` implements it for a model that
+/// has `parameters`; one without carries none of this.
+pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
+    ConstrainedSystem<N, Z>
+{
+    /// The fields as written after `self.` (`"h3"`, `"base.h3"`).
+    const PARAMETER_NAMES: [&'static str; P];
+    /// The parameters' values.
+    fn parameter_values(&self) -> Vector<P>;
+    /// `∂(F - Gᵀλ - M a)/∂θ` at `(q, q', t)` for fixed `λ` and `a`.
+    fn parameter_force(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        a: &Vector<N>,
+    ) -> Matrix<N, P>;
+    /// `(∂g/∂θ, ∂w/∂θ)`: of the constraints, and of their velocity-level form `w` (`ġ` for
+    /// position rows, `g` itself for velocity rows).
+    fn parameter_constraints(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> (Matrix<Z, P>, Matrix<Z, P>);
+    /// `(∂w/∂q, ∂w/∂q')` of the velocity-level form `w`.
+    fn rate_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> (Matrix<Z, N>, Matrix<Z, N>);
+    /// The acceleration-level constraint `G a + b` linearised for fixed `a`: its derivatives by
+    /// `q`, `q'` and `θ`.
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        a: &Vector<N>,
+    ) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>);
+}
+
 /// The most gaps (unilateral rows) a system may have.
 pub const MAX_GAPS: usize = 32;
 /// The most event functions a system may have.

@@ -75,6 +75,12 @@ impl SteamGenerator {
     fn time_events(&self) -> [f64; 2] {
         [self.rise, self.off]
     }
+
+    /// The supports' geometry and the damper, for sensitivities (the load's `p0` and `rise`
+    /// are read in `load`, an opaque method, so they cannot be parameters).
+    fn parameters(&self) -> [f64; 4] {
+        [self.h3, self.h2, self.d, self.m]
+    }
 }
 
 /// The paper's scene with a clearance at the lateral strut C: the strut engages only where
@@ -134,5 +140,9 @@ impl SteamGeneratorWithGap {
 
     fn time_events(&self) -> [f64; 2] {
         [self.base.rise, self.base.off]
+    }
+
+    fn parameters(&self) -> [f64; 3] {
+        [self.base.h3, self.clearance, self.base.d]
     }
 }
