@@ -122,3 +122,235 @@ fn the_generated_derivatives_by_the_parameters_match_central_differences() {
     };
     check_parameter_derivatives::<_, 3, 3, 3>(&gap, set, state);
 }
+
+mod runs {
+    use zeitner::{
+        constrained_system, InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator,
+        StepControl, Vector,
+    };
+    use zeitner_scenes::steam_generator::SteamGenerator;
+
+    /// A point mass on a rod in Cartesian coordinates, with its length, gravity and mass as
+    /// parameters.
+    pub struct Pendulum {
+        pub l: f64,
+        pub g: f64,
+        pub m: f64,
+    }
+
+    #[constrained_system]
+    impl Pendulum {
+        fn mass(&self) -> [f64; 2] {
+            [self.m, self.m]
+        }
+        fn force(&self) -> [f64; 2] {
+            [0.0, -self.m * self.g]
+        }
+        fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+            [x * x + y * y - self.l * self.l]
+        }
+        fn parameters(&self) -> [f64; 3] {
+            [self.l, self.g, self.m]
+        }
+    }
+
+    fn adaptive(rtol: f64) -> StepControl {
+        StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: 0.05,
+            rtol,
+            atol: rtol * 1e-2,
+        }
+    }
+
+    /// The pendulum's angle runs in the time `t √(g/l)`, and its start (an angle, projected onto
+    /// the circle of each length) does not depend on the parameters: so `∂q/∂l = q/l - t q'/(2l)`,
+    /// `∂q/∂g = t q'/(2g)`, `∂q/∂m = 0` and `∂λ/∂m = λ/m` (the rod's force grows with the mass,
+    /// and its multiplier is that force over `2l`).
+    fn check_closed_forms(options: Options, tolerance: f64) {
+        let pendulum = Pendulum {
+            l: 1.3,
+            g: 9.81,
+            m: 2.0,
+        };
+        let angle: f64 = 1.0;
+        let q0 = Vector::<2>::new(1.3 * angle.sin(), -1.3 * angle.cos());
+        let mut sim =
+            SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, q0, Vector::zeros(), 0.0, options)
+                .expect("a start");
+        sim.set_stop_time(2.0).unwrap();
+        while sim.step().expect("a step") != zeitner::StopReason::StopTimeReached {}
+        let end = sim.simulator().last().end;
+        let s = sim.sensitivities();
+        assert_eq!(s.t, 2.0);
+        let (l, g, m, t) = (1.3, 9.81, 2.0, end.t);
+        let dq_dl = end.q / l - (t / (2.0 * l)) * end.v;
+        let dq_dg = (t / (2.0 * g)) * end.v;
+        let scale = end.v.amax();
+        let worst = [
+            (s.q.column(0) - dq_dl).amax(),
+            (s.q.column(1) - dq_dg).amax(),
+            s.q.column(2).amax(),
+        ];
+        let lambda = (s.lambda[(0, 2)] - end.lambda[0] / m).abs() / (end.lambda[0] / m).abs();
+        eprintln!(
+            "{:?}: |∂q/∂l - closed| {:.1e}, |∂q/∂g - closed| {:.1e}, |∂q/∂m| {:.1e} (scale {scale:.2}), ∂λ/∂m relative {lambda:.1e}",
+            options.method, worst[0], worst[1], worst[2]
+        );
+        for w in worst {
+            assert!(w <= tolerance * scale, "{worst:?} against {tolerance:e}");
+        }
+        assert!(lambda <= tolerance, "∂λ/∂m off by {lambda:e}");
+    }
+
+    #[test]
+    fn the_pendulum_follows_its_closed_form_sensitivities_with_every_method_family() {
+        // The default: Verner's pair with the multipliers at every stage.
+        check_closed_forms(
+            Options {
+                step: adaptive(1e-10),
+                ..Options::default()
+            },
+            1e-7,
+        );
+        check_closed_forms(
+            Options {
+                method: InnerMethod::Dop853,
+                step: adaptive(1e-10),
+                ..Options::default()
+            },
+            1e-7,
+        );
+        // Held multipliers: quadratic with Dormand–Prince, constant with RK4 fixed steps.
+        check_closed_forms(
+            Options {
+                method: InnerMethod::DormandPrince54,
+                multipliers: MultiplierModel::Quadratic,
+                step: adaptive(1e-10),
+                ..Options::default()
+            },
+            1e-6,
+        );
+        check_closed_forms(
+            Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                multipliers: MultiplierModel::Constant,
+                step: StepControl::Fixed { step: 1e-4 },
+                ..Options::default()
+            },
+            1e-5,
+        );
+    }
+
+    fn with(scene: &SteamGenerator, p: usize, x: f64) -> SteamGenerator {
+        let mut c = SteamGenerator { ..*scene };
+        *[&mut c.h3, &mut c.h2, &mut c.d, &mut c.m][p] = x;
+        c
+    }
+
+    /// The steam generator's state and multipliers at `t_end` with fixed steps.
+    fn run(
+        scene: &SteamGenerator,
+        options: Options,
+        t_end: f64,
+    ) -> (Vector<3>, Vector<3>, Vector<2>) {
+        let mut sim =
+            zeitner::Simulator::new(scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        sim.advance_to(t_end, |_| {}).unwrap();
+        let end = sim.last().end;
+        (end.q, end.v, end.lambda)
+    }
+
+    /// Sensitivities against central differences of runs with the same fixed steps (every step
+    /// lands where the unperturbed run's does), extrapolated to order 4.
+    fn check_against_differences(options: Options, tolerance: f64) {
+        let paper = SteamGenerator::paper();
+        let t_end = 0.3;
+        let mut sim = SensitivitySimulator::<_, 3, 2, 4>::new(
+            &paper,
+            Vector::zeros(),
+            Vector::zeros(),
+            0.0,
+            options,
+        )
+        .unwrap();
+        sim.set_stop_time(t_end).unwrap();
+        while sim.step().unwrap() != zeitner::StopReason::StopTimeReached {}
+        let s = *sim.sensitivities();
+        let theta = [paper.h3, paper.h2, paper.d, paper.m];
+        let (mut dq, mut dv, mut dl) = (
+            Matrix::<3, 4>::zeros(),
+            Matrix::<3, 4>::zeros(),
+            Matrix::<2, 4>::zeros(),
+        );
+        for p in 0..4 {
+            let step = 1e-4 * theta[p];
+            let central = |h: f64| {
+                let (qa, va, la) = run(&with(&paper, p, theta[p] + h), options, t_end);
+                let (qb, vb, lb) = run(&with(&paper, p, theta[p] - h), options, t_end);
+                (
+                    (qa - qb) / (2.0 * h),
+                    (va - vb) / (2.0 * h),
+                    (la - lb) / (2.0 * h),
+                )
+            };
+            let (a, b) = (central(step / 2.0), central(step));
+            dq.set_column(p, &((4.0 * a.0 - b.0) / 3.0));
+            dv.set_column(p, &((4.0 * a.1 - b.1) / 3.0));
+            dl.set_column(p, &((4.0 * a.2 - b.2) / 3.0));
+        }
+        let relative = |got: Matrix<3, 4>, fd: Matrix<3, 4>| {
+            (0..4)
+                .map(|p| (got.column(p) - fd.column(p)).amax() / fd.column(p).amax())
+                .fold(0.0, f64::max)
+        };
+        let lambda = (0..4)
+            .map(|p| (s.lambda.column(p) - dl.column(p)).amax() / dl.column(p).amax())
+            .fold(0.0, f64::max);
+        let errors = [relative(s.q, dq), relative(s.v, dv), lambda];
+        eprintln!(
+            "{:?} {:?}: relative to differences q {:.1e}, q' {:.1e}, λ {:.1e}",
+            options.method, options.multipliers, errors[0], errors[1], errors[2]
+        );
+        for e in errors {
+            assert!(e <= tolerance, "{errors:?} against {tolerance:e}");
+        }
+    }
+
+    #[test]
+    fn the_steam_generators_sensitivities_match_differences_of_runs() {
+        let fixed = StepControl::Fixed { step: 2e-3 };
+        let tight = 1e-13;
+        for (method, multipliers) in [
+            (InnerMethod::Verner98, MultiplierModel::EveryStage),
+            (InnerMethod::Dop853, MultiplierModel::EveryStage),
+            (InnerMethod::DormandPrince54, MultiplierModel::EveryStage),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: fixed,
+                constraint_tolerance: tight,
+                ..Options::default()
+            };
+            check_against_differences(options, 1e-6);
+        }
+        for projection in [
+            zeitner::VelocityProjection::Output,
+            zeitner::VelocityProjection::State,
+        ] {
+            let options = Options {
+                method: InnerMethod::Rk4 { substeps: 1 },
+                multipliers: MultiplierModel::Constant,
+                step: fixed,
+                constraint_tolerance: tight,
+                velocity_projection: projection,
+                accept_linearised_update: false,
+                ..Options::default()
+            };
+            check_against_differences(options, 1e-6);
+        }
+    }
+}

@@ -185,11 +185,31 @@ pub enum InvalidOption {
     /// Constant multipliers with adaptive steps on a system with velocity-level rows: the step
     /// control cannot hold them to the tolerance.
     ConstantMultipliersOnVelocityRows,
+    /// Sensitivities through an implicit inner method or generalised-α, which have none yet:
+    /// choose an explicit one (`Automatic` turns implicit only on a stiff scene).
+    SensitivitiesForMethod,
+    /// Sensitivities of a scene with gaps or event functions, whose jumps they do not follow yet.
+    SensitivitiesAcrossContacts,
+    /// Sensitivities with `VelocityProjection::Off`: they are those of consistent points.
+    SensitivitiesOfRawOutput,
 }
 
 impl fmt::Display for InvalidOption {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            InvalidOption::SensitivitiesForMethod => f.write_str(
+                "sensitivities are followed through the explicit inner methods only (`Rk4`, \
+                 `DormandPrince54`, `Dop853`, `Verner98`, and `Automatic` until it turns implicit): \
+                 choose one of them",
+            ),
+            InvalidOption::SensitivitiesAcrossContacts => f.write_str(
+                "sensitivities do not follow impacts, contacts or events yet: the scene has gaps or \
+                 event functions",
+            ),
+            InvalidOption::SensitivitiesOfRawOutput => f.write_str(
+                "sensitivities are those of consistent points: use `VelocityProjection::Output` \
+                 (the default) or `State`, not `Off`",
+            ),
             InvalidOption::ConstraintTolerance => f.write_str(
                 "`constraint_tolerance` must be finite and positive, in the constraints' units (default 1e-10)",
             ),

@@ -52,6 +52,7 @@ mod multipliers;
 pub mod options;
 pub mod output;
 mod polynomial;
+mod sensitivity;
 pub mod simulator;
 #[cfg(feature = "alloc")]
 pub mod sparse;
@@ -72,8 +73,8 @@ pub use options::{
     ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
     StartPolicy, StepControl, VelocityProjection, VERNER_FROM_RTOL,
 };
-pub use output::{Direction, Point, StepReport, StopReason};
-pub use simulator::{Observation, Simulator, Statistics};
+pub use output::{Direction, Point, Sensitivities, StepReport, StopReason};
+pub use simulator::{Observation, SensitivitySimulator, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
 pub use system::{

@@ -3,7 +3,7 @@
 //! simulator it borrows; the reports are made in `consistency`.)
 
 use crate::gaps::GapSet;
-use crate::system::Vector;
+use crate::system::{Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,6 +35,19 @@ pub struct StepReport<const N: usize, const Z: usize> {
     pub rate_residual: Vector<Z>,
     /// Integrations of the step (Newton sweeps), the first one included.
     pub newton_iterations: u32,
+}
+
+/// The derivatives of a reported point by the scene's `P` parameters, a column each
+/// ([`crate::SensitivitySimulator`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sensitivities<const N: usize, const Z: usize, const P: usize> {
+    pub t: f64,
+    /// `∂q/∂θ`.
+    pub q: Matrix<N, P>,
+    /// `∂q'/∂θ` of the reported velocities.
+    pub v: Matrix<N, P>,
+    /// `∂λ/∂θ` of the reported multipliers.
+    pub lambda: Matrix<Z, P>,
 }
 
 #[cfg(feature = "dense-output")]

@@ -252,6 +252,11 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
         self.tableau
     }
 
+    /// Equal substeps per step.
+    pub fn substeps(&self) -> u32 {
+        self.substeps
+    }
+
     /// [`Method::integrate_every_stage`], the last (sub)step's stage slopes `(q', q'')` left in
     /// `slopes` (for a continuous extension).
     pub fn integrate_every_stage_into<S>(

@@ -1,7 +1,7 @@
 //! One step as a transaction: plan its size, predict the multipliers, let Newton hold the
 //! constraints at its end, test its error, and accept it or say how to retry.
 
-use super::Simulator;
+use super::{LastStep, Simulator};
 use crate::consistency::{end_point, end_report, tangential, Gram};
 use crate::control::{
     error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, tempered,
@@ -30,6 +30,10 @@ pub(super) struct Accepted<const N: usize, const Z: usize> {
     pub(super) stiffness: Option<f64>,
     /// Whether a constraint gradient had all but vanished at the end point (a cusp).
     pub(super) singular_end: bool,
+    /// What a step's sensitivities need to take it again: the size its residual correction was
+    /// made for, and whether its end's positions were projected.
+    pub(super) planned: f64,
+    pub(super) positions_projected: bool,
 }
 
 pub(super) enum Attempt<const N: usize, const Z: usize> {
@@ -199,7 +203,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             } => {
                 self.statistics.newton_iterations += u64::from(integrations);
                 let constant = multipliers.first_power == 0 && K == 1;
-                self.conclude(end, &multipliers, constant, integrations, (h, t_end))
+                let concluded =
+                    self.conclude(end, &multipliers, constant, integrations, (h, t_end));
+                match concluded? {
+                    Attempt::Accepted(step) => Ok(Attempt::Accepted(Accepted { planned, ..step })),
+                    rejected => Ok(rejected),
+                }
             }
             NewtonOutcome::Failed {
                 cause,
@@ -289,6 +298,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             gram,
             stiffness: end.stiffness,
             singular_end: false,
+            planned: h,
+            positions_projected: false,
         }))
     }
 
@@ -316,6 +327,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<(), StepError> {
         let step_multipliers = step.multipliers.at_end();
         self.pending.singular = step.singular_end;
+        self.last_step = LastStep {
+            multipliers: step.multipliers,
+            planned: step.planned,
+            positions_projected: step.positions_projected,
+        };
         let mut reported = step.point;
         if self.options.velocity_projection == VelocityProjection::Off {
             // Raw output: velocities and multipliers as the paper has them.

@@ -53,6 +53,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             &self.jacobian_row_scale,
             S::POSITION_CONSTRAINTS,
         );
+        let integrated_q = end.q;
         end.q = match project_positions(&mut self.model, end.q, &end.v, t_end, tolerance) {
             Ok(q) => q,
             Err(cause) if retried(&cause) => return reject(cause),
@@ -66,6 +67,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
         let lambda_start = self.lambda;
         Ok(match self.conclude(end, &held, false, 1, (h, t_end))? {
             Attempt::Accepted(mut step) => {
+                step.positions_projected = step.q != integrated_q;
                 // Nothing fails where a gradient vanishes (a cusp): the index-1 stages would
                 // step through it. The step that reached it is kept, and the next one names it
                 // there, as the held multipliers' Newton does.

@@ -13,11 +13,13 @@ mod crossings;
 mod every_stage;
 mod observation;
 mod reconfigure;
+mod sensitivity;
 mod start;
 
 use start::{start_point, suits_the_rows, watch_at};
 
 pub use observation::Observation;
+pub use sensitivity::SensitivitySimulator;
 
 use anchor::Forget;
 use attempt::Attempt;
@@ -35,6 +37,7 @@ use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
 use crate::output::{StepReport, StopReason};
+use crate::polynomial::StepPolynomial;
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.
@@ -96,6 +99,17 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     time_events: &'s [f64],
     /// The first time event ahead, the model's or the user's (found again once reached).
     next_time_event: Option<f64>,
+    /// The last accepted step as its sensitivities need it.
+    last_step: LastStep<Z>,
+}
+
+/// What the last accepted step was taken with, for [`SensitivitySimulator`] to take it again.
+#[derive(Clone, Copy, Debug)]
+struct LastStep<const Z: usize> {
+    multipliers: StepPolynomial<Z>,
+    /// The size the step's residual correction was made for.
+    planned: f64,
+    positions_projected: bool,
 }
 
 /// Events found at the last step end and not yet returned, and gaps to close by an impact.
@@ -170,6 +184,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             last_impact: None,
             time_events: &[],
             next_time_event: None,
+            last_step: LastStep {
+                multipliers: StepPolynomial {
+                    c: [Vector::zeros(); 3],
+                    h: 0.0,
+                },
+                planned: 0.0,
+                positions_projected: false,
+            },
         }
         .with_next_time_event();
         simulator.restart_method();

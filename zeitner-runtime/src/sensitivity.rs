@@ -1,0 +1,511 @@
+//! Forward sensitivities by the model's parameters `θ`: the derivative of one accepted step's
+//! map, carried from the step start's to its end's. The same stages the step took are taken
+//! again at its final multipliers, their Jacobians evaluated, and a tangent `(∂q/∂θ, ∂q'/∂θ)`
+//! pushed through them:
+//! - multipliers solved at every stage (`EveryStage`): each stage's `∂λ/∂θ` from the
+//!   acceleration-level constraint linearised, then the end's corrections (positions where they
+//!   were projected, velocities always) linearised;
+//! - held multipliers (constant or quadratic): the tangent at fixed coefficients and the
+//!   sensitivity to the coefficients, which the end conditions `C(x(c, θ), c, θ) = T` fix by the
+//!   implicit-function theorem — `∂c/∂θ` from the Newton matrix, formed exactly here.
+//!
+//! Terms proportional to a projection's own size (the constraint residual it removed, at most
+//! the tolerance) are left out.
+
+use crate::error::StepError;
+use crate::linalg::{solve_blocks, solve_spd};
+use crate::mass::MassFactor;
+use crate::method::explicit::Tableau;
+use crate::model::{Acceleration, FactorOf, Model};
+use crate::polynomial::Multipliers;
+use crate::storage::Square;
+use crate::system::{ConstrainedSystem, Matrix, ParametrisedSystem, Vector};
+
+/// The derivatives of a state `(q, q')` by the `P` parameters, a column each.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Tangent<const N: usize, const P: usize> {
+    pub q: Matrix<N, P>,
+    pub v: Matrix<N, P>,
+}
+
+impl<const N: usize, const P: usize> Tangent<N, P> {
+    pub fn zero() -> Self {
+        Tangent {
+            q: Matrix::zeros(),
+            v: Matrix::zeros(),
+        }
+    }
+}
+
+type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, f64);
+
+fn rank_deficient(t: f64) -> impl Fn(crate::error::RowSet) -> StepError {
+    move |rows| StepError::RankDeficientConstraints {
+        t,
+        dependent_rows: rows,
+    }
+}
+
+/// `δa` with the multipliers held: `∂a/∂q δq + ∂a/∂q' δq' + M⁻¹ ∂(F - Gᵀλ - M a)/∂θ`, and
+/// `∂a/∂λ = -M⁻¹Gᵀ`.
+fn held_acceleration<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    lambda: &Vector<Z>,
+    at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
+    x: &Tangent<N, P>,
+) -> Result<(Matrix<N, P>, Matrix<N, Z>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let system = model.system;
+    let jac = model.acceleration_jacobians(q, v, t, lambda, at)?;
+    let mut da = jac.dq.times(&x.q);
+    if S::DYNAMICS_DEPEND_ON_VELOCITY {
+        da += jac.dv.times(&x.v);
+    }
+    let dp = jac.dp;
+    da += at
+        .factor
+        .solve(&system.parameter_force(q, v, t, lambda, &at.a));
+    Ok((da, dp))
+}
+
+/// At a point whose multipliers solve the acceleration-level system `G a + b = 0`: `δa` and
+/// `δλ` for the state's tangent `x`.
+fn index1<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    lambda: &Vector<Z>,
+    x: &Tangent<N, P>,
+) -> Result<(Matrix<N, P>, Matrix<Z, P>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let at = model.acceleration(q, v, t, lambda)?;
+    let (base, dp) = held_acceleration(model, (q, v, t), lambda, &at, x)?;
+    let (cq, cv, cp) = model
+        .system
+        .acceleration_constraint_jacobians(q, v, t, &at.a);
+    let g = at.jacobian;
+    let rhs = g * base + cq * x.q + cv * x.v + cp;
+    let gram = -(g * dp);
+    let dl = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(rank_deficient(t))?;
+    Ok((base + dp * dl, dl))
+}
+
+/// `δλ` of the consistent multipliers at a consistent point `(q, q', t)` with multipliers
+/// `lambda`, for its tangent `x`.
+pub(crate) fn consistent_multipliers<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: Point<'_, N>,
+    lambda: &Vector<Z>,
+    x: &Tangent<N, P>,
+) -> Result<Matrix<Z, P>, StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    Ok(index1(model, point, lambda, x)?.1)
+}
+
+/// The tangent of positions projected M-orthogonally onto the position rows' `g = 0`.
+pub(crate) fn project_positions<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    x: &mut Tangent<N, P>,
+) -> Result<(), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let r = S::POSITION_CONSTRAINTS;
+    let directions = model.directions(q, v, t)?;
+    let mut gram = directions.gram();
+    let (dg, _) = model.system.parameter_constraints(q, v, t);
+    let mut rhs = directions.jacobian * x.q + dg;
+    for j in r..Z {
+        gram.row_mut(j).fill(0.0);
+        gram.column_mut(j).fill(0.0);
+        gram[(j, j)] = 1.0;
+        rhs.row_mut(j).fill(0.0);
+    }
+    let mu = solve_spd(&gram, &rhs, r).map_err(rank_deficient(t))?;
+    x.q -= directions.m_inv_gt * mu;
+    Ok(())
+}
+
+/// The tangent of velocities projected M-orthogonally onto the velocity-level `w = 0`,
+/// `v' = v - y` with `y = M⁻¹Gᵀμ`, `G M⁻¹Gᵀ μ = w`, all at `(q, q', t)`: exact for rows linear
+/// in `q'` (one sweep), whatever `w` the projection removes — with constant multipliers the
+/// step's end holds only `g`, and `w` is as large as the step's error.
+pub(crate) fn project_velocities<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    x: &mut Tangent<N, P>,
+) -> Result<(), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let system = model.system;
+    let directions = model.directions(q, v, t)?;
+    let gram = directions.gram();
+    let r = S::POSITION_CONSTRAINTS;
+    let w = model.rate(q, v, t)?;
+    let mu = solve_spd(&gram, &w, r).map_err(rank_deficient(t))?;
+    let y = directions.m_inv_gt * mu;
+    // δ(Gᵀμ) - δM y at fixed μ and y: the state's part from the generated Jacobians.
+    let (fq, fv) = ConstrainedSystem::constraint_force_jacobians(system, q, v, t, &mu);
+    let mut turn = fq * x.q + fv * x.v;
+    if !S::MASS_IS_CONSTANT {
+        turn -= ConstrainedSystem::mass_jacobian_product(system, q, t, &y) * x.q;
+    }
+    // `∂(F - Gᵀλ - M a)/∂θ` at (0, y) less at (μ, 0) is `∂(Gᵀμ)/∂θ - ∂(M y)/∂θ`.
+    let (zero_z, zero_n) = (Vector::<Z>::zeros(), Vector::<N>::zeros());
+    turn += system.parameter_force(q, v, t, &zero_z, &y)
+        - system.parameter_force(q, v, t, &mu, &zero_n);
+    let turned = directions.factor.solve(&turn);
+    // δG y at fixed y: the acceleration-level linearisation along `y`, less that along 0.
+    let (cq, cv, cp) = system.acceleration_constraint_jacobians(q, v, t, &y);
+    let (bq, bv, bp) = system.acceleration_constraint_jacobians(q, v, t, &zero_n);
+    let dg_y = (cq - bq) * x.q + (cv - bv) * x.v + (cp - bp);
+    let (_, dw_theta) = system.parameter_constraints(q, v, t);
+    let (wq, wv) = system.rate_jacobians(q, v, t);
+    let dw = wq * x.q + wv * x.v + dw_theta;
+    let dmu = solve_spd(&gram, &(dw - dg_y - directions.jacobian * turned), r)
+        .map_err(rank_deficient(t))?;
+    x.v -= directions.m_inv_gt * dmu + turned;
+    Ok(())
+}
+
+/// Stage states of an explicit tableau from the start and the earlier slopes.
+fn stage<const N: usize, const ST: usize, const C: usize>(
+    tableau: &Tableau<ST>,
+    i: usize,
+    h: f64,
+    start: (&Matrix<N, C>, &Matrix<N, C>),
+    slopes: (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
+) -> (Matrix<N, C>, Matrix<N, C>) {
+    let (mut q, mut v) = (*start.0, *start.1);
+    for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
+        q += (h * tableau.a[i][j]) * slopes.0[j];
+        v += (h * tableau.a[i][j]) * slopes.1[j];
+    }
+    (q, v)
+}
+
+fn combine<const N: usize, const ST: usize, const C: usize>(
+    tableau: &Tableau<ST>,
+    h: f64,
+    start: (&Matrix<N, C>, &Matrix<N, C>),
+    slopes: (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
+) -> (Matrix<N, C>, Matrix<N, C>) {
+    let (mut q, mut v) = (*start.0, *start.1);
+    for i in (0..ST).filter(|&i| tableau.b[i] != 0.0) {
+        q += (h * tableau.b[i]) * slopes.0[i];
+        v += (h * tableau.b[i]) * slopes.1[i];
+    }
+    (q, v)
+}
+
+/// Through `substeps` steps of `tableau` (size `h` in all) with the multipliers solved at
+/// every stage, before the end's corrections: the end state and its tangent.
+pub(crate) fn every_stage<S, const N: usize, const Z: usize, const P: usize, const ST: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (tableau, substeps): (&Tableau<ST>, u32),
+    (q0, v0, t0): Point<'_, N>,
+    h: f64,
+    x0: &Tangent<N, P>,
+) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let hs = h / f64::from(substeps);
+    let (mut q, mut v, mut x) = (*q0, *v0, *x0);
+    for k in 0..substeps {
+        let t = t0 + f64::from(k) * hs;
+        let mut slopes = ([Vector::<N>::zeros(); ST], [Vector::<N>::zeros(); ST]);
+        let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
+        for i in 0..ST {
+            let (qi, vi) = stage(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
+            let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
+            let ti = t + tableau.c[i] * hs;
+            let point = crate::consistency::consistent_point(model, ti, qi, vi)?;
+            let xi = Tangent { q: xq, v: xv };
+            let (da, _) = index1(model, (&qi, &vi, ti), &point.lambda, &xi)?;
+            (slopes.0[i], slopes.1[i]) = (vi, point.a);
+            (tangents.0[i], tangents.1[i]) = (xv, da);
+        }
+        (q, v) = combine(tableau, hs, (&q, &v), (&slopes.0, &slopes.1));
+        (x.q, x.v) = combine(tableau, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
+    }
+    Ok(((q, v), x))
+}
+
+/// One step with held multipliers, linearised: the end state, the tangent at fixed
+/// coefficients (`dbase`: the derivative of the multipliers' base, the start's consistent ones
+/// for the quadratic model) and the sensitivities to each coefficient.
+pub(crate) struct HeldStep<const N: usize, const Z: usize, const P: usize, const K: usize> {
+    pub q: Vector<N>,
+    pub v: Vector<N>,
+    pub x: Tangent<N, P>,
+    pub dq_dc: [Matrix<N, Z>; K],
+    pub dv_dc: [Matrix<N, Z>; K],
+}
+
+pub(crate) fn held<
+    S,
+    const N: usize,
+    const Z: usize,
+    const P: usize,
+    const ST: usize,
+    const K: usize,
+>(
+    model: &mut Model<'_, S, N, Z>,
+    (tableau, substeps): (&Tableau<ST>, u32),
+    (q0, v0, t0): Point<'_, N>,
+    h: f64,
+    multipliers: &Multipliers<Z, K>,
+    (x0, dbase): (&Tangent<N, P>, &Matrix<Z, P>),
+) -> Result<HeldStep<N, Z, P, K>, StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let hs = h / f64::from(substeps);
+    let share = 1.0 / f64::from(substeps);
+    let mut end = HeldStep {
+        q: *q0,
+        v: *v0,
+        x: *x0,
+        dq_dc: [Matrix::zeros(); K],
+        dv_dc: [Matrix::zeros(); K],
+    };
+    for k in 0..substeps {
+        let t = t0 + f64::from(k) * hs;
+        let s0 = f64::from(k) * share;
+        let mut slopes = ([Vector::<N>::zeros(); ST], [Vector::<N>::zeros(); ST]);
+        let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
+        let mut by_c = [([Matrix::<N, Z>::zeros(); ST], [Matrix::<N, Z>::zeros(); ST]); K];
+        for i in 0..ST {
+            let (qi, vi) = stage(tableau, i, hs, (&end.q, &end.v), (&slopes.0, &slopes.1));
+            let (xq, xv) = stage(
+                tableau,
+                i,
+                hs,
+                (&end.x.q, &end.x.v),
+                (&tangents.0, &tangents.1),
+            );
+            let ti = t + tableau.c[i] * hs;
+            let s = s0 + tableau.c[i] * share;
+            let lambda = multipliers.at(s);
+            let at = model.acceleration(&qi, &vi, ti, &lambda)?;
+            // One evaluation of the stage's Jacobians serves the tangent and every coefficient.
+            let system = model.system;
+            let jac = model.acceleration_jacobians(&qi, &vi, ti, &lambda, &at)?;
+            let mut da = jac.dq.times(&xq);
+            if S::DYNAMICS_DEPEND_ON_VELOCITY {
+                da += jac.dv.times(&xv);
+            }
+            for (c, (kq, kv)) in by_c.iter_mut().enumerate() {
+                let from = (&end.dq_dc[c], &end.dv_dc[c]);
+                let (cq, cv) = stage(tableau, i, hs, from, (&*kq, &*kv));
+                let mut dv = jac.dq.times(&cq) + multipliers.weight(c, s) * jac.dp;
+                if S::DYNAMICS_DEPEND_ON_VELOCITY {
+                    dv += jac.dv.times(&cv);
+                }
+                (kq[i], kv[i]) = (cv, dv);
+            }
+            let dp = jac.dp;
+            da += at
+                .factor
+                .solve(&system.parameter_force(&qi, &vi, ti, &lambda, &at.a));
+            (slopes.0[i], slopes.1[i]) = (vi, at.a);
+            (tangents.0[i], tangents.1[i]) = (xv, da + dp * dbase);
+        }
+        for (c, (kq, kv)) in by_c.iter().enumerate() {
+            (end.dq_dc[c], end.dv_dc[c]) =
+                combine(tableau, hs, (&end.dq_dc[c], &end.dv_dc[c]), (kq, kv));
+        }
+        (end.q, end.v) = combine(tableau, hs, (&end.q, &end.v), (&slopes.0, &slopes.1));
+        (end.x.q, end.x.v) = combine(
+            tableau,
+            hs,
+            (&end.x.q, &end.x.v),
+            (&tangents.0, &tangents.1),
+        );
+    }
+    Ok(end)
+}
+
+/// What the end conditions of a held step need linearised, as `crate::multipliers` states
+/// them: `g`, and with two coefficients `w` (position rows) or `G a + b` with the multipliers at
+/// the step end (velocity rows).
+pub(crate) struct EndConditions<F, const N: usize, const Z: usize, const P: usize> {
+    dg: (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>),
+    dw: (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>),
+    /// For velocity rows with two coefficients: `G`, `∂(G a + b)/∂(q, q', θ)`, the acceleration
+    /// and its Jacobians' point.
+    level: Option<Level<F, N, Z, P>>,
+}
+
+struct Level<F, const N: usize, const Z: usize, const P: usize> {
+    g: Matrix<Z, N>,
+    c: (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>),
+    at: Acceleration<F, N, Z>,
+    lambda: Vector<Z>,
+}
+
+/// The end conditions' linearisation at `(q, q', t)` with the end multipliers `lambda_end`.
+fn end_conditions<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    lambda_end: &Vector<Z>,
+) -> Result<EndConditions<FactorOf<S, N, Z>, N, Z, P>, StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let system = model.system;
+    let (gq, gv) = model.linearisation(q, v, t)?;
+    let (g_theta, w_theta) = system.parameter_constraints(q, v, t);
+    let (wq, wv) = system.rate_jacobians(q, v, t);
+    let level = if K > 1 && S::POSITION_CONSTRAINTS < Z {
+        let at = model.acceleration(q, v, t, lambda_end)?;
+        Some(Level {
+            g: at.jacobian,
+            c: system.acceleration_constraint_jacobians(q, v, t, &at.a),
+            at,
+            lambda: *lambda_end,
+        })
+    } else {
+        None
+    };
+    Ok(EndConditions {
+        dg: (gq, gv, g_theta),
+        dw: (wq, wv, w_theta),
+        level,
+    })
+}
+
+/// `(δC₀, δC₁)` for a state tangent `(xq, xv)` with `C` columns, the end multipliers moving by
+/// `dl` (`∂a/∂λ dl` for velocity rows' acceleration condition), and `θ`'s own terms if `theta`.
+#[allow(clippy::too_many_arguments)]
+fn conditions_tangent<S, const N: usize, const Z: usize, const P: usize, const C: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    conditions: &EndConditions<FactorOf<S, N, Z>, N, Z, P>,
+    (q, v, t): Point<'_, N>,
+    (xq, xv): (&Matrix<N, C>, &Matrix<N, C>),
+    dl: &Matrix<Z, C>,
+    theta: Option<(&Matrix<Z, C>, &Matrix<Z, C>, &Matrix<Z, C>, &Matrix<N, C>)>,
+) -> Result<(Matrix<Z, C>, Matrix<Z, C>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let r = S::POSITION_CONSTRAINTS;
+    let mut c0 = conditions.dg.0 * xq + conditions.dg.1 * xv;
+    let mut c1 = conditions.dw.0 * xq + conditions.dw.1 * xv;
+    if let Some((g_theta, w_theta, _, _)) = theta {
+        c0 += g_theta;
+        c1 += w_theta;
+    }
+    if let Some(level) = &conditions.level {
+        let jac = model.acceleration_jacobians(q, v, t, &level.lambda, &level.at)?;
+        let mut da = jac.dq.times(xq) + jac.dp * dl;
+        if S::DYNAMICS_DEPEND_ON_VELOCITY {
+            da += jac.dv.times(xv);
+        }
+        let mut rows = level.g * da + level.c.0 * xq + level.c.1 * xv;
+        if let Some((_, _, c_theta, a_theta)) = theta {
+            rows += level.g * a_theta + c_theta;
+        }
+        c1.rows_mut(r, Z - r).copy_from(&rows.rows(r, Z - r));
+    }
+    Ok((c0, c1))
+}
+
+/// `∂c/∂θ` of a held step's coefficients, and the end's tangent: the end conditions
+/// `C(x(c, θ), c, θ) = T(x₀, θ)` differentiated. `targets` is the share of the start's `g`
+/// and `w` the step aims to keep (short steps), with their tangents `δT`.
+pub(crate) fn held_end<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    step: &HeldStep<N, Z, P, K>,
+    (multipliers, dbase): (&Multipliers<Z, K>, &Matrix<Z, P>),
+    targets: [Matrix<Z, P>; 2],
+) -> Result<(Tangent<N, P>, [Matrix<Z, P>; K]), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let lambda_end = multipliers.at(1.0);
+    let conditions = end_conditions::<S, N, Z, P, K>(model, (q, v, t), &lambda_end)?;
+    // θ's own terms at the end: ∂g/∂θ, ∂w/∂θ, ∂(G a + b)/∂θ and the held `∂a/∂θ`.
+    let (g_theta, w_theta) = model.system.parameter_constraints(q, v, t);
+    let (c_theta, a_theta) = match &conditions.level {
+        Some(level) => {
+            let force = model
+                .system
+                .parameter_force(q, v, t, &level.lambda, &level.at.a);
+            (level.c.2, level.at.factor.solve(&force))
+        }
+        None => (Matrix::zeros(), Matrix::zeros()),
+    };
+    let theta = Some((&g_theta, &w_theta, &c_theta, &a_theta));
+    let (f0, f1) = conditions_tangent(
+        model,
+        &conditions,
+        (q, v, t),
+        (&step.x.q, &step.x.v),
+        dbase,
+        theta,
+    )?;
+    let free = [targets[0] - f0, targets[1] - f1];
+    let mut blocks = [[Matrix::<Z, Z>::zeros(); K]; K];
+    for k in 0..K {
+        let dl = Matrix::<Z, Z>::identity() * multipliers.weight(k, 1.0);
+        let by_c = (&step.dq_dc[k], &step.dv_dc[k]);
+        let (b0, b1) =
+            conditions_tangent::<S, N, Z, P, Z>(model, &conditions, (q, v, t), by_c, &dl, None)?;
+        let rows = [b0, b1];
+        for (l, row) in blocks.iter_mut().enumerate() {
+            row[k] = rows[l];
+        }
+    }
+    let mut dc = [Matrix::<Z, P>::zeros(); K];
+    for p in 0..P {
+        let rhs: [Vector<Z>; K] = core::array::from_fn(|l| free[l].column(p).into_owned());
+        let solved = solve_blocks(&blocks, &rhs).ok_or(StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: crate::error::RowSet::new(S::POSITION_CONSTRAINTS),
+        })?;
+        for (column, value) in dc.iter_mut().zip(&solved) {
+            column.set_column(p, value);
+        }
+    }
+    let mut x = step.x;
+    for ((dq, dv), dc) in step.dq_dc.iter().zip(&step.dv_dc).zip(&dc) {
+        x.q += dq * dc;
+        x.v += dv * dc;
+    }
+    Ok((x, dc))
+}
+
+/// The tangents `δT` of a short step's targets: `share` of the start's `g` (and, with two
+/// coefficients, of its position rows' `w`).
+pub(crate) fn targets_tangent<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    x: &Tangent<N, P>,
+    share: Option<f64>,
+) -> Result<[Matrix<Z, P>; 2], StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let Some(share) = share else {
+        return Ok([Matrix::zeros(), Matrix::zeros()]);
+    };
+    let (gq, gv) = model.linearisation(q, v, t)?;
+    let (g_theta, w_theta) = model.system.parameter_constraints(q, v, t);
+    let (wq, wv) = model.system.rate_jacobians(q, v, t);
+    let r = S::POSITION_CONSTRAINTS;
+    let t0 = share * (gq * x.q + gv * x.v + g_theta);
+    let mut t1 = share * (wq * x.q + wv * x.v + w_theta);
+    t1.rows_mut(r, Z - r).fill(0.0);
+    Ok([t0, t1])
+}

@@ -1,0 +1,292 @@
+//! A run with its forward sensitivities: the simulator steps, then each accepted step is taken
+//! again linearised (`crate::sensitivity`) to carry the derivatives by the parameters.
+
+use super::Simulator;
+use crate::error::{InvalidOption, StepError};
+use crate::method::AnyMethod;
+use crate::multipliers::carried_share;
+use crate::options::{InnerMethod, MultiplierModel, Options, VelocityProjection};
+use crate::output::{Sensitivities, StopReason};
+use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::sensitivity::{self as tangent, HeldStep, Tangent};
+use crate::system::{Matrix, ParametrisedSystem, Vector};
+
+/// A [`Simulator`] that also follows the derivatives of its state and multipliers by the
+/// scene's parameters (`fn parameters` in the model), through every accepted step: the
+/// derivative of the step map the simulator took (the discrete sensitivities), so that they
+/// agree with differences of runs that take the same steps.
+///
+/// Runs the explicit inner methods with any multiplier model — held constant or quadratic
+/// (`Rk4`, `DormandPrince54`) or solved at every stage (`Dop853`, `Verner98`, the default) —
+/// and refuses implicit ones ([`InvalidOption::SensitivitiesForMethod`]: `Automatic` is refused
+/// at the step it would turn implicit), and scenes with gaps or events
+/// ([`InvalidOption::SensitivitiesAcrossContacts`]), and the raw output of
+/// `VelocityProjection::Off` ([`InvalidOption::SensitivitiesOfRawOutput`]). Each step costs about one more
+/// integration with the stages' Jacobians.
+pub struct SensitivitySimulator<
+    's,
+    S: ParametrisedSystem<N, Z, P>,
+    const N: usize,
+    const Z: usize,
+    const P: usize,
+> {
+    simulator: Simulator<'s, S, N, Z>,
+    /// The derivatives of the integration state (its velocities raw unless projected into it).
+    state: Tangent<N, P>,
+    /// Of the consistent multipliers at the current point: the quadratic model's base.
+    consistent: Matrix<Z, P>,
+    report: Sensitivities<N, Z, P>,
+}
+
+impl<'s, S, const N: usize, const Z: usize, const P: usize> SensitivitySimulator<'s, S, N, Z, P>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    /// As [`Simulator::new`]; the start's derivatives are those of the start projected onto
+    /// the constraints (whatever the start policy: a start the policy keeps is one the
+    /// projection would not move).
+    pub fn new(
+        system: &'s S,
+        q0: Vector<N>,
+        v0: Vector<N>,
+        t0: f64,
+        options: Options,
+    ) -> Result<Self, StepError> {
+        if S::UNILATERAL_CONSTRAINTS > 0 || S::EVENTS > 0 {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesAcrossContacts,
+            ));
+        }
+        if !followed(options.method) {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesForMethod,
+            ));
+        }
+        if options.velocity_projection == VelocityProjection::Off {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesOfRawOutput,
+            ));
+        }
+        let mut simulator = Simulator::new(system, q0, v0, t0, options)?;
+        let point = simulator.last.end;
+        let model = &mut simulator.model;
+        let at = (&point.q, &point.v, point.t);
+        let mut state = Tangent::zero();
+        tangent::project_positions(model, at, &mut state)?;
+        tangent::project_velocities(model, at, &mut state)?;
+        let consistent = tangent::consistent_multipliers(model, at, &point.lambda, &state)?;
+        let report = Sensitivities {
+            t: point.t,
+            q: state.q,
+            v: state.v,
+            lambda: consistent,
+        };
+        Ok(SensitivitySimulator {
+            simulator,
+            state,
+            consistent,
+            report,
+        })
+    }
+
+    /// The simulator, for everything else a run reports.
+    pub fn simulator(&self) -> &Simulator<'s, S, N, Z> {
+        &self.simulator
+    }
+
+    /// The derivatives at the last reported point ([`Simulator::last`]'s end).
+    pub fn sensitivities(&self) -> &Sensitivities<N, Z, P> {
+        &self.report
+    }
+
+    /// [`Simulator::set_stop_time`].
+    pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
+        self.simulator.set_stop_time(t)
+    }
+
+    /// [`Simulator::step`], and the sensitivities carried to its end. A step the sensitivities
+    /// cannot follow is refused before it is taken.
+    pub fn step(&mut self) -> Result<StopReason, StepError> {
+        let sim = &self.simulator;
+        if !followed(sim.active) {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesForMethod,
+            ));
+        }
+        let model = sim
+            .options
+            .multipliers
+            .resolve(sim.active, S::POSITION_CONSTRAINTS, Z);
+        let start = (sim.time(), sim.q, sim.v);
+        let steps = sim.statistics.steps;
+        let reason = self.simulator.step()?;
+        if self.simulator.statistics.steps > steps {
+            self.follow(model, start)?;
+        }
+        Ok(reason)
+    }
+
+    /// Carries the sensitivities over the step just accepted from `(t0, q0, v0)`.
+    fn follow(
+        &mut self,
+        multipliers: MultiplierModel,
+        (t0, q0, v0): (f64, Vector<N>, Vector<N>),
+    ) -> Result<(), StepError> {
+        let sim = &mut self.simulator;
+        let point = sim.last.end;
+        let (t1, h) = (point.t, point.t - t0);
+        let record = sim.last_step;
+        let start = (&q0, &v0, t0);
+        // Each branch: the step's end as integrated, before any projection, and its tangent.
+        let ((q_raw, v_raw), mut state) = match multipliers {
+            MultiplierModel::EveryStage => {
+                let (raw, x) = every_stage(&sim.method, &mut sim.model, start, h, &self.state)?;
+                (raw, x)
+            }
+            MultiplierModel::Quadratic => {
+                let held = held_multipliers::<Z, 2>(&record.multipliers);
+                let share = carried_share(h, record.planned);
+                let x0 = (&self.state, &self.consistent);
+                let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
+                let step = held_step(&sim.method, &mut sim.model, start, h, &held, x0)?;
+                let end = (&step.q, &step.v, t1);
+                let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
+                ((step.q, step.v), x)
+            }
+            _ => {
+                let held = held_multipliers::<Z, 1>(&record.multipliers);
+                let share = carried_share(h, record.planned);
+                let zero = Matrix::zeros();
+                let x0 = (&self.state, &zero);
+                let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
+                let step = held_step(&sim.method, &mut sim.model, start, h, &held, x0)?;
+                let end = (&step.q, &step.v, t1);
+                let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
+                ((step.q, step.v), x)
+            }
+        };
+        // The end's corrections, each linearised where the simulator made it.
+        let every_stage = multipliers == MultiplierModel::EveryStage;
+        if every_stage && record.positions_projected {
+            tangent::project_positions(&mut sim.model, (&q_raw, &v_raw, t1), &mut state)?;
+        }
+        let mut projected = state;
+        tangent::project_velocities(&mut sim.model, (&sim.q, &v_raw, t1), &mut projected)?;
+        let projection = sim.options.velocity_projection;
+        if every_stage || projection == VelocityProjection::State {
+            state = projected;
+        }
+        let reported = projected;
+        let at = (&point.q, &point.v, t1);
+        let consistent =
+            tangent::consistent_multipliers(&mut sim.model, at, &point.lambda, &reported)?;
+        self.state = state;
+        self.consistent = consistent;
+        self.report = Sensitivities {
+            t: t1,
+            q: reported.q,
+            v: reported.v,
+            lambda: consistent,
+        };
+        Ok(())
+    }
+}
+
+/// Whether the sensitivities follow `method` (while it stays explicit).
+fn followed(method: InnerMethod) -> bool {
+    matches!(
+        method,
+        InnerMethod::Rk4 { .. }
+            | InnerMethod::DormandPrince54
+            | InnerMethod::Dop853
+            | InnerMethod::Verner98
+            | InnerMethod::Automatic
+    )
+}
+
+/// The held multipliers of a step from its polynomial: constant (`K = 1`) or quadratic
+/// (`K = 2`, on the start's consistent multipliers).
+fn held_multipliers<const Z: usize, const K: usize>(
+    polynomial: &StepPolynomial<Z>,
+) -> Multipliers<Z, K> {
+    if K == 1 {
+        Multipliers {
+            base: Vector::zeros(),
+            coefficients: core::array::from_fn(|_| polynomial.c[0]),
+            first_power: 0,
+        }
+    } else {
+        Multipliers {
+            base: polynomial.c[0],
+            coefficients: core::array::from_fn(|k| polynomial.c[1 + k]),
+            first_power: 1,
+        }
+    }
+}
+
+type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, f64);
+
+fn every_stage<S, const N: usize, const Z: usize, const P: usize>(
+    method: &AnyMethod<N, Z, S::Storage>,
+    model: &mut crate::model::Model<'_, S, N, Z>,
+    start: Point<'_, N>,
+    h: f64,
+    x: &Tangent<N, P>,
+) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    match method {
+        AnyMethod::Explicit4(m) => {
+            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
+        }
+        AnyMethod::Explicit7(m) => {
+            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
+        }
+        AnyMethod::Explicit12(m, _) => {
+            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
+        }
+        AnyMethod::Explicit16(m, _) => {
+            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
+        }
+        #[allow(unreachable_patterns)]
+        _ => Err(StepError::InvalidOption(
+            InvalidOption::SensitivitiesForMethod,
+        )),
+    }
+}
+
+fn held_step<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
+    method: &AnyMethod<N, Z, S::Storage>,
+    model: &mut crate::model::Model<'_, S, N, Z>,
+    start: Point<'_, N>,
+    h: f64,
+    multipliers: &Multipliers<Z, K>,
+    tangents: (&Tangent<N, P>, &Matrix<Z, P>),
+) -> Result<HeldStep<N, Z, P, K>, StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    match method {
+        AnyMethod::Explicit4(m) => tangent::held(
+            model,
+            (m.tableau(), m.substeps()),
+            start,
+            h,
+            multipliers,
+            tangents,
+        ),
+        AnyMethod::Explicit7(m) => tangent::held(
+            model,
+            (m.tableau(), m.substeps()),
+            start,
+            h,
+            multipliers,
+            tangents,
+        ),
+        #[allow(unreachable_patterns)]
+        _ => Err(StepError::InvalidOption(
+            InvalidOption::SensitivitiesForMethod,
+        )),
+    }
+}
