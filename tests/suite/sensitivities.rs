@@ -2,6 +2,9 @@
 //! parameters against central differences of the model's own values, and the sensitivities of
 //! runs against central differences of runs and against closed forms.
 
+// Columns by index read as the mathematics does.
+#![allow(clippy::needless_range_loop)]
+
 use zeitner::{Matrix, ParametrisedSystem, Vector};
 use zeitner_scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
 
@@ -352,5 +355,232 @@ mod runs {
             };
             check_against_differences(options, 1e-6);
         }
+    }
+}
+
+mod velocity_rows {
+    use zeitner::{
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        StepControl, StopReason, Vector,
+    };
+    use zeitner_scenes::knife_edge::{KnifeEdge, SteeredKnifeEdge};
+
+    fn run_to<'s, S, const P: usize>(sim: &mut SensitivitySimulator<'s, S, 3, { Z }, P>, t_end: f64)
+    where
+        S: zeitner::ParametrisedSystem<3, { Z }, P>,
+    {
+        sim.set_stop_time(t_end).unwrap();
+        while sim.step().unwrap() != StopReason::StopTimeReached {}
+    }
+    const Z: usize = 1;
+
+    /// The knife edge's closed form scales with `a = g sin α` in everything but its heading:
+    /// `∂/∂α = cot α ×`, `∂/∂g = 1/g ×` the state's `x, y, x', y'` and `λ`; the mass moves
+    /// nothing and scales `λ`.
+    #[test]
+    fn the_knife_edge_follows_its_closed_form_sensitivities() {
+        let edge = KnifeEdge::PAPER;
+        let omega = 1.5;
+        let adaptive = StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: 0.05,
+            rtol: 1e-10,
+            atol: 1e-12,
+        };
+        for (method, multipliers) in [
+            (InnerMethod::Automatic, MultiplierModel::Automatic),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: adaptive,
+                ..Options::default()
+            };
+            let v0 = Vector::<3>::new(0.0, 0.0, omega);
+            let mut sim =
+                SensitivitySimulator::<_, 3, 1, 3>::new(&edge, Vector::zeros(), v0, 0.0, options)
+                    .unwrap();
+            run_to(&mut sim, 2.0);
+            let s = *sim.sensitivities();
+            let end = sim.simulator().last().end;
+            let cot = 1.0 / edge.alpha.tan();
+            let mut expected_q = Matrix::<3, 3>::zeros();
+            let mut expected_v = Matrix::<3, 3>::zeros();
+            for i in 0..2 {
+                expected_q[(i, 0)] = cot * end.q[i];
+                expected_q[(i, 1)] = end.q[i] / edge.g;
+                expected_v[(i, 0)] = cot * end.v[i];
+                expected_v[(i, 1)] = end.v[i] / edge.g;
+            }
+            let expected_l = Matrix::<1, 3>::new(
+                cot * end.lambda[0],
+                end.lambda[0] / edge.g,
+                end.lambda[0] / edge.m,
+            );
+            let errors = [
+                (s.q - expected_q).amax() / expected_q.amax(),
+                (s.v - expected_v).amax() / expected_v.amax(),
+                (s.lambda - expected_l).amax() / expected_l.amax(),
+            ];
+            eprintln!("knife edge, {method:?} {multipliers:?}: relative to the closed form q {:.1e}, q' {:.1e}, λ {:.1e}", errors[0], errors[1], errors[2]);
+            for e in errors {
+                assert!(e <= 1e-7, "{errors:?}");
+            }
+        }
+    }
+
+    fn steered(theta: [f64; 3]) -> SteeredKnifeEdge {
+        let mut edge = KnifeEdge::PAPER;
+        edge.alpha = theta[0];
+        SteeredKnifeEdge {
+            edge,
+            omega: theta[1],
+            torque: theta[2],
+        }
+    }
+
+    /// A rheonomic position row and a velocity row together, against central differences of
+    /// runs with the same fixed steps.
+    #[test]
+    fn the_steered_knife_edge_matches_differences_of_runs() {
+        let theta = [0.3, 1.5, 0.7];
+        let fixed = StepControl::Fixed { step: 1e-2 };
+        for (method, multipliers) in [
+            (InnerMethod::Dop853, MultiplierModel::EveryStage),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: fixed,
+                constraint_tolerance: 1e-13,
+                ..Options::default()
+            };
+            let scene = steered(theta);
+            let v0 = Vector::<3>::new(0.0, 0.0, theta[1]);
+            let mut sim =
+                SensitivitySimulator::<_, 3, 2, 3>::new(&scene, Vector::zeros(), v0, 0.0, options)
+                    .unwrap();
+            sim.set_stop_time(1.0).unwrap();
+            while sim.step().unwrap() != StopReason::StopTimeReached {}
+            let s = *sim.sensitivities();
+            let run = |theta: [f64; 3]| {
+                let scene = steered(theta);
+                let v0 = Vector::<3>::new(0.0, 0.0, theta[1]);
+                let mut sim = Simulator::new(&scene, Vector::zeros(), v0, 0.0, options).unwrap();
+                sim.advance_to(1.0, |_| {}).unwrap();
+                let end = sim.last().end;
+                (end.q, end.v, end.lambda)
+            };
+            let mut worst: [f64; 3] = [0.0; 3];
+            for p in 0..3 {
+                let central = |h: f64| {
+                    let (mut up, mut down) = (theta, theta);
+                    up[p] += h;
+                    down[p] -= h;
+                    let (a, b) = (run(up), run(down));
+                    (
+                        (a.0 - b.0) / (2.0 * h),
+                        (a.1 - b.1) / (2.0 * h),
+                        (a.2 - b.2) / (2.0 * h),
+                    )
+                };
+                let h = 1e-4 * theta[p];
+                let (a, b) = (central(h / 2.0), central(h));
+                let fd = (
+                    (4.0 * a.0 - b.0) / 3.0,
+                    (4.0 * a.1 - b.1) / 3.0,
+                    (4.0 * a.2 - b.2) / 3.0,
+                );
+                let scale = |m: f64| m.max(1e-3);
+                worst[0] = worst[0].max((s.q.column(p) - fd.0).amax() / scale(fd.0.amax()));
+                worst[1] = worst[1].max((s.v.column(p) - fd.1).amax() / scale(fd.1.amax()));
+                worst[2] = worst[2].max((s.lambda.column(p) - fd.2).amax() / scale(fd.2.amax()));
+            }
+            eprintln!("steered knife edge, {method:?} {multipliers:?}: relative to differences q {:.1e}, q' {:.1e}, λ {:.1e}", worst[0], worst[1], worst[2]);
+            for w in worst {
+                assert!(w <= 1e-6, "{worst:?}");
+            }
+        }
+    }
+}
+
+mod refusals {
+    use zeitner::{
+        InnerMethod, InvalidOption, Options, SensitivitySimulator, StepError, Vector,
+        VelocityProjection,
+    };
+    use zeitner_scenes::spring_support::SpringSupportedPendulum;
+    use zeitner_scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
+
+    fn refused(error: StepError, expected: InvalidOption) {
+        assert_eq!(error, StepError::InvalidOption(expected), "{error}");
+    }
+
+    #[test]
+    fn what_the_sensitivities_cannot_follow_is_refused_by_name() {
+        let zero = Vector::<3>::zeros();
+        let gap = SteamGeneratorWithGap::paper();
+        let error =
+            SensitivitySimulator::<_, 3, 3, 3>::new(&gap, zero, zero, 0.0, Options::default());
+        refused(
+            error.err().unwrap(),
+            InvalidOption::SensitivitiesAcrossContacts,
+        );
+        let paper = SteamGenerator::paper();
+        let implicit = Options {
+            method: InnerMethod::Esdirk54,
+            ..Options::default()
+        };
+        let error = SensitivitySimulator::<_, 3, 2, 4>::new(&paper, zero, zero, 0.0, implicit);
+        refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
+        let raw = Options {
+            velocity_projection: VelocityProjection::Off,
+            ..Options::default()
+        };
+        let error = SensitivitySimulator::<_, 3, 2, 4>::new(&paper, zero, zero, 0.0, raw);
+        refused(
+            error.err().unwrap(),
+            InvalidOption::SensitivitiesOfRawOutput,
+        );
+    }
+
+    /// `Automatic` on a stiff scene turns implicit after some steps: the step that would be
+    /// implicit is refused before it is taken, and the run keeps its last state and derivatives.
+    #[test]
+    fn the_step_that_would_turn_implicit_is_refused_before_it_is_taken() {
+        let scene = SpringSupportedPendulum::STIFF;
+        let q0 = Vector::<4>::from(scene.start());
+        let mut sim = SensitivitySimulator::<_, 4, 1, 2>::new(
+            &scene,
+            q0,
+            Vector::zeros(),
+            0.0,
+            Options::default(),
+        )
+        .unwrap();
+        sim.set_stop_time(1.0).unwrap();
+        let mut steps = 0;
+        let error = loop {
+            match sim.step() {
+                Ok(_) => steps += 1,
+                Err(error) => break error,
+            }
+            assert!(steps < 100_000, "never turned implicit");
+        };
+        refused(error, InvalidOption::SensitivitiesForMethod);
+        let (before, t) = (*sim.sensitivities(), sim.simulator().time());
+        assert_eq!(sim.simulator().last().end.t, t);
+        assert_eq!(before.t, t);
+        assert_eq!(
+            sim.step(),
+            Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesForMethod
+            ))
+        );
+        assert_eq!(*sim.sensitivities(), before);
+        eprintln!("refused after {steps} explicit steps, at t = {t:.3e}");
     }
 }

@@ -26,6 +26,11 @@ impl KnifeEdge {
     fn velocity_constraints(&self, [_x, _y, theta]: [f64; 3], [vx, vy, _w]: [f64; 3]) -> [f64; 1] {
         [-theta.sin() * vx + theta.cos() * vy]
     }
+
+    /// For sensitivities: the slope, gravity and the mass (on which the motion does not depend).
+    fn parameters(&self) -> [f64; 3] {
+        [self.alpha, self.g, self.m]
+    }
 }
 
 /// A state of the knife edge with its multiplier.
@@ -91,5 +96,10 @@ impl SteeredKnifeEdge {
 
     fn velocity_constraints(&self, [_x, _y, theta]: [f64; 3], [vx, vy, _w]: [f64; 3]) -> [f64; 1] {
         [-theta.sin() * vx + theta.cos() * vy]
+    }
+
+    /// For sensitivities: the slope, the steering rate and the torque.
+    fn parameters(&self) -> [f64; 3] {
+        [self.edge.alpha, self.omega, self.torque]
     }
 }

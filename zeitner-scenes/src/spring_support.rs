@@ -34,6 +34,10 @@ impl SpringSupportedPendulum {
     fn constraints(&self, [xs, ys, xb, yb]: [f64; 4]) -> [f64; 1] {
         [(xb - xs).powi(2) + (yb - ys).powi(2) - self.l * self.l]
     }
+
+    fn parameters(&self) -> [f64; 2] {
+        [self.k, self.c]
+    }
 }
 
 impl SpringSupportedPendulum {

@@ -3,12 +3,15 @@
 
 use super::Simulator;
 use crate::error::{InvalidOption, StepError};
+use crate::method::explicit::Tableau;
 use crate::method::AnyMethod;
+use crate::model::Model;
 use crate::multipliers::carried_share;
 use crate::options::{InnerMethod, MultiplierModel, Options, VelocityProjection};
 use crate::output::{Sensitivities, StopReason};
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::sensitivity::{self as tangent, HeldStep, Tangent};
+use crate::storage::Storage;
 use crate::system::{Matrix, ParametrisedSystem, Vector};
 
 /// A [`Simulator`] that also follows the derivatives of its state and multipliers by the
@@ -117,11 +120,13 @@ where
             .options
             .multipliers
             .resolve(sim.active, S::POSITION_CONSTRAINTS, Z);
+        // Taken before the step: `Automatic` may change the method as it accepts it.
+        let stages = Stages::of(&sim.method)?;
         let start = (sim.time(), sim.q, sim.v);
         let steps = sim.statistics.steps;
         let reason = self.simulator.step()?;
         if self.simulator.statistics.steps > steps {
-            self.follow(model, start)?;
+            self.follow((stages, model), start)?;
         }
         Ok(reason)
     }
@@ -129,7 +134,7 @@ where
     /// Carries the sensitivities over the step just accepted from `(t0, q0, v0)`.
     fn follow(
         &mut self,
-        multipliers: MultiplierModel,
+        (stages, multipliers): (Stages, MultiplierModel),
         (t0, q0, v0): (f64, Vector<N>, Vector<N>),
     ) -> Result<(), StepError> {
         let sim = &mut self.simulator;
@@ -140,7 +145,7 @@ where
         // Each branch: the step's end as integrated, before any projection, and its tangent.
         let ((q_raw, v_raw), mut state) = match multipliers {
             MultiplierModel::EveryStage => {
-                let (raw, x) = every_stage(&sim.method, &mut sim.model, start, h, &self.state)?;
+                let (raw, x) = stages.every_stage(&mut sim.model, start, h, &self.state)?;
                 (raw, x)
             }
             MultiplierModel::Quadratic => {
@@ -148,7 +153,7 @@ where
                 let share = carried_share(h, record.planned);
                 let x0 = (&self.state, &self.consistent);
                 let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
-                let step = held_step(&sim.method, &mut sim.model, start, h, &held, x0)?;
+                let step = stages.held(&mut sim.model, start, h, &held, x0)?;
                 let end = (&step.q, &step.v, t1);
                 let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
                 ((step.q, step.v), x)
@@ -159,7 +164,7 @@ where
                 let zero = Matrix::zeros();
                 let x0 = (&self.state, &zero);
                 let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
-                let step = held_step(&sim.method, &mut sim.model, start, h, &held, x0)?;
+                let step = stages.held(&mut sim.model, start, h, &held, x0)?;
                 let end = (&step.q, &step.v, t1);
                 let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
                 ((step.q, step.v), x)
@@ -226,67 +231,67 @@ fn held_multipliers<const Z: usize, const K: usize>(
 
 type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, f64);
 
-fn every_stage<S, const N: usize, const Z: usize, const P: usize>(
-    method: &AnyMethod<N, Z, S::Storage>,
-    model: &mut crate::model::Model<'_, S, N, Z>,
-    start: Point<'_, N>,
-    h: f64,
-    x: &Tangent<N, P>,
-) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
-where
-    S: ParametrisedSystem<N, Z, P>,
-{
-    match method {
-        AnyMethod::Explicit4(m) => {
-            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
-        }
-        AnyMethod::Explicit7(m) => {
-            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
-        }
-        AnyMethod::Explicit12(m, _) => {
-            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
-        }
-        AnyMethod::Explicit16(m, _) => {
-            tangent::every_stage(model, (m.tableau(), m.substeps()), start, h, x)
-        }
-        #[allow(unreachable_patterns)]
-        _ => Err(StepError::InvalidOption(
-            InvalidOption::SensitivitiesForMethod,
-        )),
-    }
+/// The tableau (and substeps) a step was taken with.
+#[derive(Clone, Copy)]
+enum Stages {
+    Four(&'static Tableau<4>, u32),
+    Seven(&'static Tableau<7>, u32),
+    Twelve(&'static Tableau<12>, u32),
+    Sixteen(&'static Tableau<16>, u32),
 }
 
-fn held_step<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
-    method: &AnyMethod<N, Z, S::Storage>,
-    model: &mut crate::model::Model<'_, S, N, Z>,
-    start: Point<'_, N>,
-    h: f64,
-    multipliers: &Multipliers<Z, K>,
-    tangents: (&Tangent<N, P>, &Matrix<Z, P>),
-) -> Result<HeldStep<N, Z, P, K>, StepError>
-where
-    S: ParametrisedSystem<N, Z, P>,
-{
-    match method {
-        AnyMethod::Explicit4(m) => tangent::held(
-            model,
-            (m.tableau(), m.substeps()),
-            start,
-            h,
-            multipliers,
-            tangents,
-        ),
-        AnyMethod::Explicit7(m) => tangent::held(
-            model,
-            (m.tableau(), m.substeps()),
-            start,
-            h,
-            multipliers,
-            tangents,
-        ),
-        #[allow(unreachable_patterns)]
-        _ => Err(StepError::InvalidOption(
-            InvalidOption::SensitivitiesForMethod,
-        )),
+impl Stages {
+    fn of<const N: usize, const Z: usize, D: Storage<N>>(
+        method: &AnyMethod<N, Z, D>,
+    ) -> Result<Self, StepError> {
+        Ok(match method {
+            AnyMethod::Explicit4(m) => Stages::Four(m.tableau(), m.substeps()),
+            AnyMethod::Explicit7(m) => Stages::Seven(m.tableau(), m.substeps()),
+            AnyMethod::Explicit12(m, _) => Stages::Twelve(m.tableau(), m.substeps()),
+            AnyMethod::Explicit16(m, _) => Stages::Sixteen(m.tableau(), m.substeps()),
+            #[allow(unreachable_patterns)]
+            _ => {
+                return Err(StepError::InvalidOption(
+                    InvalidOption::SensitivitiesForMethod,
+                ))
+            }
+        })
+    }
+
+    fn every_stage<S, const N: usize, const Z: usize, const P: usize>(
+        self,
+        model: &mut Model<'_, S, N, Z>,
+        start: Point<'_, N>,
+        h: f64,
+        x: &Tangent<N, P>,
+    ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
+    where
+        S: ParametrisedSystem<N, Z, P>,
+    {
+        match self {
+            Stages::Four(t, k) => tangent::every_stage(model, (t, k), start, h, x),
+            Stages::Seven(t, k) => tangent::every_stage(model, (t, k), start, h, x),
+            Stages::Twelve(t, k) => tangent::every_stage(model, (t, k), start, h, x),
+            Stages::Sixteen(t, k) => tangent::every_stage(model, (t, k), start, h, x),
+        }
+    }
+
+    fn held<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
+        self,
+        model: &mut Model<'_, S, N, Z>,
+        start: Point<'_, N>,
+        h: f64,
+        multipliers: &Multipliers<Z, K>,
+        tangents: (&Tangent<N, P>, &Matrix<Z, P>),
+    ) -> Result<HeldStep<N, Z, P, K>, StepError>
+    where
+        S: ParametrisedSystem<N, Z, P>,
+    {
+        match self {
+            Stages::Four(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+            Stages::Seven(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+            Stages::Twelve(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+            Stages::Sixteen(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+        }
     }
 }
