@@ -21,6 +21,7 @@ mod measure;
 mod peer_gaps;
 mod peers;
 mod scaling;
+mod sensitivity_cost;
 mod stability;
 mod work_precision;
 
@@ -58,6 +59,8 @@ enum Command {
     /// Chains and ladders from 8 to 256 coordinates: time per step, growth, stack needed, and
     /// the O(n) floor; writes `docs/scaling.md` and its figure.
     Scaling(scaling::ScalingArgs),
+    /// What following the parameters' sensitivities costs against the plain run.
+    SensitivityCost(sensitivity_cost::CostArgs),
     /// One short run on a thread of a given stack (started by `scaling`).
     #[command(hide = true)]
     ScalingProbe(scaling::ProbeArgs),
@@ -135,6 +138,7 @@ fn run(command: Command) -> Result<(), Box<dyn std::error::Error>> {
         Command::Fuzz(args) => fuzz_command::fuzz(args),
         Command::FuzzWorker(args) => fuzz_command::worker(args),
         Command::Scaling(args) => scaling::report(args),
+        Command::SensitivityCost(args) => sensitivity_cost::report(args),
         Command::ScalingProbe(args) => scaling::probe(args),
     }
 }

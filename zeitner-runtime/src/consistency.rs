@@ -217,7 +217,11 @@ pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const
 }
 
 /// [`consistent_point`], with `G` and `G M⁻¹ Gᵀ` at the point.
-fn consistent_point_and_gram<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+pub(crate) fn consistent_point_and_gram<
+    S: ConstrainedSystem<N, Z>,
+    const N: usize,
+    const Z: usize,
+>(
     model: &mut Model<'_, S, N, Z>,
     t: f64,
     q: Vector<N>,

@@ -12,6 +12,7 @@
 //! Terms proportional to a projection's own size (the constraint residual it removed, at most
 //! the tolerance) are left out.
 
+use crate::consistency::consistent_point_and_gram;
 use crate::error::StepError;
 use crate::linalg::{solve_blocks, solve_spd};
 use crate::mass::MassFactor;
@@ -71,26 +72,27 @@ where
     Ok((da, dp))
 }
 
-/// At a point whose multipliers solve the acceleration-level system `G a + b = 0`: `δa` and
-/// `δλ` for the state's tangent `x`.
+/// At a point whose multipliers solve the acceleration-level system `G a + b = 0` (`at` its
+/// acceleration with them, `gram` its `G M⁻¹Gᵀ`): `δa` and `δλ` for the state's tangent `x`.
 fn index1<S, const N: usize, const Z: usize, const P: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): Point<'_, N>,
-    lambda: &Vector<Z>,
+    (lambda, at, gram): (
+        &Vector<Z>,
+        &Acceleration<FactorOf<S, N, Z>, N, Z>,
+        &Matrix<Z, Z>,
+    ),
     x: &Tangent<N, P>,
 ) -> Result<(Matrix<N, P>, Matrix<Z, P>), StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let at = model.acceleration(q, v, t, lambda)?;
-    let (base, dp) = held_acceleration(model, (q, v, t), lambda, &at, x)?;
+    let (base, dp) = held_acceleration(model, (q, v, t), lambda, at, x)?;
     let (cq, cv, cp) = model
         .system
         .acceleration_constraint_jacobians(q, v, t, &at.a);
-    let g = at.jacobian;
-    let rhs = g * base + cq * x.q + cv * x.v + cp;
-    let gram = -(g * dp);
-    let dl = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(rank_deficient(t))?;
+    let rhs = at.jacobian * base + cq * x.q + cv * x.v + cp;
+    let dl = solve_spd(gram, &rhs, S::POSITION_CONSTRAINTS).map_err(rank_deficient(t))?;
     Ok((base + dp * dl, dl))
 }
 
@@ -105,7 +107,9 @@ pub(crate) fn consistent_multipliers<S, const N: usize, const Z: usize, const P:
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    Ok(index1(model, point, lambda, x)?.1)
+    let at = model.acceleration(point.0, point.1, point.2, lambda)?;
+    let gram = at.jacobian * at.factor.solve(&at.jacobian.transpose());
+    Ok(index1(model, point, (lambda, &at, &gram), x)?.1)
 }
 
 /// The tangent of positions projected M-orthogonally onto the position rows' `g = 0`.
@@ -228,9 +232,16 @@ where
             let (qi, vi) = stage(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
             let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
             let ti = t + tableau.c[i] * hs;
-            let point = crate::consistency::consistent_point(model, ti, qi, vi)?;
+            // The stage's consistent point as the step made it, and its acceleration from it.
+            let (point, gram) = consistent_point_and_gram(model, ti, qi, vi)?;
+            let at = Acceleration {
+                a: point.a,
+                factor: model.mass_factor(&qi, ti)?,
+                jacobian: gram.jacobian,
+            };
             let xi = Tangent { q: xq, v: xv };
-            let (da, _) = index1(model, (&qi, &vi, ti), &point.lambda, &xi)?;
+            let stage_point = (&qi, &vi, ti);
+            let (da, _) = index1(model, stage_point, (&point.lambda, &at, &gram.gram), &xi)?;
             (slopes.0[i], slopes.1[i]) = (vi, point.a);
             (tangents.0[i], tangents.1[i]) = (xv, da);
         }

@@ -191,6 +191,11 @@ impl Andrews {
             y - self.zf * (omega + epsilon).sin() + self.u * epsilon.cos() - self.ya,
         ]
     }
+
+    /// For sensitivities: the driving torque, the spring, a mass and a rod length.
+    fn parameters(&self) -> [f64; 4] {
+        [self.mom, self.c0, self.m2, self.d]
+    }
 }
 
 /// The published solution at t = 0.03 (test set, PSIDE at rtol = atol = 1e-14), reliable to
