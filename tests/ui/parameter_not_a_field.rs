@@ -1,0 +1,10 @@
+use zeitner::constrained_system;
+pub struct S { pub m: f64, pub l: f64, pub unused: f64 }
+#[constrained_system]
+impl S {
+    fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+    fn force(&self) -> [f64; 2] { [0.0, -self.m] }
+    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+    fn parameters(&self) -> [f64; 4] { [2.0 * self.l, self.m, self.m, self.unused] }
+}
+fn main() {}
