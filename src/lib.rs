@@ -25,6 +25,35 @@
 //! let end = sim.last().end;
 //! assert!((end.q.norm() - 1.0).abs() < 1e-9);
 //! ```
+//!
+//! Sensitivities: name fields as parameters, and a [`SensitivitySimulator`] follows the
+//! derivatives of the state and the multipliers by them through the run.
+//!
+//! ```
+//! use zeitner::{constrained_system, Options, SensitivitySimulator, StopReason, Vector};
+//!
+//! pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+//!
+//! #[constrained_system]
+//! impl Pendulum {
+//!     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+//!     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+//!     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+//!     fn parameters(&self) -> [f64; 2] { [self.l, self.g] }
+//! }
+//!
+//! let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+//! let q0 = Vector::<2>::new(1.0, 0.0);
+//! let mut sim =
+//!     SensitivitySimulator::<_, 2, 1, 2>::new(&pendulum, q0, Vector::zeros(), 0.0, Options::default())
+//!         .unwrap();
+//! sim.set_stop_time(1.0).unwrap();
+//! while sim.step().unwrap() != StopReason::StopTimeReached {}
+//! let (end, s) = (sim.simulator().last().end, sim.sensitivities());
+//! // The motion runs in the time t √(g/l): ∂q/∂g = t q' / (2g).
+//! let closed_form = (end.t / (2.0 * 9.81)) * end.v;
+//! assert!((s.q.column(1) - closed_form).amax() < 1e-6);
+//! ```
 #![no_std]
 
 pub use zeitner_macros::constrained_system;

@@ -45,7 +45,12 @@ use proc_macro::TokenStream;
 ///   `cos` of an angle rather than the angle from `atan2`);
 /// - `time_events` — `fn time_events(&self) -> [f64; K]`, the times at which the model changes
 ///   discontinuously in time (a load's ramp ending, a load switched off); steps land on them
-///   (`StopReason::TimeEventReached`).
+///   (`StopReason::TimeEventReached`);
+/// - `parameters` — `fn parameters(&self) -> [f64; P]`, fields of the model (`self.h3`,
+///   `self.base.d`) whose sensitivities `SensitivitySimulator` follows: the macro then also
+///   implements `ParametrisedSystem<N, Z, P>` with the derivatives by them. A field read only
+///   inside an opaque method is not seen (a parameter no model function reads is an error):
+///   move the method into the impl, where it is inlined and differentiated.
 ///
 /// Sign convention: `M(q,t) q'' = F(q, q', t) - Gᵀλ` with `G = ∂g/∂q` for position-level rows
 /// and `G = ∂g/∂q'` for velocity-level rows. The user's methods stay as written and callable.
