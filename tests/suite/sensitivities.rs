@@ -513,7 +513,7 @@ mod refusals {
         VelocityProjection,
     };
     use zeitner_scenes::spring_support::SpringSupportedPendulum;
-    use zeitner_scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
+    use zeitner_scenes::steam_generator::SteamGenerator;
 
     fn refused(error: StepError, expected: InvalidOption) {
         assert_eq!(error, StepError::InvalidOption(expected), "{error}");
@@ -522,13 +522,6 @@ mod refusals {
     #[test]
     fn what_the_sensitivities_cannot_follow_is_refused_by_name() {
         let zero = Vector::<3>::zeros();
-        let gap = SteamGeneratorWithGap::paper();
-        let error =
-            SensitivitySimulator::<_, 3, 3, 3>::new(&gap, zero, zero, 0.0, Options::default());
-        refused(
-            error.err().unwrap(),
-            InvalidOption::SensitivitiesAcrossContacts,
-        );
         let paper = SteamGenerator::paper();
         let implicit = Options {
             method: InnerMethod::Esdirk54,
@@ -582,5 +575,267 @@ mod refusals {
         );
         assert_eq!(*sim.sensitivities(), before);
         eprintln!("refused after {steps} explicit steps, at t = {t:.3e}");
+    }
+}
+
+mod impacts {
+    use zeitner::{
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        StepControl, StopReason, Vector,
+    };
+    use zeitner_scenes::contact::{Ball, WallPendulum};
+
+    /// A ball dropped from rest at height `H` strikes at `t₁ = √(2H/g)` and leaves at
+    /// `v⁺ = e √(2gH)`; after it, `y = v⁺τ - gτ²/2` with `τ = t - t₁`. By `g`:
+    /// `∂t₁/∂g = -t₁/(2g)`, `∂v⁺/∂g = v⁺/(2g)`, so `∂y/∂g = (v⁺/2g)(τ + t₁) - τ²/2 - τ t₁/2` and
+    /// `∂y'/∂g = v⁺/(2g) - τ - t₁/2`; the mass changes nothing.
+    #[test]
+    fn a_bouncing_ball_follows_its_closed_form_through_the_impact() {
+        let (h, t_end) = (2.0, 1.0);
+        let ball = Ball {
+            m: 0.5,
+            g: 9.81,
+            e: 0.6,
+        };
+        let g = ball.g;
+        let t1 = (2.0 * h / g).sqrt();
+        let v_plus = ball.e * (2.0 * g * h).sqrt();
+        let tau = t_end - t1;
+        let dy = (v_plus / (2.0 * g)) * (tau + t1) - tau * tau / 2.0 - tau * t1 / 2.0;
+        let dv = v_plus / (2.0 * g) - tau - t1 / 2.0;
+        let adaptive = StepControl::Adaptive {
+            initial_step: 1e-3,
+            min_step: 1e-12,
+            max_step: 0.05,
+            rtol: 1e-10,
+            atol: 1e-12,
+        };
+        for (method, multipliers) in [
+            (InnerMethod::Automatic, MultiplierModel::Automatic),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+            (InnerMethod::DormandPrince54, MultiplierModel::Constant),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: adaptive,
+                ..Options::default()
+            };
+            let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
+                &ball,
+                Vector::from([h]),
+                Vector::zeros(),
+                0.0,
+                options,
+            )
+            .unwrap();
+            sim.set_stop_time(t_end).unwrap();
+            let mut impact_time = None;
+            loop {
+                match sim.step().unwrap() {
+                    StopReason::Impact => impact_time = sim.impact_time().copied(),
+                    StopReason::StopTimeReached => break,
+                    _ => {}
+                }
+            }
+            let s = sim.sensitivities();
+            let dt1 = impact_time.expect("one impact");
+            let errors = [
+                (dt1[(0, 0)] + t1 / (2.0 * g)).abs() / (t1 / (2.0 * g)),
+                (s.q[(0, 0)] - dy).abs() / dy.abs(),
+                (s.v[(0, 0)] - dv).abs() / dv.abs(),
+                s.q[(0, 1)].abs() + s.v[(0, 1)].abs(),
+            ];
+            eprintln!("ball, {method:?} {multipliers:?}: ∂t₁/∂g {:.1e}, ∂y/∂g {:.1e}, ∂y'/∂g {:.1e} relative; |∂/∂m| {:.1e}", errors[0], errors[1], errors[2], errors[3]);
+            for e in errors {
+                assert!(e <= 1e-7, "{errors:?}");
+            }
+        }
+    }
+
+    fn wall(theta: [f64; 2]) -> WallPendulum {
+        WallPendulum {
+            m: 1.0,
+            length: theta[0],
+            g: theta[1],
+            e: 0.7,
+            height: -0.5 * theta[0],
+        }
+    }
+
+    /// Through the strike on the wall, the events on the way and the rod all along, against
+    /// central differences of runs with fixed steps.
+    #[test]
+    fn a_pendulum_striking_a_wall_matches_differences_of_runs() {
+        let theta = [1.0, 9.81];
+        let t_end = 1.2;
+        let fixed = StepControl::Fixed { step: 2e-3 };
+        let start = |theta: [f64; 2]| Vector::<2>::new(theta[0], 0.0);
+        let run = |options: Options, theta: [f64; 2]| {
+            let scene = wall(theta);
+            let mut sim =
+                Simulator::new(&scene, start(theta), Vector::zeros(), 0.0, options).unwrap();
+            sim.set_stop_time(t_end).unwrap();
+            let mut impacts = 0;
+            loop {
+                match sim.step().unwrap() {
+                    StopReason::Impact => impacts += 1,
+                    StopReason::StopTimeReached => break,
+                    _ => {}
+                }
+            }
+            let end = sim.last().end;
+            (end.q, end.v, impacts)
+        };
+        for (method, multipliers) in [
+            (InnerMethod::Dop853, MultiplierModel::EveryStage),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: fixed,
+                constraint_tolerance: 1e-13,
+                ..Options::default()
+            };
+            let scene = wall(theta);
+            let mut sim = SensitivitySimulator::<_, 2, 2, 2>::new(
+                &scene,
+                start(theta),
+                Vector::zeros(),
+                0.0,
+                options,
+            )
+            .unwrap();
+            sim.set_stop_time(t_end).unwrap();
+            let mut impacts = 0;
+            loop {
+                match sim.step().unwrap() {
+                    StopReason::Impact => impacts += 1,
+                    StopReason::StopTimeReached => break,
+                    _ => {}
+                }
+            }
+            assert!(impacts >= 1, "no impact before {t_end} s");
+            let s = *sim.sensitivities();
+            let (mut dq, mut dv) = (Matrix::<2, 2>::zeros(), Matrix::<2, 2>::zeros());
+            for p in 0..2 {
+                let central = |h: f64| {
+                    let (mut up, mut down) = (theta, theta);
+                    up[p] += h;
+                    down[p] -= h;
+                    let (a, b) = (run(options, up), run(options, down));
+                    assert_eq!((a.2, b.2), (impacts, impacts));
+                    ((a.0 - b.0) / (2.0 * h), (a.1 - b.1) / (2.0 * h))
+                };
+                let h = 1e-5 * theta[p];
+                let (a, b) = (central(h / 2.0), central(h));
+                dq.set_column(p, &((4.0 * a.0 - b.0) / 3.0));
+                dv.set_column(p, &((4.0 * a.1 - b.1) / 3.0));
+            }
+            let errors = [(s.q - dq).amax() / dq.amax(), (s.v - dv).amax() / dv.amax()];
+            eprintln!("wall pendulum, {method:?} {multipliers:?}, {impacts} impacts: relative to differences q {:.1e}, q' {:.1e}", errors[0], errors[1]);
+            for e in errors {
+                assert!(e <= 1e-5, "{errors:?}\n{}{}\n{}{}", s.q, dq, s.v, dv);
+            }
+        }
+    }
+}
+
+mod paper_with_gap {
+    use zeitner::{
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        StepControl, StopReason, Vector,
+    };
+    use zeitner_scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
+
+    fn scene(theta: [f64; 3]) -> SteamGeneratorWithGap {
+        let paper = SteamGeneratorWithGap::paper();
+        SteamGeneratorWithGap {
+            base: SteamGenerator {
+                h3: theta[0],
+                d: theta[2],
+                ..paper.base
+            },
+            clearance: theta[1],
+            ..paper
+        }
+    }
+
+    /// The strut's clearance: free flight, strikes, bounces and the strut holding, against
+    /// central differences of runs with fixed steps taking the same impacts.
+    #[test]
+    fn the_steam_generator_with_its_gap_matches_differences_of_runs() {
+        let theta = [8.0, 0.005, 2.0e6];
+        let t_end = 0.4;
+        let fixed = StepControl::Fixed { step: 1e-3 };
+        let run = |options: Options, theta: [f64; 3]| {
+            let s = scene(theta);
+            let mut sim =
+                Simulator::new(&s, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+            sim.set_stop_time(t_end).unwrap();
+            let mut reasons = Vec::new();
+            loop {
+                match sim.step().unwrap() {
+                    StopReason::StopTimeReached => break,
+                    StopReason::Impact => reasons.push("impact"),
+                    StopReason::ContactsOpened { .. } => reasons.push("opened"),
+                    _ => {}
+                }
+            }
+            let end = sim.last().end;
+            (end.q, end.v, end.lambda, reasons)
+        };
+        for (method, multipliers) in [
+            (InnerMethod::Verner98, MultiplierModel::EveryStage),
+            (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+        ] {
+            let options = Options {
+                method,
+                multipliers,
+                step: fixed,
+                constraint_tolerance: 1e-13,
+                ..Options::default()
+            };
+            let s = scene(theta);
+            let mut sim = SensitivitySimulator::<_, 3, 3, 3>::new(
+                &s,
+                Vector::zeros(),
+                Vector::zeros(),
+                0.0,
+                options,
+            )
+            .unwrap();
+            sim.set_stop_time(t_end).unwrap();
+            while sim.step().unwrap() != StopReason::StopTimeReached {}
+            let sens = *sim.sensitivities();
+            let nominal = run(options, theta);
+            let (mut dq, mut dv) = (Matrix::<3, 3>::zeros(), Matrix::<3, 3>::zeros());
+            for p in 0..3 {
+                let central = |h: f64| {
+                    let (mut up, mut down) = (theta, theta);
+                    up[p] += h;
+                    down[p] -= h;
+                    let (a, b) = (run(options, up), run(options, down));
+                    assert_eq!(a.3, nominal.3, "the perturbed run took other events");
+                    assert_eq!(b.3, nominal.3, "the perturbed run took other events");
+                    ((a.0 - b.0) / (2.0 * h), (a.1 - b.1) / (2.0 * h))
+                };
+                let h = 1e-5 * theta[p];
+                let (a, b) = (central(h / 2.0), central(h));
+                dq.set_column(p, &((4.0 * a.0 - b.0) / 3.0));
+                dv.set_column(p, &((4.0 * a.1 - b.1) / 3.0));
+            }
+            let relative = |got: Matrix<3, 3>, fd: Matrix<3, 3>| {
+                (0..3)
+                    .map(|p| (got.column(p) - fd.column(p)).amax() / fd.column(p).amax())
+                    .fold(0.0, f64::max)
+            };
+            let errors = [relative(sens.q, dq), relative(sens.v, dv)];
+            eprintln!("steam generator with its gap, {method:?} {multipliers:?}, events {:?}: relative to differences q {:.1e}, q' {:.1e}", nominal.3, errors[0], errors[1]);
+            for e in errors {
+                assert!(e <= 1e-6, "{errors:?}\n{}{}\n{}{}", sens.q, dq, sens.v, dv);
+            }
+        }
     }
 }

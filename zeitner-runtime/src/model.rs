@@ -170,7 +170,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     /// Zeroes the rows of open gaps; nothing for systems without gaps.
     #[inline(always)]
-    fn mask<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
+    pub fn mask<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
         if S::UNILATERAL_CONSTRAINTS > 0 && !self.open.is_empty() {
             self.open.clear(&mut m);
         }

@@ -47,6 +47,58 @@ fn rank_deficient(t: f64) -> impl Fn(crate::error::RowSet) -> StepError {
     }
 }
 
+/// The model's derivatives by the parameters and the constraints' linearisations, with the rows
+/// of open gaps read as zero, as `Model` reads `g`, `G`, `w` and `b`.
+fn constraints_by_parameters<S, const N: usize, const Z: usize, const P: usize>(
+    model: &Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+) -> (Matrix<Z, P>, Matrix<Z, P>)
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let (g, w) = model.system.parameter_constraints(q, v, t);
+    (model.mask(g), model.mask(w))
+}
+
+fn rate_jacobians<S, const N: usize, const Z: usize, const P: usize>(
+    model: &Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+) -> (Matrix<Z, N>, Matrix<Z, N>)
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let (wq, wv) = model.system.rate_jacobians(q, v, t);
+    (model.mask(wq), model.mask(wv))
+}
+
+#[allow(clippy::type_complexity)]
+fn level_jacobians<S, const N: usize, const Z: usize, const P: usize>(
+    model: &Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    a: &Vector<N>,
+) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>)
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let (cq, cv, cp) = model.system.acceleration_constraint_jacobians(q, v, t, a);
+    (model.mask(cq), model.mask(cv), model.mask(cp))
+}
+
+/// `∂(F - Gᵀλ - M a)/∂θ` with the multipliers of open gaps left out.
+fn force_by_parameters<S, const N: usize, const Z: usize, const P: usize>(
+    model: &Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    lambda: &Vector<Z>,
+    a: &Vector<N>,
+) -> Matrix<N, P>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    model
+        .system
+        .parameter_force(q, v, t, &model.mask(*lambda), a)
+}
+
 /// `δa` with the multipliers held: `∂a/∂q δq + ∂a/∂q' δq' + M⁻¹ ∂(F - Gᵀλ - M a)/∂θ`, and
 /// `∂a/∂λ = -M⁻¹Gᵀ`.
 fn held_acceleration<S, const N: usize, const Z: usize, const P: usize>(
@@ -59,7 +111,6 @@ fn held_acceleration<S, const N: usize, const Z: usize, const P: usize>(
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let system = model.system;
     let jac = model.acceleration_jacobians(q, v, t, lambda, at)?;
     let mut da = jac.dq.times(&x.q);
     if S::DYNAMICS_DEPEND_ON_VELOCITY {
@@ -68,7 +119,7 @@ where
     let dp = jac.dp;
     da += at
         .factor
-        .solve(&system.parameter_force(q, v, t, lambda, &at.a));
+        .solve(&force_by_parameters(model, (q, v, t), lambda, &at.a));
     Ok((da, dp))
 }
 
@@ -88,9 +139,7 @@ where
     S: ParametrisedSystem<N, Z, P>,
 {
     let (base, dp) = held_acceleration(model, (q, v, t), lambda, at, x)?;
-    let (cq, cv, cp) = model
-        .system
-        .acceleration_constraint_jacobians(q, v, t, &at.a);
+    let (cq, cv, cp) = level_jacobians(model, (q, v, t), &at.a);
     let rhs = at.jacobian * base + cq * x.q + cv * x.v + cp;
     let dl = solve_spd(gram, &rhs, S::POSITION_CONSTRAINTS).map_err(rank_deficient(t))?;
     Ok((base + dp * dl, dl))
@@ -108,7 +157,8 @@ where
     S: ParametrisedSystem<N, Z, P>,
 {
     let at = model.acceleration(point.0, point.1, point.2, lambda)?;
-    let gram = at.jacobian * at.factor.solve(&at.jacobian.transpose());
+    // With the rows of open gaps regularised, as every solve with it.
+    let gram = model.directions(point.0, point.1, point.2)?.gram();
     Ok(index1(model, point, (lambda, &at, &gram), x)?.1)
 }
 
@@ -124,7 +174,7 @@ where
     let r = S::POSITION_CONSTRAINTS;
     let directions = model.directions(q, v, t)?;
     let mut gram = directions.gram();
-    let (dg, _) = model.system.parameter_constraints(q, v, t);
+    let (dg, _) = constraints_by_parameters(model, (q, v, t));
     let mut rhs = directions.jacobian * x.q + dg;
     for j in r..Z {
         gram.row_mut(j).fill(0.0);
@@ -137,15 +187,32 @@ where
     Ok(())
 }
 
-/// The tangent of velocities projected M-orthogonally onto the velocity-level `w = 0`,
-/// `v' = v - y` with `y = M⁻¹Gᵀμ`, `G M⁻¹Gᵀ μ = w`, all at `(q, q', t)`: exact for rows linear
-/// in `q'` (one sweep), whatever `w` the projection removes — with constant multipliers the
-/// step's end holds only `g`, and `w` is as large as the step's error.
+/// The tangent of velocities projected M-orthogonally onto the velocity-level `w = 0`.
 pub(crate) fn project_velocities<S, const N: usize, const Z: usize, const P: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): Point<'_, N>,
+    point: Point<'_, N>,
     x: &mut Tangent<N, P>,
 ) -> Result<(), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    x.v = velocity_jump(model, point, &Vector::repeat(1.0), (&x.q, &x.v), true)?;
+    Ok(())
+}
+
+/// The tangent `δv'` of the velocities after `v' = v - y`, `y = M⁻¹Gᵀμ`, `G M⁻¹Gᵀ μ = s ∘ w`
+/// at `(q, q', t)`: with the scale `s = 1` the M-orthogonal projection onto `w = 0`, with
+/// `1 + e` in the rows of gaps that bounce Newton's impact. Exact for rows linear in `q'`
+/// (one sweep), whatever `w` the jump removes — with constant multipliers the step's end holds
+/// only `g`, and `w` is as large as the step's error. `x` is the tangent of `(q, q')` in `C`
+/// columns, with `θ`'s own terms if `theta`.
+fn velocity_jump<S, const N: usize, const Z: usize, const P: usize, const C: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): Point<'_, N>,
+    scale: &Vector<Z>,
+    (xq, xv): (&Matrix<N, C>, &Matrix<N, C>),
+    theta: bool,
+) -> Result<Matrix<N, C>, StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
@@ -153,31 +220,52 @@ where
     let directions = model.directions(q, v, t)?;
     let gram = directions.gram();
     let r = S::POSITION_CONSTRAINTS;
-    let w = model.rate(q, v, t)?;
+    let w = model.rate(q, v, t)?.component_mul(scale);
     let mu = solve_spd(&gram, &w, r).map_err(rank_deficient(t))?;
     let y = directions.m_inv_gt * mu;
-    // δ(Gᵀμ) - δM y at fixed μ and y: the state's part from the generated Jacobians.
+    // δ(Gᵀμ) - δM y at fixed μ and y.
     let (fq, fv) = ConstrainedSystem::constraint_force_jacobians(system, q, v, t, &mu);
-    let mut turn = fq * x.q + fv * x.v;
+    let mut turn = fq * xq + fv * xv;
     if !S::MASS_IS_CONSTANT {
-        turn -= ConstrainedSystem::mass_jacobian_product(system, q, t, &y) * x.q;
+        turn -= ConstrainedSystem::mass_jacobian_product(system, q, t, &y) * xq;
     }
-    // `∂(F - Gᵀλ - M a)/∂θ` at (0, y) less at (μ, 0) is `∂(Gᵀμ)/∂θ - ∂(M y)/∂θ`.
-    let (zero_z, zero_n) = (Vector::<Z>::zeros(), Vector::<N>::zeros());
-    turn += system.parameter_force(q, v, t, &zero_z, &y)
-        - system.parameter_force(q, v, t, &mu, &zero_n);
-    let turned = directions.factor.solve(&turn);
+    let zero_n = Vector::<N>::zeros();
+    let (cq, cv, _) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &y);
+    let (bq, bv, _) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &zero_n);
     // δG y at fixed y: the acceleration-level linearisation along `y`, less that along 0.
-    let (cq, cv, cp) = system.acceleration_constraint_jacobians(q, v, t, &y);
-    let (bq, bv, bp) = system.acceleration_constraint_jacobians(q, v, t, &zero_n);
-    let dg_y = (cq - bq) * x.q + (cv - bv) * x.v + (cp - bp);
-    let (_, dw_theta) = system.parameter_constraints(q, v, t);
-    let (wq, wv) = system.rate_jacobians(q, v, t);
-    let dw = wq * x.q + wv * x.v + dw_theta;
+    let mut dg_y = (cq - bq) * xq + (cv - bv) * xv;
+    let (wq, wv) = rate_jacobians::<S, N, Z, P>(model, (q, v, t));
+    let mut dw = wq * xq + wv * xv;
+    if theta {
+        // `∂(F - Gᵀλ - M a)/∂θ` at (0, y) less at (μ, 0) is `∂(Gᵀμ)/∂θ - ∂(M y)/∂θ`.
+        let zero_z = Vector::<Z>::zeros();
+        let by_theta = force_by_parameters(model, (q, v, t), &zero_z, &y)
+            - force_by_parameters(model, (q, v, t), &mu, &zero_n);
+        add_columns(&mut turn, &by_theta);
+        let (_, _, cp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &y);
+        let (_, _, bp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &zero_n);
+        add_columns(&mut dg_y, &(cp - bp));
+        let (_, dw_theta) = constraints_by_parameters(model, (q, v, t));
+        add_columns(&mut dw, &dw_theta);
+    }
+    for (j, factor) in scale.iter().enumerate() {
+        dw.row_mut(j).scale_mut(*factor);
+    }
+    let turned = directions.factor.solve(&turn);
     let dmu = solve_spd(&gram, &(dw - dg_y - directions.jacobian * turned), r)
         .map_err(rank_deficient(t))?;
-    x.v -= directions.m_inv_gt * dmu + turned;
-    Ok(())
+    Ok(xv - directions.m_inv_gt * dmu - turned)
+}
+
+/// `m += a` where `a` has the same number of columns (`θ`'s terms, `C = P`).
+fn add_columns<const R: usize, const C: usize, const P: usize>(
+    m: &mut Matrix<R, C>,
+    a: &Matrix<R, P>,
+) {
+    for c in 0..C.min(P) {
+        let column = m.column(c) + a.column(c);
+        m.set_column(c, &column);
+    }
 }
 
 /// Stage states of an explicit tableau from the start and the earlier slopes.
@@ -309,7 +397,6 @@ where
             let lambda = multipliers.at(s);
             let at = model.acceleration(&qi, &vi, ti, &lambda)?;
             // One evaluation of the stage's Jacobians serves the tangent and every coefficient.
-            let system = model.system;
             let jac = model.acceleration_jacobians(&qi, &vi, ti, &lambda, &at)?;
             let mut da = jac.dq.times(&xq);
             if S::DYNAMICS_DEPEND_ON_VELOCITY {
@@ -327,7 +414,7 @@ where
             let dp = jac.dp;
             da += at
                 .factor
-                .solve(&system.parameter_force(&qi, &vi, ti, &lambda, &at.a));
+                .solve(&force_by_parameters(model, (&qi, &vi, ti), &lambda, &at.a));
             (slopes.0[i], slopes.1[i]) = (vi, at.a);
             (tangents.0[i], tangents.1[i]) = (xv, da + dp * dbase);
         }
@@ -373,15 +460,14 @@ fn end_conditions<S, const N: usize, const Z: usize, const P: usize, const K: us
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let system = model.system;
     let (gq, gv) = model.linearisation(q, v, t)?;
-    let (g_theta, w_theta) = system.parameter_constraints(q, v, t);
-    let (wq, wv) = system.rate_jacobians(q, v, t);
+    let (g_theta, w_theta) = constraints_by_parameters(model, (q, v, t));
+    let (wq, wv) = rate_jacobians::<S, N, Z, P>(model, (q, v, t));
     let level = if K > 1 && S::POSITION_CONSTRAINTS < Z {
         let at = model.acceleration(q, v, t, lambda_end)?;
         Some(Level {
             g: at.jacobian,
-            c: system.acceleration_constraint_jacobians(q, v, t, &at.a),
+            c: level_jacobians(model, (q, v, t), &at.a),
             at,
             lambda: *lambda_end,
         })
@@ -447,12 +533,10 @@ where
     let lambda_end = multipliers.at(1.0);
     let conditions = end_conditions::<S, N, Z, P, K>(model, (q, v, t), &lambda_end)?;
     // θ's own terms at the end: ∂g/∂θ, ∂w/∂θ, ∂(G a + b)/∂θ and the held `∂a/∂θ`.
-    let (g_theta, w_theta) = model.system.parameter_constraints(q, v, t);
+    let (g_theta, w_theta) = constraints_by_parameters(model, (q, v, t));
     let (c_theta, a_theta) = match &conditions.level {
         Some(level) => {
-            let force = model
-                .system
-                .parameter_force(q, v, t, &level.lambda, &level.at.a);
+            let force = force_by_parameters(model, (q, v, t), &level.lambda, &level.at.a);
             (level.c.2, level.at.factor.solve(&force))
         }
         None => (Matrix::zeros(), Matrix::zeros()),
@@ -476,6 +560,12 @@ where
         let rows = [b0, b1];
         for (l, row) in blocks.iter_mut().enumerate() {
             row[k] = rows[l];
+        }
+    }
+    if S::UNILATERAL_CONSTRAINTS > 0 {
+        // Open gaps: their rows and columns are zero, their coefficients fixed, as in the Newton.
+        for (l, row) in blocks.iter_mut().enumerate() {
+            model.open_rows().regularise(&mut row[l]);
         }
     }
     let mut dc = [Matrix::<Z, P>::zeros(); K];
@@ -512,11 +602,42 @@ where
         return Ok([Matrix::zeros(), Matrix::zeros()]);
     };
     let (gq, gv) = model.linearisation(q, v, t)?;
-    let (g_theta, w_theta) = model.system.parameter_constraints(q, v, t);
-    let (wq, wv) = model.system.rate_jacobians(q, v, t);
+    let (g_theta, w_theta) = constraints_by_parameters(model, (q, v, t));
+    let (wq, wv) = rate_jacobians::<S, N, Z, P>(model, (q, v, t));
     let r = S::POSITION_CONSTRAINTS;
     let t0 = share * (gq * x.q + gv * x.v + g_theta);
     let mut t1 = share * (wq * x.q + wv * x.v + w_theta);
     t1.rows_mut(r, Z - r).fill(0.0);
     Ok([t0, t1])
+}
+
+/// Through Newton's impact of the gap in row `row` at `(q, q'⁻, t)`, the impulse solved with the
+/// model's open gaps as the caller set them and `scale` (`1 + e` in the rows that bounce):
+/// the tangent after it and `∂t_impact/∂θ`. The impact's time moves with `θ` by
+/// `δt = -(∂g/∂q δq + ∂g/∂θ)/ġ⁻`, which the saltation terms carry: positions by
+/// `(q'⁻ - q'⁺) δt`, velocities by `(J f⁻ - q''⁺) δt` with `J` the jump's linearisation and
+/// `f⁻ = (q'⁻, q''⁻)`.
+pub(crate) fn impact<S, const N: usize, const Z: usize, const P: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v_before, t): Point<'_, N>,
+    (a_before, v_after, a_after): (&Vector<N>, &Vector<N>, &Vector<N>),
+    (row, rate_before): (usize, f64),
+    scale: &Vector<Z>,
+    x: &Tangent<N, P>,
+) -> Result<(Tangent<N, P>, Matrix<1, P>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let system = model.system;
+    let g = ConstrainedSystem::constraint_jacobian(system, q, v_before, t);
+    let (g_theta, _) = system.parameter_constraints(q, v_before, t);
+    let dt = -(g.row(row) * x.q + g_theta.row(row)) / rate_before;
+    let at = (q, v_before, t);
+    let dv = velocity_jump(model, at, scale, (&x.q, &x.v), true)?;
+    let jf = velocity_jump::<S, N, Z, P, 1>(model, at, scale, (v_before, a_before), false)?;
+    let after = Tangent {
+        q: x.q + (v_before - v_after) * dt,
+        v: dv + (jf - a_after) * dt,
+    };
+    Ok((after, dt))
 }

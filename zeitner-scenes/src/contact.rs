@@ -27,6 +27,10 @@ impl Ball {
     fn restitution(&self) -> [f64; 1] {
         [self.e]
     }
+
+    fn parameters(&self) -> [f64; 2] {
+        [self.g, self.m]
+    }
 }
 
 /// A pendulum (Cartesian, rod `length`, pivot at the origin) beside a wall at `x = 0`: the bob
@@ -64,6 +68,10 @@ impl WallPendulum {
 
     fn events(&self, [_x, y]: [f64; 2]) -> [f64; 1] {
         [y - self.height]
+    }
+
+    fn parameters(&self) -> [f64; 2] {
+        [self.length, self.g]
     }
 }
 

@@ -3,6 +3,7 @@
 
 use super::Simulator;
 use crate::error::{InvalidOption, StepError};
+use crate::gaps::GapSet;
 use crate::method::explicit::Tableau;
 use crate::method::AnyMethod;
 use crate::model::Model;
@@ -39,6 +40,8 @@ pub struct SensitivitySimulator<
     /// Of the consistent multipliers at the current point: the quadratic model's base.
     consistent: Matrix<Z, P>,
     report: Sensitivities<N, Z, P>,
+    /// `∂t/∂θ` of the last impact.
+    impact_time: Option<Matrix<1, P>>,
 }
 
 impl<'s, S, const N: usize, const Z: usize, const P: usize> SensitivitySimulator<'s, S, N, Z, P>
@@ -55,11 +58,6 @@ where
         t0: f64,
         options: Options,
     ) -> Result<Self, StepError> {
-        if S::UNILATERAL_CONSTRAINTS > 0 || S::EVENTS > 0 {
-            return Err(StepError::InvalidOption(
-                InvalidOption::SensitivitiesAcrossContacts,
-            ));
-        }
         if !followed(options.method) {
             return Err(StepError::InvalidOption(
                 InvalidOption::SensitivitiesForMethod,
@@ -89,6 +87,7 @@ where
             state,
             consistent,
             report,
+            impact_time: None,
         })
     }
 
@@ -100,6 +99,11 @@ where
     /// The derivatives at the last reported point ([`Simulator::last`]'s end).
     pub fn sensitivities(&self) -> &Sensitivities<N, Z, P> {
         &self.report
+    }
+
+    /// `∂t/∂θ` of the last impact ([`Simulator::last_impact`]), if any.
+    pub fn impact_time(&self) -> Option<&Matrix<1, P>> {
+        self.impact_time.as_ref()
     }
 
     /// [`Simulator::set_stop_time`].
@@ -120,23 +124,122 @@ where
             .options
             .multipliers
             .resolve(sim.active, S::POSITION_CONSTRAINTS, Z);
+        // Gaps closing together at one instant have no single impact time to follow.
+        if sim.pending.impact.len() > 1 {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesAcrossContacts,
+            ));
+        }
         // Taken before the step: `Automatic` may change the method as it accepts it.
         let stages = Stages::of(&sim.method)?;
         let start = (sim.time(), sim.q, sim.v);
+        let before = sim.last.end;
+        let open_before = sim.model.open_gaps();
         let steps = sim.statistics.steps;
         let reason = self.simulator.step()?;
         if self.simulator.statistics.steps > steps {
-            self.follow((stages, model), start)?;
+            self.follow((stages, model, open_before), start)?;
+        } else if reason == StopReason::Impact {
+            self.follow_impact(&before)?;
+        } else {
+            // An event, a contact opened: the state goes on, its multipliers change.
+            let reported = Tangent {
+                q: self.report.q,
+                v: self.report.v,
+            };
+            self.report_at_end(self.state, reported)?;
         }
         Ok(reason)
+    }
+
+    /// Carries the sensitivities through the impact just made at the point `before`.
+    fn follow_impact(&mut self, before: &crate::output::Point<N, Z>) -> Result<(), StepError> {
+        let sim = &mut self.simulator;
+        let Some(impact) = sim.last_impact else {
+            return Ok(());
+        };
+        let Some(gap) = impact.gaps.iter().next() else {
+            let reported = Tangent {
+                q: self.report.q,
+                v: self.report.v,
+            };
+            return self.report_at_end(self.state, reported);
+        };
+        let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
+        let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+        let bouncing = impact.gaps.without(impact.persistent);
+        let open_after = sim.model.open_gaps();
+        let active = all.without(open_after).union(bouncing);
+        let mut scale = Vector::<Z>::repeat(1.0);
+        for k in bouncing.iter() {
+            scale[first + k] = 1.0 + sim.model.system.restitution(k);
+        }
+        let point = sim.last.end;
+        let at = (&before.q, &before.v, before.t);
+        let motion = (&before.a, &impact.velocity_after, &point.a);
+        let rate = impact.gap_rate_before[gap];
+        sim.model.set_open_gaps(all.without(active));
+        let jumped = tangent::impact(
+            &mut sim.model,
+            at,
+            motion,
+            (first + gap, rate),
+            &scale,
+            &self.state,
+        );
+        sim.model.set_open_gaps(open_after);
+        let (mut state, dt) = jumped?;
+        tangent::project_velocities(&mut sim.model, (&point.q, &point.v, point.t), &mut state)?;
+        self.impact_time = Some(dt);
+        self.report_at_end(state, state)
+    }
+
+    /// The tangents of the state and of the reported point at the simulator's current point,
+    /// and its multipliers' with them.
+    fn report_at_end(
+        &mut self,
+        state: Tangent<N, P>,
+        reported: Tangent<N, P>,
+    ) -> Result<(), StepError> {
+        let sim = &mut self.simulator;
+        let point = sim.last.end;
+        let at = (&point.q, &point.v, point.t);
+        let consistent =
+            tangent::consistent_multipliers(&mut sim.model, at, &point.lambda, &reported)?;
+        self.state = state;
+        self.consistent = consistent;
+        self.report = Sensitivities {
+            t: point.t,
+            q: reported.q,
+            v: reported.v,
+            lambda: consistent,
+        };
+        Ok(())
     }
 
     /// Carries the sensitivities over the step just accepted from `(t0, q0, v0)`.
     fn follow(
         &mut self,
+        (stages, multipliers, open_before): (Stages, MultiplierModel, GapSet),
+        start: (f64, Vector<N>, Vector<N>),
+    ) -> Result<(), StepError> {
+        // The step was taken with the contacts as they were; a contact its end opened is open
+        // for what follows.
+        let open_now = self.simulator.model.open_gaps();
+        self.simulator.model.set_open_gaps(open_before);
+        let tangents = self.step_tangent((stages, multipliers), start);
+        self.simulator.model.set_open_gaps(open_now);
+        let (state, reported) = tangents?;
+        self.report_at_end(state, reported)
+    }
+
+    /// The tangents of the state and of the reported point after the step just accepted from
+    /// `(t0, q0, v0)`.
+    fn step_tangent(
+        &mut self,
         (stages, multipliers): (Stages, MultiplierModel),
         (t0, q0, v0): (f64, Vector<N>, Vector<N>),
-    ) -> Result<(), StepError> {
+    ) -> Result<(Tangent<N, P>, Tangent<N, P>), StepError> {
         let sim = &mut self.simulator;
         let point = sim.last.end;
         let (t1, h) = (point.t, point.t - t0);
@@ -181,19 +284,7 @@ where
         if every_stage || projection == VelocityProjection::State {
             state = projected;
         }
-        let reported = projected;
-        let at = (&point.q, &point.v, t1);
-        let consistent =
-            tangent::consistent_multipliers(&mut sim.model, at, &point.lambda, &reported)?;
-        self.state = state;
-        self.consistent = consistent;
-        self.report = Sensitivities {
-            t: t1,
-            q: reported.q,
-            v: reported.v,
-            lambda: consistent,
-        };
-        Ok(())
+        Ok((state, projected))
     }
 }
 
