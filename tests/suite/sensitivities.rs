@@ -540,6 +540,44 @@ mod refusals {
         );
     }
 
+    /// A bar falling flat strikes with both ends at once: no single impact time to follow. The
+    /// impact is refused before it is made, and the run keeps the state it reached.
+    #[test]
+    fn gaps_closing_together_are_refused_before_their_impact() {
+        let bar = zeitner_scenes::contact::FallingBar {
+            m: 3.0,
+            j: 0.4,
+            a: 0.5,
+            g: 9.81,
+            e: 0.5,
+        };
+        let q0 = Vector::<3>::from([0.0, 0.3, 0.0]);
+        let mut sim = SensitivitySimulator::<_, 3, 3, 2>::new(
+            &bar,
+            q0,
+            Vector::zeros(),
+            0.0,
+            Options::default(),
+        )
+        .unwrap();
+        sim.set_stop_time(1.0).unwrap();
+        let error = loop {
+            match sim.step() {
+                Ok(zeitner::StopReason::StopTimeReached) => panic!("no impact"),
+                Ok(_) => {}
+                Err(error) => break error,
+            }
+        };
+        refused(error, InvalidOption::SensitivitiesAcrossContacts);
+        let t = sim.simulator().time();
+        assert_eq!(sim.sensitivities().t, t);
+        assert!(sim.simulator().last_impact().is_none());
+        assert!(
+            (t - (2.0 * 0.3 / 9.81_f64).sqrt()).abs() < 1e-6,
+            "stopped at {t}"
+        );
+    }
+
     /// `Automatic` on a stiff scene turns implicit after some steps: the step that would be
     /// implicit is refused before it is taken, and the run keeps its last state and derivatives.
     #[test]

@@ -188,7 +188,8 @@ pub enum InvalidOption {
     /// Sensitivities through an implicit inner method or generalised-α, which have none yet:
     /// choose an explicit one (`Automatic` turns implicit only on a stiff scene).
     SensitivitiesForMethod,
-    /// Sensitivities of a scene with gaps or event functions, whose jumps they do not follow yet.
+    /// Sensitivities through gaps closing together at one instant, which have no single impact
+    /// time to follow.
     SensitivitiesAcrossContacts,
     /// Sensitivities with `VelocityProjection::Off`: they are those of consistent points.
     SensitivitiesOfRawOutput,
@@ -203,8 +204,8 @@ impl fmt::Display for InvalidOption {
                  choose one of them",
             ),
             InvalidOption::SensitivitiesAcrossContacts => f.write_str(
-                "sensitivities do not follow impacts, contacts or events yet: the scene has gaps or \
-                 event functions",
+                "sensitivities follow one gap's impact at a time: here several gaps close at the same \
+                 instant, whose impact has no single time to differentiate",
             ),
             InvalidOption::SensitivitiesOfRawOutput => f.write_str(
                 "sensitivities are those of consistent points: use `VelocityProjection::Output` \

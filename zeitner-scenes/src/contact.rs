@@ -106,4 +106,8 @@ impl FallingBar {
     fn restitution(&self) -> [f64; 2] {
         [self.e, self.e]
     }
+
+    fn parameters(&self) -> [f64; 2] {
+        [self.g, self.a]
+    }
 }

@@ -18,12 +18,14 @@ use crate::system::{Matrix, ParametrisedSystem, Vector};
 /// A [`Simulator`] that also follows the derivatives of its state and multipliers by the
 /// scene's parameters (`fn parameters` in the model), through every accepted step: the
 /// derivative of the step map the simulator took (the discrete sensitivities), so that they
-/// agree with differences of runs that take the same steps.
+/// agree with differences of runs that take the same steps. Through an impact they carry the
+/// saltation of its moving time ([`SensitivitySimulator::impact_time`] is that time's
+/// derivative); events and contacts that open leave the state's derivatives as they are.
 ///
 /// Runs the explicit inner methods with any multiplier model — held constant or quadratic
 /// (`Rk4`, `DormandPrince54`) or solved at every stage (`Dop853`, `Verner98`, the default) —
 /// and refuses implicit ones ([`InvalidOption::SensitivitiesForMethod`]: `Automatic` is refused
-/// at the step it would turn implicit), and scenes with gaps or events
+/// at the step it would turn implicit), gaps closing together at one instant
 /// ([`InvalidOption::SensitivitiesAcrossContacts`]), and the raw output of
 /// `VelocityProjection::Off` ([`InvalidOption::SensitivitiesOfRawOutput`]). Each step costs about one more
 /// integration with the stages' Jacobians.
