@@ -278,7 +278,7 @@ fn end_times_in_the_past_are_refused() {
     );
 }
 
-fn wild() -> impl Strategy<Value = f64> {
+pub(crate) fn wild() -> impl Strategy<Value = f64> {
     prop_oneof![
         Just(f64::NAN),
         Just(f64::INFINITY),
@@ -292,7 +292,7 @@ fn wild() -> impl Strategy<Value = f64> {
     ]
 }
 
-fn options() -> impl Strategy<Value = Options> {
+pub(crate) fn options() -> impl Strategy<Value = Options> {
     (
         prop_oneof![
             Just(InnerMethod::Rk4 { substeps: 1 }),

@@ -877,3 +877,57 @@ mod paper_with_gap {
         }
     }
 }
+
+mod wild_inputs {
+    use proptest::prelude::*;
+    use zeitner::{SensitivitySimulator, Vector};
+    use zeitner_scenes::contact::Ball;
+
+    use super::runs::Pendulum;
+    use crate::errors::{options, wild};
+
+    proptest! {
+        #![proptest_config(ProptestConfig {
+            cases: 300,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(0x5e45_17e5),
+            ..ProptestConfig::default()
+        })]
+
+        /// Random parameters, states and options: a run with sensitivities starts and steps or
+        /// says why not, never panics, and never reports non-finite derivatives as success.
+        #[test]
+        fn sensitivities_never_panic_nor_report_non_finite_derivatives(
+            params in proptest::array::uniform3(wild()),
+            state in proptest::array::uniform4(wild()),
+            options in options(),
+            t_end in wild(),
+        ) {
+            let pendulum = Pendulum { l: params[0], g: params[1], m: params[2] };
+            let (q, v) = (Vector::<2>::new(state[0], state[1]), Vector::<2>::new(state[2], state[3]));
+            if let Ok(mut sim) = SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, q, v, 0.0, options) {
+                if sim.set_stop_time(t_end).is_ok() {
+                    for _ in 0..3 {
+                        if sim.step().is_err() {
+                            break;
+                        }
+                        let s = sim.sensitivities();
+                        prop_assert!(s.q.iter().chain(s.v.iter()).chain(s.lambda.iter()).all(|x| x.is_finite()));
+                    }
+                }
+            }
+            let ball = Ball { m: params[2], g: params[1], e: 0.5 };
+            let (q, v) = (Vector::<1>::new(state[0]), Vector::<1>::new(state[2]));
+            if let Ok(mut sim) = SensitivitySimulator::<_, 1, 1, 2>::new(&ball, q, v, 0.0, options) {
+                if sim.set_stop_time(t_end).is_ok() {
+                    for _ in 0..4 {
+                        if sim.step().is_err() {
+                            break;
+                        }
+                        let s = sim.sensitivities();
+                        prop_assert!(s.q.iter().chain(s.v.iter()).chain(s.lambda.iter()).all(|x| x.is_finite()));
+                    }
+                }
+            }
+        }
+    }
+}

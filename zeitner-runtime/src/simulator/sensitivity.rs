@@ -208,6 +208,15 @@ where
         let at = (&point.q, &point.v, point.t);
         let consistent =
             tangent::consistent_multipliers(&mut sim.model, at, &point.lambda, &reported)?;
+        // A grazing impact (`ġ⁻` near zero) has derivatives without bound: said, not reported.
+        let values = state
+            .q
+            .iter()
+            .chain(state.v.iter())
+            .chain(reported.v.iter());
+        if !values.chain(consistent.iter()).all(|x| x.is_finite()) {
+            return Err(StepError::non_finite_state(point.t));
+        }
         self.state = state;
         self.consistent = consistent;
         self.report = Sensitivities {
