@@ -21,7 +21,10 @@
 //!   stiffness test by which `InnerMethod::Automatic` turns implicit;
 //! - [`events`]: zero crossings of event functions, gaps and contact forces, located on the
 //!   dense output; [`contact`]: which gaps are closed, and the impulse when they close;
-//! - [`output`]: points, step reports, dense output, stop reasons, the observer's view;
+//! - [`output`]: points, step reports, dense output, stop reasons, sensitivities, the observer's
+//!   view;
+//! - `sensitivity`: an accepted step's map differentiated by the model's parameters, for
+//!   [`SensitivitySimulator`];
 //! - [`simulator`]: puts them in order;
 //! - [`sparse`] (feature `alloc`): [`SparseSimulator`], the same step for scenes with many
 //!   coordinates, with `G` by its nonzeros and a heap workspace allocated once.

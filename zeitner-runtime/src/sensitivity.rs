@@ -7,10 +7,12 @@
 //!   were projected, velocities always) linearised;
 //! - held multipliers (constant or quadratic): the tangent at fixed coefficients and the
 //!   sensitivity to the coefficients, which the end conditions `C(x(c, θ), c, θ) = T` fix by the
-//!   implicit-function theorem — `∂c/∂θ` from the Newton matrix, formed exactly here.
+//!   implicit-function theorem — `∂c/∂θ` from the Newton matrix, formed exactly here;
+//! - an impact: Newton's velocity jump linearised, with the saltation of its moving time.
 //!
-//! Terms proportional to a projection's own size (the constraint residual it removed, at most
-//! the tolerance) are left out.
+//! The velocity jumps (projections and impacts) are linearised exactly; the positions'
+//! projection leaves out the terms proportional to the residual it removed (at most the
+//! tolerance).
 
 use crate::consistency::consistent_point_and_gram;
 use crate::error::StepError;
@@ -418,19 +420,32 @@ where
             (slopes.0[i], slopes.1[i]) = (vi, at.a);
             (tangents.0[i], tangents.1[i]) = (xv, da + dp * dbase);
         }
-        for (c, (kq, kv)) in by_c.iter().enumerate() {
-            (end.dq_dc[c], end.dv_dc[c]) =
-                combine(tableau, hs, (&end.dq_dc[c], &end.dv_dc[c]), (kq, kv));
-        }
-        (end.q, end.v) = combine(tableau, hs, (&end.q, &end.v), (&slopes.0, &slopes.1));
-        (end.x.q, end.x.v) = combine(
-            tableau,
-            hs,
-            (&end.x.q, &end.x.v),
-            (&tangents.0, &tangents.1),
-        );
+        end.advance((tableau, hs), &slopes, &tangents, &by_c);
     }
     Ok(end)
+}
+
+type Slopes<const N: usize, const C: usize, const ST: usize> =
+    ([Matrix<N, C>; ST], [Matrix<N, C>; ST]);
+
+impl<const N: usize, const Z: usize, const P: usize, const K: usize> HeldStep<N, Z, P, K> {
+    /// The (sub)step's end from its stages' slopes of the state, its tangent and the
+    /// coefficients' sensitivities.
+    fn advance<const ST: usize>(
+        &mut self,
+        (tableau, h): (&Tableau<ST>, f64),
+        slopes: &Slopes<N, 1, ST>,
+        tangents: &Slopes<N, P, ST>,
+        by_c: &[Slopes<N, Z, ST>; K],
+    ) {
+        for (c, (kq, kv)) in by_c.iter().enumerate() {
+            let from = (&self.dq_dc[c], &self.dv_dc[c]);
+            (self.dq_dc[c], self.dv_dc[c]) = combine(tableau, h, from, (kq, kv));
+        }
+        (self.q, self.v) = combine(tableau, h, (&self.q, &self.v), (&slopes.0, &slopes.1));
+        let from = (&self.x.q, &self.x.v);
+        (self.x.q, self.x.v) = combine(tableau, h, from, (&tangents.0, &tangents.1));
+    }
 }
 
 /// What the end conditions of a held step need linearised, as `crate::multipliers` states
@@ -533,7 +548,7 @@ where
     let lambda_end = multipliers.at(1.0);
     let conditions = end_conditions::<S, N, Z, P, K>(model, (q, v, t), &lambda_end)?;
     // θ's own terms at the end: ∂g/∂θ, ∂w/∂θ, ∂(G a + b)/∂θ and the held `∂a/∂θ`.
-    let (g_theta, w_theta) = constraints_by_parameters(model, (q, v, t));
+    let (g_theta, w_theta) = (conditions.dg.2, conditions.dw.2);
     let (c_theta, a_theta) = match &conditions.level {
         Some(level) => {
             let force = force_by_parameters(model, (q, v, t), &level.lambda, &level.at.a);

@@ -99,7 +99,7 @@ fn write_file(
     Ok(())
 }
 
-/// Reads a results table written by [`write`] for `space`, checking its columns.
+/// Reads a results table written by [`write()`] for `space`, checking its columns.
 pub fn read(path: &Path, space: &Space) -> Result<Vec<CaseResult>, String> {
     read_file(path, space).map_err(|e| format!("{}: {e}", path.display()))
 }
