@@ -30,7 +30,7 @@
 //! derivatives of the state and the multipliers by them through the run.
 //!
 //! ```
-//! use zeitner::{constrained_system, Options, SensitivitySimulator, StopReason, Vector};
+//! use zeitner::{constrained_system, Options, SensitivitySimulator, Vector};
 //!
 //! pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
 //!
@@ -47,8 +47,7 @@
 //! let mut sim =
 //!     SensitivitySimulator::<_, 2, 1, 2>::new(&pendulum, q0, Vector::zeros(), 0.0, Options::default())
 //!         .unwrap();
-//! sim.set_stop_time(1.0).unwrap();
-//! while sim.step().unwrap() != StopReason::StopTimeReached {}
+//! sim.advance_to(1.0).unwrap();
 //! let (end, s) = (sim.simulator().last().end, sim.sensitivities());
 //! // The motion runs in the time t √(g/l): ∂q/∂g = t q' / (2g).
 //! let closed_form = (end.t / (2.0 * 9.81)) * end.v;

@@ -109,6 +109,12 @@ impl Andrews {
             y - self.zf * (omega + epsilon).sin() + self.u * epsilon.cos() - self.ya,
         ]
     }
+    /// For sensitivities: the driving torque, the spring, a mass and a rod length.
+    fn parameters(&self) -> [f64; 4] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mom, self.c0, self.m2, self.d]
+    }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
 impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
@@ -433,6 +439,247 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
                     muls: 39u64,
                     divs: 0u64,
                     transcendental: 9u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 32u64,
+                    muls: 34u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 112u64,
+                    muls: 126u64,
+                    divs: 0u64,
+                    transcendental: 84u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 6,
+                        cols: 4,
+                        nonzeros: &[(0, 3), (1, 3), (2, 3), (3, 3), (4, 3), (5, 3)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 106u64,
+                    muls: 91u64,
+                    divs: 0u64,
+                    transcendental: 14u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 482u64,
+                    muls: 544u64,
+                    divs: 0u64,
+                    transcendental: 282u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 7,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 2), (0, 3), (1, 2), (1, 3), (2, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 26u64,
+                    muls: 34u64,
+                    divs: 1u64,
+                    transcendental: 7u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 72u64,
+                    muls: 73u64,
+                    divs: 2u64,
+                    transcendental: 45u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 6,
+                        cols: 4,
+                        nonzeros: &[(0, 3), (1, 3), (2, 3), (3, 3), (4, 3), (5, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 6,
+                        cols: 4,
+                        nonzeros: &[(0, 3), (1, 3), (2, 3), (3, 3), (4, 3), (5, 3)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 6u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 33u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 18u64,
                     opaque_calls: 0u64,
                 },
             },
@@ -978,5 +1225,323 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         values[11] = s13;
         values[12] = (s7 + self.u * q[6].sin()) * lambda[4]
             + (s8 - self.u * q[6].cos()) * lambda[5];
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<7, 6, 4> for Andrews {
+    const PARAMETER_NAMES: [&'static str; 4] = ["mom", "c0", "m2", "d"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<4>::zeros();
+        theta[0] = self.mom;
+        theta[1] = self.c0;
+        theta[2] = self.m2;
+        theta[3] = self.d;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<6>,
+        a: &::zeitner::__private::Vector<7>,
+    ) -> ::zeitner::__private::Matrix<7, 4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[1].cos();
+        let s1 = self.da.powi(2);
+        let s2 = self.rr * self.da;
+        let s3 = s1 - s0 * s2;
+        let s4 = q[2].cos();
+        let s5 = q[2].sin();
+        let s6 = self.sd * s4 + self.sc * s5;
+        let s7 = self.sd * s5;
+        let s8 = s4 * self.sc;
+        let s9 = s6 + self.xb - self.xc;
+        let s10 = s7 - s8 + self.yb - self.yc;
+        let s11 = (s9.powi(2) + s10.powi(2)).sqrt();
+        let s12 = q[1].sin();
+        let s13 = q[0] + q[1];
+        let s14 = s13.cos();
+        let s15 = s13.sin();
+        let s16 = s14 * lambda[1] - s15 * lambda[0] - s15 * lambda[2] + s14 * lambda[3]
+            - s15 * lambda[4] + s14 * lambda[5];
+        let s17 = (s11 - self.l0) / s11;
+        let mut df = ::zeitner::__private::Matrix::<7, 4>::zeros();
+        df[(0, 0)] = 1.0;
+        df[(0, 2)] = -(s12 * ((v[1] + 2.0 * v[0]) * (s2 * v[1])))
+            - (self.rr.powi(2) - self.rr * (2.0 * self.da) * s0 + s1) * a[0] - s3 * a[1];
+        df[(0, 3)] = s16;
+        df[(1, 2)] = s12 * (v[0] * (s2 * v[0])) - s3 * a[0] - s1 * a[1];
+        df[(1, 3)] = s16;
+        df[(2, 1)] = -((s8 - s7) * (s9 * s17)) - s6 * (s10 * s17);
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<6, 4>, ::zeitner::__private::Matrix<6, 4>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[0] + q[1];
+        let s1 = s0.cos();
+        let s2 = s0.sin();
+        let s3 = -s2;
+        let s4 = -s1;
+        let s5 = v[0] * s2 + v[1] * s2;
+        let s6 = -(v[0] * s1) - v[1] * s1;
+        let mut dg = ::zeitner::__private::Matrix::<6, 4>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<6, 4>::zeros();
+        dg[(0, 3)] = s4;
+        dg[(1, 3)] = s3;
+        dg[(2, 3)] = s4;
+        dg[(3, 3)] = s3;
+        dg[(4, 3)] = s4;
+        dg[(5, 3)] = s3;
+        dw[(0, 3)] = s5;
+        dw[(1, 3)] = s6;
+        dw[(2, 3)] = s5;
+        dw[(3, 3)] = s6;
+        dw[(4, 3)] = s5;
+        dw[(5, 3)] = s6;
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<6, 7>, ::zeitner::__private::Matrix<6, 7>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.rr * q[0].cos();
+        let s1 = q[0] + q[1];
+        let s2 = self.d * s1.cos();
+        let s3 = s0 - s2;
+        let s4 = self.d * s1.sin();
+        let s5 = q[2].sin() * self.ss;
+        let s6 = q[2].cos() * self.ss;
+        let s7 = q[3] + q[4];
+        let s8 = self.e * s7.sin();
+        let s9 = self.zt * q[4].cos();
+        let s10 = self.e * s7.cos();
+        let s11 = q[5] + q[6];
+        let s12 = self.zf * s11.cos();
+        let s13 = self.u * q[6].sin();
+        let s14 = self.zf * s11.sin();
+        let s15 = s4 - self.rr * q[0].sin();
+        let s16 = -s2;
+        let s17 = self.zt * q[4].sin() - s10;
+        let s18 = -s8;
+        let s19 = s14 - self.u * q[6].cos();
+        let s20 = -s12;
+        let s21 = v[1] * s4;
+        let s22 = v[0] * s15 + s21;
+        let s23 = v[1] * s2;
+        let s24 = v[0] * (s2 - s0) + s23;
+        let s25 = s23 + v[0] * s2;
+        let s26 = s21 + v[0] * s4;
+        let s27 = v[3] * s10;
+        let s28 = v[3] * s8;
+        let s29 = v[5] * s14;
+        let s30 = v[5] * s12;
+        let mut wq = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        wq[(0, 0)] = s24;
+        wq[(0, 1)] = s25;
+        wq[(0, 2)] = v[2] * s5;
+        wq[(1, 0)] = s22;
+        wq[(1, 1)] = s26;
+        wq[(1, 2)] = -(v[2] * s6);
+        wq[(2, 0)] = s24;
+        wq[(2, 1)] = s25;
+        wq[(2, 3)] = s28 + v[4] * s8;
+        wq[(2, 4)] = s28 + v[4] * (s8 + s9);
+        wq[(3, 0)] = s22;
+        wq[(3, 1)] = s26;
+        wq[(3, 3)] = -s27 - v[4] * s10;
+        wq[(3, 4)] = v[4] * s17 - s27;
+        wq[(4, 0)] = s24;
+        wq[(4, 1)] = s25;
+        wq[(4, 5)] = s30 + v[6] * s12;
+        wq[(4, 6)] = s30 + v[6] * (s12 + s13);
+        wq[(5, 0)] = s22;
+        wq[(5, 1)] = s26;
+        wq[(5, 5)] = s29 + v[6] * s14;
+        wq[(5, 6)] = s29 + v[6] * s19;
+        wv[(0, 0)] = s15;
+        wv[(0, 1)] = s4;
+        wv[(0, 2)] = -s6;
+        wv[(1, 0)] = s3;
+        wv[(1, 1)] = s16;
+        wv[(1, 2)] = -s5;
+        wv[(2, 0)] = s15;
+        wv[(2, 1)] = s4;
+        wv[(2, 3)] = -s10;
+        wv[(2, 4)] = s17;
+        wv[(3, 0)] = s3;
+        wv[(3, 1)] = s16;
+        wv[(3, 3)] = s18;
+        wv[(3, 4)] = s18 - s9;
+        wv[(4, 0)] = s15;
+        wv[(4, 1)] = s4;
+        wv[(4, 5)] = s14;
+        wv[(4, 6)] = s19;
+        wv[(5, 0)] = s3;
+        wv[(5, 1)] = s16;
+        wv[(5, 5)] = s20;
+        wv[(5, 6)] = s20 - s13;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: f64,
+        a: &::zeitner::__private::Vector<7>,
+    ) -> (
+        ::zeitner::__private::Matrix<6, 7>,
+        ::zeitner::__private::Matrix<6, 7>,
+        ::zeitner::__private::Matrix<6, 4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[0] + q[1];
+        let s1 = s0.cos();
+        let s2 = self.d * s1;
+        let s3 = self.rr * q[0].sin();
+        let s4 = s0.sin();
+        let s5 = self.d * s4;
+        let s6 = q[2].sin() * self.ss;
+        let s7 = q[2].cos() * self.ss;
+        let s8 = q[3] + q[4];
+        let s9 = self.e * s8.sin();
+        let s10 = self.e * s8.cos();
+        let s11 = self.zt * q[4].sin();
+        let s12 = q[5] + q[6];
+        let s13 = self.zf * s12.cos();
+        let s14 = self.zf * s12.sin();
+        let s15 = self.u * q[6].cos();
+        let s16 = s5 - s3;
+        let s17 = s11 - s10;
+        let s18 = s14 - s15;
+        let s19 = v[0] * s16;
+        let s20 = v[1] * s5;
+        let s21 = v[2] * s7;
+        let s22 = s2 - self.rr * q[0].cos();
+        let s23 = v[0] * s22;
+        let s24 = v[1] * s2;
+        let s25 = s23 + s24;
+        let s26 = v[0] * s2;
+        let s27 = s24 + s26;
+        let s28 = v[1] * s27;
+        let s29 = v[2] * s6;
+        let s30 = v[0] * s5;
+        let s31 = v[3] * s10;
+        let s32 = v[4] * s17;
+        let s33 = v[3] * s9;
+        let s34 = v[4] * s9;
+        let s35 = s33 + s34;
+        let s36 = v[3] * s35;
+        let s37 = s9 + self.zt * q[4].cos();
+        let s38 = v[4] * s37;
+        let s39 = s33 + s38;
+        let s40 = v[4] * s10;
+        let s41 = v[5] * s14;
+        let s42 = v[6] * s18;
+        let s43 = v[5] * s13;
+        let s44 = v[6] * s13;
+        let s45 = s43 + s44;
+        let s46 = v[5] * s45;
+        let s47 = s13 + self.u * q[6].sin();
+        let s48 = v[6] * s47;
+        let s49 = s43 + s48;
+        let s50 = v[6] * s14;
+        let s51 = v[0] * s4 + v[1] * s4;
+        let s52 = s5 * a[1];
+        let s53 = s2 * a[1];
+        let s54 = s10 * a[3];
+        let s55 = s9 * a[3];
+        let s56 = s14 * a[5];
+        let s57 = s13 * a[5];
+        let s58 = v[1] * (-s20 - s30);
+        let s59 = s53 + v[0] * (v[0] * (s3 - s5) - s20) + s58 + s22 * a[0];
+        let s60 = s53 + s58 + v[0] * (-s30 - s20) + s2 * a[0];
+        let s61 = s24 + s23 + s25;
+        let s62 = s26 + s24 + s27;
+        let s63 = s52 + v[0] * s25 + s28 + s16 * a[0];
+        let s64 = s52 + s28 + v[0] * s27 + s5 * a[0];
+        let s65 = s20 + s19 + s19 + s20;
+        let s66 = s30 + s20 + s20 + s30;
+        let s67 = s31 + s40;
+        let s68 = v[3] * s67;
+        let s69 = -s41 - s50;
+        let s70 = v[5] * s69;
+        let s71 = v[0] * s1 + v[1] * s1;
+        let s72 = v[0] * s71 + v[1] * s71 + s4 * a[0] + s4 * a[1];
+        let s73 = v[0] * s51 + v[1] * s51 - s1 * a[0] - s1 * a[1];
+        let mut cq = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<6, 4>::zeros();
+        cq[(0, 0)] = s59;
+        cq[(0, 1)] = s60;
+        cq[(0, 2)] = v[2] * s21 + s6 * a[2];
+        cq[(1, 0)] = s63;
+        cq[(1, 1)] = s64;
+        cq[(1, 2)] = v[2] * s29 - s7 * a[2];
+        cq[(2, 0)] = s59;
+        cq[(2, 1)] = s60;
+        cq[(2, 3)] = s55 + s68 + v[4] * s67 + s9 * a[4];
+        cq[(2, 4)] = s55 + s68 + v[4] * (s31 + v[4] * (s10 - s11)) + s37 * a[4];
+        cq[(3, 0)] = s63;
+        cq[(3, 1)] = s64;
+        cq[(3, 3)] = s36 + v[4] * s35 - s54 - s10 * a[4];
+        cq[(3, 4)] = s17 * a[4] + s36 + v[4] * s39 - s54;
+        cq[(4, 0)] = s59;
+        cq[(4, 1)] = s60;
+        cq[(4, 5)] = s57 + s70 + v[6] * s69 + s13 * a[6];
+        cq[(4, 6)] = s57 + s70 + v[6] * (v[6] * (s15 - s14) - s41) + s47 * a[6];
+        cq[(5, 0)] = s63;
+        cq[(5, 1)] = s64;
+        cq[(5, 5)] = s56 + s46 + v[6] * s45 + s14 * a[6];
+        cq[(5, 6)] = s18 * a[6] + s56 + s46 + v[6] * s49;
+        cv[(0, 0)] = s61;
+        cv[(0, 1)] = s62;
+        cv[(0, 2)] = 2.0 * s29;
+        cv[(1, 0)] = s65;
+        cv[(1, 1)] = s66;
+        cv[(1, 2)] = -(2.0 * s21);
+        cv[(2, 0)] = s61;
+        cv[(2, 1)] = s62;
+        cv[(2, 3)] = s34 + s33 + s35;
+        cv[(2, 4)] = s33 + s38 + s39;
+        cv[(3, 0)] = s65;
+        cv[(3, 1)] = s66;
+        cv[(3, 3)] = -s31 - s40 - s31 - s40;
+        cv[(3, 4)] = s32 + s32 - s31 - s31;
+        cv[(4, 0)] = s61;
+        cv[(4, 1)] = s62;
+        cv[(4, 5)] = s44 + s43 + s45;
+        cv[(4, 6)] = s43 + s48 + s49;
+        cv[(5, 0)] = s65;
+        cv[(5, 1)] = s66;
+        cv[(5, 5)] = s50 + s41 + s41 + s50;
+        cv[(5, 6)] = s41 + s42 + s41 + s42;
+        cp[(0, 3)] = s72;
+        cp[(1, 3)] = s73;
+        cp[(2, 3)] = s72;
+        cp[(3, 3)] = s73;
+        cp[(4, 3)] = s72;
+        cp[(5, 3)] = s73;
+        (cq, cv, cp)
     }
 }

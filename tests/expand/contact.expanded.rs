@@ -20,6 +20,11 @@ impl Ball {
         use ::zeitner::__private::Real as _;
         [self.e]
     }
+    fn parameters(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.g, self.m]
+    }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
 impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
@@ -246,6 +251,155 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "restitution",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -426,6 +580,81 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         use ::zeitner::__private::Real as _;
     }
 }
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
+    const PARAMETER_NAMES: [&'static str; 2] = ["g", "m"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<2>::zeros();
+        theta[0] = self.g;
+        theta[1] = self.m;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        a: &::zeitner::__private::Vector<1>,
+    ) -> ::zeitner::__private::Matrix<1, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        df[(0, 0)] = -self.m;
+        df[(0, 1)] = -self.g - a[0];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 2>, ::zeitner::__private::Matrix<1, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut wq = ::zeitner::__private::Vector::<1>::zeros();
+        let mut wv = ::zeitner::__private::Vector::<1>::zeros();
+        wv[0] = 1.0;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: f64,
+        a: &::zeitner::__private::Vector<1>,
+    ) -> (
+        ::zeitner::__private::Matrix<1, 1>,
+        ::zeitner::__private::Matrix<1, 1>,
+        ::zeitner::__private::Matrix<1, 2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut cq = ::zeitner::__private::Vector::<1>::zeros();
+        let mut cv = ::zeitner::__private::Vector::<1>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        (cq, cv, cp)
+    }
+}
 #[allow(dead_code)]
 impl WallPendulum {
     fn mass(&self) -> [f64; 2] {
@@ -457,6 +686,11 @@ impl WallPendulum {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y - self.height]
+    }
+    fn parameters(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.length, self.g]
     }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
@@ -678,6 +912,155 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
                 ops_unshared: ::zeitner::__private::OpCounts {
                     adds: 0u64,
                     muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
                     divs: 0u64,
                     transcendental: 0u64,
                     opaque_calls: 0u64,
@@ -923,6 +1306,89 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         values[1] = s0;
     }
 }
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
+    const PARAMETER_NAMES: [&'static str; 2] = ["length", "g"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<2>::zeros();
+        theta[0] = self.length;
+        theta[1] = self.g;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        a: &::zeitner::__private::Vector<2>,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        df[(1, 1)] = -self.m;
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        dg[(0, 0)] = -(2.0 * self.length);
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut wq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        wq[(0, 0)] = 2.0 * v[0];
+        wq[(0, 1)] = 2.0 * v[1];
+        wv[(0, 0)] = 2.0 * q[0];
+        wv[(0, 1)] = 2.0 * q[1];
+        wv[(1, 0)] = 1.0;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+        a: &::zeitner::__private::Vector<2>,
+    ) -> (
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Matrix<2, 2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut cq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        cq[(0, 0)] = 2.0 * a[0];
+        cq[(0, 1)] = 2.0 * a[1];
+        cv[(0, 0)] = 2.0 * (2.0 * v[0]);
+        cv[(0, 1)] = 2.0 * (2.0 * v[1]);
+        (cq, cv, cp)
+    }
+}
 #[allow(dead_code)]
 impl FallingBar {
     fn mass(&self) -> [f64; 3] {
@@ -949,6 +1415,11 @@ impl FallingBar {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.e, self.e]
+    }
+    fn parameters(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.g, self.a]
     }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
@@ -1176,6 +1647,155 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 2), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (1, 1), (1, 2), (2, 1), (2, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 2), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 2), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 3,
+                        cols: 2,
+                        nonzeros: &[(1, 1), (2, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 6u64,
+                    muls: 10u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 6u64,
+                    muls: 22u64,
+                    divs: 0u64,
+                    transcendental: 10u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 3,
+                        cols: 2,
+                        nonzeros: &[(1, 0), (2, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 3,
+                        cols: 2,
+                        nonzeros: &[(1, 1), (2, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 3,
+                        cols: 2,
+                        nonzeros: &[(1, 1), (2, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "restitution",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1380,5 +2000,109 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         use ::zeitner::__private::Real as _;
         let s0 = self.a * q[2].sin();
         values[0] = s0 * lambda[1] - s0 * lambda[2];
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<3, 3, 2> for FallingBar {
+    const PARAMETER_NAMES: [&'static str; 2] = ["g", "a"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<2>::zeros();
+        theta[0] = self.g;
+        theta[1] = self.a;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> ::zeitner::__private::Matrix<3, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].cos();
+        let mut df = ::zeitner::__private::Matrix::<3, 2>::zeros();
+        df[(1, 0)] = -self.m;
+        df[(2, 1)] = s0 * lambda[1] - s0 * lambda[2];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<3, 2>, ::zeitner::__private::Matrix<3, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos() * v[2];
+        let mut dg = ::zeitner::__private::Matrix::<3, 2>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<3, 2>::zeros();
+        dg[(1, 1)] = -s0;
+        dg[(2, 1)] = s0;
+        dw[(1, 1)] = -s1;
+        dw[(2, 1)] = s1;
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].cos();
+        let s1 = self.a * q[2].sin() * v[2];
+        let mut wq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        wq[(1, 2)] = s1;
+        wq[(2, 2)] = -s1;
+        wv[(0, 0)] = 1.0;
+        wv[(1, 1)] = 1.0;
+        wv[(1, 2)] = -s0;
+        wv[(2, 1)] = 1.0;
+        wv[(2, 2)] = s0;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> (
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Matrix<3, 2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = self.a * s0;
+        let s2 = q[2].cos();
+        let s3 = v[2] * (self.a * s2 * v[2]);
+        let s4 = s1 * a[2];
+        let s5 = 2.0 * (s1 * v[2]);
+        let s6 = v[2] * (s0 * v[2]);
+        let s7 = s2 * a[2];
+        let mut cq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<3, 2>::zeros();
+        cq[(1, 2)] = s3 + s4;
+        cq[(2, 2)] = -s4 - s3;
+        cv[(1, 2)] = s5;
+        cv[(2, 2)] = -s5;
+        cp[(1, 1)] = s6 - s7;
+        cp[(2, 1)] = s7 - s6;
+        (cq, cv, cp)
     }
 }

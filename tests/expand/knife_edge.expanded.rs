@@ -25,6 +25,12 @@ impl KnifeEdge {
         use ::zeitner::__private::Real as _;
         [-theta.sin() * vx + theta.cos() * vy]
     }
+    /// For sensitivities: the slope, gravity and the mass (on which the motion does not depend).
+    fn parameters(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.alpha, self.g, self.m]
+    }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
 impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
@@ -275,6 +281,155 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
                     opaque_calls: 0u64,
                 },
             },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[(0, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[(0, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 8u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (1, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 3u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
@@ -441,6 +596,95 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         values[1] = -(q[2].sin() * lambda[0]);
     }
 }
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
+    const PARAMETER_NAMES: [&'static str; 3] = ["alpha", "g", "m"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<3>::zeros();
+        theta[0] = self.alpha;
+        theta[1] = self.g;
+        theta[2] = self.m;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> ::zeitner::__private::Matrix<3, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.alpha.sin();
+        let mut df = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        df[(0, 0)] = self.m * self.g * self.alpha.cos();
+        df[(0, 1)] = self.m * s0;
+        df[(0, 2)] = self.g * s0 - a[0];
+        df[(1, 2)] = -a[1];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 3>, ::zeitner::__private::Matrix<1, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 3>, ::zeitner::__private::Matrix<1, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut wq = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        wq[(0, 2)] = -(v[1] * s0) - v[0] * s1;
+        wv[(0, 0)] = -s0;
+        wv[(0, 1)] = s1;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> (
+        ::zeitner::__private::Matrix<1, 3>,
+        ::zeitner::__private::Matrix<1, 3>,
+        ::zeitner::__private::Matrix<1, 3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut cq = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        cq[(0, 2)] = v[2] * (v[0] * s0 - v[1] * s1) - s1 * a[0] - s0 * a[1];
+        cv[(0, 0)] = -(v[2] * s1);
+        cv[(0, 1)] = -(v[2] * s0);
+        cv[(0, 2)] = -(v[1] * s0) - v[0] * s1;
+        (cq, cv, cp)
+    }
+}
 #[allow(dead_code)]
 impl SteeredKnifeEdge {
     fn mass(&self) -> [f64; 3] {
@@ -472,6 +716,12 @@ impl SteeredKnifeEdge {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [-theta.sin() * vx + theta.cos() * vy]
+    }
+    /// For sensitivities: the slope, the steering rate and the torque.
+    fn parameters(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.edge.alpha, self.omega, self.torque]
     }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
@@ -723,6 +973,155 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
                     opaque_calls: 0u64,
                 },
             },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 2), (1, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (1, 1), (1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 8u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (2, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 1u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<3>;
@@ -893,5 +1292,94 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         use ::zeitner::__private::Real as _;
         values[0] = -(q[2].cos() * lambda[1]);
         values[1] = -(q[2].sin() * lambda[1]);
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<3, 2, 3> for SteeredKnifeEdge {
+    const PARAMETER_NAMES: [&'static str; 3] = ["edge.alpha", "omega", "torque"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<3>::zeros();
+        theta[0] = self.edge.alpha;
+        theta[1] = self.omega;
+        theta[2] = self.torque;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> ::zeitner::__private::Matrix<3, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        df[(0, 0)] = self.edge.m * self.edge.g * self.edge.alpha.cos();
+        df[(2, 2)] = 1.0;
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        dg[(0, 1)] = -t;
+        dw[(0, 1)] = -1.0;
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut wq = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        wq[(1, 2)] = -(v[1] * s0) - v[0] * s1;
+        wv[(0, 2)] = 1.0;
+        wv[(1, 0)] = -s0;
+        wv[(1, 1)] = s1;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> (
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Matrix<2, 3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut cq = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        cq[(1, 2)] = v[2] * (v[0] * s0 - v[1] * s1) - s1 * a[0] - s0 * a[1];
+        cv[(1, 0)] = -(v[2] * s1);
+        cv[(1, 1)] = -(v[2] * s0);
+        cv[(1, 2)] = -(v[1] * s0) - v[0] * s1;
+        (cq, cv, cp)
     }
 }

@@ -32,6 +32,11 @@ impl SpringSupportedPendulum {
         use ::zeitner::__private::Real as _;
         [(xb - xs).powi(2) + (yb - ys).powi(2) - self.l * self.l]
     }
+    fn parameters(&self) -> [f64; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.k, self.c]
+    }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
 impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
@@ -266,6 +271,155 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
                     opaque_calls: 0u64,
                 },
             },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 8u64,
+                    muls: 10u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 10u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 16u64,
+                    muls: 16u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 16u64,
+                    muls: 24u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 4,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
         ],
     };
     type Mass = ::zeitner::__private::DiagonalMass<4>;
@@ -466,5 +620,107 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         values[5] = s2;
         values[6] = s0;
         values[7] = s2;
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<4, 1, 2> for SpringSupportedPendulum {
+    const PARAMETER_NAMES: [&'static str; 2] = ["k", "c"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<2>::zeros();
+        theta[0] = self.k;
+        theta[1] = self.c;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<1>,
+        a: &::zeitner::__private::Vector<4>,
+    ) -> ::zeitner::__private::Matrix<4, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<4, 2>::zeros();
+        df[(0, 0)] = -q[0];
+        df[(0, 1)] = -v[0];
+        df[(1, 0)] = -q[1];
+        df[(1, 1)] = -v[1];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 2>, ::zeitner::__private::Matrix<1, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<1, 4>, ::zeitner::__private::Matrix<1, 4>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * (q[2] - q[0]);
+        let s1 = 2.0 * (q[3] - q[1]);
+        let mut wq = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        wq[(0, 0)] = -2.0 * v[2] - -2.0 * v[0];
+        wq[(0, 1)] = -2.0 * v[3] - -2.0 * v[1];
+        wq[(0, 2)] = 2.0 * v[2] - 2.0 * v[0];
+        wq[(0, 3)] = 2.0 * v[3] - 2.0 * v[1];
+        wv[(0, 0)] = -s0;
+        wv[(0, 1)] = -s1;
+        wv[(0, 2)] = s0;
+        wv[(0, 3)] = s1;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: f64,
+        a: &::zeitner::__private::Vector<4>,
+    ) -> (
+        ::zeitner::__private::Matrix<1, 4>,
+        ::zeitner::__private::Matrix<1, 4>,
+        ::zeitner::__private::Matrix<1, 2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -2.0 * v[0];
+        let s1 = -2.0 * v[2];
+        let s2 = -2.0 * v[1];
+        let s3 = -2.0 * v[3];
+        let s4 = 2.0 * v[0];
+        let s5 = 2.0 * v[2];
+        let s6 = 2.0 * v[1];
+        let s7 = 2.0 * v[3];
+        let mut cq = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        cq[(0, 0)] = -2.0 * a[2] - -2.0 * a[0];
+        cq[(0, 1)] = -2.0 * a[3] - -2.0 * a[1];
+        cq[(0, 2)] = 2.0 * a[2] - 2.0 * a[0];
+        cq[(0, 3)] = 2.0 * a[3] - 2.0 * a[1];
+        cv[(0, 0)] = s1 + s1 - s0 + s4;
+        cv[(0, 1)] = s3 + s3 - s2 + s6;
+        cv[(0, 2)] = s0 + s5 + s5 - s4;
+        cv[(0, 3)] = s2 + s7 + s7 - s6;
+        (cq, cv, cp)
     }
 }

@@ -33,6 +33,13 @@ impl SteamGenerator {
         use ::zeitner::__private::Real as _;
         [self.rise, self.off]
     }
+    /// The supports' geometry and the damper, for sensitivities (the load's `p0` and `rise`
+    /// are read in `load`, an opaque method, so they cannot be parameters).
+    fn parameters(&self) -> [f64; 4] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.h3, self.h2, self.d, self.m]
+    }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
 impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
@@ -259,6 +266,155 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 2), (1, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 2,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 3,
+                        cols: 4,
+                        nonzeros: &[(0, 2), (0, 3), (1, 1), (1, 3), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 2,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 2,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "time_event_after",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -465,6 +621,101 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         values[1] = s0;
     }
 }
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
+    const PARAMETER_NAMES: [&'static str; 4] = ["h3", "h2", "d", "m"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<4>::zeros();
+        theta[0] = self.h3;
+        theta[1] = self.h2;
+        theta[2] = self.d;
+        theta[3] = self.m;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<2>,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> ::zeitner::__private::Matrix<3, 4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<3, 4>::zeros();
+        df[(0, 2)] = -v[0];
+        df[(0, 3)] = -a[0];
+        df[(1, 1)] = -(-2.0 * lambda[1]);
+        df[(1, 3)] = -self.g - a[1];
+        df[(2, 0)] = lambda[0];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 4>, ::zeitner::__private::Matrix<2, 4>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<2, 4>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<2, 4>::zeros();
+        dg[(0, 0)] = -q[2];
+        dg[(1, 1)] = -(2.0 * (q[1] - self.h2)) - 2.0 * self.h2;
+        dw[(0, 0)] = -v[2];
+        dw[(1, 1)] = -2.0 * v[1];
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut wq = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        wq[(1, 0)] = 2.0 * v[0];
+        wq[(1, 1)] = 2.0 * v[1];
+        wv[(0, 0)] = 1.0;
+        wv[(0, 2)] = -self.h3;
+        wv[(1, 0)] = 2.0 * q[0];
+        wv[(1, 1)] = 2.0 * (q[1] - self.h2);
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> (
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Matrix<2, 4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut cq = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<2, 4>::zeros();
+        cq[(1, 0)] = 2.0 * a[0];
+        cq[(1, 1)] = 2.0 * a[1];
+        cv[(1, 0)] = 2.0 * (2.0 * v[0]);
+        cv[(1, 1)] = 2.0 * (2.0 * v[1]);
+        cp[(0, 0)] = -a[2];
+        cp[(1, 1)] = -2.0 * a[1];
+        (cq, cv, cp)
+    }
+}
 #[allow(dead_code)]
 impl SteamGeneratorWithGap {
     fn mass(&self) -> [f64; 3] {
@@ -510,6 +761,11 @@ impl SteamGeneratorWithGap {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.base.rise, self.base.off]
+    }
+    fn parameters(&self) -> [f64; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.base.h3, self.clearance, self.base.d]
     }
 }
 #[allow(unused_variables, unused_mut, clippy::all)]
@@ -731,6 +987,155 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
                 ops_unshared: ::zeitner::__private::OpCounts {
                     adds: 0u64,
                     muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "rate_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "wq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "wv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 2), (2, 0), (2, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "acceleration_constraint_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "cq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "cp",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 6u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_values",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "theta",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "df",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 2), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "parameter_constraints",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dg",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (1, 1), (2, 0), (2, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dw",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 0u64,
                     divs: 0u64,
                     transcendental: 0u64,
                     opaque_calls: 0u64,
@@ -987,5 +1392,100 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         let s0 = 2.0 * lambda[0];
         values[0] = s0;
         values[1] = s0;
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ParametrisedSystem<3, 3, 3> for SteamGeneratorWithGap {
+    const PARAMETER_NAMES: [&'static str; 3] = ["base.h3", "clearance", "base.d"];
+    #[inline]
+    fn parameter_values(&self) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut theta = ::zeitner::__private::Vector::<3>::zeros();
+        theta[0] = self.base.h3;
+        theta[1] = self.clearance;
+        theta[2] = self.base.d;
+        theta
+    }
+    #[inline]
+    fn parameter_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        lambda: &::zeitner::__private::Vector<3>,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> ::zeitner::__private::Matrix<3, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut df = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        df[(0, 2)] = -v[0];
+        df[(2, 0)] = lambda[2] - lambda[1];
+        df
+    }
+    #[inline]
+    fn parameter_constraints(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dg = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dw = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        dg[(1, 0)] = q[2];
+        dg[(1, 1)] = 1.0;
+        dg[(2, 0)] = -q[2];
+        dg[(2, 1)] = 1.0;
+        dw[(1, 0)] = v[2];
+        dw[(2, 0)] = -v[2];
+        (dg, dw)
+    }
+    #[inline]
+    fn rate_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut wq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut wv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        wq[(0, 0)] = 2.0 * v[0];
+        wq[(0, 1)] = 2.0 * v[1];
+        wv[(0, 0)] = 2.0 * q[0];
+        wv[(0, 1)] = 2.0 * (q[1] - self.base.h2);
+        wv[(1, 0)] = -1.0;
+        wv[(1, 2)] = self.base.h3;
+        wv[(2, 0)] = 1.0;
+        wv[(2, 2)] = -self.base.h3;
+        (wq, wv)
+    }
+    #[inline]
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: f64,
+        a: &::zeitner::__private::Vector<3>,
+    ) -> (
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Matrix<3, 3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut cq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut cv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut cp = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        cq[(0, 0)] = 2.0 * a[0];
+        cq[(0, 1)] = 2.0 * a[1];
+        cv[(0, 0)] = 2.0 * (2.0 * v[0]);
+        cv[(0, 1)] = 2.0 * (2.0 * v[1]);
+        cp[(1, 0)] = a[2];
+        cp[(2, 0)] = -a[2];
+        (cq, cv, cp)
     }
 }

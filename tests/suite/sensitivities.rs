@@ -182,8 +182,10 @@ mod runs {
         let mut sim =
             SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, q0, Vector::zeros(), 0.0, options)
                 .expect("a start");
-        sim.set_stop_time(2.0).unwrap();
-        while sim.step().expect("a step") != zeitner::StopReason::StopTimeReached {}
+        assert_eq!(
+            sim.advance_to(2.0),
+            Ok(zeitner::StopReason::StopTimeReached)
+        );
         let end = sim.simulator().last().end;
         let s = sim.sensitivities();
         assert_eq!(s.t, 2.0);
@@ -928,6 +930,91 @@ mod wild_inputs {
                     }
                 }
             }
+        }
+    }
+}
+
+mod spring_gap {
+    use zeitner::{
+        constrained_system, Options, SensitivitySimulator, StepControl, StopReason, Vector,
+    };
+
+    /// A mass on a spring with a stop: `x ≥ -d`, released from rest at `x = A > d`.
+    pub struct SpringStop {
+        pub m: f64,
+        pub k: f64,
+        pub d: f64,
+    }
+
+    #[constrained_system]
+    impl SpringStop {
+        fn mass(&self) -> [f64; 1] {
+            [self.m]
+        }
+        fn force(&self, [x]: [f64; 1]) -> [f64; 1] {
+            [-self.k * x]
+        }
+        fn gaps(&self, [x]: [f64; 1]) -> [f64; 1] {
+            [x + self.d]
+        }
+        fn restitution(&self) -> [f64; 1] {
+            [0.5]
+        }
+        fn parameters(&self) -> [f64; 3] {
+            [self.k, self.m, self.d]
+        }
+    }
+
+    /// It strikes the stop at `t* = arccos(-d/A)/ω`, `ω = √(k/m)`: `∂t*/∂k = -t*/(2k)`,
+    /// `∂t*/∂m = t*/(2m)` and `∂t*/∂d = 1/(ω √(A² - d²))`.
+    #[test]
+    fn the_spring_strikes_its_stop_when_the_closed_form_says() {
+        let (m, k, d, a) = (2.0, 50.0, 0.3, 0.5);
+        let omega = (k / m as f64).sqrt();
+        let t_star = (-d / a as f64).acos() / omega;
+        let expected = [
+            -t_star / (2.0 * k),
+            t_star / (2.0 * m),
+            1.0 / (omega * (a * a - d * d as f64).sqrt()),
+        ];
+        let scene = SpringStop { m, k, d };
+        let step = StepControl::Adaptive {
+            initial_step: 1e-4,
+            min_step: 1e-12,
+            max_step: 0.01,
+            rtol: 1e-10,
+            atol: 1e-12,
+        };
+        let options = Options {
+            step,
+            ..Options::default()
+        };
+        let mut sim = SensitivitySimulator::<_, 1, 1, 3>::new(
+            &scene,
+            Vector::from([a]),
+            Vector::zeros(),
+            0.0,
+            options,
+        )
+        .unwrap();
+        sim.set_stop_time(1.0).unwrap();
+        let impact = loop {
+            match sim.step().unwrap() {
+                StopReason::Impact => break *sim.impact_time().unwrap(),
+                StopReason::StopTimeReached => panic!("no impact"),
+                _ => {}
+            }
+        };
+        assert!((sim.simulator().time() - t_star).abs() < 1e-8);
+        let errors: Vec<f64> = (0..3)
+            .map(|p| (impact[(0, p)] - expected[p]).abs() / expected[p].abs())
+            .collect();
+        eprintln!(
+            "spring with a stop: ∂t*/∂(k, m, d) relative to the closed form {:.1e} {:.1e} {:.1e}",
+            errors[0], errors[1], errors[2]
+        );
+        for e in errors {
+            assert!(e <= 1e-7);
         }
     }
 }

@@ -108,6 +108,24 @@ where
         self.impact_time.as_ref()
     }
 
+    /// Steps to `t_end` as [`Simulator::advance_to`] does without an observer: returns at
+    /// `t_end` or at an event ([`StopReason::Event`]), the sensitivities carried along.
+    pub fn advance_to(&mut self, t_end: f64) -> Result<StopReason, StepError> {
+        if super::already_there(self.simulator.time(), t_end)? {
+            return Ok(StopReason::StopTimeReached);
+        }
+        self.set_stop_time(t_end)?;
+        loop {
+            let reason = self.step()?;
+            if matches!(
+                reason,
+                StopReason::StopTimeReached | StopReason::Event { .. }
+            ) {
+                return Ok(reason);
+            }
+        }
+    }
+
     /// [`Simulator::set_stop_time`].
     pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
         self.simulator.set_stop_time(t)
