@@ -969,13 +969,13 @@ mod spring_gap {
     /// `∂t*/∂m = t*/(2m)` and `∂t*/∂d = 1/(ω √(A² - d²))`.
     #[test]
     fn the_spring_strikes_its_stop_when_the_closed_form_says() {
-        let (m, k, d, a) = (2.0, 50.0, 0.3, 0.5);
-        let omega = (k / m as f64).sqrt();
-        let t_star = (-d / a as f64).acos() / omega;
+        let (m, k, d, a): (f64, f64, f64, f64) = (2.0, 50.0, 0.3, 0.5);
+        let omega = (k / m).sqrt();
+        let t_star = (-d / a).acos() / omega;
         let expected = [
             -t_star / (2.0 * k),
             t_star / (2.0 * m),
-            1.0 / (omega * (a * a - d * d as f64).sqrt()),
+            1.0 / (omega * (a * a - d * d).sqrt()),
         ];
         let scene = SpringStop { m, k, d };
         let step = StepControl::Adaptive {
