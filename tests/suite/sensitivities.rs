@@ -730,6 +730,7 @@ mod impacts {
         for (method, multipliers) in [
             (InnerMethod::Dop853, MultiplierModel::EveryStage),
             (InnerMethod::DormandPrince54, MultiplierModel::Quadratic),
+            (InnerMethod::Rk4 { substeps: 1 }, MultiplierModel::Constant),
         ] {
             let options = Options {
                 method,

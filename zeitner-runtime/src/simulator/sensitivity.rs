@@ -199,13 +199,18 @@ where
         let motion = (&before.a, &impact.velocity_after, &point.a);
         let rate = impact.gap_rate_before[gap];
         sim.model.set_open_gaps(all.without(active));
+        // The impact acts on the reported point (its velocities projected), not the raw state.
+        let reported = Tangent {
+            q: self.report.q,
+            v: self.report.v,
+        };
         let jumped = tangent::impact(
             &mut sim.model,
             at,
             motion,
             (first + gap, rate),
             &scale,
-            &self.state,
+            &reported,
         );
         sim.model.set_open_gaps(open_after);
         let (mut state, dt) = jumped?;
@@ -280,6 +285,7 @@ where
                 let (raw, x) = stages.every_stage(&mut sim.model, start, h, &self.state)?;
                 (raw, x)
             }
+            #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Quadratic => {
                 let held = held_multipliers::<Z, 2>(&record.multipliers);
                 let share = carried_share(h, record.planned);
