@@ -184,12 +184,16 @@ impl<const N: usize> IterationFactor<N> {
 
 /// Replaces the rows and columns from `from` on by the identity, so that a system over all `Z`
 /// constraints acts on the first `from` only.
-pub fn keep_leading_rows<const Z: usize>(a: &mut Matrix<Z, Z>, rhs: &mut Vector<Z>, from: usize) {
+pub fn keep_leading_rows<const Z: usize, const C: usize>(
+    a: &mut Matrix<Z, Z>,
+    rhs: &mut Matrix<Z, C>,
+    from: usize,
+) {
     for j in from..Z {
         a.row_mut(j).fill(0.0);
         a.column_mut(j).fill(0.0);
         a[(j, j)] = 1.0;
-        rhs[j] = 0.0;
+        rhs.row_mut(j).fill(0.0);
     }
 }
 

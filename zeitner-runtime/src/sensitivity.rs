@@ -16,7 +16,7 @@
 
 use crate::consistency::consistent_point_and_gram;
 use crate::error::StepError;
-use crate::linalg::{solve_blocks, solve_spd};
+use crate::linalg::{keep_leading_rows, solve_blocks, solve_spd};
 use crate::mass::MassFactor;
 use crate::method::explicit::Tableau;
 use crate::model::{Acceleration, FactorOf, Model};
@@ -178,12 +178,7 @@ where
     let mut gram = directions.gram();
     let (dg, _) = constraints_by_parameters(model, (q, v, t));
     let mut rhs = directions.jacobian * x.q + dg;
-    for j in r..Z {
-        gram.row_mut(j).fill(0.0);
-        gram.column_mut(j).fill(0.0);
-        gram[(j, j)] = 1.0;
-        rhs.row_mut(j).fill(0.0);
-    }
+    keep_leading_rows(&mut gram, &mut rhs, r);
     let mu = solve_spd(&gram, &rhs, r).map_err(rank_deficient(t))?;
     x.q -= directions.m_inv_gt * mu;
     Ok(())

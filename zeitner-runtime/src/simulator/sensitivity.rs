@@ -1,7 +1,7 @@
 //! A run with its forward sensitivities: the simulator steps, then each accepted step is taken
 //! again linearised (`crate::sensitivity`) to carry the derivatives by the parameters.
 
-use super::Simulator;
+use super::{LastStep, Simulator};
 use crate::error::{InvalidOption, StepError};
 use crate::gaps::GapSet;
 use crate::method::explicit::Tableau;
@@ -287,25 +287,13 @@ where
             }
             #[cfg(feature = "quadratic-multipliers")]
             MultiplierModel::Quadratic => {
-                let held = held_multipliers::<Z, 2>(&record.multipliers);
-                let share = carried_share(h, record.planned);
+                // The quadratic model's base is the start's consistent multipliers.
                 let x0 = (&self.state, &self.consistent);
-                let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
-                let step = stages.held(&mut sim.model, start, h, &held, x0)?;
-                let end = (&step.q, &step.v, t1);
-                let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
-                ((step.q, step.v), x)
+                held_tangent::<S, N, Z, P, 2>(sim, stages, (start, h, t1), &record, x0)?
             }
             _ => {
-                let held = held_multipliers::<Z, 1>(&record.multipliers);
-                let share = carried_share(h, record.planned);
-                let zero = Matrix::zeros();
-                let x0 = (&self.state, &zero);
-                let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
-                let step = stages.held(&mut sim.model, start, h, &held, x0)?;
-                let end = (&step.q, &step.v, t1);
-                let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
-                ((step.q, step.v), x)
+                let x0 = (&self.state, &Matrix::zeros());
+                held_tangent::<S, N, Z, P, 1>(sim, stages, (start, h, t1), &record, x0)?
             }
         };
         // The end's corrections, each linearised where the simulator made it.
@@ -321,6 +309,27 @@ where
         }
         Ok((state, projected))
     }
+}
+
+/// Through a step with `K` held coefficients from `start`: the end as integrated and its
+/// tangent, the start's tangent `x0` with that of the multipliers' base.
+fn held_tangent<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
+    sim: &mut Simulator<'_, S, N, Z>,
+    stages: Stages,
+    (start, h, t1): (Point<'_, N>, f64, f64),
+    record: &LastStep<Z>,
+    x0: (&Tangent<N, P>, &Matrix<Z, P>),
+) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
+where
+    S: ParametrisedSystem<N, Z, P>,
+{
+    let held = held_multipliers::<Z, K>(&record.multipliers);
+    let share = carried_share(h, record.planned);
+    let targets = tangent::targets_tangent(&mut sim.model, start, x0.0, share)?;
+    let step = stages.held(&mut sim.model, start, h, &held, x0)?;
+    let end = (&step.q, &step.v, t1);
+    let x = tangent::held_end(&mut sim.model, end, &step, (&held, x0.1), targets)?.0;
+    Ok(((step.q, step.v), x))
 }
 
 /// Whether the sensitivities follow `method` (while it stays explicit).
