@@ -241,6 +241,8 @@ pub struct Heatmap<'a> {
     pub value_label: &'a str,
     pub points: Vec<(f64, f64, f64)>,
     pub marker: Option<(f64, f64)>,
+    /// A path drawn over the map (an optimiser's iterates), white with its points marked.
+    pub path: Vec<(f64, f64)>,
 }
 
 /// Writes the maps side by side to `<stem>.svg` and `<stem>.png`.
@@ -334,6 +336,17 @@ where
             } else {
                 chart.draw_series(std::iter::once(Circle::new((x, y), 4, color.filled())))?;
             }
+        }
+        if !map.path.is_empty() {
+            chart.draw_series(std::iter::once(PathElement::new(
+                map.path.clone(),
+                WHITE.stroke_width(2),
+            )))?;
+            chart.draw_series(
+                map.path
+                    .iter()
+                    .map(|&p| Circle::new(p, 4, WHITE.stroke_width(2))),
+            )?;
         }
         if let Some((x, y)) = map.marker {
             chart.draw_series(std::iter::once(Cross::new((x, y), 9, RED.stroke_width(3))))?;
