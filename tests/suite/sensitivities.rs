@@ -693,6 +693,121 @@ mod impacts {
         }
     }
 
+    /// A ball over a floor at height `floor`, both the floor and gravity parameters.
+    pub struct BallOverFloor {
+        pub g: f64,
+        pub floor: f64,
+    }
+
+    #[zeitner::constrained_system]
+    impl BallOverFloor {
+        fn mass(&self) -> [f64; 1] {
+            [1.0]
+        }
+        fn force(&self) -> [f64; 1] {
+            [-self.g]
+        }
+        fn gaps(&self, [y]: [f64; 1]) -> [f64; 1] {
+            [y - self.floor]
+        }
+        fn restitution(&self) -> [f64; 1] {
+            [0.6]
+        }
+        fn parameters(&self) -> [f64; 2] {
+            [self.g, self.floor]
+        }
+    }
+
+    /// Runs the ball from rest at `y0` to `t_end`; `start` the derivatives of `y0` by `(g,
+    /// floor)`, if it moves with them. Returns the impact time's derivatives and the end's.
+    fn drop_ball(
+        ball: &BallOverFloor,
+        y0: f64,
+        start: Option<Matrix<1, 2>>,
+        t_end: f64,
+    ) -> (Matrix<1, 2>, zeitner::Sensitivities<1, 1, 2>) {
+        let options = Options {
+            step: StepControl::Adaptive {
+                initial_step: 1e-3,
+                min_step: 1e-12,
+                max_step: 0.05,
+                rtol: 1e-10,
+                atol: 1e-12,
+            },
+            ..Options::default()
+        };
+        let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
+            ball,
+            Vector::from([y0]),
+            Vector::zeros(),
+            0.0,
+            options,
+        )
+        .unwrap();
+        if let Some(dy0) = start {
+            sim.set_start_derivatives(dy0, Matrix::zeros()).unwrap();
+        }
+        sim.set_stop_time(t_end).unwrap();
+        let mut impact_time = None;
+        while sim.step().unwrap() != StopReason::StopTimeReached {
+            if impact_time.is_none() {
+                impact_time = sim.impact_time().copied();
+            }
+        }
+        (impact_time.expect("an impact"), *sim.sensitivities())
+    }
+
+    /// Dropped from rest at `y0` over a floor at `f`, the ball falls `H = y0 - f` and strikes at
+    /// `t₁ = √(2H/g)`: `∂t₁/∂H = 1/(g t₁)`, so `∂t₁/∂f = -1/(g t₁)` with the start kept, and
+    /// `∂t₁/∂g = -t₁/(2g)`. With the start moved along with the floor
+    /// ([`SensitivitySimulator::set_start_derivatives`]) nothing but the height changes: `∂t₁/∂f
+    /// = 0`, `∂y/∂f = 1` and `∂y'/∂f = 0` at every time, through the impact.
+    #[test]
+    fn the_impact_time_follows_the_drop_height_and_a_start_moved_with_the_floor() {
+        let ball = BallOverFloor { g: 9.81, floor: 0.5 };
+        let (y0, t_end) = (2.5, 1.2);
+        let t1 = (2.0 * (y0 - ball.floor) / ball.g).sqrt();
+        let (dt1, _) = drop_ball(&ball, y0, None, t_end);
+        let by_floor = (dt1[(0, 1)] + 1.0 / (ball.g * t1)).abs() * ball.g * t1;
+        let by_g = (dt1[(0, 0)] + t1 / (2.0 * ball.g)).abs() * 2.0 * ball.g / t1;
+        eprintln!("start kept: ∂t₁/∂floor {by_floor:.1e}, ∂t₁/∂g {by_g:.1e} relative");
+        assert!(by_floor <= 1e-8 && by_g <= 1e-8);
+
+        let (dt1, end) = drop_ball(&ball, y0, Some(Matrix::<1, 2>::new(0.0, 1.0)), t_end);
+        let moved = [
+            dt1[(0, 1)].abs(),
+            (end.q[(0, 1)] - 1.0).abs(),
+            end.v[(0, 1)].abs(),
+            end.lambda[(0, 1)].abs(),
+        ];
+        eprintln!("start moved with the floor: |∂t₁/∂floor| {:.1e}, |∂y/∂floor - 1| {:.1e}, |∂y'/∂floor| {:.1e}, |∂λ/∂floor| {:.1e}", moved[0], moved[1], moved[2], moved[3]);
+        for m in moved {
+            assert!(m <= 1e-9, "{moved:?}");
+        }
+    }
+
+    #[test]
+    fn the_start_derivatives_are_refused_after_the_first_step() {
+        let ball = BallOverFloor { g: 9.81, floor: 0.0 };
+        let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
+            &ball,
+            Vector::from([1.0]),
+            Vector::zeros(),
+            0.0,
+            Options::default(),
+        )
+        .unwrap();
+        sim.step().unwrap();
+        let before = *sim.sensitivities();
+        assert_eq!(
+            sim.set_start_derivatives(Matrix::<1, 2>::new(0.0, 1.0), Matrix::zeros()),
+            Err(zeitner::StepError::InvalidOption(
+                zeitner::InvalidOption::StartDerivativesAfterStart
+            ))
+        );
+        assert_eq!(*sim.sensitivities(), before);
+    }
+
     fn wall(theta: [f64; 2]) -> WallPendulum {
         WallPendulum {
             m: 1.0,

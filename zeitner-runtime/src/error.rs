@@ -193,6 +193,8 @@ pub enum InvalidOption {
     SensitivitiesAcrossContacts,
     /// Sensitivities with `VelocityProjection::Off`: they are those of consistent points.
     SensitivitiesOfRawOutput,
+    /// The start's derivatives set after the first step: they belong to the start.
+    StartDerivativesAfterStart,
 }
 
 impl fmt::Display for InvalidOption {
@@ -210,6 +212,10 @@ impl fmt::Display for InvalidOption {
             InvalidOption::SensitivitiesOfRawOutput => f.write_str(
                 "sensitivities are those of consistent points: use `VelocityProjection::Output` \
                  (the default) or `State`, not `Off`",
+            ),
+            InvalidOption::StartDerivativesAfterStart => f.write_str(
+                "the start's derivatives are set before the first step: set them right after \
+                 `SensitivitySimulator::new`",
             ),
             InvalidOption::ConstraintTolerance => f.write_str(
                 "`constraint_tolerance` must be finite and positive, in the constraints' units (default 1e-10)",

@@ -70,27 +70,48 @@ where
                 InvalidOption::SensitivitiesOfRawOutput,
             ));
         }
-        let mut simulator = Simulator::new(system, q0, v0, t0, options)?;
-        let point = simulator.last.end;
-        let model = &mut simulator.model;
-        let at = (&point.q, &point.v, point.t);
-        let mut state = Tangent::zero();
-        tangent::project_positions(model, at, &mut state)?;
-        tangent::project_velocities(model, at, &mut state)?;
-        let consistent = tangent::consistent_multipliers(model, at, &point.lambda, &state)?;
-        let report = Sensitivities {
-            t: point.t,
-            q: state.q,
-            v: state.v,
-            lambda: consistent,
-        };
-        Ok(SensitivitySimulator {
+        let simulator = Simulator::new(system, q0, v0, t0, options)?;
+        let mut sensitivities = SensitivitySimulator {
             simulator,
-            state,
-            consistent,
-            report,
+            state: Tangent::zero(),
+            consistent: Matrix::zeros(),
+            report: Sensitivities {
+                t: t0,
+                q: Matrix::zeros(),
+                v: Matrix::zeros(),
+                lambda: Matrix::zeros(),
+            },
             impact_time: None,
-        })
+        };
+        sensitivities.start_from(Tangent::zero())?;
+        Ok(sensitivities)
+    }
+
+    /// Sets the derivatives of the start `(q0, q0')` by the parameters, where the start itself
+    /// depends on them (a drop height, a deflection at rest): they are projected onto the
+    /// constraints as the start was. Only before the first step
+    /// ([`InvalidOption::StartDerivativesAfterStart`] after it, nothing changed).
+    pub fn set_start_derivatives(
+        &mut self,
+        q0: Matrix<N, P>,
+        v0: Matrix<N, P>,
+    ) -> Result<(), StepError> {
+        if self.simulator.statistics.steps > 0 || self.simulator.last_impact.is_some() {
+            return Err(StepError::InvalidOption(
+                InvalidOption::StartDerivativesAfterStart,
+            ));
+        }
+        self.start_from(Tangent { q: q0, v: v0 })
+    }
+
+    /// The start's derivatives from those of `(q0, q0')`, `x`.
+    fn start_from(&mut self, mut x: Tangent<N, P>) -> Result<(), StepError> {
+        let point = self.simulator.last.end;
+        let model = &mut self.simulator.model;
+        let at = (&point.q, &point.v, point.t);
+        tangent::project_positions(model, at, &mut x)?;
+        tangent::project_velocities(model, at, &mut x)?;
+        self.report_at_end(x, x)
     }
 
     /// The simulator, for everything else a run reports.
