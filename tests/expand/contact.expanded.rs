@@ -1067,6 +1067,49 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "event_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "hq",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "hv",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "ht",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "hp",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "restitution",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1387,6 +1430,49 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         cv[(0, 0)] = 2.0 * (2.0 * v[0]);
         cv[(0, 1)] = 2.0 * (2.0 * v[1]);
         (cq, cv, cp)
+    }
+    #[inline]
+    fn event_gradient(
+        &self,
+        index: usize,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: f64,
+    ) -> ::zeitner::__private::EventGradient<2, 2> {
+        if index >= 1 {
+            return ::zeitner::__private::EventGradient {
+                q: ::zeitner::__private::Vector::repeat(f64::NAN),
+                v: ::zeitner::__private::Vector::repeat(f64::NAN),
+                t: f64::NAN,
+                theta: ::zeitner::__private::Matrix::repeat(f64::NAN),
+            };
+        }
+        let (
+            hq,
+            hv,
+            ht,
+            hp,
+        ): (
+            ::zeitner::__private::Matrix<1, 2>,
+            ::zeitner::__private::Matrix<1, 2>,
+            ::zeitner::__private::Vector<1>,
+            ::zeitner::__private::Matrix<1, 2>,
+        ) = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut hq = ::zeitner::__private::Matrix::<1, 2>::zeros();
+            let mut hv = ::zeitner::__private::Matrix::<1, 2>::zeros();
+            let mut ht = ::zeitner::__private::Vector::<1>::zeros();
+            let mut hp = ::zeitner::__private::Matrix::<1, 2>::zeros();
+            hq[(0, 1)] = 1.0;
+            (hq, hv, ht, hp)
+        };
+        ::zeitner::__private::EventGradient {
+            q: hq.row(index).transpose(),
+            v: hv.row(index).transpose(),
+            t: ht[index],
+            theta: hp.fixed_rows::<1>(index).into_owned(),
+        }
     }
 }
 #[allow(dead_code)]

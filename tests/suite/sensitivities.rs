@@ -157,6 +157,92 @@ mod runs {
         }
     }
 
+    /// The pendulum with an event where it passes under its pivot (`x = 0`), for its period.
+    pub struct TimedPendulum {
+        pub l: f64,
+        pub g: f64,
+        pub m: f64,
+    }
+
+    #[constrained_system]
+    impl TimedPendulum {
+        fn mass(&self) -> [f64; 2] {
+            [self.m, self.m]
+        }
+        fn force(&self) -> [f64; 2] {
+            [0.0, -self.m * self.g]
+        }
+        fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+            [x * x + y * y - self.l * self.l]
+        }
+        fn events(&self, [x, _y]: [f64; 2]) -> [f64; 1] {
+            [x]
+        }
+        fn parameters(&self) -> [f64; 3] {
+            [self.l, self.g, self.m]
+        }
+    }
+
+    /// Released from rest at an angle (any amplitude), the pendulum's period is `T = √(l/g)
+    /// f(angle)`, and its start's angle does not change with the parameters: so `∂T/∂l =
+    /// T/(2l)`, `∂T/∂g = -T/(2g)`, `∂T/∂m = 0`. The period is the time between the first and the
+    /// third pass under the pivot, each an event whose time's derivative
+    /// (`SensitivitySimulator::event_time`) comes from the state's.
+    #[test]
+    fn the_period_follows_its_closed_form_by_length_and_gravity() {
+        let pendulum = TimedPendulum {
+            l: 1.3,
+            g: 9.81,
+            m: 2.0,
+        };
+        let angle: f64 = 2.0;
+        let q0 = Vector::<2>::new(1.3 * angle.sin(), -1.3 * angle.cos());
+        for method in [InnerMethod::Automatic, InnerMethod::DormandPrince54] {
+            let multipliers = if method == InnerMethod::Automatic {
+                MultiplierModel::Automatic
+            } else {
+                MultiplierModel::Quadratic
+            };
+            let options = Options {
+                method,
+                multipliers,
+                step: adaptive(1e-11),
+                ..Options::default()
+            };
+            let mut sim = SensitivitySimulator::<_, 2, 1, 3>::new(
+                &pendulum,
+                q0,
+                Vector::zeros(),
+                0.0,
+                options,
+            )
+            .expect("a start");
+            assert_eq!(sim.event_time(), None);
+            let mut passes = Vec::new();
+            while passes.len() < 3 {
+                if let zeitner::StopReason::Event { .. } = sim.advance_to(10.0).unwrap() {
+                    let dt = *sim.event_time().expect("the crossing's time derivative");
+                    passes.push((sim.simulator().time(), dt));
+                }
+            }
+            let period = passes[2].0 - passes[0].0;
+            let d_period = passes[2].1 - passes[0].1;
+            let (l, g) = (pendulum.l, pendulum.g);
+            let errors = [
+                (d_period[0] - period / (2.0 * l)).abs() / (period / (2.0 * l)),
+                (d_period[1] + period / (2.0 * g)).abs() / (period / (2.0 * g)),
+                d_period[2].abs() * pendulum.m / period,
+            ];
+            eprintln!(
+                "period {period:.9} s ({method:?}): ∂T/∂l {:.1e}, ∂T/∂g {:.1e} relative, |∂T/∂m| m/T {:.1e}",
+                errors[0], errors[1], errors[2]
+            );
+            for e in errors {
+                assert!(e <= 1e-7, "{errors:?}");
+            }
+        }
+    }
+
     fn adaptive(rtol: f64) -> StepControl {
         StepControl::Adaptive {
             initial_step: 1e-3,

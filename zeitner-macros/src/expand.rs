@@ -201,7 +201,7 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
         g.method.starts_with("parameter_")
             || matches!(
                 g.method,
-                "rate_jacobians" | "acceleration_constraint_jacobians"
+                "rate_jacobians" | "acceleration_constraint_jacobians" | "event_jacobians"
             )
     };
     let parametrised = parametrised_impl(self_ty, scene, &emitter, &rt);
@@ -310,6 +310,30 @@ fn parametrised_impl(
     let constraints_body = emitter.body(function("parameter_constraints")?, rt);
     let rate_body = emitter.body(function("rate_jacobians")?, rt);
     let level_body = emitter.body(function("acceleration_constraint_jacobians")?, rt);
+    let events = function("event_jacobians").map(|generated| {
+        let body = emitter.body(generated, rt);
+        let e = Literal::usize_unsuffixed(generated.blocks[0].rows);
+        quote! {
+            #[inline]
+            fn event_gradient(&self, index: usize, q: &#vec_n, v: &#vec_n, t: f64) -> #rt::EventGradient<#n, #p> {
+                if index >= #e {
+                    return #rt::EventGradient {
+                        q: #rt::Vector::repeat(f64::NAN),
+                        v: #rt::Vector::repeat(f64::NAN),
+                        t: f64::NAN,
+                        theta: #rt::Matrix::repeat(f64::NAN),
+                    };
+                }
+                let (hq, hv, ht, hp): (#rt::Matrix<#e, #n>, #rt::Matrix<#e, #n>, #rt::Vector<#e>, #rt::Matrix<#e, #p>) = { #body };
+                #rt::EventGradient {
+                    q: hq.row(index).transpose(),
+                    v: hv.row(index).transpose(),
+                    t: ht[index],
+                    theta: hp.fixed_rows::<1>(index).into_owned(),
+                }
+            }
+        }
+    });
     Some(quote! {
         #[allow(unused_variables, unused_mut, clippy::all)]
         impl #rt::ParametrisedSystem<#n, #z, #p> for #self_ty {
@@ -334,6 +358,7 @@ fn parametrised_impl(
             fn acceleration_constraint_jacobians(&self, q: &#vec_n, v: &#vec_n, t: f64, a: &#vec_n) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>, #rt::Matrix<#z, #p>) {
                 #level_body
             }
+            #events
         }
     })
 }

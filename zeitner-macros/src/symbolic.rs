@@ -575,6 +575,45 @@ pub fn build(
                 "parameter_constraints",
                 vec![matrix("dg", z, p, residual_dp), matrix("dw", z, p, rate_dp)],
             ));
+            // The event functions' derivatives, for their times' sensitivities. They are not
+            // needed to locate an event, so one that cannot be differentiated is no error here:
+            // its derivatives are NaN, and the runtime reports no sensitivity of its time.
+            let events = entries_of(Role::Events);
+            if !events.is_empty() {
+                let e = events.len();
+                let graph = &mut *derive.graph;
+                let soft = |d: &mut Differentiator, graph: &mut Graph, id: Id| {
+                    d.derive(graph, id).unwrap_or_else(|_| graph.num(f64::NAN))
+                };
+                let (mut hq, mut hv, mut ht, mut hp) = (vec![], vec![], vec![], vec![]);
+                for (j, entry) in events.iter().enumerate() {
+                    let (id, span) = (entry.id, entry.span);
+                    let (by_q, by_v) = state_of(&mut deps, graph, id);
+                    for c in by_q {
+                        hq.push((j, c, soft(&mut d_dq[c], graph, id), span));
+                    }
+                    for c in by_v {
+                        hv.push((j, c, soft(&mut d_dv[c], graph, id), span));
+                    }
+                    if graph.depends_on(id, time) {
+                        ht.push((j, 0, soft(&mut d_dt, graph, id), span));
+                    }
+                    for (k, d) in d_dp.iter_mut().enumerate() {
+                        if graph.depends_on(id, fields[k]) {
+                            hp.push((j, k, soft(d, graph, id), span));
+                        }
+                    }
+                }
+                functions.push((
+                    "event_jacobians",
+                    vec![
+                        matrix("hq", e, n, hq),
+                        matrix("hv", e, n, hv),
+                        matrix("ht", e, 1, ht),
+                        matrix("hp", e, p, hp),
+                    ],
+                ));
+            }
         }
     }
 

@@ -81,7 +81,7 @@ pub use simulator::{Observation, SensitivitySimulator, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
 pub use system::{
-    BlockSummary, ConstrainedSystem, FunctionSummary, MassKind, Matrix, OpCounts,
+    BlockSummary, ConstrainedSystem, EventGradient, FunctionSummary, MassKind, Matrix, OpCounts,
     ParametrisedSystem, SceneSummary, Sparsity, Vector,
 };
 pub use with_storage::WithStorage;
@@ -91,8 +91,8 @@ pub use with_storage::WithStorage;
 pub mod __private {
     pub use crate::math::Real;
     pub use crate::{
-        BlockSummary, ConstrainedSystem, DiagonalMass, FullMass, FunctionSummary, MassKind, Matrix,
-        OpCounts, ParametrisedSystem, SceneSummary, Sparsity, Vector,
+        BlockSummary, ConstrainedSystem, DiagonalMass, EventGradient, FullMass, FunctionSummary,
+        MassKind, Matrix, OpCounts, ParametrisedSystem, SceneSummary, Sparsity, Vector,
     };
     pub use nalgebra;
     /// The storage `#[constrained_system]` gives a scene with many coordinates: sparse where

@@ -170,6 +170,33 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
         t: f64,
         a: &Vector<N>,
     ) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>);
+    /// Event function `index`'s derivatives by `q`, `q'`, `t` and `θ`; NaN where the model has
+    /// no such event function or the macro could not differentiate it (an event function needs
+    /// no derivative to be located, only to give its time's sensitivity).
+    fn event_gradient(
+        &self,
+        index: usize,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> EventGradient<N, P> {
+        let _ = (index, q, v, t);
+        EventGradient {
+            q: Vector::repeat(f64::NAN),
+            v: Vector::repeat(f64::NAN),
+            t: f64::NAN,
+            theta: Matrix::repeat(f64::NAN),
+        }
+    }
+}
+
+/// An event function's derivatives at a point ([`ParametrisedSystem::event_gradient`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventGradient<const N: usize, const P: usize> {
+    pub q: Vector<N>,
+    pub v: Vector<N>,
+    pub t: f64,
+    pub theta: Matrix<1, P>,
 }
 
 /// The most gaps (unilateral rows) a system may have.

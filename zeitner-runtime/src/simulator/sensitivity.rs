@@ -44,6 +44,8 @@ pub struct SensitivitySimulator<
     report: Sensitivities<N, Z, P>,
     /// `∂t/∂θ` of the last impact.
     impact_time: Option<Matrix<1, P>>,
+    /// `∂t/∂θ` of the last event.
+    event_time: Option<Matrix<1, P>>,
 }
 
 impl<'s, S, const N: usize, const Z: usize, const P: usize> SensitivitySimulator<'s, S, N, Z, P>
@@ -82,6 +84,7 @@ where
                 lambda: Matrix::zeros(),
             },
             impact_time: None,
+            event_time: None,
         };
         sensitivities.start_from(Tangent::zero())?;
         Ok(sensitivities)
@@ -127,6 +130,14 @@ where
     /// `∂t/∂θ` of the last impact ([`Simulator::last_impact`]), if any.
     pub fn impact_time(&self) -> Option<&Matrix<1, P>> {
         self.impact_time.as_ref()
+    }
+
+    /// `∂t/∂θ` of the last event ([`StopReason::Event`]): `-(∂h/∂q ∂q/∂θ + ∂h/∂q' ∂q'/∂θ +
+    /// ∂h/∂θ) / ḣ` at the point it was reported at. `None` before the first event, and after an
+    /// event whose function the macro could not differentiate or whose crossing grazes (`ḣ`
+    /// zero: its time has no bounded derivative).
+    pub fn event_time(&self) -> Option<&Matrix<1, P>> {
+        self.event_time.as_ref()
     }
 
     /// Steps to `t_end` as [`Simulator::advance_to`] does without an observer: returns at
@@ -190,7 +201,26 @@ where
             };
             self.report_at_end(self.state, reported)?;
         }
+        if let StopReason::Event { index, .. } = reason {
+            self.event_time = self.event_time_derivative(index);
+        }
         Ok(reason)
+    }
+
+    /// `∂t/∂θ` of event function `index`'s crossing at the reported point.
+    fn event_time_derivative(&self, index: usize) -> Option<Matrix<1, P>> {
+        let point = self.simulator.last.end;
+        let gradient = self
+            .simulator
+            .model
+            .system
+            .event_gradient(index, &point.q, &point.v, point.t);
+        let rate = gradient.q.dot(&point.v) + gradient.v.dot(&point.a) + gradient.t;
+        let moved = gradient.q.transpose() * self.report.q
+            + gradient.v.transpose() * self.report.v
+            + gradient.theta;
+        let dt = -moved / rate;
+        dt.iter().all(|x| x.is_finite()).then_some(dt)
     }
 
     /// Carries the sensitivities through the impact just made at the point `before`.
