@@ -1004,6 +1004,37 @@ mod paper_with_gap {
         }
     }
 
+    /// The same run on the sparse storage (`WithStorage`) follows the same sensitivities,
+    /// through the strut's strikes, to rounding.
+    #[test]
+    fn the_sensitivities_are_the_same_on_both_storages() {
+        use zeitner::{storage::Sparse, WithStorage};
+        let s = scene([8.0, 0.005, 2.0e6]);
+        let sparse = WithStorage::<_, Sparse>::new(&s);
+        let zero = Vector::zeros();
+        let options = Options::default();
+        let mut on_dense =
+            SensitivitySimulator::<_, 3, 3, 3>::new(&s, zero, zero, 0.0, options).unwrap();
+        let mut on_sparse =
+            SensitivitySimulator::<_, 3, 3, 3>::new(&sparse, zero, zero, 0.0, options).unwrap();
+        let (mut impacts, mut worst) = (0, 0.0_f64);
+        for step in 0.. {
+            let (a, b) = (on_dense.step().unwrap(), on_sparse.step().unwrap());
+            assert_eq!(a, b, "step {step}");
+            impacts += usize::from(a == StopReason::Impact);
+            let (x, y) = (on_dense.sensitivities(), on_sparse.sensitivities());
+            assert_eq!(x.t, y.t);
+            for (u, w) in [(x.q, y.q), (x.v, y.v)] {
+                worst = worst.max((u - w).amax() / u.amax().max(1e-300));
+            }
+            if x.t >= 0.4 {
+                break;
+            }
+        }
+        eprintln!("dense against sparse storage: {impacts} impacts, worst relative difference {worst:.1e}");
+        assert!(impacts >= 4 && worst <= 1e-10, "{impacts} impacts, {worst:e}");
+    }
+
     /// The strut's clearance: free flight, strikes, bounces and the strut holding, against
     /// central differences of runs with fixed steps taking the same impacts.
     #[test]

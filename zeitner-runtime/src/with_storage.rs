@@ -3,7 +3,9 @@
 use core::marker::PhantomData;
 
 use crate::storage::Storage;
-use crate::system::{ConstrainedSystem, Matrix, SceneSummary, Sparsity, Vector};
+use crate::system::{
+    ConstrainedSystem, EventGradient, Matrix, ParametrisedSystem, SceneSummary, Sparsity, Vector,
+};
 
 /// `scene` with storage `D` instead of the one `#[constrained_system]` chose for it: the same
 /// model, evaluated through the same functions. For example, to compare the storages, or to run
@@ -110,5 +112,56 @@ where
     }
     fn time_event_after(&self, t: f64) -> Option<f64> {
         self.scene.time_event_after(t)
+    }
+}
+
+impl<S, D, const N: usize, const Z: usize, const P: usize> ParametrisedSystem<N, Z, P>
+    for WithStorage<'_, S, D>
+where
+    S: ParametrisedSystem<N, Z, P>,
+    D: Storage<N>,
+{
+    const PARAMETER_NAMES: [&'static str; P] = S::PARAMETER_NAMES;
+    fn parameter_values(&self) -> Vector<P> {
+        self.scene.parameter_values()
+    }
+    fn parameter_force(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        lambda: &Vector<Z>,
+        a: &Vector<N>,
+    ) -> Matrix<N, P> {
+        self.scene.parameter_force(q, v, t, lambda, a)
+    }
+    fn parameter_constraints(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> (Matrix<Z, P>, Matrix<Z, P>) {
+        self.scene.parameter_constraints(q, v, t)
+    }
+    fn rate_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> (Matrix<Z, N>, Matrix<Z, N>) {
+        self.scene.rate_jacobians(q, v, t)
+    }
+    fn acceleration_constraint_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+        a: &Vector<N>,
+    ) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>) {
+        self.scene.acceleration_constraint_jacobians(q, v, t, a)
+    }
+    fn event_gradient(
+        &self,
+        index: usize,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: f64,
+    ) -> EventGradient<N, P> {
+        self.scene.event_gradient(index, q, v, t)
     }
 }
