@@ -251,10 +251,7 @@ fn optimise_from_the_paper_design(
         if end[2] <= paper[2] { "≤" } else { ">" },
         paper[2]
     );
-    Ok(tried
-        .iter()
-        .map(|x| (x[0], x[1] * 1e3))
-        .collect())
+    Ok(tried.iter().map(|x| (x[0], x[1] * 1e3)).collect())
 }
 
 /// Prints the grid's optimum and draws the maps. The design question: the smallest peak force

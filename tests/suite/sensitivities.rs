@@ -850,7 +850,10 @@ mod impacts {
     /// = 0`, `∂y/∂f = 1` and `∂y'/∂f = 0` at every time, through the impact.
     #[test]
     fn the_impact_time_follows_the_drop_height_and_a_start_moved_with_the_floor() {
-        let ball = BallOverFloor { g: 9.81, floor: 0.5 };
+        let ball = BallOverFloor {
+            g: 9.81,
+            floor: 0.5,
+        };
         let (y0, t_end) = (2.5, 1.2);
         let t1 = (2.0 * (y0 - ball.floor) / ball.g).sqrt();
         let (dt1, _) = drop_ball(&ball, y0, None, t_end);
@@ -874,7 +877,10 @@ mod impacts {
 
     #[test]
     fn the_start_derivatives_are_refused_after_the_first_step() {
-        let ball = BallOverFloor { g: 9.81, floor: 0.0 };
+        let ball = BallOverFloor {
+            g: 9.81,
+            floor: 0.0,
+        };
         let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
             &ball,
             Vector::from([1.0]),
@@ -1032,7 +1038,10 @@ mod paper_with_gap {
             }
         }
         eprintln!("dense against sparse storage: {impacts} impacts, worst relative difference {worst:.1e}");
-        assert!(impacts >= 4 && worst <= 1e-10, "{impacts} impacts, {worst:e}");
+        assert!(
+            impacts >= 4 && worst <= 1e-10,
+            "{impacts} impacts, {worst:e}"
+        );
     }
 
     /// The strut's clearance: free flight, strikes, bounces and the strut holding, against

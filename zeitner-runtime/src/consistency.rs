@@ -234,6 +234,34 @@ pub(crate) fn consistent_point_and_gram<
     point_with(model, (t, q, v), directions)
 }
 
+/// [`consistent_point`], with the constraints' directions at the point (`G`, `M⁻¹Gᵀ` and the
+/// mass's factor) and `G M⁻¹ Gᵀ`.
+#[allow(clippy::type_complexity)]
+pub(crate) fn consistent_point_and_directions<
+    S: ConstrainedSystem<N, Z>,
+    const N: usize,
+    const Z: usize,
+>(
+    model: &mut Model<'_, S, N, Z>,
+    t: f64,
+    q: Vector<N>,
+    v: Vector<N>,
+) -> Result<
+    (
+        Point<N, Z>,
+        ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
+        Matrix<Z, Z>,
+    ),
+    StepError,
+> {
+    if !all_finite(q.iter().chain(v.iter())) {
+        return Err(StepError::non_finite_state(t));
+    }
+    let directions = model.directions(&q, &v, t)?;
+    let (point, gram) = point_with(model, (t, q, v), directions.clone())?;
+    Ok((point, directions, gram.gram))
+}
+
 /// The consistent point at a finite state whose directions are known.
 #[inline]
 fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(

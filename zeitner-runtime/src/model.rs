@@ -63,6 +63,7 @@ pub(crate) struct AccelerationJacobians<'m, Q, const N: usize, const Z: usize> {
 
 /// The directions in which the multipliers act at a point: `G`, `M⁻¹Gᵀ`, and the factor of `M`.
 /// Everything that projects, solves for multipliers or estimates their effect starts here.
+#[derive(Clone)]
 pub(crate) struct ConstraintDirections<F, const N: usize, const Z: usize> {
     pub factor: F,
     pub jacobian: Matrix<Z, N>,

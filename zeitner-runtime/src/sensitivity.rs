@@ -14,12 +14,14 @@
 //! projection leaves out the terms proportional to the residual it removed (at most the
 //! tolerance).
 
-use crate::consistency::consistent_point_and_gram;
+use crate::consistency::consistent_point_and_directions;
+use crate::error::ModelFunction;
 use crate::error::StepError;
+use crate::linalg::{all_finite, finite};
 use crate::linalg::{keep_leading_rows, solve_blocks, solve_spd};
 use crate::mass::MassFactor;
 use crate::method::explicit::Tableau;
-use crate::model::{Acceleration, FactorOf, Model};
+use crate::model::{Acceleration, ConstraintDirections, FactorOf, Model};
 use crate::polynomial::Multipliers;
 use crate::storage::Square;
 use crate::system::{ConstrainedSystem, Matrix, ParametrisedSystem, Vector};
@@ -101,51 +103,72 @@ where
         .parameter_force(q, v, t, &model.mask(*lambda), a)
 }
 
-/// `δa` with the multipliers held: `∂a/∂q δq + ∂a/∂q' δq' + M⁻¹ ∂(F - Gᵀλ - M a)/∂θ`, and
-/// `∂a/∂λ = -M⁻¹Gᵀ`.
+/// `δa` with the multipliers `lambda` held, for the tangent `x`: `M⁻¹(∂(F - Gᵀλ - M a)/∂(q,
+/// q') x + ∂(F - Gᵀλ - M a)/∂θ)` at the acceleration `a`, formed on the tangent's `P` columns
+/// (no N×N solve with the mass). A non-finite result names the model function that made it.
 fn held_acceleration<S, const N: usize, const Z: usize, const P: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): Point<'_, N>,
-    lambda: &Vector<Z>,
-    at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
+    (lambda, a, factor): (&Vector<Z>, &Vector<N>, &FactorOf<S, N, Z>),
     x: &Tangent<N, P>,
-) -> Result<(Matrix<N, P>, Matrix<N, Z>), StepError>
+) -> Result<Matrix<N, P>, StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let jac = model.acceleration_jacobians(q, v, t, lambda, at)?;
-    let mut da = jac.dq.times(&x.q);
-    if S::DYNAMICS_DEPEND_ON_VELOCITY {
-        da += jac.dv.times(&x.v);
+    let system = model.system;
+    let masked = model.mask(*lambda);
+    let evaluations = &mut model.evaluations;
+    evaluations.force_jacobians += 1;
+    evaluations.constraint_force_jacobians += 1;
+    evaluations.mass_jacobian_products += u64::from(!S::MASS_IS_CONSTANT);
+    let (fq, fv) = ConstrainedSystem::force_jacobians(system, q, v, t);
+    let (rq, rv) = ConstrainedSystem::constraint_force_jacobians(system, q, v, t, &masked);
+    let mass_term =
+        (!S::MASS_IS_CONSTANT).then(|| ConstrainedSystem::mass_jacobian_product(system, q, t, a));
+    let mut moved = (fq - rq) * x.q + system.parameter_force(q, v, t, &masked, a);
+    if let Some(mass_term) = mass_term {
+        moved -= mass_term * x.q;
     }
-    let dp = jac.dp;
-    da += at
-        .factor
-        .solve(&force_by_parameters(model, (q, v, t), lambda, &at.a));
-    Ok((da, dp))
+    if S::DYNAMICS_DEPEND_ON_VELOCITY {
+        moved += (fv - rv) * x.v;
+    }
+    let da = factor.solve(&moved);
+    if all_finite(&da) {
+        return Ok(da);
+    }
+    finite(rq, t, ModelFunction::ConstraintForceJacobians)?;
+    finite(rv, t, ModelFunction::ConstraintForceJacobians)?;
+    finite(fq, t, ModelFunction::ForceJacobians)?;
+    finite(fv, t, ModelFunction::ForceJacobians)?;
+    if let Some(mass_term) = mass_term {
+        finite(mass_term, t, ModelFunction::MassJacobianProduct)?;
+    }
+    Err(StepError::non_finite_state(t))
 }
 
-/// At a point whose multipliers solve the acceleration-level system `G a + b = 0` (`at` its
-/// acceleration with them, `gram` its `G M⁻¹Gᵀ`): `δa` and `δλ` for the state's tangent `x`.
+/// At a point whose multipliers `lambda` solve the acceleration-level system `G a + b = 0`
+/// (`a` the acceleration with them; the point's directions and `G M⁻¹Gᵀ`): `δa` and `δλ` for
+/// the state's tangent `x`.
 fn index1<S, const N: usize, const Z: usize, const P: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): Point<'_, N>,
-    (lambda, at, gram): (
-        &Vector<Z>,
-        &Acceleration<FactorOf<S, N, Z>, N, Z>,
-        &Matrix<Z, Z>,
-    ),
+    (lambda, a): (&Vector<Z>, &Vector<N>),
+    (directions, gram): (&DirectionsOf<S, N, Z>, &Matrix<Z, Z>),
     x: &Tangent<N, P>,
 ) -> Result<(Matrix<N, P>, Matrix<Z, P>), StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let (base, dp) = held_acceleration(model, (q, v, t), lambda, at, x)?;
-    let (cq, cv, cp) = level_jacobians(model, (q, v, t), &at.a);
-    let rhs = at.jacobian * base + cq * x.q + cv * x.v + cp;
+    let held = (lambda, a, &directions.factor);
+    let base = held_acceleration(model, (q, v, t), held, x)?;
+    let (cq, cv, cp) = level_jacobians(model, (q, v, t), a);
+    let rhs = directions.jacobian * base + cq * x.q + cv * x.v + cp;
     let dl = solve_spd(gram, &rhs, S::POSITION_CONSTRAINTS).map_err(rank_deficient(t))?;
-    Ok((base + dp * dl, dl))
+    Ok((base - directions.m_inv_gt * dl, dl))
 }
+
+type DirectionsOf<S, const N: usize, const Z: usize> =
+    ConstraintDirections<FactorOf<S, N, Z>, N, Z>;
 
 /// `δλ` of the consistent multipliers at a consistent point `(q, q', t)` with multipliers
 /// `lambda`, for its tangent `x`.
@@ -158,10 +181,11 @@ pub(crate) fn consistent_multipliers<S, const N: usize, const Z: usize, const P:
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let at = model.acceleration(point.0, point.1, point.2, lambda)?;
+    let a = model.acceleration(point.0, point.1, point.2, lambda)?.a;
+    let directions = model.directions(point.0, point.1, point.2)?;
     // With the rows of open gaps regularised, as every solve with it.
-    let gram = model.directions(point.0, point.1, point.2)?.gram();
-    Ok(index1(model, point, (lambda, &at, &gram), x)?.1)
+    let gram = directions.gram();
+    Ok(index1(model, point, (lambda, &a), (&directions, &gram), x)?.1)
 }
 
 /// The tangent of positions projected M-orthogonally onto the position rows' `g = 0`.
@@ -227,8 +251,8 @@ where
         turn -= ConstrainedSystem::mass_jacobian_product(system, q, t, &y) * xq;
     }
     let zero_n = Vector::<N>::zeros();
-    let (cq, cv, _) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &y);
-    let (bq, bv, _) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &zero_n);
+    let (cq, cv, cp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &y);
+    let (bq, bv, bp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &zero_n);
     // δG y at fixed y: the acceleration-level linearisation along `y`, less that along 0.
     let mut dg_y = (cq - bq) * xq + (cv - bv) * xv;
     let (wq, wv) = rate_jacobians::<S, N, Z, P>(model, (q, v, t));
@@ -239,8 +263,6 @@ where
         let by_theta = force_by_parameters(model, (q, v, t), &zero_z, &y)
             - force_by_parameters(model, (q, v, t), &mu, &zero_n);
         add_columns(&mut turn, &by_theta);
-        let (_, _, cp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &y);
-        let (_, _, bp) = level_jacobians::<S, N, Z, P>(model, (q, v, t), &zero_n);
         add_columns(&mut dg_y, &(cp - bp));
         let (_, dw_theta) = constraints_by_parameters(model, (q, v, t));
         add_columns(&mut dw, &dw_theta);
@@ -265,6 +287,14 @@ fn add_columns<const R: usize, const C: usize, const P: usize>(
     }
 }
 
+/// `m += w x` in one pass, without the temporary `w x` (the tangents have `P` columns).
+#[inline(always)]
+fn add_scaled<const N: usize, const C: usize>(m: &mut Matrix<N, C>, w: f64, x: &Matrix<N, C>) {
+    for (m, x) in m.iter_mut().zip(x.iter()) {
+        *m += w * x;
+    }
+}
+
 /// Stage states of an explicit tableau from the start and the earlier slopes.
 fn stage<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
@@ -275,8 +305,8 @@ fn stage<const N: usize, const ST: usize, const C: usize>(
 ) -> (Matrix<N, C>, Matrix<N, C>) {
     let (mut q, mut v) = (*start.0, *start.1);
     for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
-        q += (h * tableau.a[i][j]) * slopes.0[j];
-        v += (h * tableau.a[i][j]) * slopes.1[j];
+        add_scaled(&mut q, h * tableau.a[i][j], &slopes.0[j]);
+        add_scaled(&mut v, h * tableau.a[i][j], &slopes.1[j]);
     }
     (q, v)
 }
@@ -289,8 +319,8 @@ fn combine<const N: usize, const ST: usize, const C: usize>(
 ) -> (Matrix<N, C>, Matrix<N, C>) {
     let (mut q, mut v) = (*start.0, *start.1);
     for i in (0..ST).filter(|&i| tableau.b[i] != 0.0) {
-        q += (h * tableau.b[i]) * slopes.0[i];
-        v += (h * tableau.b[i]) * slopes.1[i];
+        add_scaled(&mut q, h * tableau.b[i], &slopes.0[i]);
+        add_scaled(&mut v, h * tableau.b[i], &slopes.1[i]);
     }
     (q, v)
 }
@@ -318,15 +348,11 @@ where
             let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
             let ti = t + tableau.c[i] * hs;
             // The stage's consistent point as the step made it, and its acceleration from it.
-            let (point, gram) = consistent_point_and_gram(model, ti, qi, vi)?;
-            let at = Acceleration {
-                a: point.a,
-                factor: model.mass_factor(&qi, ti)?,
-                jacobian: gram.jacobian,
-            };
+            let (point, directions, gram) = consistent_point_and_directions(model, ti, qi, vi)?;
             let xi = Tangent { q: xq, v: xv };
             let stage_point = (&qi, &vi, ti);
-            let (da, _) = index1(model, stage_point, (&point.lambda, &at, &gram.gram), &xi)?;
+            let at_stage = (&point.lambda, &point.a);
+            let (da, _) = index1(model, stage_point, at_stage, (&directions, &gram), &xi)?;
             (slopes.0[i], slopes.1[i]) = (vi, point.a);
             (tangents.0[i], tangents.1[i]) = (xv, da);
         }
