@@ -10,11 +10,17 @@
 
 #[cfg(feature = "implicit")]
 pub(crate) mod alpha;
+// Without `dense-output` the continuous extensions are built but never sampled.
+#[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
 pub(crate) mod continuous;
 #[cfg(feature = "implicit")]
 pub(crate) mod dirk;
+// Without `dense-output` the continuous extensions are built but never sampled.
+#[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
 pub(crate) mod dop853;
 pub(crate) mod explicit;
+// Without `dense-output` the continuous extensions are built but never sampled.
+#[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
 pub(crate) mod verner;
 
 use crate::error::StepError;
@@ -107,6 +113,7 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
     /// The state `(q, q')` at `t` within the step between the points `ends`, by the method's
     /// continuous extension of its own order (DOP853's, order 7); `None` where it has none or
     /// its last integration was not that step.
+    #[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
     fn dense_state<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
