@@ -13,7 +13,9 @@ qemu=(qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic
   -semihosting-config enable=on,target=native)
 
 cargo build --release --quiet
-on_target=$("${qemu[@]}" -kernel "$elf")
+"${qemu[@]}" -kernel "$elf" > target/on-target.log
+grep "^t " target/on-target.log
+on_target=$(tail -n 1 target/on-target.log)
 on_host=$("$host_reference" 2000)
 echo "target: $on_target"
 echo "host:   $on_host"
