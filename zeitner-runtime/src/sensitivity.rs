@@ -20,7 +20,7 @@ use crate::error::StepError;
 use crate::linalg::{all_finite, finite};
 use crate::linalg::{keep_leading_rows, solve_blocks, solve_spd};
 use crate::mass::MassFactor;
-use crate::method::explicit::Tableau;
+use crate::method::explicit::{stage_state, Tableau};
 use crate::model::{Acceleration, ConstraintDirections, FactorOf, Model};
 use crate::polynomial::Multipliers;
 use crate::storage::Square;
@@ -287,14 +287,6 @@ fn add_columns<const R: usize, const C: usize, const P: usize>(
     }
 }
 
-/// `m += w x` in one pass, without the temporary `w x` (the tangents have `P` columns).
-#[inline(always)]
-fn add_scaled<const N: usize, const C: usize>(m: &mut Matrix<N, C>, w: f64, x: &Matrix<N, C>) {
-    for (m, x) in m.iter_mut().zip(x.iter()) {
-        *m += w * x;
-    }
-}
-
 /// Stage states of an explicit tableau from the start and the earlier slopes.
 fn stage<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
@@ -305,8 +297,8 @@ fn stage<const N: usize, const ST: usize, const C: usize>(
 ) -> (Matrix<N, C>, Matrix<N, C>) {
     let (mut q, mut v) = (*start.0, *start.1);
     for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
-        add_scaled(&mut q, h * tableau.a[i][j], &slopes.0[j]);
-        add_scaled(&mut v, h * tableau.a[i][j], &slopes.1[j]);
+        q += (h * tableau.a[i][j]) * slopes.0[j];
+        v += (h * tableau.a[i][j]) * slopes.1[j];
     }
     (q, v)
 }
@@ -319,24 +311,36 @@ fn combine<const N: usize, const ST: usize, const C: usize>(
 ) -> (Matrix<N, C>, Matrix<N, C>) {
     let (mut q, mut v) = (*start.0, *start.1);
     for i in (0..ST).filter(|&i| tableau.b[i] != 0.0) {
-        add_scaled(&mut q, h * tableau.b[i], &slopes.0[i]);
-        add_scaled(&mut v, h * tableau.b[i], &slopes.1[i]);
+        q += (h * tableau.b[i]) * slopes.0[i];
+        v += (h * tableau.b[i]) * slopes.1[i];
     }
     (q, v)
 }
 
+/// What the simulator's own step with the multipliers at every stage left: its stages' slopes
+/// `(q', q'')` and multipliers (NaN where a stage solved none), so that its stages are not
+/// solved a second time.
+#[derive(Clone, Copy)]
+pub(crate) struct Recorded<'a, const N: usize, const Z: usize, const ST: usize> {
+    pub slopes: &'a ([Vector<N>; ST], [Vector<N>; ST]),
+    pub multipliers: &'a [Vector<Z>; ST],
+}
+
 /// Through `substeps` steps of `tableau` (size `h` in all) with the multipliers solved at
-/// every stage, before the end's corrections: the end state and its tangent.
+/// every stage, before the end's corrections: the end state and its tangent. With the step's
+/// `recorded` stages (one substep), each stage's point is the step's own and only its
+/// directions are formed again.
 pub(crate) fn every_stage<S, const N: usize, const Z: usize, const P: usize, const ST: usize>(
     model: &mut Model<'_, S, N, Z>,
     (tableau, substeps): (&Tableau<ST>, u32),
     (q0, v0, t0): Point<'_, N>,
     h: f64,
-    x0: &Tangent<N, P>,
+    (x0, recorded): (&Tangent<N, P>, Option<Recorded<'_, N, Z, ST>>),
 ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
+    let recorded = recorded.filter(|_| substeps == 1);
     let hs = h / f64::from(substeps);
     let (mut q, mut v, mut x) = (*q0, *v0, *x0);
     for k in 0..substeps {
@@ -344,16 +348,31 @@ where
         let mut slopes = ([Vector::<N>::zeros(); ST], [Vector::<N>::zeros(); ST]);
         let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
         for i in 0..ST {
-            let (qi, vi) = stage(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
-            let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
             let ti = t + tableau.c[i] * hs;
-            // The stage's consistent point as the step made it, and its acceleration from it.
-            let (point, directions, gram) = consistent_point_and_directions(model, ti, qi, vi)?;
+            let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
             let xi = Tangent { q: xq, v: xv };
-            let stage_point = (&qi, &vi, ti);
-            let at_stage = (&point.lambda, &point.a);
-            let (da, _) = index1(model, stage_point, at_stage, (&directions, &gram), &xi)?;
-            (slopes.0[i], slopes.1[i]) = (vi, point.a);
+            // The stage's consistent point as the step made it: kept, or formed again.
+            let kept = recorded.and_then(|r| {
+                let lambda = r.multipliers[i];
+                let (qi, vi) = stage_state(tableau, i, hs, (&q, &v), (&r.slopes.0, &r.slopes.1));
+                all_finite(&lambda).then_some((qi, vi, r.slopes.1[i], lambda))
+            });
+            let (qi, vi, a, lambda, directions, gram) = match kept {
+                Some((qi, vi, a, lambda)) => {
+                    let directions = model.directions(&qi, &vi, ti)?;
+                    let gram = directions.gram();
+                    (qi, vi, a, lambda, directions, gram)
+                }
+                None => {
+                    let (qi, vi) = stage(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
+                    let (point, directions, gram) =
+                        consistent_point_and_directions(model, ti, qi, vi)?;
+                    (qi, vi, point.a, point.lambda, directions, gram)
+                }
+            };
+            let at_stage = (&lambda, &a);
+            let (da, _) = index1(model, (&qi, &vi, ti), at_stage, (&directions, &gram), &xi)?;
+            (slopes.0[i], slopes.1[i]) = (vi, a);
             (tangents.0[i], tangents.1[i]) = (xv, da);
         }
         (q, v) = combine(tableau, hs, (&q, &v), (&slopes.0, &slopes.1));

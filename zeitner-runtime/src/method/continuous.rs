@@ -54,6 +54,18 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
         self.polynomial = None;
     }
 
+    /// The stage slopes `(q', q'')` held, if they are those of the step from `(t, q, q')` of
+    /// size `h` (to the rounding of the times).
+    pub fn slopes_of(
+        &self,
+        (t, q, v): (f64, &Vector<N>, &Vector<N>),
+        h: f64,
+    ) -> Option<&([Vector<N>; ST], [Vector<N>; ST])> {
+        let (t0, q0, v0, h0) = self.step.as_ref()?;
+        let same_size = (h0 - h).abs() <= 4.0 * f64::EPSILON * (t + h).abs().max(h.abs());
+        (*t0 == t && q0 == q && v0 == v && same_size).then_some(&self.slopes)
+    }
+
     /// Forgets the step (a failed integration overwrote some of its slopes).
     pub fn forget(&mut self) {
         self.step = None;

@@ -161,6 +161,10 @@ pub(crate) struct Explicit<const ST: usize, const N: usize, const Z: usize, D: S
     /// user chose is kept, and spared the estimate).
     estimates_stiffness: bool,
     sensitivities: D::Rows<SlopeSensitivity<N, Z>, ST>,
+    /// The multipliers solved at each stage of the last (sub)step taken with them at every
+    /// stage (NaN where it was not solved: a first stage whose acceleration was known), for the
+    /// forward sensitivities, which take the same stages again.
+    stage_multipliers: [Vector<Z>; ST],
 }
 
 impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST, N, Z, D> {
@@ -171,7 +175,14 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
             substeps: substeps.max(1),
             estimates_stiffness: estimates_stiffness && tableau.stiffness.is_some(),
             sensitivities: D::rows(SlopeSensitivity { dq: zero, dv: zero }),
+            stage_multipliers: [Vector::repeat(f64::NAN); ST],
         }
+    }
+
+    /// Each stage's multipliers of the last (sub)step taken with the multipliers at every
+    /// stage, NaN where none was solved.
+    pub fn stage_multipliers(&self) -> &[Vector<Z>; ST] {
+        &self.stage_multipliers
     }
 }
 
@@ -273,11 +284,21 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
         let hs = h / f64::from(self.substeps);
         let stiffness = self.estimates_stiffness;
         let tableau = self.tableau;
-        let mut end = index1_stages(model, tableau, (t, q, v), hs, (first, stiffness), slopes);
+        let lambdas = &mut self.stage_multipliers;
+        let mut end = index1_stages(
+            model,
+            tableau,
+            (t, q, v),
+            hs,
+            (first, stiffness),
+            (slopes, &mut *lambdas),
+        );
         for k in 1..self.substeps {
             let at = end?;
             let t = t + f64::from(k) * hs;
-            end = index1_stages(model, tableau, (t, &at.q, &at.v), hs, (None, false), slopes);
+            let start = (t, &at.q, &at.v);
+            let into = (&mut *slopes, &mut *lambdas);
+            end = index1_stages(model, tableau, start, hs, (None, false), into);
         }
         end
     }
@@ -356,7 +377,7 @@ where
 
 /// The state `(q, q')` of stage `i` from the start and the earlier stages' slopes `(q', q'')`.
 #[inline(always)]
-fn stage_state<const N: usize, const ST: usize>(
+pub(crate) fn stage_state<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     i: usize,
     h: f64,
@@ -411,7 +432,10 @@ fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
     (t0, q0, v0): (f64, &Vector<N>, &Vector<N>),
     h: f64,
     (first, stiffness): (Option<&Vector<N>>, bool),
-    (kq, kv): &mut ([Vector<N>; ST], [Vector<N>; ST]),
+    ((kq, kv), lambdas): (
+        &mut ([Vector<N>; ST], [Vector<N>; ST]),
+        &mut [Vector<Z>; ST],
+    ),
 ) -> Result<StepEnd<N, Z, 0>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -419,9 +443,12 @@ where
     for i in 0..ST {
         let (q, v) = stage_state(tableau, i, h, (q0, v0), (&*kq, &*kv));
         kq[i] = v;
-        kv[i] = match first.filter(|_| i == 0) {
-            Some(a) => *a,
-            None => consistent_point(model, t0 + tableau.c[i] * h, q, v)?.a,
+        (kv[i], lambdas[i]) = match first.filter(|_| i == 0) {
+            Some(a) => (*a, Vector::repeat(f64::NAN)),
+            None => {
+                let point = consistent_point(model, t0 + tableau.c[i] * h, q, v)?;
+                (point.a, point.lambda)
+            }
         };
     }
     let mut end = solution(tableau, h, (q0, v0), ([], []), (&*kq, &*kv));

@@ -11,7 +11,7 @@ use crate::multipliers::carried_share;
 use crate::options::{InnerMethod, MultiplierModel, Options, VelocityProjection};
 use crate::output::{Sensitivities, StopReason};
 use crate::polynomial::{Multipliers, StepPolynomial};
-use crate::sensitivity::{self as tangent, HeldStep, Tangent};
+use crate::sensitivity::{self as tangent, HeldStep, Recorded, Tangent};
 use crate::storage::Storage;
 use crate::system::{Matrix, ParametrisedSystem, Vector};
 
@@ -333,7 +333,8 @@ where
         // Each branch: the step's end as integrated, before any projection, and its tangent.
         let ((q_raw, v_raw), mut state) = match multipliers {
             MultiplierModel::EveryStage => {
-                let (raw, x) = stages.every_stage(&mut sim.model, start, h, &self.state)?;
+                let taken = (&mut sim.model, &sim.method);
+                let (raw, x) = stages.every_stage(taken, start, h, &self.state)?;
                 (raw, x)
             }
             #[cfg(feature = "quadratic-multipliers")]
@@ -444,21 +445,39 @@ impl Stages {
         })
     }
 
-    fn every_stage<S, const N: usize, const Z: usize, const P: usize>(
+    /// The tangent through the step just taken from `start`, reading the stages it kept in
+    /// `method` where they are that step's.
+    fn every_stage<S, D, const N: usize, const Z: usize, const P: usize>(
         self,
-        model: &mut Model<'_, S, N, Z>,
+        (model, method): (&mut Model<'_, S, N, Z>, &AnyMethod<N, Z, D>),
         start: Point<'_, N>,
         h: f64,
         x: &Tangent<N, P>,
     ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
     where
         S: ParametrisedSystem<N, Z, P>,
+        D: Storage<N>,
     {
-        match self {
-            Stages::Four(t, k) => tangent::every_stage(model, (t, k), start, h, x),
-            Stages::Seven(t, k) => tangent::every_stage(model, (t, k), start, h, x),
-            Stages::Twelve(t, k) => tangent::every_stage(model, (t, k), start, h, x),
-            Stages::Sixteen(t, k) => tangent::every_stage(model, (t, k), start, h, x),
+        let at = (start.2, start.0, start.1);
+        match (self, method) {
+            (Stages::Twelve(t, k), AnyMethod::Explicit12(m, kept)) => {
+                let recorded = kept.slopes_of(at, h).map(|slopes| Recorded {
+                    slopes,
+                    multipliers: m.stage_multipliers(),
+                });
+                tangent::every_stage(model, (t, k), start, h, (x, recorded))
+            }
+            (Stages::Sixteen(t, k), AnyMethod::Explicit16(m, kept)) => {
+                let recorded = kept.slopes_of(at, h).map(|slopes| Recorded {
+                    slopes,
+                    multipliers: m.stage_multipliers(),
+                });
+                tangent::every_stage(model, (t, k), start, h, (x, recorded))
+            }
+            (Stages::Four(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
+            (Stages::Seven(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
+            (Stages::Twelve(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
+            (Stages::Sixteen(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
         }
     }
 
