@@ -875,6 +875,71 @@ mod impacts {
         }
     }
 
+    /// A ball falling past a mark at a height that is a parameter, read only by the event.
+    pub struct MarkedBall {
+        pub g: f64,
+        pub mark: f64,
+    }
+
+    #[zeitner::constrained_system]
+    impl MarkedBall {
+        fn mass(&self) -> [f64; 1] {
+            [1.0]
+        }
+        fn force(&self) -> [f64; 1] {
+            [-self.g]
+        }
+        fn gaps(&self, [y]: [f64; 1]) -> [f64; 1] {
+            [y]
+        }
+        fn restitution(&self) -> [f64; 1] {
+            [0.5]
+        }
+        fn events(&self, [y]: [f64; 1]) -> [f64; 1] {
+            [y - self.mark]
+        }
+        fn parameters(&self) -> [f64; 2] {
+            [self.g, self.mark]
+        }
+    }
+
+    /// Dropped from rest at `y0`, the ball passes the mark `m` at `t = √(2(y0 - m)/g)`:
+    /// `∂t/∂m = -1/(g t)` (the event function's own `θ` term), `∂t/∂g = -t/(2g)` (through the
+    /// state's).
+    #[test]
+    fn an_event_s_time_follows_a_parameter_its_function_reads() {
+        let ball = MarkedBall { g: 9.81, mark: 0.7 };
+        let y0 = 2.0;
+        let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
+            &ball,
+            Vector::from([y0]),
+            Vector::zeros(),
+            0.0,
+            Options::default(),
+        )
+        .unwrap();
+        let reason = sim.advance_to(1.0).unwrap();
+        assert!(
+            matches!(reason, StopReason::Event { index: 0, .. }),
+            "{reason:?}"
+        );
+        let t = (2.0 * (y0 - ball.mark) / ball.g).sqrt();
+        let dt = sim.event_time().expect("the event time's derivative");
+        let errors = [
+            (dt[(0, 1)] + 1.0 / (ball.g * t)).abs() * ball.g * t,
+            (dt[(0, 0)] + t / (2.0 * ball.g)).abs() * 2.0 * ball.g / t,
+        ];
+        eprintln!(
+            "mark passed at {:.12} s (closed form {t:.12}): ∂t/∂mark {:.1e}, ∂t/∂g {:.1e} relative",
+            sim.simulator().time(),
+            errors[0],
+            errors[1]
+        );
+        for e in errors {
+            assert!(e <= 1e-8, "{errors:?}");
+        }
+    }
+
     #[test]
     fn the_start_derivatives_are_refused_after_the_first_step() {
         let ball = BallOverFloor {

@@ -438,10 +438,13 @@ pub fn build(
     let mut parameter_names = Vec::new();
     if !parameters.is_empty() {
         let fields = parameter_fields(&parameters, derive.graph, vars, derive.errors);
+        // An event function's time has a sensitivity too: a parameter it reads is used.
+        let events = entries_of(Role::Events);
         let used = |deps: &mut Dependencies, graph: &Graph, var: u32| {
             mass.iter()
                 .chain(&force)
                 .chain(&constraints)
+                .chain(&events)
                 .any(|e| deps.any(graph, e.id, |v| v == var))
         };
         for (p, &var) in fields.iter().enumerate() {
@@ -449,7 +452,7 @@ pub fn build(
                 derive.errors.error_at(
                     parameters[p].span,
                     "this parameter appears in no model function (`mass`, `force`, `constraints`, \
-                     `velocity_constraints`, `gaps`): nothing depends on it. A field read only inside an \
+                     `velocity_constraints`, `gaps`, `events`): nothing depends on it. A field read only inside an \
                      opaque method (one outside the #[constrained_system] impl) is not seen: move the \
                      method into the impl, where it is inlined and differentiated",
                 );
@@ -578,7 +581,6 @@ pub fn build(
             // The event functions' derivatives, for their times' sensitivities. They are not
             // needed to locate an event, so one that cannot be differentiated is no error here:
             // its derivatives are NaN, and the runtime reports no sensitivity of its time.
-            let events = entries_of(Role::Events);
             if !events.is_empty() {
                 let e = events.len();
                 let graph = &mut *derive.graph;
