@@ -1440,12 +1440,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         t: f64,
     ) -> ::zeitner::__private::EventGradient<2, 2> {
         if index >= 1 {
-            return ::zeitner::__private::EventGradient {
-                q: ::zeitner::__private::Vector::repeat(f64::NAN),
-                v: ::zeitner::__private::Vector::repeat(f64::NAN),
-                t: f64::NAN,
-                theta: ::zeitner::__private::Matrix::repeat(f64::NAN),
-            };
+            return ::zeitner::__private::EventGradient::unknown();
         }
         let (
             hq,

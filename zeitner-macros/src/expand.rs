@@ -317,12 +317,7 @@ fn parametrised_impl(
             #[inline]
             fn event_gradient(&self, index: usize, q: &#vec_n, v: &#vec_n, t: f64) -> #rt::EventGradient<#n, #p> {
                 if index >= #e {
-                    return #rt::EventGradient {
-                        q: #rt::Vector::repeat(f64::NAN),
-                        v: #rt::Vector::repeat(f64::NAN),
-                        t: f64::NAN,
-                        theta: #rt::Matrix::repeat(f64::NAN),
-                    };
+                    return #rt::EventGradient::unknown();
                 }
                 let (hq, hv, ht, hp): (#rt::Matrix<#e, #n>, #rt::Matrix<#e, #n>, #rt::Vector<#e>, #rt::Matrix<#e, #p>) = { #body };
                 #rt::EventGradient {

@@ -115,6 +115,7 @@ fn held_acceleration<S, const N: usize, const Z: usize, const P: usize>(
 where
     S: ParametrisedSystem<N, Z, P>,
 {
+    let by_parameters = force_by_parameters(model, (q, v, t), lambda, a);
     let system = model.system;
     let masked = model.mask(*lambda);
     let evaluations = &mut model.evaluations;
@@ -125,7 +126,7 @@ where
     let (rq, rv) = ConstrainedSystem::constraint_force_jacobians(system, q, v, t, &masked);
     let mass_term =
         (!S::MASS_IS_CONSTANT).then(|| ConstrainedSystem::mass_jacobian_product(system, q, t, a));
-    let mut moved = (fq - rq) * x.q + system.parameter_force(q, v, t, &masked, a);
+    let mut moved = (fq - rq) * x.q + by_parameters;
     if let Some(mass_term) = mass_term {
         moved -= mass_term * x.q;
     }
@@ -287,22 +288,6 @@ fn add_columns<const R: usize, const C: usize, const P: usize>(
     }
 }
 
-/// Stage states of an explicit tableau from the start and the earlier slopes.
-fn stage<const N: usize, const ST: usize, const C: usize>(
-    tableau: &Tableau<ST>,
-    i: usize,
-    h: f64,
-    start: (&Matrix<N, C>, &Matrix<N, C>),
-    slopes: (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
-) -> (Matrix<N, C>, Matrix<N, C>) {
-    let (mut q, mut v) = (*start.0, *start.1);
-    for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
-        q += (h * tableau.a[i][j]) * slopes.0[j];
-        v += (h * tableau.a[i][j]) * slopes.1[j];
-    }
-    (q, v)
-}
-
 fn combine<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
     h: f64,
@@ -349,7 +334,7 @@ where
         let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
         for i in 0..ST {
             let ti = t + tableau.c[i] * hs;
-            let (xq, xv) = stage(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
+            let (xq, xv) = stage_state(tableau, i, hs, (&x.q, &x.v), (&tangents.0, &tangents.1));
             let xi = Tangent { q: xq, v: xv };
             // The stage's consistent point as the step made it: kept, or formed again.
             let kept = recorded.and_then(|r| {
@@ -364,7 +349,7 @@ where
                     (qi, vi, a, lambda, directions, gram)
                 }
                 None => {
-                    let (qi, vi) = stage(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
+                    let (qi, vi) = stage_state(tableau, i, hs, (&q, &v), (&slopes.0, &slopes.1));
                     let (point, directions, gram) =
                         consistent_point_and_directions(model, ti, qi, vi)?;
                     (qi, vi, point.a, point.lambda, directions, gram)
@@ -426,8 +411,8 @@ where
         let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
         let mut by_c = [([Matrix::<N, Z>::zeros(); ST], [Matrix::<N, Z>::zeros(); ST]); K];
         for i in 0..ST {
-            let (qi, vi) = stage(tableau, i, hs, (&end.q, &end.v), (&slopes.0, &slopes.1));
-            let (xq, xv) = stage(
+            let (qi, vi) = stage_state(tableau, i, hs, (&end.q, &end.v), (&slopes.0, &slopes.1));
+            let (xq, xv) = stage_state(
                 tableau,
                 i,
                 hs,
@@ -446,7 +431,7 @@ where
             }
             for (c, (kq, kv)) in by_c.iter_mut().enumerate() {
                 let from = (&end.dq_dc[c], &end.dv_dc[c]);
-                let (cq, cv) = stage(tableau, i, hs, from, (&*kq, &*kv));
+                let (cq, cv) = stage_state(tableau, i, hs, from, (&*kq, &*kv));
                 let mut dv = jac.dq.times(&cq) + multipliers.weight(c, s) * jac.dp;
                 if S::DYNAMICS_DEPEND_ON_VELOCITY {
                     dv += jac.dv.times(&cv);

@@ -181,12 +181,7 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
         t: f64,
     ) -> EventGradient<N, P> {
         let _ = (index, q, v, t);
-        EventGradient {
-            q: Vector::repeat(f64::NAN),
-            v: Vector::repeat(f64::NAN),
-            t: f64::NAN,
-            theta: Matrix::repeat(f64::NAN),
-        }
+        EventGradient::unknown()
     }
 }
 
@@ -197,6 +192,18 @@ pub struct EventGradient<const N: usize, const P: usize> {
     pub v: Vector<N>,
     pub t: f64,
     pub theta: Matrix<1, P>,
+}
+
+impl<const N: usize, const P: usize> EventGradient<N, P> {
+    /// NaN throughout: no derivative is known.
+    pub fn unknown() -> Self {
+        EventGradient {
+            q: Vector::repeat(f64::NAN),
+            v: Vector::repeat(f64::NAN),
+            t: f64::NAN,
+            theta: Matrix::repeat(f64::NAN),
+        }
+    }
 }
 
 /// The most gaps (unilateral rows) a system may have.

@@ -377,13 +377,13 @@ where
 
 /// The state `(q, q')` of stage `i` from the start and the earlier stages' slopes `(q', q'')`.
 #[inline(always)]
-pub(crate) fn stage_state<const N: usize, const ST: usize>(
+pub(crate) fn stage_state<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
     i: usize,
     h: f64,
-    (q0, v0): (&Vector<N>, &Vector<N>),
-    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
-) -> (Vector<N>, Vector<N>) {
+    (q0, v0): (&Matrix<N, C>, &Matrix<N, C>),
+    (kq, kv): (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
+) -> (Matrix<N, C>, Matrix<N, C>) {
     let (mut q, mut v) = (*q0, *v0);
     for j in (0..i).filter(|&j| tableau.a[i][j] != 0.0) {
         let w = h * tableau.a[i][j];
