@@ -2,7 +2,7 @@
 //! steam generator with RK4 at 1 ms (`Options::paper`), printed in the target's format, so that
 //! `tests/on_target/run.sh` can compare the two. `firmware_reference [steps]` (default 2 000).
 
-use zeitner::{ConstrainedSystem, Options, Simulator, Vector};
+use zeitner::{ConstrainedSystem, MultiplierModel, Options, Simulator, Vector};
 use zeitner_scenes::steam_generator::SteamGenerator;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -16,7 +16,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Vector::zeros(),
         Vector::zeros(),
         0.0,
-        Options::paper(1e-3),
+        Options {
+            multipliers: MultiplierModel::EveryStage,
+            ..Options::paper(1e-3)
+        },
     )?;
     sim.advance_to(f64::from(steps) * 1e-3, |_| {})?;
     let end = sim.last().end;

@@ -9,8 +9,8 @@ impl Andrews {
         _delta,
         omega,
         _epsilon,
-        ]: [f64; 7],
-    ) -> [[f64; 7]; 7] {
+        ]: [Float; 7],
+    ) -> [[Float; 7]; 7] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let m2 = self.m2;
@@ -52,7 +52,7 @@ impl Andrews {
         _delta,
         omega,
         _epsilon,
-        ]: [f64; 7],
+        ]: [Float; 7],
         [vbeta,
         vtheta,
         _vgamma,
@@ -60,8 +60,8 @@ impl Andrews {
         vdelta,
         vomega,
         vepsilon,
-        ]: [f64; 7],
-    ) -> [f64; 7] {
+        ]: [Float; 7],
+    ) -> [Float; 7] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let xd = self.sd * gamma.cos() + self.sc * gamma.sin() + self.xb;
@@ -94,8 +94,8 @@ impl Andrews {
         delta,
         omega,
         epsilon,
-        ]: [f64; 7],
-    ) -> [f64; 6] {
+        ]: [Float; 7],
+    ) -> [Float; 6] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let x = self.rr * beta.cos() - self.d * (beta + theta).cos();
@@ -110,7 +110,7 @@ impl Andrews {
         ]
     }
     /// For sensitivities: the driving torque, the spring, a mass and a rod length.
-    fn parameters(&self) -> [f64; 4] {
+    fn parameters(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.mom, self.c0, self.m2, self.d]
@@ -736,7 +736,11 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<7>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let s0 = self.e - self.ea;
@@ -777,7 +781,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<7> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -811,7 +815,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<6> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -834,7 +838,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<6, 7> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -880,7 +884,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<6> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -909,7 +913,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<6> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -950,7 +954,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1012,7 +1016,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<6>,
     ) -> (::zeitner::__private::Matrix<7, 7>, ::zeitner::__private::Matrix<7, 7>) {
         #[allow(unused_imports)]
@@ -1056,7 +1060,7 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
     fn mass_jacobian_product(
         &self,
         q: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<7>,
     ) -> ::zeitner::__private::Matrix<7, 7> {
         #[allow(unused_imports)]
@@ -1083,8 +1087,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1128,8 +1132,8 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1188,9 +1192,9 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<6>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1246,7 +1250,7 @@ impl ::zeitner::__private::ParametrisedSystem<7, 6, 4> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<6>,
         a: &::zeitner::__private::Vector<7>,
     ) -> ::zeitner::__private::Matrix<7, 4> {
@@ -1286,7 +1290,7 @@ impl ::zeitner::__private::ParametrisedSystem<7, 6, 4> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<6, 4>, ::zeitner::__private::Matrix<6, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1318,7 +1322,7 @@ impl ::zeitner::__private::ParametrisedSystem<7, 6, 4> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<6, 7>, ::zeitner::__private::Matrix<6, 7>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1406,7 +1410,7 @@ impl ::zeitner::__private::ParametrisedSystem<7, 6, 4> for Andrews {
         &self,
         q: &::zeitner::__private::Vector<7>,
         v: &::zeitner::__private::Vector<7>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<7>,
     ) -> (
         ::zeitner::__private::Matrix<6, 7>,

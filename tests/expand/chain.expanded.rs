@@ -1,12 +1,12 @@
 #[allow(dead_code)]
 impl Chain2 {
     const LINKS: usize = 2;
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::LINKS]
     }
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::LINKS];
@@ -15,7 +15,7 @@ impl Chain2 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut g = [0.0; Self::LINKS];
@@ -273,7 +273,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -288,7 +292,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -303,7 +307,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -318,7 +322,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -338,7 +342,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -354,7 +358,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -371,7 +375,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -384,7 +388,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -410,8 +414,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -429,8 +433,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -440,9 +444,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -463,12 +467,12 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
 #[allow(dead_code)]
 impl Chain4 {
     const LINKS: usize = 4;
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::LINKS]
     }
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::LINKS];
@@ -477,7 +481,7 @@ impl Chain4 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut g = [0.0; Self::LINKS];
@@ -807,7 +811,11 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<8>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<8>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<8>::zeros();
@@ -826,7 +834,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<8> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -843,7 +851,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -860,7 +868,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<4, 8> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -892,7 +900,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -914,7 +922,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -942,7 +950,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<8, 8>, ::zeitner::__private::Matrix<8, 8>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -955,7 +963,7 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<4>,
     ) -> (::zeitner::__private::Matrix<8, 8>, ::zeitner::__private::Matrix<8, 8>) {
         #[allow(unused_imports)]
@@ -1001,8 +1009,8 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1032,8 +1040,8 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1043,9 +1051,9 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         &self,
         q: &::zeitner::__private::Vector<8>,
         v: &::zeitner::__private::Vector<8>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<4>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1086,12 +1094,12 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
 #[allow(dead_code)]
 impl Chain8 {
     const LINKS: usize = 8;
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::LINKS]
     }
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::LINKS];
@@ -1100,7 +1108,7 @@ impl Chain8 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut g = [0.0; Self::LINKS];
@@ -1554,7 +1562,11 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<16>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<16>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<16>::zeros();
@@ -1581,7 +1593,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<16> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1602,7 +1614,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<8> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1623,7 +1635,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<8, 16> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1679,7 +1691,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<8> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1713,7 +1725,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<8> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1765,7 +1777,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<16, 16>, ::zeitner::__private::Matrix<16, 16>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1778,7 +1790,7 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<8>,
     ) -> (::zeitner::__private::Matrix<16, 16>, ::zeitner::__private::Matrix<16, 16>) {
         #[allow(unused_imports)]
@@ -1864,8 +1876,8 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1919,8 +1931,8 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1930,9 +1942,9 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         &self,
         q: &::zeitner::__private::Vector<16>,
         v: &::zeitner::__private::Vector<16>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<8>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2013,12 +2025,12 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
 #[allow(dead_code)]
 impl Chain16 {
     const LINKS: usize = 16;
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::LINKS]
     }
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::LINKS];
@@ -2027,7 +2039,7 @@ impl Chain16 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut g = [0.0; Self::LINKS];
@@ -2689,7 +2701,11 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<32>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<32>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<32>::zeros();
@@ -2732,7 +2748,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<32> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2761,7 +2777,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<16> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2790,7 +2806,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<16, 32> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2894,7 +2910,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<16> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2952,7 +2968,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<16> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3052,7 +3068,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<32, 32>, ::zeitner::__private::Matrix<32, 32>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3065,7 +3081,7 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<16>,
     ) -> (::zeitner::__private::Matrix<32, 32>, ::zeitner::__private::Matrix<32, 32>) {
         #[allow(unused_imports)]
@@ -3231,8 +3247,8 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3334,8 +3350,8 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3345,9 +3361,9 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         &self,
         q: &::zeitner::__private::Vector<32>,
         v: &::zeitner::__private::Vector<32>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<16>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3508,12 +3524,12 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
 #[allow(dead_code)]
 impl Chain100 {
     const LINKS: usize = 100;
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::LINKS]
     }
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::LINKS];
@@ -3522,7 +3538,7 @@ impl Chain100 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut g = [0.0; Self::LINKS];
@@ -6368,7 +6384,11 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<200>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<200>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<200>::zeros();
@@ -6579,7 +6599,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<200> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -6692,7 +6712,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<100> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -6805,7 +6825,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<100, 200> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -7413,7 +7433,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<100> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -7723,7 +7743,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<100> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -8327,7 +8347,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (
         ::zeitner::__private::Matrix<200, 200>,
         ::zeitner::__private::Matrix<200, 200>,
@@ -8343,7 +8363,7 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<100>,
     ) -> (
         ::zeitner::__private::Matrix<200, 200>,
@@ -9352,8 +9372,8 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -9959,8 +9979,8 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -9970,9 +9990,9 @@ impl ::zeitner::__private::ConstrainedSystem<200, 100> for Chain100 {
         &self,
         q: &::zeitner::__private::Vector<200>,
         v: &::zeitner::__private::Vector<200>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<100>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;

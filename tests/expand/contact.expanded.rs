@@ -1,26 +1,26 @@
 #[allow(dead_code)]
 impl Ball {
-    fn mass(&self) -> [f64; 1] {
+    fn mass(&self) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m]
     }
-    fn force(&self) -> [f64; 1] {
+    fn force(&self) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [-self.m * self.g]
     }
-    fn gaps(&self, [y]: [f64; 1]) -> [f64; 1] {
+    fn gaps(&self, [y]: [Float; 1]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y]
     }
-    fn restitution(&self) -> [f64; 1] {
+    fn restitution(&self) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.e]
     }
-    fn parameters(&self) -> [f64; 2] {
+    fn parameters(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.g, self.m]
@@ -435,7 +435,11 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         constraint_force_jacobians: [&[], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<1>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<1>::zeros();
@@ -447,7 +451,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -460,7 +464,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -473,7 +477,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -486,7 +490,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -499,7 +503,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -511,7 +515,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -524,7 +528,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
         #[allow(unused_imports)]
@@ -534,7 +538,7 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         (dq, dv)
     }
     #[inline]
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> ::zeitner::__private::Float {
         let e = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -549,8 +553,8 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -561,8 +565,8 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -572,9 +576,9 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -597,7 +601,7 @@ impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
         a: &::zeitner::__private::Vector<1>,
     ) -> ::zeitner::__private::Matrix<1, 2> {
@@ -613,7 +617,7 @@ impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 2>, ::zeitner::__private::Matrix<1, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -626,7 +630,7 @@ impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 1>, ::zeitner::__private::Matrix<1, 1>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -640,7 +644,7 @@ impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
         &self,
         q: &::zeitner::__private::Vector<1>,
         v: &::zeitner::__private::Vector<1>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<1>,
     ) -> (
         ::zeitner::__private::Matrix<1, 1>,
@@ -657,37 +661,37 @@ impl ::zeitner::__private::ParametrisedSystem<1, 1, 2> for Ball {
 }
 #[allow(dead_code)]
 impl WallPendulum {
-    fn mass(&self) -> [f64; 2] {
+    fn mass(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m]
     }
-    fn force(&self) -> [f64; 2] {
+    fn force(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g]
     }
-    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x * x + y * y - self.length * self.length]
     }
-    fn gaps(&self, [x, _y]: [f64; 2]) -> [f64; 1] {
+    fn gaps(&self, [x, _y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x]
     }
-    fn restitution(&self) -> [f64; 1] {
+    fn restitution(&self) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.e]
     }
-    fn events(&self, [_x, y]: [f64; 2]) -> [f64; 1] {
+    fn events(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y - self.height]
     }
-    fn parameters(&self) -> [f64; 2] {
+    fn parameters(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.length, self.g]
@@ -1171,7 +1175,11 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<2>::zeros();
@@ -1184,7 +1192,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1197,7 +1205,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1211,7 +1219,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1226,7 +1234,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1240,7 +1248,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1253,7 +1261,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1266,7 +1274,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
@@ -1279,7 +1287,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         (dq, dv)
     }
     #[inline]
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> ::zeitner::__private::Float {
         let e = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -1294,8 +1302,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         let e = {
             #[allow(unused_imports)]
@@ -1313,8 +1321,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1327,8 +1335,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1338,9 +1346,9 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1366,7 +1374,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
         a: &::zeitner::__private::Vector<2>,
     ) -> ::zeitner::__private::Matrix<2, 2> {
@@ -1381,7 +1389,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1395,7 +1403,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1413,7 +1421,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<2>,
     ) -> (
         ::zeitner::__private::Matrix<2, 2>,
@@ -1437,7 +1445,7 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
         index: usize,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::EventGradient<2, 2> {
         if index >= 1 {
             return ::zeitner::__private::EventGradient::unknown();
@@ -1472,32 +1480,32 @@ impl ::zeitner::__private::ParametrisedSystem<2, 2, 2> for WallPendulum {
 }
 #[allow(dead_code)]
 impl FallingBar {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.j]
     }
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g, 0.0]
     }
-    fn constraints(&self, [x, _y, _theta]: [f64; 3]) -> [f64; 1] {
+    fn constraints(&self, [x, _y, _theta]: [Float; 3]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x]
     }
-    fn gaps(&self, [_x, y, theta]: [f64; 3]) -> [f64; 2] {
+    fn gaps(&self, [_x, y, theta]: [Float; 3]) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y - self.a * theta.sin(), y + self.a * theta.sin()]
     }
-    fn restitution(&self) -> [f64; 2] {
+    fn restitution(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.e, self.e]
     }
-    fn parameters(&self) -> [f64; 2] {
+    fn parameters(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.g, self.a]
@@ -1912,7 +1920,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         constraint_force_jacobians: [&[(2, 2)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -1926,7 +1938,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1939,7 +1951,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1955,7 +1967,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<3, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1973,7 +1985,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1989,7 +2001,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2004,7 +2016,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2017,7 +2029,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -2029,7 +2041,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         (dq, dv)
     }
     #[inline]
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> ::zeitner::__private::Float {
         let e = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -2045,8 +2057,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2062,8 +2074,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2073,9 +2085,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2100,7 +2112,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 2> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
         a: &::zeitner::__private::Vector<3>,
     ) -> ::zeitner::__private::Matrix<3, 2> {
@@ -2117,7 +2129,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 2> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 2>, ::zeitner::__private::Matrix<3, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2136,7 +2148,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 2> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2158,7 +2170,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 2> for FallingBar {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<3>,
     ) -> (
         ::zeitner::__private::Matrix<3, 3>,

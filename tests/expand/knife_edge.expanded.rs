@@ -1,11 +1,11 @@
 #[allow(dead_code)]
 impl KnifeEdge {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.j]
     }
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m * self.g * self.alpha.sin(), 0.0, 0.0]
@@ -15,18 +15,18 @@ impl KnifeEdge {
         [_x,
         _y,
         theta,
-        ]: [f64; 3],
+        ]: [Float; 3],
         [vx,
         vy,
         _w,
-        ]: [f64; 3],
-    ) -> [f64; 1] {
+        ]: [Float; 3],
+    ) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [-theta.sin() * vx + theta.cos() * vy]
     }
     /// For sensitivities: the slope, gravity and the mass (on which the motion does not depend).
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.alpha, self.g, self.m]
@@ -440,7 +440,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         constraint_force_jacobians: [&[(0, 2), (1, 2)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -454,7 +458,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -467,7 +471,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -480,7 +484,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -494,7 +498,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -507,7 +511,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -520,7 +524,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -533,7 +537,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -546,7 +550,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -562,8 +566,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -575,8 +579,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -586,9 +590,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -614,7 +618,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
         a: &::zeitner::__private::Vector<3>,
     ) -> ::zeitner::__private::Matrix<3, 3> {
@@ -633,7 +637,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 3>, ::zeitner::__private::Matrix<1, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -646,7 +650,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 3>, ::zeitner::__private::Matrix<1, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -664,7 +668,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<3>,
     ) -> (
         ::zeitner::__private::Matrix<1, 3>,
@@ -687,17 +691,17 @@ impl ::zeitner::__private::ParametrisedSystem<3, 1, 3> for KnifeEdge {
 }
 #[allow(dead_code)]
 impl SteeredKnifeEdge {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.edge.m, self.edge.m, self.edge.j]
     }
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.edge.m * self.edge.g * self.edge.alpha.sin(), 0.0, self.torque]
     }
-    fn constraints(&self, [_x, _y, theta]: [f64; 3], t: f64) -> [f64; 1] {
+    fn constraints(&self, [_x, _y, theta]: [Float; 3], t: Float) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [theta - self.omega * t]
@@ -707,18 +711,18 @@ impl SteeredKnifeEdge {
         [_x,
         _y,
         theta,
-        ]: [f64; 3],
+        ]: [Float; 3],
         [vx,
         vy,
         _w,
-        ]: [f64; 3],
-    ) -> [f64; 1] {
+        ]: [Float; 3],
+    ) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [-theta.sin() * vx + theta.cos() * vy]
     }
     /// For sensitivities: the slope, the steering rate and the torque.
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.edge.alpha, self.omega, self.torque]
@@ -1132,7 +1136,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         constraint_force_jacobians: [&[(0, 2), (1, 2)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -1146,7 +1154,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1160,7 +1168,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1174,7 +1182,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1189,7 +1197,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1203,7 +1211,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1217,7 +1225,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1230,7 +1238,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1243,7 +1251,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -1259,8 +1267,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1273,8 +1281,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1284,9 +1292,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1312,7 +1320,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 3> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
         a: &::zeitner::__private::Vector<3>,
     ) -> ::zeitner::__private::Matrix<3, 3> {
@@ -1328,7 +1336,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 3> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1343,7 +1351,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 3> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1362,7 +1370,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 3> for SteeredKnifeEdge {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<3>,
     ) -> (
         ::zeitner::__private::Matrix<2, 3>,

@@ -5,17 +5,17 @@ impl Ladder8 {
     /// Rungs, two rails and a diagonal per bay.
     const BARS: usize = (Self::BAYS + 1) + 3 * Self::BAYS;
     /// Squared distance of two points minus a bar's rest length squared.
-    fn bar(&self, p: [f64; 2], r: [f64; 2], length2: f64) -> f64 {
+    fn bar(&self, p: [Float; 2], r: [Float; 2], length2: Float) -> Float {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         (p[0] - r[0]).powi(2) + (p[1] - r[1]).powi(2) - length2
     }
-    fn mass(&self) -> [f64; 2 * Self::NODES] {
+    fn mass(&self) -> [Float; 2 * Self::NODES] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::NODES]
     }
-    fn force(&self) -> [f64; 2 * Self::NODES] {
+    fn force(&self) -> [Float; 2 * Self::NODES] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::NODES];
@@ -24,7 +24,7 @@ impl Ladder8 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::NODES]) -> [f64; Self::BARS + 2] {
+    fn constraints(&self, q: [Float; 2 * Self::NODES]) -> [Float; Self::BARS + 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let a2 = self.a * self.a;
@@ -1054,7 +1054,11 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<36>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<36>::zeros();
@@ -1101,7 +1105,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<36> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1132,7 +1136,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<35> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1181,7 +1185,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<35, 36> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1393,7 +1397,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<35> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1506,7 +1510,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<35> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1655,7 +1659,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<36, 36>, ::zeitner::__private::Matrix<36, 36>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1668,7 +1672,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<35>,
     ) -> (::zeitner::__private::Matrix<36, 36>, ::zeitner::__private::Matrix<36, 36>) {
         #[allow(unused_imports)]
@@ -1967,8 +1971,8 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2178,8 +2182,8 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2189,9 +2193,9 @@ impl ::zeitner::__private::ConstrainedSystem<36, 35> for Ladder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<35>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2487,17 +2491,17 @@ impl PinnedLadder8 {
     const BAYS: usize = 8;
     const NODES: usize = 2 * (Self::BAYS + 1);
     const BARS: usize = (Self::BAYS + 1) + 3 * Self::BAYS;
-    fn bar(&self, p: [f64; 2], r: [f64; 2], length2: f64) -> f64 {
+    fn bar(&self, p: [Float; 2], r: [Float; 2], length2: Float) -> Float {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         (p[0] - r[0]).powi(2) + (p[1] - r[1]).powi(2) - length2
     }
-    fn mass(&self) -> [f64; 2 * Self::NODES] {
+    fn mass(&self) -> [Float; 2 * Self::NODES] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m; 2 * Self::NODES]
     }
-    fn force(&self) -> [f64; 2 * Self::NODES] {
+    fn force(&self) -> [Float; 2 * Self::NODES] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut f = [0.0; 2 * Self::NODES];
@@ -2506,7 +2510,7 @@ impl PinnedLadder8 {
         }
         f
     }
-    fn constraints(&self, q: [f64; 2 * Self::NODES]) -> [f64; Self::BARS + 4] {
+    fn constraints(&self, q: [Float; 2 * Self::NODES]) -> [Float; Self::BARS + 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let a2 = self.a * self.a;
@@ -2527,7 +2531,7 @@ impl PinnedLadder8 {
         let last = 4 * Self::BAYS;
         g[row] = q[0];
         g[row + 1] = q[1];
-        g[row + 2] = q[last] - Self::BAYS as f64 * self.a;
+        g[row + 2] = q[last] - Self::BAYS as Float * self.a;
         g[row + 3] = q[last + 1];
         g
     }
@@ -3547,7 +3551,11 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<36>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<36>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<36>::zeros();
@@ -3594,7 +3602,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<36> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3625,7 +3633,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<37> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3676,7 +3684,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<37, 36> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -3890,7 +3898,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<37> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -4005,7 +4013,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<37> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -4154,7 +4162,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<36, 36>, ::zeitner::__private::Matrix<36, 36>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -4167,7 +4175,7 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<37>,
     ) -> (::zeitner::__private::Matrix<36, 36>, ::zeitner::__private::Matrix<36, 36>) {
         #[allow(unused_imports)]
@@ -4466,8 +4474,8 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -4679,8 +4687,8 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -4690,9 +4698,9 @@ impl ::zeitner::__private::ConstrainedSystem<36, 37> for PinnedLadder8 {
         &self,
         q: &::zeitner::__private::Vector<36>,
         v: &::zeitner::__private::Vector<36>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<37>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;

@@ -1,16 +1,16 @@
 #[allow(dead_code)]
 impl Pendulum {
-    fn mass(&self) -> [f64; 2] {
+    fn mass(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m]
     }
-    fn force(&self) -> [f64; 2] {
+    fn force(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g]
     }
-    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x * x + y * y - self.length * self.length]
@@ -250,7 +250,11 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<2>::zeros();
@@ -263,7 +267,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -276,7 +280,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -289,7 +293,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -303,7 +307,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -316,7 +320,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -329,7 +333,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -342,7 +346,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
@@ -359,8 +363,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -372,8 +376,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -383,9 +387,9 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;

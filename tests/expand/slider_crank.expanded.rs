@@ -1,16 +1,16 @@
 #[allow(dead_code)]
 impl SliderCrankOnAxis {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.ms, self.ms]
     }
-    fn force(&self) -> [f64; 4] {
+    fn force(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g, 0.0, -self.ms * self.g]
     }
-    fn constraints(&self, [x1, y1, x2, y2]: [f64; 4]) -> [f64; 3] {
+    fn constraints(&self, [x1, y1, x2, y2]: [Float; 4]) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [
@@ -19,7 +19,7 @@ impl SliderCrankOnAxis {
             y2,
         ]
     }
-    fn events(&self, [_x1, y1, _x2, _y2]: [f64; 4]) -> [f64; 1] {
+    fn events(&self, [_x1, y1, _x2, _y2]: [Float; 4]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y1]
@@ -305,7 +305,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -320,7 +324,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -334,7 +338,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -349,7 +353,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<3, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -370,7 +374,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -387,7 +391,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -404,7 +408,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -417,7 +421,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -443,8 +447,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         let e = {
             #[allow(unused_imports)]
@@ -462,8 +466,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -482,8 +486,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -493,9 +497,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;

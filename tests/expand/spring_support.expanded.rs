@@ -1,6 +1,6 @@
 #[allow(dead_code)]
 impl SpringSupportedPendulum {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.support, self.support, self.m, self.m]
@@ -11,13 +11,13 @@ impl SpringSupportedPendulum {
         ys,
         _xb,
         _yb,
-        ]: [f64; 4],
+        ]: [Float; 4],
         [us,
         ws,
         _ub,
         _wb,
-        ]: [f64; 4],
-    ) -> [f64; 4] {
+        ]: [Float; 4],
+    ) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [
@@ -27,12 +27,12 @@ impl SpringSupportedPendulum {
             -self.m * self.g,
         ]
     }
-    fn constraints(&self, [xs, ys, xb, yb]: [f64; 4]) -> [f64; 1] {
+    fn constraints(&self, [xs, ys, xb, yb]: [Float; 4]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [(xb - xs).powi(2) + (yb - ys).powi(2) - self.l * self.l]
     }
-    fn parameters(&self) -> [f64; 2] {
+    fn parameters(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.k, self.c]
@@ -433,7 +433,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -448,7 +452,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -463,7 +467,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -476,7 +480,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -494,7 +498,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -509,7 +513,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -523,7 +527,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -542,7 +546,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -568,8 +572,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -585,8 +589,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -602,9 +606,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -639,7 +643,7 @@ impl ::zeitner::__private::ParametrisedSystem<4, 1, 2> for SpringSupportedPendul
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
         a: &::zeitner::__private::Vector<4>,
     ) -> ::zeitner::__private::Matrix<4, 2> {
@@ -657,7 +661,7 @@ impl ::zeitner::__private::ParametrisedSystem<4, 1, 2> for SpringSupportedPendul
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 2>, ::zeitner::__private::Matrix<1, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -670,7 +674,7 @@ impl ::zeitner::__private::ParametrisedSystem<4, 1, 2> for SpringSupportedPendul
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<1, 4>, ::zeitner::__private::Matrix<1, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -693,7 +697,7 @@ impl ::zeitner::__private::ParametrisedSystem<4, 1, 2> for SpringSupportedPendul
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<4>,
     ) -> (
         ::zeitner::__private::Matrix<1, 4>,

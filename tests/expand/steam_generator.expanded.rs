@@ -1,6 +1,6 @@
 #[allow(dead_code)]
 impl SteamGenerator {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.j]
@@ -10,32 +10,32 @@ impl SteamGenerator {
         [_q1,
         _q2,
         _q3,
-        ]: [f64; 3],
+        ]: [Float; 3],
         [v1,
         _v2,
         _v3,
-        ]: [f64; 3],
-        t: f64,
-    ) -> [f64; 3] {
+        ]: [Float; 3],
+        t: Float,
+    ) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let p = self.load(t);
         [p - self.d * v1, -self.m * self.g, p * self.h1]
     }
-    fn constraints(&self, [q1, q2, q3]: [f64; 3]) -> [f64; 2] {
+    fn constraints(&self, [q1, q2, q3]: [Float; 3]) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [q1 - self.h3 * q3, q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2]
     }
     /// The load's kink at the end of its ramp and its switch-off: steps land on them.
-    fn time_events(&self) -> [f64; 2] {
+    fn time_events(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.rise, self.off]
     }
     /// The supports' geometry and the damper, for sensitivities (the load's `p0` and `rise`
     /// are read in `load`, an opaque method, so they cannot be parameters).
-    fn parameters(&self) -> [f64; 4] {
+    fn parameters(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.h3, self.h2, self.d, self.m]
@@ -449,7 +449,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -463,7 +467,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -479,7 +483,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -493,7 +497,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -509,7 +513,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -523,7 +527,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -536,7 +540,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -550,7 +554,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -563,7 +567,10 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         (dq, dv)
     }
     #[inline]
-    fn time_event_after(&self, after: f64) -> Option<f64> {
+    fn time_event_after(
+        &self,
+        after: ::zeitner::__private::Float,
+    ) -> Option<::zeitner::__private::Float> {
         let times = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -576,15 +583,20 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
             .iter()
             .copied()
             .filter(|&s| s > after)
-            .fold(None, |next: Option<f64>, s| { Some(next.map_or(s, |n| n.min(s))) })
+            .fold(
+                None,
+                |next: Option<::zeitner::__private::Float>, s| {
+                    Some(next.map_or(s, |n| n.min(s)))
+                },
+            )
     }
     #[inline]
     fn constraint_jacobian_nonzeros(
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -598,8 +610,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -610,9 +622,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -640,7 +652,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
         a: &::zeitner::__private::Vector<3>,
     ) -> ::zeitner::__private::Matrix<3, 4> {
@@ -659,7 +671,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 4>, ::zeitner::__private::Matrix<2, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -676,7 +688,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 3>, ::zeitner::__private::Matrix<2, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -695,7 +707,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<3>,
     ) -> (
         ::zeitner::__private::Matrix<2, 3>,
@@ -718,7 +730,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 2, 4> for SteamGenerator {
 }
 #[allow(dead_code)]
 impl SteamGeneratorWithGap {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.base.m, self.base.m, self.base.j]
@@ -728,41 +740,41 @@ impl SteamGeneratorWithGap {
         [_q1,
         _q2,
         _q3,
-        ]: [f64; 3],
+        ]: [Float; 3],
         [v1,
         _v2,
         _v3,
-        ]: [f64; 3],
-        t: f64,
-    ) -> [f64; 3] {
+        ]: [Float; 3],
+        t: Float,
+    ) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let p = self.load(t);
         [p - self.base.d * v1, -self.base.m * self.base.g, p * self.base.h1]
     }
-    fn constraints(&self, [q1, q2, _q3]: [f64; 3]) -> [f64; 1] {
+    fn constraints(&self, [q1, q2, _q3]: [Float; 3]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [q1 * q1 + (q2 - self.base.h2).powi(2) - self.base.h2 * self.base.h2]
     }
     /// The strut's travel left before it engages, pushed (first) and pulled (second).
-    fn gaps(&self, [q1, _q2, q3]: [f64; 3]) -> [f64; 2] {
+    fn gaps(&self, [q1, _q2, q3]: [Float; 3]) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let travel = q1 - self.base.h3 * q3;
         [self.clearance - travel, self.clearance + travel]
     }
-    fn restitution(&self) -> [f64; 2] {
+    fn restitution(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.e, self.e]
     }
-    fn time_events(&self) -> [f64; 2] {
+    fn time_events(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.base.rise, self.base.off]
     }
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.base.h3, self.clearance, self.base.d]
@@ -1202,7 +1214,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -1216,7 +1232,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1232,7 +1248,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1248,7 +1264,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<3, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1266,7 +1282,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1282,7 +1298,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1295,7 +1311,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1309,7 +1325,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -1322,7 +1338,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         (dq, dv)
     }
     #[inline]
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> ::zeitner::__private::Float {
         let e = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -1334,7 +1350,10 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         if gap < 2 { e[gap] } else { 0.0 }
     }
     #[inline]
-    fn time_event_after(&self, after: f64) -> Option<f64> {
+    fn time_event_after(
+        &self,
+        after: ::zeitner::__private::Float,
+    ) -> Option<::zeitner::__private::Float> {
         let times = {
             #[allow(unused_imports)]
             use ::zeitner::__private::Real as _;
@@ -1347,15 +1366,20 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
             .iter()
             .copied()
             .filter(|&s| s > after)
-            .fold(None, |next: Option<f64>, s| { Some(next.map_or(s, |n| n.min(s))) })
+            .fold(
+                None,
+                |next: Option<::zeitner::__private::Float>, s| {
+                    Some(next.map_or(s, |n| n.min(s)))
+                },
+            )
     }
     #[inline]
     fn constraint_jacobian_nonzeros(
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1371,8 +1395,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1383,9 +1407,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1412,7 +1436,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 3> for SteamGeneratorWithGap
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<3>,
         a: &::zeitner::__private::Vector<3>,
     ) -> ::zeitner::__private::Matrix<3, 3> {
@@ -1428,7 +1452,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 3> for SteamGeneratorWithGap
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1447,7 +1471,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 3> for SteamGeneratorWithGap
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1468,7 +1492,7 @@ impl ::zeitner::__private::ParametrisedSystem<3, 3, 3> for SteamGeneratorWithGap
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         a: &::zeitner::__private::Vector<3>,
     ) -> (
         ::zeitner::__private::Matrix<3, 3>,

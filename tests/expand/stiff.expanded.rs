@@ -1,18 +1,30 @@
 #[allow(dead_code)]
 impl SpringPendulum {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m1, self.m1, self.m2, self.m2]
     }
-    fn force(&self, [x1, y1, x2, y2]: [f64; 4], [u1, w1, u2, w2]: [f64; 4]) -> [f64; 4] {
+    fn force(
+        &self,
+        [x1,
+        y1,
+        x2,
+        y2,
+        ]: [Float; 4],
+        [u1,
+        w1,
+        u2,
+        w2,
+        ]: [Float; 4],
+    ) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let fx = self.k * (x2 - x1) + self.c * (u2 - u1);
         let fy = self.k * (y2 - y1 + self.l0) + self.c * (w2 - w1);
         [fx, fy - self.m1 * self.g, -fx, -fy - self.m2 * self.g]
     }
-    fn constraints(&self, [x1, y1, _x2, _y2]: [f64; 4]) -> [f64; 1] {
+    fn constraints(&self, [x1, y1, _x2, _y2]: [Float; 4]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x1 * x1 + y1 * y1 - self.l * self.l]
@@ -273,7 +285,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -288,7 +304,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -306,7 +322,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -319,7 +335,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -333,7 +349,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -346,7 +362,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -359,7 +375,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -390,7 +406,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -407,8 +423,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -420,8 +436,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -449,9 +465,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -462,17 +478,17 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
 }
 #[allow(dead_code)]
 impl DoublePendulum {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m1, self.m1, self.m2, self.m2]
     }
-    fn force(&self) -> [f64; 4] {
+    fn force(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m1 * self.g, 0.0, -self.m2 * self.g]
     }
-    fn constraints(&self, [x1, y1, x2, y2]: [f64; 4]) -> [f64; 2] {
+    fn constraints(&self, [x1, y1, x2, y2]: [Float; 4]) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [
@@ -727,7 +743,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -742,7 +762,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -756,7 +776,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -770,7 +790,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -790,7 +810,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -806,7 +826,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -823,7 +843,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -836,7 +856,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -862,8 +882,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -881,8 +901,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -892,9 +912,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -914,17 +934,17 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
 }
 #[allow(dead_code)]
 impl SliderCrank {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.ms]
     }
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, 0.0, 0.0]
     }
-    fn constraints(&self, [xa, ya, xs]: [f64; 3]) -> [f64; 2] {
+    fn constraints(&self, [xa, ya, xs]: [Float; 3]) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [
@@ -1167,7 +1187,11 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         constraint_force_jacobians: [&[(0, 0), (0, 2), (1, 1), (2, 0), (2, 2)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<3>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<3>::zeros();
@@ -1181,7 +1205,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1193,7 +1217,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1208,7 +1232,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<2, 3> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1227,7 +1251,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1243,7 +1267,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1259,7 +1283,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1272,7 +1296,7 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
     ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
         #[allow(unused_imports)]
@@ -1294,8 +1318,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1312,8 +1336,8 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1323,9 +1347,9 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         &self,
         q: &::zeitner::__private::Vector<3>,
         v: &::zeitner::__private::Vector<3>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<2>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1341,17 +1365,17 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
 }
 #[allow(dead_code)]
 impl RedundantFourBar {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m, self.m, self.m]
     }
-    fn force(&self) -> [f64; 4] {
+    fn force(&self) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g, 0.0, -self.m * self.g]
     }
-    fn constraints(&self, [xa, ya, xb, yb]: [f64; 4]) -> [f64; 4] {
+    fn constraints(&self, [xa, ya, xb, yb]: [Float; 4]) -> [Float; 4] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let crank = xa * xa + ya * ya - self.r1 * self.r1;
@@ -1636,7 +1660,11 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         ],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<4>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<4>::zeros();
@@ -1651,7 +1679,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1666,7 +1694,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1684,7 +1712,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<4, 4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1714,7 +1742,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1735,7 +1763,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<4> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1759,7 +1787,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1772,7 +1800,7 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<4>,
     ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
         #[allow(unused_imports)]
@@ -1800,8 +1828,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1829,8 +1857,8 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1840,9 +1868,9 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         &self,
         q: &::zeitner::__private::Vector<4>,
         v: &::zeitner::__private::Vector<4>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<4>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -1864,17 +1892,17 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
 }
 #[allow(dead_code)]
 impl CoupledMassPendulum {
-    fn mass(&self) -> [[f64; 2]; 2] {
+    fn mass(&self) -> [[Float; 2]; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [[self.m11, self.m12], [self.m12, self.m22]]
     }
-    fn force(&self) -> [f64; 2] {
+    fn force(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m22 * self.g]
     }
-    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [x * x + y * y - 1.0]
@@ -2114,7 +2142,11 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Matrix::<2, 2>::zeros();
@@ -2129,7 +2161,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2142,7 +2174,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2155,7 +2187,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2169,7 +2201,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2182,7 +2214,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2195,7 +2227,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2208,7 +2240,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
@@ -2225,8 +2257,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2238,8 +2270,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2249,9 +2281,9 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2262,17 +2294,17 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
 }
 #[allow(dead_code)]
 impl CuspBead {
-    fn mass(&self) -> [f64; 2] {
+    fn mass(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [self.m, self.m]
     }
-    fn force(&self) -> [f64; 2] {
+    fn force(&self) -> [Float; 2] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [0.0, -self.m * self.g]
     }
-    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         [y * y - x * x * x]
@@ -2512,7 +2544,11 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]],
     });
     #[inline]
-    fn mass_matrix(&self, q: &::zeitner::__private::Vector<2>, t: f64) -> Self::Mass {
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
         let mut m = ::zeitner::__private::Vector::<2>::zeros();
@@ -2525,7 +2561,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2538,7 +2574,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2551,7 +2587,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Matrix<1, 2> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2565,7 +2601,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2578,7 +2614,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> ::zeitner::__private::Vector<1> {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2592,7 +2628,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2605,7 +2641,7 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
     ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
         #[allow(unused_imports)]
@@ -2622,8 +2658,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2635,8 +2671,8 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
-        values: &mut [f64],
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;
@@ -2646,9 +2682,9 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         &self,
         q: &::zeitner::__private::Vector<2>,
         v: &::zeitner::__private::Vector<2>,
-        t: f64,
+        t: ::zeitner::__private::Float,
         lambda: &::zeitner::__private::Vector<1>,
-        values: &mut [f64],
+        values: &mut [::zeitner::__private::Float],
     ) {
         #[allow(unused_imports)]
         use ::zeitner::__private::Real as _;

@@ -14,5 +14,5 @@ while IFS='|' read -r features label sensitivity; do
 done <<'PLAN'
 |none (minimal)|paper
 exact|exact-sensitivity|exact
-full|exact-sensitivity, implicit, dense-output (the defaults but std)|exact
+full|exact-sensitivity, implicit, high-order, dense-output (the defaults but std)|exact
 PLAN

@@ -1,5 +1,6 @@
 //! Zeitner's benchmark: error against run time with the peers (`work-precision`), stability on
-//! stiff and extreme scenes (`stability`), the fuzzers (`fuzz`) and scaling (`scaling`).
+//! stiff and extreme scenes (`stability`), scaling (`scaling`) and the sensitivities' cost. The
+//! fuzzers are `zeitner-fuzz`.
 //!
 //! `cargo run --release -p zeitner-bench -- work-precision` (`--quick` for a smoke run).
 
@@ -10,8 +11,6 @@ mod diffsol_peer;
 #[path = "../../examples/support/figure.rs"]
 mod figure;
 mod first_result;
-mod fuzz;
-mod fuzz_command;
 mod hand_written;
 mod impacts;
 #[cfg(any(feature = "diffsol", feature = "differential-equations"))]
@@ -50,12 +49,6 @@ enum Command {
     WorkPrecision(work_precision::Args),
     /// Runs the stiff and extreme scenes across methods and steps and writes the stability report.
     Stability(StabilityArgs),
-    /// Fuzzes the runtime: random scenes, starts, options and calls against its promises, each
-    /// case in a watched worker process; `--accuracy` counts silent wrong answers instead.
-    Fuzz(fuzz_command::FuzzArgs),
-    /// The fuzzer's worker process (started by `fuzz`).
-    #[command(hide = true)]
-    FuzzWorker(fuzz_command::WorkerArgs),
     /// Chains and ladders from 8 to 256 coordinates: time per step, growth, stack needed, and
     /// the O(n) floor; writes `docs/scaling.md` and its figure.
     Scaling(scaling::ScalingArgs),
@@ -135,8 +128,6 @@ fn run(command: Command) -> Result<(), Box<dyn std::error::Error>> {
     match command {
         Command::WorkPrecision(args) => work_precision::run(args),
         Command::Stability(args) => stability_report(args),
-        Command::Fuzz(args) => fuzz_command::fuzz(args),
-        Command::FuzzWorker(args) => fuzz_command::worker(args),
         Command::Scaling(args) => scaling::report(args),
         Command::SensitivityCost(args) => sensitivity_cost::report(args),
         Command::ScalingProbe(args) => scaling::probe(args),

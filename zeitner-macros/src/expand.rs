@@ -231,7 +231,7 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     // The Jacobians by their structural nonzeros as well, for the sparse storage, and where
     // those nonzeros are.
     let vec_n = quote!(#rt::Vector<#n>);
-    let state = quote!(q: &#vec_n, v: &#vec_n, t: f64);
+    let state = quote!(q: &#vec_n, v: &#vec_n, t: #rt::Float);
     let sparse_methods = scene.functions.iter().filter_map(|generated| {
         let arguments = match generated.method {
             "constraint_jacobian" => quote!(#state),
@@ -243,7 +243,7 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
         let body = emitter.sparse_body(generated, &rt);
         Some(quote! {
             #[inline]
-            fn #method(&self, #arguments, values: &mut [f64]) {
+            fn #method(&self, #arguments, values: &mut [#rt::Float]) {
                 #body
             }
         })
@@ -315,7 +315,7 @@ fn parametrised_impl(
         let e = Literal::usize_unsuffixed(generated.blocks[0].rows);
         quote! {
             #[inline]
-            fn event_gradient(&self, index: usize, q: &#vec_n, v: &#vec_n, t: f64) -> #rt::EventGradient<#n, #p> {
+            fn event_gradient(&self, index: usize, q: &#vec_n, v: &#vec_n, t: #rt::Float) -> #rt::EventGradient<#n, #p> {
                 if index >= #e {
                     return #rt::EventGradient::unknown();
                 }
@@ -338,19 +338,19 @@ fn parametrised_impl(
                 #values_body
             }
             #[inline]
-            fn parameter_force(&self, q: &#vec_n, v: &#vec_n, t: f64, lambda: &#rt::Vector<#z>, a: &#vec_n) -> #rt::Matrix<#n, #p> {
+            fn parameter_force(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float, lambda: &#rt::Vector<#z>, a: &#vec_n) -> #rt::Matrix<#n, #p> {
                 #force_body
             }
             #[inline]
-            fn parameter_constraints(&self, q: &#vec_n, v: &#vec_n, t: f64) -> (#rt::Matrix<#z, #p>, #rt::Matrix<#z, #p>) {
+            fn parameter_constraints(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float) -> (#rt::Matrix<#z, #p>, #rt::Matrix<#z, #p>) {
                 #constraints_body
             }
             #[inline]
-            fn rate_jacobians(&self, q: &#vec_n, v: &#vec_n, t: f64) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>) {
+            fn rate_jacobians(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>) {
                 #rate_body
             }
             #[inline]
-            fn acceleration_constraint_jacobians(&self, q: &#vec_n, v: &#vec_n, t: f64, a: &#vec_n) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>, #rt::Matrix<#z, #p>) {
+            fn acceleration_constraint_jacobians(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float, a: &#vec_n) -> (#rt::Matrix<#z, #n>, #rt::Matrix<#z, #n>, #rt::Matrix<#z, #p>) {
                 #level_body
             }
             #events
@@ -410,14 +410,14 @@ fn values_only(
     Some(match generated.method {
         "restitution" => quote! {
             #[inline]
-            fn restitution(&self, gap: usize) -> f64 {
+            fn restitution(&self, gap: usize) -> #rt::Float {
                 let e = { #body };
                 if gap < #count { e[gap] } else { 0.0 }
             }
         },
         "event_functions" => quote! {
             #[inline]
-            fn event_functions(&self, q: &#vec_n, v: &#vec_n, t: f64, values: &mut [f64]) {
+            fn event_functions(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float, values: &mut [#rt::Float]) {
                 let e = { #body };
                 for (value, x) in values.iter_mut().zip(e.iter()) {
                     *value = *x;
@@ -426,9 +426,9 @@ fn values_only(
         },
         "time_event_after" => quote! {
             #[inline]
-            fn time_event_after(&self, after: f64) -> Option<f64> {
+            fn time_event_after(&self, after: #rt::Float) -> Option<#rt::Float> {
                 let times = { #body };
-                times.iter().copied().filter(|&s| s > after).fold(None, |next: Option<f64>, s| {
+                times.iter().copied().filter(|&s| s > after).fold(None, |next: Option<#rt::Float>, s| {
                     Some(next.map_or(s, |n| n.min(s)))
                 })
             }
@@ -444,10 +444,10 @@ fn signature(
     rt: &TokenStream,
 ) -> (TokenStream, TokenStream) {
     let vec_n = quote!(#rt::Vector<#n>);
-    let state = quote!(q: &#vec_n, v: &#vec_n, t: f64);
+    let state = quote!(q: &#vec_n, v: &#vec_n, t: #rt::Float);
     let square = quote!(#rt::Matrix<#n, #n>);
     match method {
-        "mass_matrix" => (quote!(q: &#vec_n, t: f64), quote!(Self::Mass)),
+        "mass_matrix" => (quote!(q: &#vec_n, t: #rt::Float), quote!(Self::Mass)),
         "applied_force" => (state, vec_n),
         "constraint_residual" | "constraint_rate" | "constraint_acceleration_bias" => {
             (state, quote!(#rt::Vector<#z>))
@@ -460,7 +460,7 @@ fn signature(
             quote!(#state, lambda: &#rt::Vector<#z>),
             quote!((#square, #square)),
         ),
-        "mass_jacobian_product" => (quote!(q: &#vec_n, t: f64, a: &#vec_n), square),
+        "mass_jacobian_product" => (quote!(q: &#vec_n, t: #rt::Float, a: &#vec_n), square),
         other => unreachable!("no signature for generated method {other}"),
     }
 }
@@ -707,14 +707,14 @@ impl Emitter<'_> {
     fn receiver(&self, code: &Code, span: Span) -> TokenStream {
         if let Code::Const(x) = code {
             if !x.is_finite() {
-                // `f64::INFINITY`, `f64::NAN`: paths, so already typed receivers.
+                // `Float::INFINITY`, `Float::NAN`: paths, so already typed receivers.
                 return self.code(code, ATOM, span);
             }
-            let lit = Literal::f64_suffixed(x.abs());
+            let lit = Literal::f64_unsuffixed(x.abs());
             return if x.is_sign_negative() {
-                quote!((-#lit))
+                quote!((-#lit as ::zeitner::__private::Float))
             } else {
-                quote!(#lit)
+                quote!((#lit as ::zeitner::__private::Float))
             };
         }
         self.code(code, ATOM, span)
@@ -767,13 +767,13 @@ fn temp_name(i: u32) -> syn::Ident {
 
 fn literal(x: f64) -> (TokenStream, u8) {
     if x.is_nan() {
-        return (quote!(f64::NAN), ATOM);
+        return (quote!(::zeitner::__private::Float::NAN), ATOM);
     }
     if x.is_infinite() {
         return if x > 0.0 {
-            (quote!(f64::INFINITY), ATOM)
+            (quote!(::zeitner::__private::Float::INFINITY), ATOM)
         } else {
-            (quote!(f64::NEG_INFINITY), ATOM)
+            (quote!(::zeitner::__private::Float::NEG_INFINITY), ATOM)
         };
     }
     let lit = Literal::f64_unsuffixed(x.abs());

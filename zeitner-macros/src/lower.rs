@@ -288,7 +288,7 @@ impl Lowerer<'_> {
             Expr::Call(call) => self.lower_function_call(scope, call),
             Expr::If(if_expr) => self.lower_if(scope, if_expr),
             Expr::Cast(cast) => {
-                let to_f64 = matches!(&*cast.ty, syn::Type::Path(p) if p.path.is_ident("f64"));
+                let to_f64 = crate::model::is_scalar(&cast.ty);
                 if to_f64 && self.looks_integer(scope, &cast.expr) {
                     let value = self.int(scope, &cast.expr)?;
                     return Some(self.graph.num(value as f64));
@@ -563,7 +563,12 @@ impl Lowerer<'_> {
     fn lower_function_call(&mut self, scope: &Scope, call: &syn::ExprCall) -> Option<Id> {
         if let Expr::Path(path) = &*call.func {
             let segments: Vec<_> = path.path.segments.iter().collect();
-            if segments.len() == 2 && segments[0].ident == "f64" && !call.args.is_empty() {
+            if segments.len() == 2
+                && ["f64", "f32", "Float"]
+                    .iter()
+                    .any(|s| segments[0].ident == s)
+                && !call.args.is_empty()
+            {
                 let method = &segments[1].ident;
                 let mut args = call.args.iter();
                 let receiver = args.next().and_then(|first| self.lower(scope, first));

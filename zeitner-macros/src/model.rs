@@ -347,11 +347,11 @@ fn parse_helper<'a>(
         }
     }
     let param = |ty: &Type, errors: &mut Errors| -> Option<Param> {
-        if is_f64(ty) {
+        if is_scalar(ty) {
             return Some(Param::Scalar);
         }
         match ty {
-            Type::Array(array) if is_f64(&array.elem) => {
+            Type::Array(array) if is_scalar(&array.elem) => {
                 size(&array.len, consts, errors).map(Param::Array)
             }
             other => {
@@ -464,7 +464,7 @@ fn parse_function<'a>(
             ok = false;
             continue;
         }
-        if is_f64(&typed.ty) {
+        if is_scalar(&typed.ty) {
             if t.is_some() {
                 errors.error_spanned_by(typed, "only one `f64` argument (the time) is allowed");
                 ok = false;
@@ -708,14 +708,25 @@ fn binding_text(arg: &ArrayArg<'_>) -> String {
     }
 }
 
-fn is_f64(ty: &Type) -> bool {
-    matches!(ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+/// The scalar as a model may name it: `f64`, `f32` (whichever the build's is; the other one
+/// is a type error in the user's own code) or `Float` (`zeitner::Float`, the build's scalar).
+pub(crate) fn is_scalar(ty: &Type) -> bool {
+    let Type::Path(p) = ty else { return false };
+    if p.qself.is_some() {
+        return false;
+    }
+    p.path.is_ident("f64")
+        || p.path.is_ident("f32")
+        || p.path
+            .segments
+            .last()
+            .is_some_and(|last| last.ident == "Float" && last.arguments.is_none())
 }
 
 /// `[f64; N]` with `N` known at expansion time.
 fn array_len<'t>(ty: &'t Type, consts: &Consts) -> Option<(usize, &'t Expr)> {
     let Type::Array(array) = ty else { return None };
-    if !is_f64(&array.elem) {
+    if !is_scalar(&array.elem) {
         return None;
     }
     known_len(&array.len, consts)
@@ -747,7 +758,7 @@ fn report_sizes(ty: &Type, consts: &Consts, errors: &mut Errors) -> bool {
         lens.push(&array.len);
         ty = &array.elem;
     }
-    if !is_f64(ty) || lens.is_empty() || lens.len() > 2 {
+    if !is_scalar(ty) || lens.is_empty() || lens.len() > 2 {
         return false;
     }
     let before = errors.count();

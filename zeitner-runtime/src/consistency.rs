@@ -8,6 +8,7 @@ use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model};
 use crate::options::StartPolicy;
 use crate::output::{Point, StepReport};
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// Gauss–Newton sweeps when projecting a start onto the position-level constraints.
@@ -51,8 +52,8 @@ impl<const N: usize, const Z: usize> StartReport<N, Z> {
 /// asks for when `(q, v)` violates the constraints by more than `tolerance`.
 pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q0, v0, t0): (Vector<N>, Vector<N>, f64),
-    tolerance: f64,
+    (q0, v0, t0): (Vector<N>, Vector<N>, Float),
+    tolerance: Float,
     policy: StartPolicy,
 ) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
     if !q0.iter().chain(v0.iter()).all(|x| x.is_finite()) {
@@ -78,8 +79,8 @@ fn refuse_inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     model: &mut Model<'_, S, N, Z>,
     q: &Vector<N>,
     v: &Vector<N>,
-    t: f64,
-    tolerance: f64,
+    t: Float,
+    tolerance: Float,
 ) -> Result<(), StepError> {
     let g = model.residual(q, v, t)?;
     let w = model.rate(q, v, t)?;
@@ -103,8 +104,8 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
     model: &mut Model<'_, S, N, Z>,
     mut q: Vector<N>,
     v: &Vector<N>,
-    t: f64,
-    tolerance: f64,
+    t: Float,
+    tolerance: Float,
 ) -> Result<Vector<N>, StepError> {
     let r = S::POSITION_CONSTRAINTS;
     let mut sweeps = 0;
@@ -147,7 +148,7 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
 #[inline]
 fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, mut v, t): (&Vector<N>, Vector<N>, f64),
+    (q, mut v, t): (&Vector<N>, Vector<N>, Float),
     max_sweeps: u32,
     settled: impl Fn(&Vector<Z>) -> bool,
 ) -> Result<(Vector<N>, ConstraintDirections<FactorOf<S, N, Z>, N, Z>), StepError> {
@@ -184,15 +185,15 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
     model: &mut Model<'_, S, N, Z>,
     q: &Vector<N>,
     v: Vector<N>,
-    t: f64,
-    tolerance: f64,
+    t: Float,
+    tolerance: Float,
 ) -> Result<Vector<N>, StepError> {
     let settled = |w: &Vector<Z>| max_abs(w).0 <= tolerance * 1e-3;
     let (v, directions) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
     let (residual, index) = max_abs(&model.rate(q, &v, t)?);
     let jacobian = directions.jacobian;
-    let reach = (0..Z).map(|j| jacobian.row(j).norm()).fold(0.0, f64::max);
-    let floor = 64.0 * f64::EPSILON * reach * v.amax();
+    let reach = (0..Z).map(|j| jacobian.row(j).norm()).fold(0.0, Float::max);
+    let floor = 64.0 * Float::EPSILON * reach * v.amax();
     if !(residual <= tolerance.max(floor)) {
         return Err(StepError::InconsistentStart {
             worst_row: Row {
@@ -209,7 +210,7 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
 /// `G M⁻¹ Gᵀ λ = G M⁻¹ F + b` at a state.
 pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    t: f64,
+    t: Float,
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<Point<N, Z>, StepError> {
@@ -223,7 +224,7 @@ pub(crate) fn consistent_point_and_gram<
     const Z: usize,
 >(
     model: &mut Model<'_, S, N, Z>,
-    t: f64,
+    t: Float,
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
@@ -243,7 +244,7 @@ pub(crate) fn consistent_point_and_directions<
     const Z: usize,
 >(
     model: &mut Model<'_, S, N, Z>,
-    t: f64,
+    t: Float,
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<
@@ -266,7 +267,7 @@ pub(crate) fn consistent_point_and_directions<
 #[inline]
 fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (t, q, v): (f64, Vector<N>, Vector<N>),
+    (t, q, v): (Float, Vector<N>, Vector<N>),
     directions: ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
     let force = model.force(&q, &v, t)?;
@@ -306,10 +307,10 @@ pub(crate) struct Gram<const N: usize, const Z: usize> {
 #[inline]
 pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    t: f64,
+    t: Float,
     q: Vector<N>,
     v: Vector<N>,
-    tolerance: f64,
+    tolerance: Float,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
     let r = S::POSITION_CONSTRAINTS;
     let sweeps = if r < Z { 3 } else { 1 };
@@ -340,7 +341,7 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
 /// `G` and `G M⁻¹Gᵀ` at the end point `(q, t)`, as [`end_point`] made them.
 pub(crate) fn tangential<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, t): (&Vector<N>, f64),
+    (q, t): (&Vector<N>, Float),
     at: &Gram<N, Z>,
     (eq, ev): (Vector<N>, Vector<N>),
 ) -> Result<(Vector<N>, Vector<N>), StepError> {

@@ -15,12 +15,13 @@ use crate::linalg::solve_spd;
 use crate::mass::MassMatrix;
 use crate::model::Model;
 use crate::output::Point;
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
 
 /// What one impact did.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Impact<const N: usize, const Z: usize> {
-    pub t: f64,
+    pub t: Float,
     /// The gaps that closed approaching, and took part in the impulse.
     pub gaps: GapSet,
     /// Of those, the ones that stay closed: restitution 0, or an approach slower than
@@ -33,18 +34,18 @@ pub struct Impact<const N: usize, const Z: usize> {
     pub velocity_before: Vector<N>,
     pub velocity_after: Vector<N>,
     /// The rate `ġ_u` of each gap (by gap index) before and after.
-    pub gap_rate_before: [f64; MAX_GAPS],
-    pub gap_rate_after: [f64; MAX_GAPS],
+    pub gap_rate_before: [Float; MAX_GAPS],
+    pub gap_rate_after: [Float; MAX_GAPS],
     /// Kinetic energy before minus after (0 for `e = 1` up to rounding).
-    pub energy_lost: f64,
+    pub energy_lost: Float,
 }
 
 /// The gaps closed at a start `(q, v, t)`: those touching or overlapping (`g_u ≤ tolerance`)
 /// and not separating (`ġ_u ≤ tolerance`).
 pub(crate) fn touching<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): (&Vector<N>, &Vector<N>, f64),
-    tolerance: f64,
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    tolerance: Float,
 ) -> Result<GapSet, StepError> {
     let mut closed = GapSet::EMPTY;
     if S::UNILATERAL_CONSTRAINTS == 0 {
@@ -74,7 +75,7 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
             .iter()
             .map(|k| (k, point.lambda[first + k]))
             .filter(|&(_, lambda)| lambda > 0.0)
-            .fold(None, |best: Option<(usize, f64)>, (k, l)| match best {
+            .fold(None, |best: Option<(usize, Float)>, (k, l)| match best {
                 Some((_, b)) if b >= l => best,
                 _ => Some((k, l)),
             });
@@ -99,9 +100,9 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
 /// impact is made inelastic: an `M`-orthogonal projection, which cannot.
 pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
     impacting: GapSet,
-    rest_velocity: f64,
+    rest_velocity: Float,
 ) -> Result<Impact<N, Z>, StepError> {
     let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
     let rates = model.gap_rates(q, v, t)?;
@@ -127,7 +128,7 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         &coefficients,
         &rates,
     )?;
-    if energy(model, &solved.1) > before * (1.0 + 1e-12) {
+    if energy(model, &solved.1) > before * (1.0 + crate::scalar::floors::ENERGY_SLACK) {
         // Inelastic: the impulse is then an M-orthogonal projection, which cannot add energy.
         coefficients = [0.0; MAX_GAPS];
         model.set_open_gaps(all.without(closed_before));
@@ -174,10 +175,10 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
 #[allow(clippy::type_complexity)]
 fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): (&Vector<N>, &Vector<N>, f64),
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
     (closed, impacting): (GapSet, GapSet),
-    coefficients: &[f64; MAX_GAPS],
-    rates: &[f64; MAX_GAPS],
+    coefficients: &[Float; MAX_GAPS],
+    rates: &[Float; MAX_GAPS],
 ) -> Result<(Vector<Z>, Vector<N>, GapSet), StepError> {
     let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
     let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;

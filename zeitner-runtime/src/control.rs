@@ -6,47 +6,48 @@ use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::Model;
 use crate::options::{ControllerSettings, Options, StepControl};
+use crate::scalar::{Float, Lm};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
-/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `f64::MAX`
+/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `Float::MAX`
 /// is valid, but `t + h` would not be).
-pub(crate) const LARGEST_STEP: f64 = 1e300;
+pub(crate) const LARGEST_STEP: Float = crate::scalar::LARGEST_STEP;
 
 /// The controller's memory: the logarithm of the last accepted step's error norm (one `ln`
 /// and one `exp` per step instead of two powers).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Controller {
-    ln_previous_error: f64,
+    ln_previous_error: Float,
 }
 
 /// Hairer & Wanner's start value of the previous error (`facold`).
-const FIRST_PREVIOUS_ERROR: f64 = 1e-4;
+const FIRST_PREVIOUS_ERROR: Float = 1e-4;
 
 impl Controller {
     pub fn new() -> Self {
         Controller {
-            ln_previous_error: libm::log(FIRST_PREVIOUS_ERROR),
+            ln_previous_error: Lm::log(FIRST_PREVIOUS_ERROR),
         }
     }
 
     /// The factor for the next step after a step accepted with `error` (≤ 1), for an estimate
     /// of order `k - 1` (so the error behaves like `h^k`).
-    pub fn accepted(&mut self, settings: &ControllerSettings, error: f64, k: u32) -> f64 {
-        let k = f64::from(k.max(1));
+    pub fn accepted(&mut self, settings: &ControllerSettings, error: Float, k: u32) -> Float {
+        let k = (k.max(1)) as Float;
         let beta = settings.beta_times_order / k;
         let alpha = 1.0 / k - 0.75 * beta;
-        let ln_error = libm::log(error.max(1e-10));
-        let factor = settings.safety * libm::exp(-alpha * ln_error + beta * self.ln_previous_error);
+        let ln_error = Lm::log(error.max(1e-10));
+        let factor = settings.safety * Lm::exp(-alpha * ln_error + beta * self.ln_previous_error);
         // Hairer & Wanner keep at least 1e-4, so that one very accurate step does not hold back
         // the next one's growth.
-        self.ln_previous_error = ln_error.max(libm::log(FIRST_PREVIOUS_ERROR));
+        self.ln_previous_error = ln_error.max(Lm::log(FIRST_PREVIOUS_ERROR));
         factor.clamp(settings.min_factor, settings.max_factor)
     }
 
     /// The factor for the retry after a step rejected with `error` > 1 (or NaN).
-    pub fn rejected(settings: &ControllerSettings, error: f64, k: u32) -> f64 {
+    pub fn rejected(settings: &ControllerSettings, error: Float, k: u32) -> Float {
         // `exp` and `ln` rather than `pow`: the accepted path links them already.
-        let factor = settings.safety * libm::exp(-libm::log(error) / f64::from(k.max(1)));
+        let factor = settings.safety * Lm::exp(-Lm::log(error) / (k.max(1)) as Float);
         if factor.is_finite() {
             factor.clamp(settings.min_factor, settings.max_factor_after_rejection)
         } else {
@@ -56,7 +57,7 @@ impl Controller {
 }
 
 /// The step sizes `step` allows, as `(min, max)`.
-pub(crate) fn bounds(step: StepControl) -> (f64, f64) {
+pub(crate) fn bounds(step: StepControl) -> (Float, Float) {
     match step {
         StepControl::Fixed { step } => (step, step),
         StepControl::Adaptive {
@@ -70,11 +71,11 @@ pub(crate) fn bounds(step: StepControl) -> (f64, f64) {
 /// `sliver` (a share of itself) of the remainder is stretched to it; a retry passes `None` and
 /// never is (it would be the rejected step again).
 pub(crate) fn plan_step(
-    (t, carry): (f64, f64),
-    h: f64,
-    limit: f64,
-    sliver: Option<f64>,
-) -> Result<(f64, f64, bool), StepError> {
+    (t, carry): (Float, Float),
+    h: Float,
+    limit: Float,
+    sliver: Option<Float>,
+) -> Result<(Float, Float, bool), StepError> {
     let remaining = limit - t;
     // `h (1 + sliver) >= remaining`, written so that it cannot overflow.
     let stretched = h >= remaining / (1.0 + sliver.unwrap_or(0.0));
@@ -108,18 +109,18 @@ pub(crate) const STALL_STEPS: u32 = 100;
 /// steps of picoseconds without an error.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Progress {
-    largest_step: f64,
+    largest_step: Float,
     tiny_steps: u32,
-    tiny_span: f64,
+    tiny_span: Float,
     /// The size of the last tiny step.
-    last_tiny: f64,
+    last_tiny: Float,
 }
 
 impl Progress {
     /// Records an accepted step of size `h` ending at `t`.
-    pub fn record(&mut self, h: f64, t: f64) {
+    pub fn record(&mut self, h: Float, t: Float) {
         self.largest_step = self.largest_step.max(h);
-        let tiny = h <= (64.0 * f64::EPSILON * t.abs()).max(1e-9 * self.largest_step);
+        let tiny = h <= (64.0 * Float::EPSILON * t.abs()).max(1e-9 * self.largest_step);
         if tiny {
             self.tiny_steps += 1;
             self.tiny_span += h;
@@ -131,7 +132,7 @@ impl Progress {
     }
 
     /// The error that ends a run stalled at `t`, if it is.
-    pub fn check(&self, t: f64) -> Result<(), StepError> {
+    pub fn check(&self, t: Float) -> Result<(), StepError> {
         let scale = t.abs().max(self.largest_step);
         if self.tiny_steps >= STALL_STEPS && self.tiny_span < 1e-4 * scale {
             return Err(StepError::Stalled {
@@ -163,7 +164,7 @@ pub(crate) struct StiffnessTest {
 impl StiffnessTest {
     /// Records an accepted step's `h|λ|` over its method's stability boundary (none: the
     /// method has no estimate, nothing is learnt); whether the run is stiff now.
-    pub fn record(&mut self, over_boundary: Option<f64>) -> bool {
+    pub fn record(&mut self, over_boundary: Option<Float>) -> bool {
         let Some(over_boundary) = over_boundary else {
             return false;
         };
@@ -185,10 +186,10 @@ impl StiffnessTest {
 /// time, nor more than [`MAX_ATTEMPTS`] times.
 pub(crate) fn retry_step(
     step: StepControl,
-    t: f64,
-    (h, attempts): (f64, u32),
+    t: Float,
+    (h, attempts): (Float, u32),
     cause: StepError,
-) -> Result<f64, StepError> {
+) -> Result<Float, StepError> {
     let StepControl::Adaptive { min_step, .. } = step else {
         return Err(cause);
     };
@@ -200,7 +201,7 @@ pub(crate) fn retry_step(
         });
     }
     // Written to also stop on a NaN step.
-    if h >= min_step && h > f64::EPSILON * t.abs() && h.is_finite() {
+    if h >= min_step && h > Float::EPSILON * t.abs() && h.is_finite() {
         return Ok(h);
     }
     Err(match cause {
@@ -219,10 +220,10 @@ pub(crate) fn next_step_size(
     options: &Options,
     controller: &mut Controller,
     k: u32,
-    (error, integrations): (f64, u32),
-    (h_used, h_planned): (f64, f64),
+    (error, integrations): (Float, u32),
+    (h_used, h_planned): (Float, Float),
     landing: bool,
-) -> f64 {
+) -> Float {
     let StepControl::Adaptive {
         min_step, max_step, ..
     } = options.step
@@ -259,11 +260,11 @@ pub(crate) fn next_step_size(
 }
 
 /// The share of a step's error tolerance that the constraint residuals a step leaves may take.
-const RESIDUAL_SHARE: f64 = 0.1;
+const RESIDUAL_SHARE: Float = 0.1;
 
 /// The finest position (or velocity) a residual is asked to stand for, in ulps of the largest
 /// coordinate.
-const RESOLUTION_ULPS: f64 = 64.0;
+const RESOLUTION_ULPS: Float = 64.0;
 
 /// The tolerance Newton holds `g` to: `constraint_tolerance`, or less where the positions (or,
 /// for velocity rows, the velocities) that a residual of that size stands for,
@@ -280,22 +281,22 @@ pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
     (q, v): (&Vector<N>, &Vector<N>),
     row_scale: &Vector<Z>,
     position_rows: usize,
-) -> f64 {
+) -> Float {
     let epsilon = options.constraint_tolerance;
     let StepControl::Adaptive { rtol, atol, .. } = options.step else {
         return epsilon;
     };
     let rms = |x: &Vector<N>| {
-        let sum: f64 = x
+        let sum: Float = x
             .iter()
             .map(|x| {
                 let scale = atol + rtol * x.abs();
                 scale * scale
             })
             .sum();
-        libm::sqrt(sum / N.max(1) as f64)
+        Lm::sqrt(sum / N.max(1) as Float)
     };
-    let resolution = |x: &Vector<N>| RESOLUTION_ULPS * f64::EPSILON * x.amax();
+    let resolution = |x: &Vector<N>| RESOLUTION_ULPS * Float::EPSILON * x.amax();
     let position_scale = (RESIDUAL_SHARE * rms(q)).max(resolution(q));
     let velocity_scale = (RESIDUAL_SHARE * rms(v)).max(resolution(v));
     let allowed = row_scale.iter().enumerate().map(|(j, &reach)| {
@@ -309,7 +310,7 @@ pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
     // Rows whose gradient vanished at the start (an open gap far away) bound nothing.
     allowed
         .filter(|allowed| *allowed > 0.0)
-        .fold(epsilon, f64::min)
+        .fold(epsilon, Float::min)
 }
 
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
@@ -322,7 +323,7 @@ pub(crate) fn error_norm<const N: usize>(
     end: (&Vector<N>, &Vector<N>),
     estimate: Option<(Vector<N>, Vector<N>)>,
     frozen: (&Vector<N>, &Vector<N>),
-) -> f64 {
+) -> Float {
     let (StepControl::Adaptive { rtol, atol, .. }, Some((eq, ev))) = (step, estimate) else {
         return 0.0;
     };
@@ -334,11 +335,11 @@ pub(crate) fn error_norm<const N: usize>(
         let xv = (ev[i].abs() + frozen.1[i].abs()) / sv;
         sum += xq * xq + xv * xv;
     }
-    let norm = libm::sqrt(sum / (2 * N).max(1) as f64);
+    let norm = Lm::sqrt(sum / (2 * N).max(1) as Float);
     if norm.is_finite() {
         norm
     } else {
-        f64::INFINITY
+        Float::INFINITY
     }
 }
 
@@ -346,11 +347,11 @@ pub(crate) fn error_norm<const N: usize>(
 /// estimates (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.10): `e₅²/√(e₅² + 0.01 e₃²)`,
 /// which behaves as `e₅` where the two agree and shrinks as `h⁸` where the third-order
 /// estimate dominates.
-pub(crate) fn tempered(high: f64, low: f64) -> f64 {
+pub(crate) fn tempered(high: Float, low: Float) -> Float {
     if !(high.is_finite() && low.is_finite()) {
-        return f64::INFINITY;
+        return Float::INFINITY;
     }
-    let denominator = libm::sqrt(high * high + 0.01 * low * low);
+    let denominator = Lm::sqrt(high * high + 0.01 * low * low);
     if denominator > 0.0 {
         high * high / denominator
     } else {
@@ -374,8 +375,8 @@ pub(crate) fn tempered(high: f64, low: f64) -> f64 {
 #[inline]
 pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (g1, lambda1, t1): (&Matrix<Z, N>, &Vector<Z>, f64),
-    (g2, lambda2, t2, q2): (&Matrix<Z, N>, &Vector<Z>, f64, &Vector<N>),
+    (g1, lambda1, t1): (&Matrix<Z, N>, &Vector<Z>, Float),
+    (g2, lambda2, t2, q2): (&Matrix<Z, N>, &Vector<Z>, Float, &Vector<N>),
 ) -> Result<(Vector<N>, Vector<N>), StepError> {
     let turn = g2 - g1;
     let factor = model.mass_factor(q2, t2)?;
@@ -387,7 +388,7 @@ pub(crate) fn freezing_error<S: ConstrainedSystem<N, Z>, const N: usize, const Z
 /// The frozen-multiplier estimate of [`freezing_error`] for a step of size `h` from the change
 /// `change` of the multipliers and `turned(y) = M⁻¹ (G(t₂) - G(t₁))ᵀ y`, whatever stores `G`.
 pub(crate) fn frozen_estimate<const N: usize, const Z: usize>(
-    h: f64,
+    h: Float,
     change: &Vector<Z>,
     turned: impl Fn(&Vector<Z>) -> Vector<N>,
 ) -> (Vector<N>, Vector<N>) {
@@ -436,7 +437,8 @@ mod tests {
         // Both rows position rows: RMS of 1e-14 + 1e-12·(3, 4) is 3.55e-12; times 0.1 and the
         // smaller |∂g/∂q|, 1.
         let position = newton_tolerance(&tight, (&q, &v), &rows, 2);
-        let rms = libm::sqrt(((1e-14 + 3e-12f64).powi(2) + (1e-14 + 4e-12f64).powi(2)) / 2.0);
+        let rms =
+            Lm::sqrt(((1e-14 + 3e-12 as Float).powi(2) + (1e-14 + 4e-12 as Float).powi(2)) / 2.0);
         assert!((position - 0.1 * rms).abs() < 1e-25, "{position:e}");
         // Fixed steps, and rows whose gradient vanished, keep ε.
         let fixed = Options::paper(1e-3);
@@ -446,7 +448,7 @@ mod tests {
         // Not below the state's rounding: 64 ulps of |q|∞ = 4, times the smaller |∂g/∂q|, 1.
         let hostile = adaptive(1e-16, 1e-300);
         let floor = newton_tolerance(&hostile, (&q, &v), &rows, 2);
-        assert_eq!(floor, 64.0 * f64::EPSILON * 4.0);
+        assert_eq!(floor, 64.0 * Float::EPSILON * 4.0);
     }
 
     #[test]
@@ -465,11 +467,11 @@ mod tests {
         let mut controller = Controller::new();
         // k = 5: α = 0.2 - 0.75·0.04 = 0.17, β = 0.04; the previous error starts at 1e-4.
         let factor = controller.accepted(&SETTINGS, 0.5, 5);
-        let expected = 0.9 * libm::pow(0.5, -0.17) * libm::pow(1e-4, 0.04);
+        let expected = 0.9 * Lm::pow(0.5, -0.17) * Lm::pow(1e-4, 0.04);
         assert!((factor - expected).abs() < 1e-14, "{factor} vs {expected}");
         // The memory is the last error: a second step with the same error grows more.
         let again = controller.accepted(&SETTINGS, 0.5, 5);
-        assert!((again - 0.9 * libm::pow(0.5, -0.17 + 0.04)).abs() < 1e-14);
+        assert!((again - 0.9 * Lm::pow(0.5, -0.17 + 0.04)).abs() < 1e-14);
         // Tiny errors are capped by max_factor, an error of 1 never grows the step.
         assert_eq!(Controller::new().accepted(&SETTINGS, 0.0, 5), 5.0);
         assert!(Controller::new().accepted(&SETTINGS, 1.0, 5) < 1.0);
@@ -477,7 +479,7 @@ mod tests {
 
     #[test]
     fn a_rejection_always_shrinks_even_on_nan() {
-        for error in [1.0 + 1e-12, 2.0, 1e6, f64::INFINITY, f64::NAN] {
+        for error in [1.0 + 1e-12, 2.0, 1e6, Float::INFINITY, Float::NAN] {
             let factor = Controller::rejected(&SETTINGS, error, 5);
             assert!((0.2..=0.9).contains(&factor), "{error}: {factor}");
         }
@@ -502,9 +504,9 @@ mod tests {
             (&zero, &zero),
         );
         assert!((norm - 0.5).abs() < 1e-12, "{norm}");
-        let nan = Some((Vector::<2>::new(f64::NAN, 0.0), zero));
+        let nan = Some((Vector::<2>::new(Float::NAN, 0.0), zero));
         let norm = error_norm(step, (&zero, &zero), (&zero, &zero), nan, (&zero, &zero));
-        assert_eq!(norm, f64::INFINITY);
+        assert_eq!(norm, Float::INFINITY);
         let fixed = StepControl::Fixed { step: 0.1 };
         assert_eq!(
             error_norm(
@@ -623,6 +625,6 @@ mod retry_tests {
     fn the_default_factors_shrink_the_largest_step_to_a_tiny_one_within_the_attempts() {
         let factor = ControllerSettings::default().newton_failure_factor;
         let tries = (1e-12 / LARGEST_STEP).ln() / factor.ln();
-        assert!(tries.ceil() < f64::from(MAX_ATTEMPTS), "{tries}");
+        assert!(tries.ceil() < MAX_ATTEMPTS as Float, "{tries}");
     }
 }

@@ -1,6 +1,7 @@
 //! Typed failures. After any of them the simulator still holds its last accepted state. Each
 //! `Display` is a sentence that says what happened and what to change.
 
+use crate::scalar::Float;
 use core::fmt;
 
 /// The model function (or the state) in which a non-finite value appeared.
@@ -150,6 +151,8 @@ pub enum InvalidOption {
     ConstraintTolerance,
     /// `rtol` or `atol` is not finite and positive.
     ErrorTolerances,
+    /// `rtol` below the scalar's resolution ε ([`crate::scalar::SMALLEST_RTOL`]).
+    BelowResolution,
     /// A step size that is not finite and positive, or bounds out of order.
     StepSize,
     /// `max_newton_iterations` outside 1 to 1000.
@@ -223,6 +226,12 @@ impl fmt::Display for InvalidOption {
             InvalidOption::ErrorTolerances => f.write_str(
                 "`rtol` and `atol` of adaptive steps must be finite and positive (defaults 1e-8 and 1e-10): \
                  with `atol = 0` a coordinate that stays at zero has no error scale",
+            ),
+            InvalidOption::BelowResolution => write!(
+                f,
+                "`rtol` is below the resolution of this build's scalar (ε = {:e}): no step can \
+                 meet it; ask for at least ε, or build in `f64` (without the feature `f32`)",
+                crate::scalar::SMALLEST_RTOL
             ),
             InvalidOption::StepSize => f.write_str(
                 "step sizes must be finite and positive, with `min_step <= initial_step <= max_step`",
@@ -301,37 +310,41 @@ impl fmt::Display for InvalidOption {
 pub enum StepError {
     /// Newton on the multipliers did not bring `|g(t+τ)|` within tolerance.
     NewtonDidNotConverge {
-        t: f64,
-        step: f64,
+        t: Float,
+        step: Float,
         iterations: u32,
-        residual: f64,
+        residual: Float,
         worst_row: Row,
     },
     /// The constraint Jacobian lost rank: redundant constraints or a singular configuration.
-    RankDeficientConstraints { t: f64, dependent_rows: RowSet },
+    RankDeficientConstraints { t: Float, dependent_rows: RowSet },
     /// The mass matrix is not symmetric positive definite (or is badly singular).
-    MassNotPositiveDefinite { t: f64 },
+    MassNotPositiveDefinite { t: Float },
     /// A model evaluation, or the state, produced NaN or infinity.
-    NonFinite { t: f64, function: ModelFunction },
+    NonFinite { t: Float, function: ModelFunction },
     /// The implicit inner method's stage equations did not converge.
-    StageDidNotConverge { t: f64, step: f64 },
+    StageDidNotConverge { t: Float, step: Float },
     /// Adaptive stepping needed a step below the minimum, or one that no longer moves the time.
-    StepSizeTooSmall { t: f64, step: f64 },
+    StepSizeTooSmall { t: Float, step: Float },
     /// One step was rejected this many times (the step-size controller shrinks too slowly).
-    TooManyAttempts { t: f64, step: f64, attempts: u32 },
+    TooManyAttempts {
+        t: Float,
+        step: Float,
+        attempts: u32,
+    },
     /// The run stopped advancing: the last `steps` accepted steps, the last of size `step`, were
     /// all too small to matter (a billionth of the run's largest step, or a few ulps of the
     /// time) and together moved it by almost nothing. Nothing was changed by the call.
-    Stalled { t: f64, step: f64, steps: u32 },
+    Stalled { t: Float, step: Float, steps: u32 },
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
-    InconsistentStart { worst_row: Row, residual: f64 },
+    InconsistentStart { worst_row: Row, residual: Float },
     /// Options or arguments were refused before anything was computed.
     InvalidOption(InvalidOption),
 }
 
 impl StepError {
-    pub(crate) fn non_finite_state(t: f64) -> Self {
+    pub(crate) fn non_finite_state(t: Float) -> Self {
         StepError::NonFinite {
             t,
             function: ModelFunction::State,

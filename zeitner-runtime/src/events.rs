@@ -14,6 +14,7 @@ use crate::error::StepError;
 use crate::gaps::GapSet;
 use crate::model::Model;
 use crate::output::{interpolate, Direction, Point};
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, MAX_EVENTS, MAX_GAPS};
 
 /// A function the simulator watches.
@@ -45,14 +46,14 @@ impl Watched {
 
 /// A closed contact opens where its multiplier pulls by more than this share of the forces at
 /// work.
-const RELEASE: f64 = 1e-12;
+const RELEASE: Float = crate::scalar::floors::CONTACT_RELEASE;
 
 /// The values of every watched function at one point.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Values {
-    pub events: [f64; MAX_EVENTS],
+    pub events: [Float; MAX_EVENTS],
     /// `g_u` above its level for open gaps, `λ` above its release level for closed ones.
-    pub gaps: [f64; MAX_GAPS],
+    pub gaps: [Float; MAX_GAPS],
 }
 
 /// What is known of the watched functions at the current state: the side of zero of each event
@@ -65,7 +66,7 @@ pub(crate) struct Values {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Watch {
     events: u32,
-    levels: [f64; MAX_GAPS],
+    levels: [Float; MAX_GAPS],
 }
 
 impl Default for Watch {
@@ -82,7 +83,7 @@ impl Watch {
     pub fn at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         model: &mut Model<'_, S, N, Z>,
         point: &Point<N, Z>,
-        tolerance: f64,
+        tolerance: Float,
     ) -> Result<Watch, StepError> {
         let events = if S::EVENTS > 0 {
             model.events(&point.q, &point.v, point.t)?
@@ -118,7 +119,7 @@ impl Watch {
         values: &Values,
         (events, gaps): (usize, usize),
         open: GapSet,
-        tolerance: f64,
+        tolerance: Float,
     ) -> Watch {
         let mut distances = [0.0; MAX_GAPS];
         for k in open.iter().filter(|&k| k < gaps) {
@@ -132,10 +133,10 @@ impl Watch {
     }
 
     fn from_values(
-        events: &[f64; MAX_EVENTS],
-        gaps: &[f64; MAX_GAPS],
+        events: &[Float; MAX_EVENTS],
+        gaps: &[Float; MAX_GAPS],
         count: usize,
-        tolerance: f64,
+        tolerance: Float,
     ) -> Watch {
         let sides = events[..count]
             .iter()
@@ -152,7 +153,7 @@ impl Watch {
         self.events & (1 << i) != 0
     }
 
-    pub fn level(&self, k: usize) -> f64 {
+    pub fn level(&self, k: usize) -> Float {
         self.levels[k]
     }
 
@@ -195,7 +196,7 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     which: Watched,
     point: &Point<N, Z>,
     watch: &Watch,
-) -> Result<f64, StepError> {
+) -> Result<Float, StepError> {
     Ok(match which {
         Watched::Event(i) => model.events(&point.q, &point.v, point.t)?[i],
         Watched::Gap(k) => model.gaps(&point.q, &point.v, point.t)?[k] - watch.level(k),
@@ -214,7 +215,7 @@ pub(crate) struct Crossing {
     pub watched: Watched,
     pub direction: Direction,
     /// The zero of the interpolant, to within a quarter of the time tolerance.
-    pub t: f64,
+    pub t: Float,
 }
 
 /// Interior points of a step at which the event functions and open gaps are sampled on its dense
@@ -235,7 +236,7 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     (start, end): (&Point<N, Z>, &Point<N, Z>),
     watch: &Watch,
     end_values: &Values,
-    time_tolerance: f64,
+    time_tolerance: Float,
 ) -> Result<Option<Crossing>, StepError> {
     let open = model.open_gaps();
     let other_side = other_sides(model, (start, end), watch, end_values)?;
@@ -296,7 +297,7 @@ fn watched(index: usize, watch: &Watch, open: GapSet) -> (Watched, bool) {
 }
 
 /// The value of the function at `index` in `values`.
-fn value_in(values: &Values, index: usize) -> f64 {
+fn value_in(values: &Values, index: usize) -> Float {
     match index < MAX_EVENTS {
         true => values.events[index],
         false => values.gaps[index - MAX_EVENTS],
@@ -311,16 +312,16 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (start, end): (&Point<N, Z>, &Point<N, Z>),
     watch: &Watch,
     end_values: &Values,
-) -> Result<[Option<(f64, f64)>; MAX_EVENTS + MAX_GAPS], StepError> {
+) -> Result<[Option<(Float, Float)>; MAX_EVENTS + MAX_GAPS], StepError> {
     let open = model.open_gaps();
-    let mut other_side = [None::<(f64, f64)>; MAX_EVENTS + MAX_GAPS];
+    let mut other_side = [None::<(Float, Float)>; MAX_EVENTS + MAX_GAPS];
     if S::EVENTS == 0 && open.is_empty() {
         return Ok(other_side);
     }
     let sampled = watched_indices::<S, N, Z>()
         .filter(|&i| !matches!(watched(i, watch, open).0, Watched::Contact(_)));
     let h = end.t - start.t;
-    let at = |j: usize| start.t + h * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+    let at = |j: usize| start.t + h * j as Float / (INTERIOR_SAMPLES + 1) as Float;
     let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
     let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
     let side = |index: usize| match watched(index, watch, open).1 {
@@ -338,7 +339,7 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         return Ok(other_side);
     }
     // Each function's lowest sample before the end, by its position and signed value.
-    let mut lowest = [(0usize, f64::INFINITY); MAX_EVENTS + MAX_GAPS];
+    let mut lowest = [(0usize, Float::INFINITY); MAX_EVENTS + MAX_GAPS];
     for index in sampled.clone() {
         lowest[index] = (0, signed(&first, index));
     }
@@ -396,8 +397,8 @@ fn sample_value<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     watch: &Watch,
     (index, j): (usize, usize),
     known: &Known<'_>,
-) -> Result<(f64, f64), StepError> {
-    let t = start.t + (end.t - start.t) * j as f64 / (INTERIOR_SAMPLES + 1) as f64;
+) -> Result<(Float, Float), StepError> {
+    let t = start.t + (end.t - start.t) * j as Float / (INTERIOR_SAMPLES + 1) as Float;
     let value = match j {
         0 => value_in(known.first, index),
         j if j == known.centre.0 => value_in(known.centre.1, index),
@@ -424,7 +425,7 @@ fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (index, was_positive): (usize, bool),
     (j, right): (usize, usize),
     known: &Known<'_>,
-) -> Result<Option<(f64, f64)>, StepError> {
+) -> Result<Option<(Float, Float)>, StepError> {
     let side = if was_positive { 1.0 } else { -1.0 };
     let (start, end) = ends;
     let mut signed_at =
@@ -432,7 +433,7 @@ fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let mut around = if j == 0 {
         let (t0, f0) = signed_at(0)?;
         let neighbour = signed_at(right)?;
-        let t = t0 + (neighbour.0 - t0) / (16 * right) as f64;
+        let t = t0 + (neighbour.0 - t0) / (16 * right) as Float;
         let value = value_in(&values(model, &interpolate(start, end, t), watch)?, index);
         if (value > 0.0) != was_positive {
             return Ok(Some((t, value)));
@@ -476,7 +477,7 @@ fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// Whether a function with the values `a`, `m`, `b` at a step's start, middle and end (signed so
 /// that the start's side is positive) starts much nearer zero than the rest of the step: it may
 /// head towards zero first (a step that ended just short of a crossing).
-fn starts_near_zero(a: f64, m: f64, b: f64) -> bool {
+fn starts_near_zero(a: Float, m: Float, b: Float) -> bool {
     m > 0.0 && b > 0.0 && a < 0.5 * m.min(b)
 }
 
@@ -484,7 +485,7 @@ fn starts_near_zero(a: f64, m: f64, b: f64) -> bool {
 /// that the start's side is positive) may cross zero within the step: a value on the other side,
 /// or a parabola through them whose minimum inside the step comes within half the smaller end
 /// value of zero.
-fn may_cross(a: f64, m: f64, b: f64) -> bool {
+fn may_cross(a: Float, m: Float, b: Float) -> bool {
     if !(m > 0.0 && b > 0.0) {
         return true;
     }
@@ -502,11 +503,11 @@ fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (watched, watch): (Watched, &Watch),
     (start, end): (&Point<N, Z>, &Point<N, Z>),
-    (was_positive, bracket_end): (bool, (f64, f64)),
-    time_tolerance: f64,
-) -> Result<f64, StepError> {
+    (was_positive, bracket_end): (bool, (Float, Float)),
+    time_tolerance: Float,
+) -> Result<Float, StepError> {
     // The start's value, on its recorded side even where rounding put it at or across zero.
-    let tiny = f64::MIN_POSITIVE;
+    let tiny = Float::MIN_POSITIVE;
     let start_value = value_of(model, watched, start, watch)?;
     let mut fa = if was_positive {
         start_value.max(tiny)

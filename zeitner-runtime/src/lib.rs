@@ -55,6 +55,7 @@ mod multipliers;
 pub mod options;
 pub mod output;
 mod polynomial;
+pub mod scalar;
 mod sensitivity;
 pub mod simulator;
 #[cfg(feature = "alloc")]
@@ -77,6 +78,7 @@ pub use options::{
     StartPolicy, StepControl, VelocityProjection, VERNER_FROM_RTOL,
 };
 pub use output::{Direction, Point, Sensitivities, StepReport, StopReason};
+pub use scalar::Float;
 pub use simulator::{Observation, SensitivitySimulator, Simulator, Statistics};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
@@ -90,6 +92,7 @@ pub use with_storage::WithStorage;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::math::Real;
+    pub use crate::scalar::Float;
     pub use crate::{
         BlockSummary, ConstrainedSystem, DiagonalMass, EventGradient, FullMass, FunctionSummary,
         MassKind, Matrix, OpCounts, ParametrisedSystem, SceneSummary, Sparsity, Vector,

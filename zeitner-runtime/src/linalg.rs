@@ -2,12 +2,13 @@
 
 use crate::dense::{Matrix, Vector};
 use crate::error::{ModelFunction, RowSet, StepError};
+use crate::scalar::Float;
 
 /// Whether every value is finite. Checked without an early exit: the model's outputs are
 /// checked on every evaluation and are nearly always finite, so one branch at the end is
 /// cheaper than one per entry.
 #[inline(always)]
-pub fn all_finite<'a>(values: impl IntoIterator<Item = &'a f64>) -> bool {
+pub fn all_finite<'a>(values: impl IntoIterator<Item = &'a Float>) -> bool {
     values
         .into_iter()
         .fold(true, |finite, x| finite & x.is_finite())
@@ -15,14 +16,14 @@ pub fn all_finite<'a>(values: impl IntoIterator<Item = &'a f64>) -> bool {
 
 /// Pivots below this fraction of the largest diagonal entry count as lost rank (a condition
 /// number of about 1e12 for the symmetric systems `G M⁻¹ Gᵀ`).
-const RELATIVE_PIVOT: f64 = 1e-12;
+const RELATIVE_PIVOT: Float = crate::scalar::floors::RELATIVE_PIVOT;
 
 /// Rows of the symmetric positive semidefinite `a` that depend on the others, found by
 /// Cholesky with diagonal pivoting: the rows left when the remaining pivots vanish.
 pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) -> RowSet {
     let mut work = *a;
     let mut remaining = [true; Z];
-    let scale = (0..Z).map(|i| work[(i, i)].abs()).fold(0.0, f64::max);
+    let scale = (0..Z).map(|i| work[(i, i)].abs()).fold(0.0, Float::max);
     let mut rows = RowSet::new(position_rows);
     for _ in 0..Z {
         let pivot = (0..Z)
@@ -49,30 +50,71 @@ pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) ->
 }
 
 /// Solves the symmetric positive definite `a x = b`, or names the dependent rows.
+///
+/// By `L D Lᵀ` rather than Cholesky: no square roots, which a microcontroller's `f32` FPU may
+/// have but `libm` computes in software (on the Cortex-M4F, 11 % of a step's instructions). A
+/// pivot that is not positive, or below [`RELATIVE_PIVOT`] of the largest, is lost rank.
 #[inline]
 pub fn solve_spd<const Z: usize, const C: usize>(
     a: &Matrix<Z, Z>,
     b: &Matrix<Z, C>,
     position_rows: usize,
 ) -> Result<Matrix<Z, C>, RowSet> {
-    let well_conditioned = nalgebra::Cholesky::new(*a).filter(|c| {
-        let d = c.l_dirty().diagonal();
-        let (lo, hi) = d.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| {
-            (lo.min(x), hi.max(x))
-        });
-        lo > 0.0 && lo * lo > RELATIVE_PIVOT * hi * hi
-    });
-    match well_conditioned {
-        Some(c) => {
-            let x = c.solve(b);
-            if all_finite(&x) {
-                Ok(x)
-            } else {
-                Err(dependent_rows(a, position_rows))
+    match ldl_solve(a, b) {
+        Some(x) if all_finite(&x) => Ok(x),
+        _ => Err(dependent_rows(a, position_rows)),
+    }
+}
+
+/// `a x = b` by `L D Lᵀ` without pivoting; `None` where a pivot is not positive or falls below
+/// [`RELATIVE_PIVOT`] of the largest.
+#[inline]
+fn ldl_solve<const Z: usize, const C: usize>(
+    a: &Matrix<Z, Z>,
+    b: &Matrix<Z, C>,
+) -> Option<Matrix<Z, C>> {
+    // `l` holds `L` below its diagonal and `D` on it.
+    let mut l = *a;
+    let (mut lo, mut hi) = (Float::INFINITY, 0.0 as Float);
+    for k in 0..Z {
+        for j in 0..k {
+            let ljk = l[(k, j)] * l[(j, j)];
+            l[(k, k)] -= l[(k, j)] * ljk;
+        }
+        let d = l[(k, k)];
+        if !(d > 0.0) {
+            return None;
+        }
+        lo = if d < lo { d } else { lo };
+        hi = if d > hi { d } else { hi };
+        for i in k + 1..Z {
+            let mut sum = l[(i, k)];
+            for j in 0..k {
+                sum -= l[(i, j)] * l[(k, j)] * l[(j, j)];
+            }
+            l[(i, k)] = sum / d;
+        }
+    }
+    if !(lo > RELATIVE_PIVOT * hi) {
+        return None;
+    }
+    let mut x = *b;
+    for c in 0..C {
+        for i in 0..Z {
+            for j in 0..i {
+                x[(i, c)] -= l[(i, j)] * x[(j, c)];
             }
         }
-        None => Err(dependent_rows(a, position_rows)),
+        for i in 0..Z {
+            x[(i, c)] /= l[(i, i)];
+        }
+        for i in (0..Z).rev() {
+            for j in i + 1..Z {
+                x[(i, c)] -= l[(j, i)] * x[(j, c)];
+            }
+        }
     }
+    Some(x)
 }
 
 /// An LU factorisation with partial pivoting of a square fixed-size matrix. (nalgebra's `lu()`
@@ -88,7 +130,7 @@ impl<const N: usize> Lu<N> {
     #[inline]
     pub fn new(mut a: Matrix<N, N>) -> Option<Self> {
         let mut pivots = [0usize; N];
-        let mut largest = 0.0f64;
+        let mut largest = 0.0 as Float;
         for k in 0..N {
             let (p, value) = (k..N)
                 .map(|i| (i, a[(i, k)].abs()))
@@ -100,7 +142,7 @@ impl<const N: usize> Lu<N> {
                 return None;
             }
             largest = largest.max(value);
-            if !(value > 1e-13 * largest) || value == 0.0 {
+            if !(value > crate::scalar::floors::SINGULAR_PIVOT * largest) || value == 0.0 {
                 return None;
             }
             pivots[k] = p;
@@ -127,7 +169,7 @@ impl<const N: usize> Lu<N> {
     fn substitute<const C: usize>(
         &self,
         b: &Matrix<N, C>,
-        divide: impl Fn(usize, f64) -> f64,
+        divide: impl Fn(usize, Float) -> Float,
     ) -> Matrix<N, C> {
         let mut x = *b;
         for k in 0..N {
@@ -160,7 +202,7 @@ impl<const N: usize> Lu<N> {
 #[derive(Clone, Copy, Debug)]
 pub struct IterationFactor<const N: usize> {
     lu: Lu<N>,
-    inverse_diagonal: [f64; N],
+    inverse_diagonal: [Float; N],
 }
 
 impl<const N: usize> IterationFactor<N> {
@@ -200,7 +242,7 @@ pub fn keep_leading_rows<const Z: usize, const C: usize>(
 /// `value`, or the typed error naming `function` when an entry is not finite.
 pub(crate) fn finite<const R: usize, const C: usize>(
     value: Matrix<R, C>,
-    t: f64,
+    t: Float,
     function: ModelFunction,
 ) -> Result<Matrix<R, C>, StepError> {
     if all_finite(&value) {
@@ -211,7 +253,7 @@ pub(crate) fn finite<const R: usize, const C: usize>(
 }
 
 /// Largest absolute entry and its index.
-pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (f64, usize) {
+pub fn max_abs<const Z: usize>(x: &Vector<Z>) -> (Float, usize) {
     x.iter().enumerate().fold((0.0, 0), |(m, k), (i, &v)| {
         if v.abs() > m || v.is_nan() {
             (v.abs(), i)
@@ -288,7 +330,25 @@ mod tests {
         assert!(Lu::new(singular).is_none());
         let nearly = Matrix::<2, 2>::new(1.0, 1.0, 1.0, 1.0 + 1e-15);
         assert!(Lu::new(nearly).is_none());
-        assert!(Lu::new(Matrix::<2, 2>::new(f64::NAN, 0.0, 0.0, 1.0)).is_none());
+        assert!(Lu::new(Matrix::<2, 2>::new(Float::NAN, 0.0, 0.0, 1.0)).is_none());
+    }
+
+    #[test]
+    fn solve_spd_solves_as_the_lu_does() {
+        // An SPD matrix of a 4×3 `G`, a condition number of about 1e3, and two right-hand sides.
+        let g = Matrix::<3, 4>::new(
+            1.0, 0.5, -0.2, 0.0, 0.3, 2.0, 0.1, -1.0, 0.0, -0.4, 0.05, 0.7,
+        );
+        let a = g * g.transpose();
+        let b = Matrix::<3, 2>::new(1.0, -2.0, 0.5, 3.0, 7.0, 0.25);
+        let exact = Lu::new(a).unwrap().solve(&b);
+        let ldl = solve_spd(&a, &b, 3).unwrap();
+        assert!((ldl - exact).amax() < 1e-12 * exact.amax(), "{ldl} {exact}");
+        // Indefinite and non-finite matrices are refused.
+        let indefinite = Matrix::<2, 2>::new(1.0, 2.0, 2.0, 1.0);
+        assert!(solve_spd(&indefinite, &Vector::<2>::repeat(1.0), 2).is_err());
+        let nan = Matrix::<2, 2>::new(Float::NAN, 0.0, 0.0, 1.0);
+        assert!(solve_spd(&nan, &Vector::<2>::repeat(1.0), 2).is_err());
     }
 
     #[test]
@@ -345,6 +405,6 @@ mod tests {
     #[test]
     fn max_abs_reports_nan_as_worst() {
         assert_eq!(max_abs(&Vector::<3>::new(1.0, -3.0, 2.0)), (3.0, 1));
-        assert!(max_abs(&Vector::<2>::new(1.0, f64::NAN)).0.is_nan());
+        assert!(max_abs(&Vector::<2>::new(1.0, Float::NAN)).0.is_nan());
     }
 }

@@ -1,5 +1,6 @@
 //! Mass matrices: a diagonal one becomes divisions, a full one a Cholesky factor.
 
+use crate::scalar::Float;
 use nalgebra::Cholesky;
 
 use crate::dense::{Matrix, Vector};
@@ -59,7 +60,7 @@ impl<const N: usize> MassFactor<N> for DiagonalFactor<N> {
 }
 
 impl<const N: usize> MassMatrix<N> for FullMass<N> {
-    type Factor = Cholesky<f64, nalgebra::Const<N>>;
+    type Factor = Cholesky<Float, nalgebra::Const<N>>;
 
     #[inline]
     fn factor(&self) -> Option<Self::Factor> {
@@ -71,7 +72,7 @@ impl<const N: usize> MassMatrix<N> for FullMass<N> {
         let diagonal = factor.l_dirty().diagonal();
         let (lo, hi) = diagonal
             .iter()
-            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &d| {
+            .fold((Float::INFINITY, 0.0 as Float), |(lo, hi), &d| {
                 (lo.min(d), hi.max(d))
             });
         (lo > 0.0 && hi / lo < 3.0e7).then_some(factor)
@@ -83,7 +84,7 @@ impl<const N: usize> MassMatrix<N> for FullMass<N> {
     }
 }
 
-impl<const N: usize> MassFactor<N> for Cholesky<f64, nalgebra::Const<N>> {
+impl<const N: usize> MassFactor<N> for Cholesky<Float, nalgebra::Const<N>> {
     /// `L Lᵀ x = b` by forward and back substitution, written out here so that the solve
     /// inlines into its callers whatever surrounds them: nalgebra's `Cholesky::solve` stopped
     /// being inlined when modules of the runtime moved, and Andrews' steps took 3 % more
@@ -119,9 +120,9 @@ mod tests {
     #[test]
     fn the_written_out_cholesky_solve_matches_nalgebra_s() {
         // A symmetric positive definite matrix with a spread of scales, and two right-hand sides.
-        let a = Matrix::<4, 4>::from_fn(|i, j| 1.0 / (1.0 + i as f64 + j as f64))
+        let a = Matrix::<4, 4>::from_fn(|i, j| 1.0 / (1.0 + i as Float + j as Float))
             + Matrix::<4, 4>::from_diagonal(&Vector::<4>::new(10.0, 1.0, 0.1, 3.0));
-        let b = Matrix::<4, 2>::from_fn(|i, j| (i as f64 - 1.5) * (j as f64 + 0.5));
+        let b = Matrix::<4, 2>::from_fn(|i, j| (i as Float - 1.5) * (j as Float + 0.5));
         let factor = FullMass(a).factor().expect("positive definite");
         let ours = MassFactor::solve(&factor, &b);
         let theirs = Cholesky::solve(&factor, &b);

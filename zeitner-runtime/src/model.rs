@@ -5,6 +5,7 @@ use crate::error::{ModelFunction, StepError};
 use crate::gaps::GapSet;
 use crate::linalg::{all_finite, finite};
 use crate::mass::{MassFactor, MassMatrix};
+use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
@@ -119,7 +120,7 @@ impl OpenRows {
         let scale = (0..Z)
             .filter(|&j| !(j >= self.first && self.open.contains(j - self.first)))
             .map(|j| m[(j, j)].abs())
-            .fold(0.0, f64::max);
+            .fold(0.0, Float::max);
         let scale = if scale > 0.0 && scale.is_finite() {
             scale
         } else {
@@ -183,8 +184,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
-    ) -> Result<[f64; MAX_GAPS], StepError> {
+        t: Float,
+    ) -> Result<[Float; MAX_GAPS], StepError> {
         self.evaluations.constraint_residuals += 1;
         let g = self.system.constraint_residual(q, v, t);
         Ok(self.gap_rows(&finite(g, t, ModelFunction::ConstraintResidual)?))
@@ -195,15 +196,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
-    ) -> Result<[f64; MAX_GAPS], StepError> {
+        t: Float,
+    ) -> Result<[Float; MAX_GAPS], StepError> {
         self.evaluations.constraint_rates += 1;
         let w = self.system.constraint_rate(q, v, t);
         Ok(self.gap_rows(&finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
     /// The gap rows of a vector of all rows, by gap index.
-    fn gap_rows(&self, rows: &Vector<Z>) -> [f64; MAX_GAPS] {
+    fn gap_rows(&self, rows: &Vector<Z>) -> [Float; MAX_GAPS] {
         let mut values = [0.0; MAX_GAPS];
         let gaps = values
             .iter_mut()
@@ -220,8 +221,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
-    ) -> Result<[f64; MAX_EVENTS], StepError> {
+        t: Float,
+    ) -> Result<[Float; MAX_EVENTS], StepError> {
         self.evaluations.event_functions += 1;
         let mut values = [0.0; MAX_EVENTS];
         self.system
@@ -237,7 +238,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// Factorises a constant mass matrix once; later calls reuse it.
-    pub fn prepare(&mut self, q: &Vector<N>, t: f64) -> Result<(), StepError> {
+    pub fn prepare(&mut self, q: &Vector<N>, t: Float) -> Result<(), StepError> {
         self.constant_factor = None;
         if S::MASS_IS_CONSTANT {
             self.constant_factor = Some(self.factor_now(q, t)?);
@@ -245,7 +246,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok(())
     }
 
-    fn factor_now(&mut self, q: &Vector<N>, t: f64) -> Result<FactorOf<S, N, Z>, StepError> {
+    fn factor_now(&mut self, q: &Vector<N>, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
         self.evaluations.mass_factorizations += 1;
         let mass = self.system.mass_matrix(q, t);
         mass.factor().ok_or_else(|| {
@@ -263,7 +264,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     #[inline]
-    pub fn mass_factor(&mut self, q: &Vector<N>, t: f64) -> Result<FactorOf<S, N, Z>, StepError> {
+    pub fn mass_factor(&mut self, q: &Vector<N>, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
         match &self.constant_factor {
             Some(factor) if S::MASS_IS_CONSTANT => Ok(factor.clone()),
             _ => self.factor_now(q, t),
@@ -271,7 +272,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     #[inline]
-    pub fn force(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<N>, StepError> {
+    pub fn force(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> Result<Vector<N>, StepError> {
         self.evaluations.forces += 1;
         let force = self.system.applied_force(q, v, t);
         finite(force, t, ModelFunction::AppliedForce)
@@ -282,7 +288,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_residuals += 1;
         let g = self.system.constraint_residual(q, v, t);
@@ -294,7 +300,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> Result<Matrix<Z, N>, StepError> {
         self.evaluations.constraint_jacobians += 1;
         let g = self.system.constraint_jacobian(q, v, t);
@@ -307,7 +313,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> Result<(Matrix<Z, N>, Matrix<Z, N>), StepError> {
         let g = self.jacobian(q, v, t)?;
         let r = S::POSITION_CONSTRAINTS;
@@ -326,14 +332,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     #[inline(always)]
-    pub fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
+    pub fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_rates += 1;
         let w = self.system.constraint_rate(q, v, t);
         Ok(self.mask(finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
     #[inline(always)]
-    pub fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
+    pub fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<Z>, StepError> {
         self.evaluations.acceleration_biases += 1;
         let b = self.system.constraint_acceleration_bias(q, v, t);
         Ok(self.mask(finite(b, t, ModelFunction::ConstraintAccelerationBias)?))
@@ -343,7 +349,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     #[inline]
     pub fn constraint_force_times(
         &mut self,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
@@ -359,7 +365,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> Result<ConstraintDirections<FactorOf<S, N, Z>, N, Z>, StepError> {
         let factor = self.mass_factor(q, t)?;
         let jacobian = self.jacobian(q, v, t)?;
@@ -384,7 +390,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
     ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
         let factor = self.mass_factor(q, t)?;
@@ -420,7 +426,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
     ) -> Result<AccelerationJacobians<'_, SquareOf<S, N, Z>, N, Z>, StepError> {

@@ -10,6 +10,7 @@ use crate::method::{Method, Start, StepEnd};
 use crate::model::Model;
 use crate::options::StepControl;
 use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::scalar::Float;
 use crate::storage::Square;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
@@ -23,8 +24,8 @@ pub(crate) struct Predictor<const Z: usize> {
     lambda_rate: Vector<Z>,
     /// Time covered by short steps left out since the last recorded step, and between the two
     /// recorded steps.
-    skipped_since_last: f64,
-    skipped_between: f64,
+    skipped_since_last: Float,
+    skipped_between: Float,
 }
 
 impl<const Z: usize> Default for Predictor<Z> {
@@ -43,7 +44,7 @@ impl<const Z: usize> Default for Predictor<Z> {
 /// landed on, a retry) is left out of the prediction, until the steps left out add up to the
 /// last recorded one: what such a step's Newton leaves in its multipliers is divided by its
 /// length, and continuing it over a normal step multiplied rounding into the next guess.
-const SHORT_STEP_SHARE: f64 = 0.05;
+const SHORT_STEP_SHARE: Float = 0.05;
 
 impl<const Z: usize> Predictor<Z> {
     /// Remembers an accepted step: its multipliers and the consistent `λ` at both ends; a
@@ -90,7 +91,7 @@ impl<const Z: usize> Predictor<Z> {
         solve_gram: impl FnOnce(&Vector<Z>) -> Option<Vector<Z>>,
         (g, w): (&Vector<Z>, &Vector<Z>),
         lambda: &Vector<Z>,
-        (h, planned): (f64, f64),
+        (h, planned): (Float, Float),
     ) -> Option<Vector<Z>> {
         let reach = h.max(planned);
         let correction = solve_gram(&((2.0 / (reach * reach)) * (g + reach * w)))?;
@@ -100,7 +101,7 @@ impl<const Z: usize> Predictor<Z> {
     /// Constant multipliers for a step of size `h`: the last step's mean, extrapolated linearly
     /// between the two last steps' midpoints when `extrapolate` (a mean of `λ` over a step is
     /// `λ` at its midpoint to second order); `start` when there is no step yet.
-    pub fn constant(&self, h: f64, extrapolate: bool, start: Vector<Z>) -> Vector<Z> {
+    pub fn constant(&self, h: Float, extrapolate: bool, start: Vector<Z>) -> Vector<Z> {
         let Some(last) = self.last else {
             return start;
         };
@@ -117,7 +118,7 @@ impl<const Z: usize> Predictor<Z> {
     /// The coefficients of `s`, `s²`, … for multipliers anchored at the step start: the last
     /// step's polynomial continued into the next step of size `h`.
     #[cfg(feature = "quadratic-multipliers")]
-    pub fn continued<const K: usize>(&self, h: f64) -> [Vector<Z>; K] {
+    pub fn continued<const K: usize>(&self, h: Float) -> [Vector<Z>; K] {
         let mut coefficients = [Vector::zeros(); K];
         if let Some(StepPolynomial { c, h: last_h }) = self.last.filter(|last| last.h > 0.0) {
             // λ(σ₀ + ρ s) of the last step, ρ = h / last_h, expanded in s; σ₀ is 1 past the
@@ -139,11 +140,11 @@ pub(crate) struct NewtonSettings {
     /// How far `g` may end from where Newton aims it (see `control::newton_tolerance`); the
     /// velocity-level end condition uses that over `min(τ, 1)`, or itself with
     /// `steady_velocity_tolerance`.
-    pub tolerance: f64,
+    pub tolerance: Float,
     /// `constraint_tolerance`, the bound on `|g|` itself that every report keeps. A short step
     /// aims `g` at most of its start value, which met this bound but may exceed `tolerance`
     /// (tightened since by `set_options`, or by smaller positions).
-    pub ceiling: f64,
+    pub ceiling: Float,
     /// Whether the velocity-level tolerance must not grow as steps shrink: with an embedded
     /// solution of order below 3 (ESDIRK 3(2)), and with the stiff methods. What `w` is left at
     /// a step end, the next step's multipliers undo within that step, as a polynomial whose
@@ -163,7 +164,7 @@ pub(crate) struct NewtonSettings {
 
 /// The share of the step's error tolerance that the term neglected by accepting the linearly
 /// corrected end state may take.
-const LINEARISATION_SHARE: f64 = 0.1;
+const LINEARISATION_SHARE: Float = 0.1;
 
 /// How the Newton on one step ended, short of an error that no smaller step can cure.
 pub(crate) enum NewtonOutcome<const N: usize, const Z: usize, const K: usize> {
@@ -187,7 +188,7 @@ struct Conditions<const Z: usize, const K: usize> {
 impl<const Z: usize, const K: usize> Conditions<Z, K> {
     fn at<S: ConstrainedSystem<N, Z>, const N: usize>(
         model: &mut Model<'_, S, N, Z>,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda_end: &Vector<Z>,
     ) -> Result<Self, StepError> {
         let mut values = [Vector::zeros(); K];
@@ -205,13 +206,13 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
     }
 
     /// The largest `|g_j|` and its row.
-    fn worst(&self) -> (f64, usize) {
+    fn worst(&self) -> (Float, usize) {
         max_abs(&self.values[0])
     }
 
     /// How far the conditions end from `targets`, in units of their tolerances: the largest
     /// `|g_j - target_j| / tolerance` and the same of the velocity-level conditions.
-    fn miss(&self, settings: &NewtonSettings, h: f64, targets: &[Vector<Z>; K]) -> f64 {
+    fn miss(&self, settings: &NewtonSettings, h: Float, targets: &[Vector<Z>; K]) -> Float {
         let stretch = if settings.steady_velocity_tolerance {
             1.0
         } else {
@@ -225,14 +226,14 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
 
     /// Whether the conditions end within the tolerances of `targets`, and `g` within the
     /// ceiling.
-    fn hold(&self, settings: &NewtonSettings, h: f64, targets: &[Vector<Z>; K]) -> bool {
+    fn hold(&self, settings: &NewtonSettings, h: Float, targets: &[Vector<Z>; K]) -> bool {
         self.worst().0 <= settings.ceiling && self.miss(settings, h, targets) <= 1.0
     }
 }
 
 /// The share of the residuals a step of size `h` planned as `planned` leaves to the next steps:
 /// `1 - (τ/τ̂)²` on a shorter step (`τ̂ = planned`), none on a step of the planned size.
-pub(crate) fn carried_share(h: f64, planned: f64) -> Option<f64> {
+pub(crate) fn carried_share(h: Float, planned: Float) -> Option<Float> {
     let ratio = h / planned;
     (h < planned).then_some(1.0 - ratio * ratio)
 }
@@ -244,8 +245,8 @@ pub(crate) fn carried_share(h: f64, planned: f64) -> Option<f64> {
 /// later step removed. Evaluates nothing on a step of the planned size.
 pub(crate) fn short_step_targets<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): (&Vector<N>, &Vector<N>, f64),
-    (h, planned): (f64, f64),
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    (h, planned): (Float, Float),
 ) -> Result<[Vector<Z>; K], StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -279,8 +280,8 @@ pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     method: &mut M,
     start: &Start<N, Z, K>,
-    h: f64,
-    t_end: f64,
+    h: Float,
+    t_end: Float,
     (mut multipliers, targets): (Multipliers<Z, K>, &[Vector<Z>; K]),
     settings: &NewtonSettings,
 ) -> Result<NewtonOutcome<N, Z, K>, StepError>
@@ -293,7 +294,7 @@ where
     } else {
         Some(paper_sensitivity(model, start, h, &multipliers)?)
     };
-    let mut worst = (f64::INFINITY, 0);
+    let mut worst = (Float::INFINITY, 0);
     let mut progress = NewtonProgress::default();
     for iteration in 1..=settings.max_iterations {
         let end = match method.integrate(model, start, h, &multipliers, settings.exact) {
@@ -343,14 +344,14 @@ const STALLED_INTEGRATIONS: u32 = 3;
 
 /// The best miss of the Newton's end conditions so far, and the integrations since.
 struct NewtonProgress {
-    best: f64,
+    best: Float,
     since_best: u32,
 }
 
 impl Default for NewtonProgress {
     fn default() -> Self {
         NewtonProgress {
-            best: f64::INFINITY,
+            best: Float::INFINITY,
             since_best: 0,
         }
     }
@@ -358,7 +359,7 @@ impl Default for NewtonProgress {
 
 impl NewtonProgress {
     /// Records `miss`; whether [`STALLED_INTEGRATIONS`] in a row have not improved on the best.
-    fn stalled(&mut self, miss: f64) -> bool {
+    fn stalled(&mut self, miss: Float) -> bool {
         if miss < self.best {
             (self.best, self.since_best) = (miss, 0);
         } else {
@@ -392,7 +393,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
         &self,
         model: &mut Model<'_, S, N, Z>,
         settings: &NewtonSettings,
-        (start, t_end): (&Start<N, Z, K>, f64),
+        (start, t_end): (&Start<N, Z, K>, Float),
         multipliers: &mut Multipliers<Z, K>,
         (mut conditions, targets): (Conditions<Z, K>, &[Vector<Z>; K]),
     ) -> Result<Correction<N, Z, K>, StepError> {
@@ -452,7 +453,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
 fn linearisation_is_negligible<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     settings: &NewtonSettings,
-    (start, q, v, t_end): (&Start<N, Z, K>, &Vector<N>, &Vector<N>, f64),
+    (start, q, v, t_end): (&Start<N, Z, K>, &Vector<N>, &Vector<N>, Float),
     (dq, dp, dg_dq): (Vector<N>, Vector<Z>, &Matrix<Z, N>),
 ) -> Result<bool, StepError>
 where
@@ -472,7 +473,7 @@ where
         );
         return Ok(norm <= LINEARISATION_SHARE);
     }
-    let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, f64::max);
+    let reach = (0..Z).map(|j| dg_dq.row(j).norm()).fold(0.0, Float::max);
     Ok(reach * (eq.amax() + h * ev.amax()) <= settings.tolerance)
 }
 
@@ -503,10 +504,10 @@ fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
 }
 
 fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    t: f64,
-    step: f64,
+    t: Float,
+    step: Float,
     iterations: u32,
-    (residual, row): (f64, usize),
+    (residual, row): (Float, usize),
 ) -> StepError {
     StepError::NewtonDidNotConverge {
         t,
@@ -529,9 +530,9 @@ fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 fn singular<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: &Start<N, Z, K>,
-    h: f64,
+    h: Float,
     iteration: u32,
-    worst: (f64, usize),
+    worst: (Float, usize),
 ) -> Result<NewtonOutcome<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -559,14 +560,14 @@ type SensitivitiesRef<'a, const N: usize, const Z: usize, const K: usize> =
 fn paper_sensitivity<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: &Start<N, Z, K>,
-    h: f64,
+    h: Float,
     multipliers: &Multipliers<Z, K>,
 ) -> Result<Sensitivities<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
     let b = -model.directions(&start.q, &start.v, start.t)?.m_inv_gt;
-    let power = |k: usize| f64::from(multipliers.first_power + k as i32);
+    let power = |k: usize| (multipliers.first_power + k as i32) as Float;
     let dq = core::array::from_fn(|k| (h * h / ((power(k) + 1.0) * (power(k) + 2.0))) * b);
     let dv = core::array::from_fn(|k| (h / (power(k) + 1.0)) * b);
     Ok((dq, dv))
@@ -581,7 +582,7 @@ where
 /// the whole; Newton converges linearly with that rate). Also returns `∂g/∂q`.
 fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t_end): (&Vector<N>, &Vector<N>, f64),
+    (q, v, t_end): (&Vector<N>, &Vector<N>, Float),
     (dq_dc, dv_dc): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
     multipliers: &Multipliers<Z, K>,
 ) -> Result<([[Matrix<Z, Z>; K]; K], Matrix<Z, N>), StepError>
@@ -638,7 +639,7 @@ mod tests {
     use crate::options::InnerMethod;
     use crate::testing::{swinging, PENDULUM};
 
-    fn constant(p: f64, h: f64) -> StepPolynomial<1> {
+    fn constant(p: Float, h: Float) -> StepPolynomial<1> {
         Multipliers {
             base: Vector::zeros(),
             coefficients: [Vector::from([p])],
@@ -660,14 +661,14 @@ mod tests {
         assert!(progress.stalled(9.0));
         // NaN never improves.
         let mut progress = NewtonProgress::default();
-        assert!(!progress.stalled(f64::NAN) && !progress.stalled(f64::NAN));
-        assert!(progress.stalled(f64::NAN));
+        assert!(!progress.stalled(Float::NAN) && !progress.stalled(Float::NAN));
+        assert!(progress.stalled(Float::NAN));
     }
 
     #[test]
     fn constant_prediction_is_exact_for_linear_multipliers() {
         // λ(t) = 2 + 3t; a step's constant p is its mean, λ at the step's midpoint.
-        let lambda = |t: f64| 2.0 + 3.0 * t;
+        let lambda = |t: Float| 2.0 + 3.0 * t;
         let mut predictor = Predictor::<1>::default();
         assert_eq!(predictor.constant(0.1, true, Vector::from([7.0]))[0], 7.0);
         predictor.record(
@@ -700,7 +701,7 @@ mod tests {
     #[cfg(feature = "quadratic-multipliers")]
     fn quadratic_prediction_continues_a_quadratic_exactly() {
         // λ(t) = 1 - t + 4t²; the last step was [0, 0.2], the next is [0.2, 0.3].
-        let lambda = |t: f64| 1.0 - t + 4.0 * t * t;
+        let lambda = |t: Float| 1.0 - t + 4.0 * t * t;
         let (h0, h1) = (0.2, 0.1);
         let last = Multipliers {
             base: Vector::from([lambda(0.0)]),
@@ -720,7 +721,7 @@ mod tests {
         }
     }
 
-    fn newton_from_a_poor_guess(exact: bool) -> (f64, u32) {
+    fn newton_from_a_poor_guess(exact: bool) -> (Float, u32) {
         let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();

@@ -2,6 +2,7 @@
 //! ([`Options::default`]); [`Options::validate`] refuses what cannot work before anything runs.
 
 use crate::error::{InvalidOption, StepError};
+use crate::scalar::Float;
 
 /// The one-step method that integrates `M q'' = F - Gᵀλ(t)` with the multipliers prescribed over
 /// the step.
@@ -19,6 +20,7 @@ pub enum InnerMethod {
     /// the multipliers solved at every stage only ([`MultiplierModel::EveryStage`], its
     /// automatic model): multipliers held polynomial over a step would cap its order at 5,
     /// which its estimate does not see.
+    #[cfg(feature = "high-order")]
     Dop853,
     /// Verner's "most efficient" 9(8) pair (Verner 2010): order 9, 16 stages, its step
     /// controlled by the embedded eighth-order estimate, with Verner's interpolant of order 8
@@ -26,6 +28,7 @@ pub enum InnerMethod {
     /// steps than its four extra stages cost (`Automatic` starts with it at `rtol` ≤
     /// [`VERNER_FROM_RTOL`]). Like `Dop853`, it takes the multipliers solved at every stage
     /// only.
+    #[cfg(feature = "high-order")]
     Verner98,
     /// The method chosen for the scene as it runs: [`InnerMethod::Dop853`] (at `rtol` ≤
     /// [`VERNER_FROM_RTOL`], [`InnerMethod::Verner98`]) with the multipliers solved at every
@@ -68,7 +71,7 @@ pub enum InnerMethod {
     /// It gives up order (2), adaptive steps and any error estimate: fixed steps only. Uses
     /// `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.
     #[cfg(feature = "implicit")]
-    GeneralizedAlpha { rho_inf: f64 },
+    GeneralizedAlpha { rho_inf: Float },
 }
 
 /// The relative tolerance from which on (and below) [`InnerMethod::Automatic`] starts with
@@ -76,7 +79,7 @@ pub enum InnerMethod {
 /// non-stiff small scenes, at `rtol` 1e-6 the pair's errors were 1.1 to 43 times smaller than
 /// DOP853's for 0.70 to 1.13 times its time; at 1e-5 they were 2 and 24 times larger on the
 /// pendulum against a wall and the slider-crank.
-pub const VERNER_FROM_RTOL: f64 = 1e-6;
+pub const VERNER_FROM_RTOL: Float = 1e-6;
 
 impl InnerMethod {
     /// The method a run with this choice, `multipliers` and `step` starts with:
@@ -85,6 +88,7 @@ impl InnerMethod {
     /// for looser ones and for fixed steps.
     pub fn first(self, multipliers: MultiplierModel, step: StepControl) -> InnerMethod {
         match (self, multipliers) {
+            #[cfg(feature = "high-order")]
             (InnerMethod::Automatic, MultiplierModel::Automatic | MultiplierModel::EveryStage) => {
                 match step {
                     StepControl::Adaptive { rtol, .. } if rtol <= VERNER_FROM_RTOL => {
@@ -121,7 +125,7 @@ impl InnerMethod {
     /// Whether the method takes only the multipliers solved at every stage (`Dop853`,
     /// `Verner98`).
     pub fn needs_every_stage(self) -> bool {
-        matches!(self, InnerMethod::Dop853 | InnerMethod::Verner98)
+        self.is_explicit_pair()
     }
 
     /// Whether the method is one for stiff models (`Esdirk32`, `Esdirk43`, `Esdirk54`), for
@@ -150,23 +154,27 @@ impl InnerMethod {
 
     /// Whether the method solves stage equations (the SDIRK, the ESDIRKs, generalised-α).
     pub fn is_implicit(self) -> bool {
-        !matches!(
-            self,
-            InnerMethod::Rk4 { .. }
-                | InnerMethod::DormandPrince54
-                | InnerMethod::Dop853
-                | InnerMethod::Verner98
-                | InnerMethod::Automatic
-        )
+        !(self.is_explicit_pair()
+            || matches!(
+                self,
+                InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54 | InnerMethod::Automatic
+            ))
+    }
+
+    /// Whether the method is one of the high-order explicit pairs (`Dop853`, `Verner98`).
+    fn is_explicit_pair(self) -> bool {
+        #[cfg(feature = "high-order")]
+        return matches!(self, InnerMethod::Dop853 | InnerMethod::Verner98);
+        #[cfg(not(feature = "high-order"))]
+        return false;
     }
 
     /// Whether the method has an embedded error estimate, which adaptive steps need.
     pub fn has_error_estimate(self) -> bool {
         match self {
-            InnerMethod::DormandPrince54
-            | InnerMethod::Dop853
-            | InnerMethod::Verner98
-            | InnerMethod::Automatic => true,
+            InnerMethod::DormandPrince54 | InnerMethod::Automatic => true,
+            #[cfg(feature = "high-order")]
+            InnerMethod::Dop853 | InnerMethod::Verner98 => true,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk32 | InnerMethod::Esdirk43 | InnerMethod::Esdirk54 => true,
             _ => false,
@@ -271,18 +279,20 @@ impl MultiplierModel {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepControl {
     /// Every step has this size (the last one is shortened to land on the stop time).
-    Fixed { step: f64 },
+    Fixed { step: Float },
     /// Steps chosen from the inner method's error estimate (Dormand–Prince and the ESDIRKs) and from the
     /// Newton iteration count, always within `min_step..=max_step`. The error of `q` and `q'` is
     /// measured component by component against `atol + rtol·|x|` in a root mean square;
     /// `atol` must be positive (a coordinate that stays at zero has no relative scale).
-    /// Default: `initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞, `rtol` 1e-8, `atol` 1e-10.
+    /// Default: `initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞, `rtol` 1e-8, `atol` 1e-10
+    /// (`f32`: `rtol` 1e-5, `atol` 1e-7). An `rtol` below the scalar's ε is refused
+    /// ([`InvalidOption::BelowResolution`]).
     Adaptive {
-        initial_step: f64,
-        min_step: f64,
-        max_step: f64,
-        rtol: f64,
-        atol: f64,
+        initial_step: Float,
+        min_step: Float,
+        max_step: Float,
+        rtol: Float,
+        atol: Float,
     },
 }
 
@@ -301,11 +311,11 @@ impl StepControl {
     /// assert!(tight.validate().is_ok());
     /// assert_eq!(Options::default().step, StepControl::adaptive(1e-8));
     /// ```
-    pub fn adaptive(rtol: f64) -> Self {
+    pub fn adaptive(rtol: Float) -> Self {
         StepControl::Adaptive {
             initial_step: 1e-3,
             min_step: 1e-12,
-            max_step: f64::INFINITY,
+            max_step: Float::INFINITY,
             rtol,
             atol: rtol / 100.0,
         }
@@ -313,7 +323,7 @@ impl StepControl {
 
     /// The same steps with the absolute tolerance `atol` (in each coordinate's unit); fixed
     /// steps, which have none, are returned as they are.
-    pub fn with_atol(self, atol: f64) -> Self {
+    pub fn with_atol(self, atol: Float) -> Self {
         match self {
             StepControl::Adaptive {
                 initial_step,
@@ -358,8 +368,9 @@ pub struct Options {
     /// `exact-sensitivity` feature, else `Paper`).
     pub sensitivity: Sensitivity,
     /// `ε`: a step is accepted when every `|g_j(t+τ)| ≤ ε`, in each constraint's own units (m
-    /// for a distance, m² for a squared one). Default 1e-10.
-    pub constraint_tolerance: f64,
+    /// for a distance, m² for a squared one). Default 1e-10 (`f32`: 1e-5, see
+    /// [`crate::scalar::DEFAULT_CONSTRAINT_TOLERANCE`]).
+    pub constraint_tolerance: Float,
     /// Integrations per step (Newton sweeps on the multipliers) before the step fails: a typed
     /// error with fixed steps, a smaller step when adaptive. 1 to 1000; default 12.
     pub max_newton_iterations: u32,
@@ -385,18 +396,18 @@ pub struct Options {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EventSettings {
     /// A step stops within this time of a zero crossing (s): after it for event functions and
-    /// contacts that open, before it for gaps that close. Default 1e-12.
-    pub time_tolerance: f64,
+    /// contacts that open, before it for gaps that close. Default 1e-12 (`f32`: 1e-6).
+    pub time_tolerance: Float,
     /// A gap closing slower than this (in the gap's units per second, m/s for a distance)
     /// stays closed instead of bouncing: persistent contact, which ends the ever shorter
     /// bounces of a restitution below 1 in finite time. Default 1e-3.
-    pub rest_velocity: f64,
+    pub rest_velocity: Float,
 }
 
 impl Default for EventSettings {
     fn default() -> Self {
         EventSettings {
-            time_tolerance: 1e-12,
+            time_tolerance: crate::scalar::DEFAULT_TIME_TOLERANCE,
             rest_velocity: 1e-3,
         }
     }
@@ -407,12 +418,12 @@ impl Default for Options {
         Options {
             method: InnerMethod::Automatic,
             multipliers: MultiplierModel::Automatic,
-            step: StepControl::adaptive(1e-8),
+            step: StepControl::adaptive(crate::scalar::DEFAULT_RTOL),
             #[cfg(feature = "exact-sensitivity")]
             sensitivity: Sensitivity::Exact,
             #[cfg(not(feature = "exact-sensitivity"))]
             sensitivity: Sensitivity::Paper,
-            constraint_tolerance: 1e-10,
+            constraint_tolerance: crate::scalar::DEFAULT_CONSTRAINT_TOLERANCE,
             max_newton_iterations: 12,
             velocity_projection: VelocityProjection::Output,
             extrapolate_multipliers: true,
@@ -436,7 +447,7 @@ pub const MAX_SUBSTEPS_PER_STEP: u32 = 20_000;
 impl Options {
     /// The paper's method as published: RK4 inner step with fixed `step`, the paper's sensitivity
     /// estimate, positions enforced, raw velocities and multipliers.
-    pub fn paper(step: f64) -> Self {
+    pub fn paper(step: Float) -> Self {
         Options {
             method: InnerMethod::Rk4 { substeps: 1 },
             multipliers: MultiplierModel::Constant,
@@ -460,7 +471,7 @@ impl Options {
     /// Refuses options that cannot work, before anything is computed.
     pub fn validate(&self) -> Result<(), StepError> {
         let refuse = |option| Err(StepError::InvalidOption(option));
-        let positive = |x: f64| x.is_finite() && x > 0.0;
+        let positive = |x: Float| x.is_finite() && x > 0.0;
         if !positive(self.constraint_tolerance) {
             return refuse(InvalidOption::ConstraintTolerance);
         }
@@ -524,6 +535,9 @@ impl Options {
                 if !(positive(rtol) && positive(atol)) {
                     return refuse(InvalidOption::ErrorTolerances);
                 }
+                if rtol < crate::scalar::SMALLEST_RTOL {
+                    return refuse(InvalidOption::BelowResolution);
+                }
                 if !self.method.has_error_estimate() {
                     return refuse(InvalidOption::AdaptiveNeedsErrorEstimate);
                 }
@@ -537,27 +551,27 @@ impl Options {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ControllerSettings {
     /// Safety factor on every proposed step. Default 0.9.
-    pub safety: f64,
+    pub safety: Float,
     /// The smallest factor from one step to the next. Default 0.2.
-    pub min_factor: f64,
+    pub min_factor: Float,
     /// The largest factor from one step to the next. Default 5.
-    pub max_factor: f64,
+    pub max_factor: Float,
     /// The largest factor after a rejected step (so that a rejection always shrinks). Default 0.9.
-    pub max_factor_after_rejection: f64,
+    pub max_factor_after_rejection: Float,
     /// `β·k` of the PI controller `h₊ = h · safety · e⁻ᵅ · e₋ᵝ` with `β = beta_times_order / k`,
     /// `α = 1/k - 0.75 β` and `k` one more than the lower order of the error estimate
     /// (Hairer & Wanner's stabilised control; 0.2 gives their DOPRI5 default `β = 0.04`);
     /// 0 is the plain I-controller. Default 0.2.
-    pub beta_times_order: f64,
+    pub beta_times_order: Float,
     /// The factor a step shrinks by when Newton on the multipliers fails or the trajectory
     /// becomes non-finite. Default 0.25.
-    pub newton_failure_factor: f64,
+    pub newton_failure_factor: Float,
     /// From this many Newton integrations per step on, the step does not grow: the multipliers
     /// change fast. Default 5.
     pub slow_newton_iterations: u32,
     /// A planned step within this fraction of the distance to the stop time lands on it,
     /// instead of leaving a sliver of a step. Default 1e-6.
-    pub landing_fraction: f64,
+    pub landing_fraction: Float,
 }
 
 impl Default for ControllerSettings {
@@ -577,7 +591,7 @@ impl Default for ControllerSettings {
 
 impl ControllerSettings {
     pub(crate) fn is_valid(&self) -> bool {
-        let factor = |x: f64| x.is_finite() && x > 0.0;
+        let factor = |x: Float| x.is_finite() && x > 0.0;
         factor(self.safety)
             && self.safety <= 1.0
             && factor(self.min_factor)

@@ -3,12 +3,13 @@
 //! simulator it borrows; the reports are made in `consistency`.)
 
 use crate::gaps::GapSet;
+use crate::scalar::Float;
 use crate::system::{Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Point<const N: usize, const Z: usize> {
-    pub t: f64,
+    pub t: Float,
     pub q: Vector<N>,
     pub v: Vector<N>,
     pub a: Vector<N>,
@@ -41,7 +42,7 @@ pub struct StepReport<const N: usize, const Z: usize> {
 /// ([`crate::SensitivitySimulator`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sensitivities<const N: usize, const Z: usize, const P: usize> {
-    pub t: f64,
+    pub t: Float,
     /// `∂q/∂θ`.
     pub q: Matrix<N, P>,
     /// `∂q'/∂θ` of the reported velocities.
@@ -56,7 +57,7 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// ends and its derivative for `q'` (local errors `O(τ⁶)` and `O(τ⁵)`), linear in `q''` and
     /// `λ`. For multipliers as accurate as the positions, use `Simulator::sample`. Outside the
     /// step it extrapolates.
-    pub fn sample(&self, t: f64) -> Point<N, Z> {
+    pub fn sample(&self, t: Float) -> Point<N, Z> {
         interpolate(&self.start, &self.end, t)
     }
 }
@@ -65,7 +66,7 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
 pub(crate) fn interpolate<const N: usize, const Z: usize>(
     a: &Point<N, Z>,
     b: &Point<N, Z>,
-    t: f64,
+    t: Float,
 ) -> Point<N, Z> {
     let h = b.t - a.t;
     if h <= 0.0 {
@@ -90,7 +91,7 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
         -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
         1.5 * s2 - 4.0 * s3 + 2.5 * s4,
     ];
-    let combine = |w: &[f64; 6]| {
+    let combine = |w: &[Float; 6]| {
         w[0] * a.q
             + (w[1] * h) * a.v
             + (w[2] * h * h) * a.a
@@ -155,7 +156,7 @@ mod tests {
     #[test]
     fn dense_output_reproduces_both_ends_and_a_quintic_inside() {
         // q(t) = t⁵ on [1, 1.5]: quintic Hermite from values, slopes and curvatures is exact.
-        let point = |t: f64| Point::<1, 1> {
+        let point = |t: Float| Point::<1, 1> {
             t,
             q: Vector::from([t.powi(5)]),
             v: Vector::from([5.0 * t.powi(4)]),

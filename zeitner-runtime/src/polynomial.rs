@@ -1,6 +1,7 @@
 //! The multipliers over a step as a polynomial in time: what Newton corrects, what the inner
 //! methods read at their stages, and what an accepted step reports.
 
+use crate::scalar::Float;
 use crate::system::Vector;
 
 /// The multipliers over a step, `λ(s) = base + Σ_k c_k s^(first_power + k)` with
@@ -18,7 +19,7 @@ pub(crate) const MAX_DEGREE: usize = 2;
 
 impl<const Z: usize, const K: usize> Multipliers<Z, K> {
     /// `∂λ/∂c_k` at `s`.
-    pub fn weight(&self, k: usize, s: f64) -> f64 {
+    pub fn weight(&self, k: usize, s: Float) -> Float {
         let mut w = 1.0;
         for _ in 0..self.first_power + k as i32 {
             w *= s;
@@ -26,7 +27,7 @@ impl<const Z: usize, const K: usize> Multipliers<Z, K> {
         w
     }
 
-    pub fn at(&self, s: f64) -> Vector<Z> {
+    pub fn at(&self, s: Float) -> Vector<Z> {
         let mut lambda = self.base;
         for (k, c) in self.coefficients.iter().enumerate() {
             lambda += self.weight(k, s) * c;
@@ -36,7 +37,7 @@ impl<const Z: usize, const K: usize> Multipliers<Z, K> {
 
     /// The same multipliers as plain coefficients of `1, s, s²`, with the step size.
     #[inline]
-    pub fn polynomial(&self, h: f64) -> StepPolynomial<Z> {
+    pub fn polynomial(&self, h: Float) -> StepPolynomial<Z> {
         let mut c = [self.base, Vector::zeros(), Vector::zeros()];
         for (k, coefficient) in self.coefficients.iter().enumerate() {
             c[self.first_power as usize + k] += coefficient;
@@ -49,7 +50,7 @@ impl<const Z: usize, const K: usize> Multipliers<Z, K> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct StepPolynomial<const Z: usize> {
     pub c: [Vector<Z>; MAX_DEGREE + 1],
-    pub h: f64,
+    pub h: Float,
 }
 
 impl<const Z: usize> StepPolynomial<Z> {

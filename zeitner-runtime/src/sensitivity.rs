@@ -23,6 +23,7 @@ use crate::mass::MassFactor;
 use crate::method::explicit::{stage_state, Tableau};
 use crate::model::{Acceleration, ConstraintDirections, FactorOf, Model};
 use crate::polynomial::Multipliers;
+use crate::scalar::Float;
 use crate::storage::Square;
 use crate::system::{ConstrainedSystem, Matrix, ParametrisedSystem, Vector};
 
@@ -42,9 +43,9 @@ impl<const N: usize, const P: usize> Tangent<N, P> {
     }
 }
 
-type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, f64);
+type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, Float);
 
-fn rank_deficient(t: f64) -> impl Fn(crate::error::RowSet) -> StepError {
+fn rank_deficient(t: Float) -> impl Fn(crate::error::RowSet) -> StepError {
     move |rows| StepError::RankDeficientConstraints {
         t,
         dependent_rows: rows,
@@ -290,7 +291,7 @@ fn add_columns<const R: usize, const C: usize, const P: usize>(
 
 fn combine<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
-    h: f64,
+    h: Float,
     start: (&Matrix<N, C>, &Matrix<N, C>),
     slopes: (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
 ) -> (Matrix<N, C>, Matrix<N, C>) {
@@ -319,17 +320,17 @@ pub(crate) fn every_stage<S, const N: usize, const Z: usize, const P: usize, con
     model: &mut Model<'_, S, N, Z>,
     (tableau, substeps): (&Tableau<ST>, u32),
     (q0, v0, t0): Point<'_, N>,
-    h: f64,
+    h: Float,
     (x0, recorded): (&Tangent<N, P>, Option<Recorded<'_, N, Z, ST>>),
 ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
     let recorded = recorded.filter(|_| substeps == 1);
-    let hs = h / f64::from(substeps);
+    let hs = h / substeps as Float;
     let (mut q, mut v, mut x) = (*q0, *v0, *x0);
     for k in 0..substeps {
-        let t = t0 + f64::from(k) * hs;
+        let t = t0 + k as Float * hs;
         let mut slopes = ([Vector::<N>::zeros(); ST], [Vector::<N>::zeros(); ST]);
         let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
         for i in 0..ST {
@@ -388,15 +389,15 @@ pub(crate) fn held<
     model: &mut Model<'_, S, N, Z>,
     (tableau, substeps): (&Tableau<ST>, u32),
     (q0, v0, t0): Point<'_, N>,
-    h: f64,
+    h: Float,
     multipliers: &Multipliers<Z, K>,
     (x0, dbase): (&Tangent<N, P>, &Matrix<Z, P>),
 ) -> Result<HeldStep<N, Z, P, K>, StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
 {
-    let hs = h / f64::from(substeps);
-    let share = 1.0 / f64::from(substeps);
+    let hs = h / substeps as Float;
+    let share = 1.0 / substeps as Float;
     let mut end = HeldStep {
         q: *q0,
         v: *v0,
@@ -405,8 +406,8 @@ where
         dv_dc: [Matrix::zeros(); K],
     };
     for k in 0..substeps {
-        let t = t0 + f64::from(k) * hs;
-        let s0 = f64::from(k) * share;
+        let t = t0 + k as Float * hs;
+        let s0 = k as Float * share;
         let mut slopes = ([Vector::<N>::zeros(); ST], [Vector::<N>::zeros(); ST]);
         let mut tangents = ([Matrix::<N, P>::zeros(); ST], [Matrix::<N, P>::zeros(); ST]);
         let mut by_c = [([Matrix::<N, Z>::zeros(); ST], [Matrix::<N, Z>::zeros(); ST]); K];
@@ -458,7 +459,7 @@ impl<const N: usize, const Z: usize, const P: usize, const K: usize> HeldStep<N,
     /// coefficients' sensitivities.
     fn advance<const ST: usize>(
         &mut self,
-        (tableau, h): (&Tableau<ST>, f64),
+        (tableau, h): (&Tableau<ST>, Float),
         slopes: &Slopes<N, 1, ST>,
         tangents: &Slopes<N, P, ST>,
         by_c: &[Slopes<N, Z, ST>; K],
@@ -633,7 +634,7 @@ pub(crate) fn targets_tangent<S, const N: usize, const Z: usize, const P: usize>
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): Point<'_, N>,
     x: &Tangent<N, P>,
-    share: Option<f64>,
+    share: Option<Float>,
 ) -> Result<[Matrix<Z, P>; 2], StepError>
 where
     S: ParametrisedSystem<N, Z, P>,
@@ -661,7 +662,7 @@ pub(crate) fn impact<S, const N: usize, const Z: usize, const P: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v_before, t): Point<'_, N>,
     (a_before, v_after, a_after): (&Vector<N>, &Vector<N>, &Vector<N>),
-    (row, rate_before): (usize, f64),
+    (row, rate_before): (usize, Float),
     scale: &Vector<Z>,
     x: &Tangent<N, P>,
 ) -> Result<(Tangent<N, P>, Matrix<1, P>), StepError>

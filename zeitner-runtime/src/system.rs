@@ -1,6 +1,8 @@
 //! The seam between generated code and the runtime: one trait, implemented by
 //! `#[constrained_system]` (or by hand), with every size a const generic.
 
+use crate::scalar::Float;
+
 pub use crate::dense::{Matrix, Vector};
 use crate::mass::MassMatrix;
 use crate::storage::{JacobianSource, Storage};
@@ -32,33 +34,37 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     type Storage: Storage<N>;
 
     /// `M(q, t)`.
-    fn mass_matrix(&self, q: &Vector<N>, t: f64) -> Self::Mass;
+    fn mass_matrix(&self, q: &Vector<N>, t: Float) -> Self::Mass;
     /// `F(q, q', t)`, the applied (unconstrained) forces.
-    fn applied_force(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<N>;
+    fn applied_force(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<N>;
     /// `g(q, q', t)`, all rows.
-    fn constraint_residual(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z>;
+    fn constraint_residual(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z>;
     /// `G`: `∂g/∂q` for position rows, `∂g/∂q'` for velocity rows.
-    fn constraint_jacobian(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N>;
+    fn constraint_jacobian(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Matrix<Z, N>;
     /// `∂g/∂q` for all rows. Equal to [`Self::constraint_jacobian`] when every row is
     /// position-level, which is the default.
-    fn constraint_position_partials(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N> {
+    fn constraint_position_partials(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Matrix<Z, N> {
         self.constraint_jacobian(q, v, t)
     }
     /// The velocity-level form `w` of each row: `ġ = G q' + ∂g/∂t` for position rows, `g` for
     /// velocity rows. Consistent velocities have `w = 0`.
-    fn constraint_rate(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z>;
+    fn constraint_rate(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z>;
     /// `b` in the acceleration-level constraint `G q'' + b = 0`:
     /// `b = (∂w/∂q) q' + ∂w/∂t`.
-    fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z>;
+    fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z>;
     /// `(∂F/∂q, ∂F/∂q')`.
-    fn force_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64)
-        -> (Matrix<N, N>, Matrix<N, N>);
+    fn force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Matrix<N, N>, Matrix<N, N>);
     /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
     fn constraint_force_jacobians(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>);
     /// Where the Jacobians below are nonzero, for the sparse storage: `None` (the default, for
@@ -72,14 +78,20 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
-        values: &mut [f64],
+        t: Float,
+        values: &mut [Float],
     ) {
         let pattern = Self::SPARSITY.map(|s| s.constraint_jacobian);
         gather(&self.constraint_jacobian(q, v, t), pattern, values);
     }
     /// `∂F/∂q`'s values at [`Sparsity::force_jacobians`]`[0]`, then `∂F/∂q'`'s at `[1]`.
-    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+        values: &mut [Float],
+    ) {
         let (dq, dv) = self.force_jacobians(q, v, t);
         let patterns = Self::SPARSITY.map(|s| s.force_jacobians);
         gather_pair((&dq, &dv), patterns, values);
@@ -90,16 +102,16 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
-        values: &mut [f64],
+        values: &mut [Float],
     ) {
         let (dq, dv) = self.constraint_force_jacobians(q, v, t, lambda);
         let patterns = Self::SPARSITY.map(|s| s.constraint_force_jacobians);
         gather_pair((&dq, &dv), patterns, values);
     }
     /// `∂(M(q) a)/∂q` for fixed `a`; zero (the default) when `M` does not depend on `q`.
-    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: Float, a: &Vector<N>) -> Matrix<N, N> {
         let _ = (q, t, a);
         Matrix::zeros()
     }
@@ -113,20 +125,20 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
 
     /// Newton's coefficient of restitution of gap `gap` (`0..UNILATERAL_CONSTRAINTS`): the
     /// separating velocity after an impact is `e` times the approaching one. Default 0.
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> Float {
         let _ = gap;
         0.0
     }
 
     /// The event functions at a state, into `values[..EVENTS]`: the simulator stops where one
     /// of them crosses zero.
-    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: Float, values: &mut [Float]) {
         let _ = (q, v, t, values);
     }
 
     /// The first known discontinuity in time of the model's functions strictly after `t` (a
     /// load's kink, a switch), which steps land on exactly. Default: none.
-    fn time_event_after(&self, t: f64) -> Option<f64> {
+    fn time_event_after(&self, t: Float) -> Option<Float> {
         let _ = t;
         None
     }
@@ -147,7 +159,7 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
         a: &Vector<N>,
     ) -> Matrix<N, P>;
@@ -157,17 +169,22 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> (Matrix<Z, P>, Matrix<Z, P>);
     /// `(∂w/∂q, ∂w/∂q')` of the velocity-level form `w`.
-    fn rate_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> (Matrix<Z, N>, Matrix<Z, N>);
+    fn rate_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Matrix<Z, N>, Matrix<Z, N>);
     /// The acceleration-level constraint `G a + b` linearised for fixed `a`: its derivatives by
     /// `q`, `q'` and `θ`.
     fn acceleration_constraint_jacobians(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         a: &Vector<N>,
     ) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>);
     /// Event function `index`'s derivatives by `q`, `q'`, `t` and `θ`; NaN where the model has
@@ -178,7 +195,7 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
         index: usize,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> EventGradient<N, P> {
         let _ = (index, q, v, t);
         EventGradient::unknown()
@@ -190,7 +207,7 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
 pub struct EventGradient<const N: usize, const P: usize> {
     pub q: Vector<N>,
     pub v: Vector<N>,
-    pub t: f64,
+    pub t: Float,
     pub theta: Matrix<1, P>,
 }
 
@@ -198,10 +215,10 @@ impl<const N: usize, const P: usize> EventGradient<N, P> {
     /// NaN throughout: no derivative is known.
     pub fn unknown() -> Self {
         EventGradient {
-            q: Vector::repeat(f64::NAN),
-            v: Vector::repeat(f64::NAN),
-            t: f64::NAN,
-            theta: Matrix::repeat(f64::NAN),
+            q: Vector::repeat(Float::NAN),
+            v: Vector::repeat(Float::NAN),
+            t: Float::NAN,
+            theta: Matrix::repeat(Float::NAN),
         }
     }
 }
@@ -215,7 +232,7 @@ pub const MAX_EVENTS: usize = 32;
 fn gather<const R: usize, const C: usize>(
     matrix: &Matrix<R, C>,
     pattern: Option<&[(usize, usize)]>,
-    values: &mut [f64],
+    values: &mut [Float],
 ) -> usize {
     match pattern {
         Some(pattern) => {
@@ -237,7 +254,7 @@ fn gather<const R: usize, const C: usize>(
 fn gather_pair<const N: usize>(
     (first, second): (&Matrix<N, N>, &Matrix<N, N>),
     patterns: Option<[&[(usize, usize)]; 2]>,
-    values: &mut [f64],
+    values: &mut [Float],
 ) {
     let written = gather(first, patterns.map(|p| p[0]), values);
     gather(second, patterns.map(|p| p[1]), &mut values[written..]);
@@ -255,7 +272,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> JacobianSource<
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> (Matrix<N, N>, Matrix<N, N>) {
         ConstrainedSystem::force_jacobians(self, q, v, t)
     }
@@ -265,19 +282,25 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> JacobianSource<
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>) {
         ConstrainedSystem::constraint_force_jacobians(self, q, v, t, lambda)
     }
 
     #[inline(always)]
-    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: Float, a: &Vector<N>) -> Matrix<N, N> {
         ConstrainedSystem::mass_jacobian_product(self, q, t, a)
     }
 
     #[inline(always)]
-    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+        values: &mut [Float],
+    ) {
         ConstrainedSystem::force_jacobian_nonzeros(self, q, v, t, values)
     }
 
@@ -286,9 +309,9 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> JacobianSource<
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
-        values: &mut [f64],
+        values: &mut [Float],
     ) {
         ConstrainedSystem::constraint_force_jacobian_nonzeros(self, q, v, t, lambda, values)
     }

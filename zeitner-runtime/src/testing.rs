@@ -3,14 +3,15 @@
 //! runtime uses is nonzero.
 
 use crate::mass::DiagonalMass;
+use crate::scalar::{Float, Lm};
 use crate::system::{ConstrainedSystem, MassKind, Matrix, SceneSummary, Vector};
 
 pub(crate) struct SpringPendulum {
-    pub m: f64,
-    pub length: f64,
-    pub g: f64,
-    pub k: f64,
-    pub d: f64,
+    pub m: Float,
+    pub length: Float,
+    pub g: Float,
+    pub k: Float,
+    pub d: Float,
 }
 
 pub(crate) const PENDULUM: SpringPendulum = SpringPendulum {
@@ -35,32 +36,32 @@ impl ConstrainedSystem<2, 1> for SpringPendulum {
     type Mass = DiagonalMass<2>;
     type Storage = crate::storage::Dense;
 
-    fn mass_matrix(&self, _: &Vector<2>, _: f64) -> DiagonalMass<2> {
+    fn mass_matrix(&self, _: &Vector<2>, _: Float) -> DiagonalMass<2> {
         DiagonalMass(Vector::from([self.m, self.m]))
     }
-    fn applied_force(&self, q: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<2> {
+    fn applied_force(&self, q: &Vector<2>, v: &Vector<2>, _: Float) -> Vector<2> {
         Vector::from([
             -self.k * q[0] * q[0] * q[0] - self.d * v[0],
             -self.m * self.g - self.d * v[1],
         ])
     }
-    fn constraint_residual(&self, q: &Vector<2>, _: &Vector<2>, _: f64) -> Vector<1> {
+    fn constraint_residual(&self, q: &Vector<2>, _: &Vector<2>, _: Float) -> Vector<1> {
         Vector::from([q[0] * q[0] + q[1] * q[1] - self.length * self.length])
     }
-    fn constraint_jacobian(&self, q: &Vector<2>, _: &Vector<2>, _: f64) -> Matrix<1, 2> {
+    fn constraint_jacobian(&self, q: &Vector<2>, _: &Vector<2>, _: Float) -> Matrix<1, 2> {
         Matrix::from_row_slice(&[2.0 * q[0], 2.0 * q[1]])
     }
-    fn constraint_rate(&self, q: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<1> {
+    fn constraint_rate(&self, q: &Vector<2>, v: &Vector<2>, _: Float) -> Vector<1> {
         Vector::from([2.0 * (q[0] * v[0] + q[1] * v[1])])
     }
-    fn constraint_acceleration_bias(&self, _: &Vector<2>, v: &Vector<2>, _: f64) -> Vector<1> {
+    fn constraint_acceleration_bias(&self, _: &Vector<2>, v: &Vector<2>, _: Float) -> Vector<1> {
         Vector::from([2.0 * (v[0] * v[0] + v[1] * v[1])])
     }
     fn force_jacobians(
         &self,
         q: &Vector<2>,
         _: &Vector<2>,
-        _: f64,
+        _: Float,
     ) -> (Matrix<2, 2>, Matrix<2, 2>) {
         let dq = Matrix::from_row_slice(&[-3.0 * self.k * q[0] * q[0], 0.0, 0.0, 0.0]);
         (dq, -self.d * Matrix::identity())
@@ -69,7 +70,7 @@ impl ConstrainedSystem<2, 1> for SpringPendulum {
         &self,
         _: &Vector<2>,
         _: &Vector<2>,
-        _: f64,
+        _: Float,
         lambda: &Vector<1>,
     ) -> (Matrix<2, 2>, Matrix<2, 2>) {
         ((2.0 * lambda[0]) * Matrix::identity(), Matrix::zeros())
@@ -78,8 +79,8 @@ impl ConstrainedSystem<2, 1> for SpringPendulum {
 
 /// A point on the circle, swinging.
 pub(crate) fn swinging() -> (Vector<2>, Vector<2>) {
-    let angle: f64 = 0.7;
-    let (s, c) = (libm::sin(angle), libm::cos(angle));
+    let angle: Float = 0.7;
+    let (s, c) = (Lm::sin(angle), Lm::cos(angle));
     let l = PENDULUM.length;
     (
         Vector::from([l * s, -l * c]),

@@ -1,5 +1,6 @@
 //! A scene run on a storage other than its own.
 
+use crate::scalar::Float;
 use core::marker::PhantomData;
 
 use crate::storage::Storage;
@@ -40,32 +41,32 @@ where
     type Mass = S::Mass;
     type Storage = D;
 
-    fn mass_matrix(&self, q: &Vector<N>, t: f64) -> S::Mass {
+    fn mass_matrix(&self, q: &Vector<N>, t: Float) -> S::Mass {
         self.scene.mass_matrix(q, t)
     }
-    fn applied_force(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<N> {
+    fn applied_force(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<N> {
         self.scene.applied_force(q, v, t)
     }
-    fn constraint_residual(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+    fn constraint_residual(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z> {
         self.scene.constraint_residual(q, v, t)
     }
-    fn constraint_jacobian(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N> {
+    fn constraint_jacobian(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Matrix<Z, N> {
         self.scene.constraint_jacobian(q, v, t)
     }
-    fn constraint_position_partials(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Matrix<Z, N> {
+    fn constraint_position_partials(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Matrix<Z, N> {
         self.scene.constraint_position_partials(q, v, t)
     }
-    fn constraint_rate(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+    fn constraint_rate(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z> {
         self.scene.constraint_rate(q, v, t)
     }
-    fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Vector<Z> {
+    fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z> {
         self.scene.constraint_acceleration_bias(q, v, t)
     }
     fn force_jacobians(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> (Matrix<N, N>, Matrix<N, N>) {
         self.scene.force_jacobians(q, v, t)
     }
@@ -73,7 +74,7 @@ where
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>) {
         self.scene.constraint_force_jacobians(q, v, t, lambda)
@@ -82,35 +83,41 @@ where
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
-        values: &mut [f64],
+        t: Float,
+        values: &mut [Float],
     ) {
         self.scene.constraint_jacobian_nonzeros(q, v, t, values)
     }
-    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+        values: &mut [Float],
+    ) {
         self.scene.force_jacobian_nonzeros(q, v, t, values)
     }
     fn constraint_force_jacobian_nonzeros(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
-        values: &mut [f64],
+        values: &mut [Float],
     ) {
         self.scene
             .constraint_force_jacobian_nonzeros(q, v, t, lambda, values)
     }
-    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N> {
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: Float, a: &Vector<N>) -> Matrix<N, N> {
         self.scene.mass_jacobian_product(q, t, a)
     }
-    fn restitution(&self, gap: usize) -> f64 {
+    fn restitution(&self, gap: usize) -> Float {
         self.scene.restitution(gap)
     }
-    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]) {
+    fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: Float, values: &mut [Float]) {
         self.scene.event_functions(q, v, t, values)
     }
-    fn time_event_after(&self, t: f64) -> Option<f64> {
+    fn time_event_after(&self, t: Float) -> Option<Float> {
         self.scene.time_event_after(t)
     }
 }
@@ -129,7 +136,7 @@ where
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
         a: &Vector<N>,
     ) -> Matrix<N, P> {
@@ -139,18 +146,23 @@ where
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> (Matrix<Z, P>, Matrix<Z, P>) {
         self.scene.parameter_constraints(q, v, t)
     }
-    fn rate_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64) -> (Matrix<Z, N>, Matrix<Z, N>) {
+    fn rate_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Matrix<Z, N>, Matrix<Z, N>) {
         self.scene.rate_jacobians(q, v, t)
     }
     fn acceleration_constraint_jacobians(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         a: &Vector<N>,
     ) -> (Matrix<Z, N>, Matrix<Z, N>, Matrix<Z, P>) {
         self.scene.acceleration_constraint_jacobians(q, v, t, a)
@@ -160,7 +172,7 @@ where
         index: usize,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
     ) -> EventGradient<N, P> {
         self.scene.event_gradient(index, q, v, t)
     }

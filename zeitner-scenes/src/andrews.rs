@@ -2,53 +2,53 @@
 //! mass matrix (Hairer & Wanner II, sec. VII.7; the test set's problem `andrews`).
 //! Coordinates q = (β, Θ, γ, Φ, δ, Ω, ε).
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 /// The mechanism's parameters, named as in the test set.
 #[derive(Clone, Copy, Debug)]
 pub struct Andrews {
-    pub m1: f64,
-    pub m2: f64,
-    pub m3: f64,
-    pub m4: f64,
-    pub m5: f64,
-    pub m6: f64,
-    pub m7: f64,
-    pub i1: f64,
-    pub i2: f64,
-    pub i3: f64,
-    pub i4: f64,
-    pub i5: f64,
-    pub i6: f64,
-    pub i7: f64,
-    pub xa: f64,
-    pub ya: f64,
-    pub xb: f64,
-    pub yb: f64,
-    pub xc: f64,
-    pub yc: f64,
-    pub c0: f64,
-    pub l0: f64,
-    pub mom: f64,
-    pub d: f64,
-    pub da: f64,
-    pub e: f64,
-    pub ea: f64,
-    pub rr: f64,
-    pub ra: f64,
-    pub ss: f64,
-    pub sa: f64,
-    pub sb: f64,
-    pub sc: f64,
-    pub sd: f64,
-    pub ta: f64,
-    pub tb: f64,
-    pub u: f64,
-    pub ua: f64,
-    pub ub: f64,
-    pub zf: f64,
-    pub zt: f64,
-    pub fa: f64,
+    pub m1: Float,
+    pub m2: Float,
+    pub m3: Float,
+    pub m4: Float,
+    pub m5: Float,
+    pub m6: Float,
+    pub m7: Float,
+    pub i1: Float,
+    pub i2: Float,
+    pub i3: Float,
+    pub i4: Float,
+    pub i5: Float,
+    pub i6: Float,
+    pub i7: Float,
+    pub xa: Float,
+    pub ya: Float,
+    pub xb: Float,
+    pub yb: Float,
+    pub xc: Float,
+    pub yc: Float,
+    pub c0: Float,
+    pub l0: Float,
+    pub mom: Float,
+    pub d: Float,
+    pub da: Float,
+    pub e: Float,
+    pub ea: Float,
+    pub rr: Float,
+    pub ra: Float,
+    pub ss: Float,
+    pub sa: Float,
+    pub sb: Float,
+    pub sc: Float,
+    pub sd: Float,
+    pub ta: Float,
+    pub tb: Float,
+    pub u: Float,
+    pub ua: Float,
+    pub ub: Float,
+    pub zf: Float,
+    pub zt: Float,
+    pub fa: Float,
 }
 
 impl Andrews {
@@ -102,7 +102,7 @@ impl Andrews {
 
     /// The published consistent initial angles (velocities are zero), with all published digits.
     #[allow(clippy::excessive_precision)]
-    pub const Q0: [f64; 7] = [
+    pub const Q0: [Float; 7] = [
         -0.0617138900142764496358948458001,
         0.0,
         0.455279819163070380255912382449,
@@ -117,8 +117,8 @@ impl Andrews {
 impl Andrews {
     fn mass(
         &self,
-        [_beta, theta, _gamma, phi, _delta, omega, _epsilon]: [f64; 7],
-    ) -> [[f64; 7]; 7] {
+        [_beta, theta, _gamma, phi, _delta, omega, _epsilon]: [Float; 7],
+    ) -> [[Float; 7]; 7] {
         let m2 = self.m2;
         let m4 = self.m4;
         let m6 = self.m6;
@@ -156,9 +156,9 @@ impl Andrews {
 
     fn force(
         &self,
-        [_beta, theta, gamma, phi, _delta, omega, _epsilon]: [f64; 7],
-        [vbeta, vtheta, _vgamma, vphi, vdelta, vomega, vepsilon]: [f64; 7],
-    ) -> [f64; 7] {
+        [_beta, theta, gamma, phi, _delta, omega, _epsilon]: [Float; 7],
+        [vbeta, vtheta, _vgamma, vphi, vdelta, vomega, vepsilon]: [Float; 7],
+    ) -> [Float; 7] {
         let xd = self.sd * gamma.cos() + self.sc * gamma.sin() + self.xb;
         let yd = self.sd * gamma.sin() - self.sc * gamma.cos() + self.yb;
         let ls = ((xd - self.xc).powi(2) + (yd - self.yc).powi(2)).sqrt();
@@ -179,7 +179,10 @@ impl Andrews {
         ]
     }
 
-    fn constraints(&self, [beta, theta, gamma, phi, delta, omega, epsilon]: [f64; 7]) -> [f64; 6] {
+    fn constraints(
+        &self,
+        [beta, theta, gamma, phi, delta, omega, epsilon]: [Float; 7],
+    ) -> [Float; 6] {
         let x = self.rr * beta.cos() - self.d * (beta + theta).cos();
         let y = self.rr * beta.sin() - self.d * (beta + theta).sin();
         [
@@ -193,7 +196,7 @@ impl Andrews {
     }
 
     /// For sensitivities: the driving torque, the spring, a mass and a rod length.
-    fn parameters(&self) -> [f64; 4] {
+    fn parameters(&self) -> [Float; 4] {
         [self.mom, self.c0, self.m2, self.d]
     }
 }

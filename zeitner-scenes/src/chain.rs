@@ -4,24 +4,24 @@
 //! coordinates) is for the macro's compile time and sparse runtimes: the dense runtime's
 //! workspaces of that size do not fit a test thread's stack.
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 /// A chain of 2 pendulums: 4 coordinates, 2 rods.
 pub struct Chain2 {
-    pub m: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Chain2 {
     const LINKS: usize = 2;
 
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         [self.m; 2 * Self::LINKS]
     }
 
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         let mut f = [0.0; 2 * Self::LINKS];
         for i in 0..Self::LINKS {
             f[2 * i + 1] = -self.m * self.g;
@@ -29,7 +29,7 @@ impl Chain2 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         let mut g = [0.0; Self::LINKS];
         g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
         for i in 1..Self::LINKS {
@@ -42,20 +42,20 @@ impl Chain2 {
 
 /// A chain of 4 pendulums: 8 coordinates, 4 rods.
 pub struct Chain4 {
-    pub m: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Chain4 {
     const LINKS: usize = 4;
 
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         [self.m; 2 * Self::LINKS]
     }
 
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         let mut f = [0.0; 2 * Self::LINKS];
         for i in 0..Self::LINKS {
             f[2 * i + 1] = -self.m * self.g;
@@ -63,7 +63,7 @@ impl Chain4 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         let mut g = [0.0; Self::LINKS];
         g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
         for i in 1..Self::LINKS {
@@ -76,20 +76,20 @@ impl Chain4 {
 
 /// A chain of 8 pendulums: 16 coordinates, 8 rods.
 pub struct Chain8 {
-    pub m: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Chain8 {
     const LINKS: usize = 8;
 
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         [self.m; 2 * Self::LINKS]
     }
 
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         let mut f = [0.0; 2 * Self::LINKS];
         for i in 0..Self::LINKS {
             f[2 * i + 1] = -self.m * self.g;
@@ -97,7 +97,7 @@ impl Chain8 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         let mut g = [0.0; Self::LINKS];
         g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
         for i in 1..Self::LINKS {
@@ -110,20 +110,20 @@ impl Chain8 {
 
 /// A chain of 16 pendulums: 32 coordinates, 16 rods.
 pub struct Chain16 {
-    pub m: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Chain16 {
     const LINKS: usize = 16;
 
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         [self.m; 2 * Self::LINKS]
     }
 
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         let mut f = [0.0; 2 * Self::LINKS];
         for i in 0..Self::LINKS {
             f[2 * i + 1] = -self.m * self.g;
@@ -131,7 +131,7 @@ impl Chain16 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         let mut g = [0.0; Self::LINKS];
         g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
         for i in 1..Self::LINKS {
@@ -144,20 +144,20 @@ impl Chain16 {
 
 /// A chain of 100 pendulums: 200 coordinates, 100 rods.
 pub struct Chain100 {
-    pub m: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Chain100 {
     const LINKS: usize = 100;
 
-    fn mass(&self) -> [f64; 2 * Self::LINKS] {
+    fn mass(&self) -> [Float; 2 * Self::LINKS] {
         [self.m; 2 * Self::LINKS]
     }
 
-    fn force(&self) -> [f64; 2 * Self::LINKS] {
+    fn force(&self) -> [Float; 2 * Self::LINKS] {
         let mut f = [0.0; 2 * Self::LINKS];
         for i in 0..Self::LINKS {
             f[2 * i + 1] = -self.m * self.g;
@@ -165,7 +165,7 @@ impl Chain100 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::LINKS]) -> [f64; Self::LINKS] {
+    fn constraints(&self, q: [Float; 2 * Self::LINKS]) -> [Float; Self::LINKS] {
         let mut g = [0.0; Self::LINKS];
         g[0] = q[0] * q[0] + q[1] * q[1] - self.l * self.l;
         for i in 1..Self::LINKS {

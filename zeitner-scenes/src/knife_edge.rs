@@ -4,40 +4,44 @@
 //! turning at `omega`, it has the closed form of [`KnifeEdge::exact`] (Neimark & Fufaev,
 //! *Dynamics of Nonholonomic Systems*, 1972, ch. III).
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 pub struct KnifeEdge {
-    pub m: f64,
-    pub j: f64,
-    pub g: f64,
-    pub alpha: f64,
+    pub m: Float,
+    pub j: Float,
+    pub g: Float,
+    pub alpha: Float,
 }
 
 #[constrained_system]
 impl KnifeEdge {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         [self.m, self.m, self.j]
     }
 
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         [self.m * self.g * self.alpha.sin(), 0.0, 0.0]
     }
 
-    fn velocity_constraints(&self, [_x, _y, theta]: [f64; 3], [vx, vy, _w]: [f64; 3]) -> [f64; 1] {
+    fn velocity_constraints(
+        &self,
+        [_x, _y, theta]: [Float; 3],
+        [vx, vy, _w]: [Float; 3],
+    ) -> [Float; 1] {
         [-theta.sin() * vx + theta.cos() * vy]
     }
 
     /// For sensitivities: the slope, gravity and the mass (on which the motion does not depend).
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         [self.alpha, self.g, self.m]
     }
 }
 
 /// A state of the knife edge with its multiplier.
 pub struct KnifeEdgeState {
-    pub q: [f64; 3],
-    pub v: [f64; 3],
-    pub lambda: f64,
+    pub q: [Float; 3],
+    pub v: [Float; 3],
+    pub lambda: Float,
 }
 
 impl KnifeEdge {
@@ -51,7 +55,7 @@ impl KnifeEdge {
     /// The closed form from rest at the origin with heading `θ = ω t`: speed along the blade
     /// `u = (g sin α / ω) sin ωt`, `x = g sin α/(2ω²) sin² ωt`, `y = g sin α/(2ω²)(ωt - sin 2ωt / 2)`,
     /// and the lateral force `λ = -2 m g sin α sin ωt` (in `M q'' = F - Gᵀλ`, `G = (-sin θ, cos θ, 0)`).
-    pub fn exact(&self, omega: f64, t: f64) -> KnifeEdgeState {
+    pub fn exact(&self, omega: Float, t: Float) -> KnifeEdgeState {
         let a = self.g * self.alpha.sin();
         let (s, c) = (omega * t).sin_cos();
         let u = a / omega * s;
@@ -72,17 +76,17 @@ impl KnifeEdge {
 /// row. The motion is that of [`KnifeEdge::exact`]; the steering multiplier is the torque.
 pub struct SteeredKnifeEdge {
     pub edge: KnifeEdge,
-    pub omega: f64,
-    pub torque: f64,
+    pub omega: Float,
+    pub torque: Float,
 }
 
 #[constrained_system]
 impl SteeredKnifeEdge {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         [self.edge.m, self.edge.m, self.edge.j]
     }
 
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         [
             self.edge.m * self.edge.g * self.edge.alpha.sin(),
             0.0,
@@ -90,16 +94,20 @@ impl SteeredKnifeEdge {
         ]
     }
 
-    fn constraints(&self, [_x, _y, theta]: [f64; 3], t: f64) -> [f64; 1] {
+    fn constraints(&self, [_x, _y, theta]: [Float; 3], t: Float) -> [Float; 1] {
         [theta - self.omega * t]
     }
 
-    fn velocity_constraints(&self, [_x, _y, theta]: [f64; 3], [vx, vy, _w]: [f64; 3]) -> [f64; 1] {
+    fn velocity_constraints(
+        &self,
+        [_x, _y, theta]: [Float; 3],
+        [vx, vy, _w]: [Float; 3],
+    ) -> [Float; 1] {
         [-theta.sin() * vx + theta.cos() * vy]
     }
 
     /// For sensitivities: the slope, the steering rate and the torque.
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         [self.edge.alpha, self.omega, self.torque]
     }
 }

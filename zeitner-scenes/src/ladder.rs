@@ -8,14 +8,14 @@
 //! 37 rows on 36 coordinates are consistent but one is redundant (a statically indeterminate
 //! truss), which the runtime resolves with minimum-norm multipliers.
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 /// A ladder of 8 bays (9 rungs, 18 nodes, 36 coordinates) hung from one pin: 35 rows.
 pub struct Ladder8 {
-    pub m: f64,
+    pub m: Float,
     /// Rung and rail length.
-    pub a: f64,
-    pub g: f64,
+    pub a: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
@@ -26,15 +26,15 @@ impl Ladder8 {
     const BARS: usize = (Self::BAYS + 1) + 3 * Self::BAYS;
 
     /// Squared distance of two points minus a bar's rest length squared.
-    fn bar(&self, p: [f64; 2], r: [f64; 2], length2: f64) -> f64 {
+    fn bar(&self, p: [Float; 2], r: [Float; 2], length2: Float) -> Float {
         (p[0] - r[0]).powi(2) + (p[1] - r[1]).powi(2) - length2
     }
 
-    fn mass(&self) -> [f64; 2 * Self::NODES] {
+    fn mass(&self) -> [Float; 2 * Self::NODES] {
         [self.m; 2 * Self::NODES]
     }
 
-    fn force(&self) -> [f64; 2 * Self::NODES] {
+    fn force(&self) -> [Float; 2 * Self::NODES] {
         let mut f = [0.0; 2 * Self::NODES];
         for node in 0..Self::NODES {
             f[2 * node + 1] = -self.m * self.g;
@@ -42,7 +42,7 @@ impl Ladder8 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::NODES]) -> [f64; Self::BARS + 2] {
+    fn constraints(&self, q: [Float; 2 * Self::NODES]) -> [Float; Self::BARS + 2] {
         let a2 = self.a * self.a;
         let mut g = [0.0; Self::BARS + 2];
         let mut row = 0;
@@ -68,10 +68,10 @@ impl Ladder8 {
 
 /// The same ladder pinned at both bottom ends: 37 rows on 36 coordinates, one redundant.
 pub struct PinnedLadder8 {
-    pub m: f64,
+    pub m: Float,
     /// Rung and rail length.
-    pub a: f64,
-    pub g: f64,
+    pub a: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
@@ -80,15 +80,15 @@ impl PinnedLadder8 {
     const NODES: usize = 2 * (Self::BAYS + 1);
     const BARS: usize = (Self::BAYS + 1) + 3 * Self::BAYS;
 
-    fn bar(&self, p: [f64; 2], r: [f64; 2], length2: f64) -> f64 {
+    fn bar(&self, p: [Float; 2], r: [Float; 2], length2: Float) -> Float {
         (p[0] - r[0]).powi(2) + (p[1] - r[1]).powi(2) - length2
     }
 
-    fn mass(&self) -> [f64; 2 * Self::NODES] {
+    fn mass(&self) -> [Float; 2 * Self::NODES] {
         [self.m; 2 * Self::NODES]
     }
 
-    fn force(&self) -> [f64; 2 * Self::NODES] {
+    fn force(&self) -> [Float; 2 * Self::NODES] {
         let mut f = [0.0; 2 * Self::NODES];
         for node in 0..Self::NODES {
             f[2 * node + 1] = -self.m * self.g;
@@ -96,7 +96,7 @@ impl PinnedLadder8 {
         f
     }
 
-    fn constraints(&self, q: [f64; 2 * Self::NODES]) -> [f64; Self::BARS + 4] {
+    fn constraints(&self, q: [Float; 2 * Self::NODES]) -> [Float; Self::BARS + 4] {
         let a2 = self.a * self.a;
         let mut g = [0.0; Self::BARS + 4];
         let mut row = 0;
@@ -116,7 +116,7 @@ impl PinnedLadder8 {
         let last = 4 * Self::BAYS;
         g[row] = q[0];
         g[row + 1] = q[1];
-        g[row + 2] = q[last] - Self::BAYS as f64 * self.a;
+        g[row + 2] = q[last] - Self::BAYS as Float * self.a;
         g[row + 3] = q[last + 1];
         g
     }

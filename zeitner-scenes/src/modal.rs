@@ -11,15 +11,16 @@
 //! (ω = 0) and the bending modes, the highest of them overdamped.
 
 use nalgebra::{DMatrix, SymmetricEigen};
+use zeitner::Float;
 
 use crate::structure::Lumped;
 
 /// A reference state: coordinates, velocities and the multipliers of the pin (horizontal,
 /// vertical), the pendulum column and the strut (zero before it engages).
 pub struct ModalState {
-    pub q: Vec<f64>,
-    pub v: Vec<f64>,
-    pub lambda: [f64; 4],
+    pub q: Vec<Float>,
+    pub v: Vec<Float>,
+    pub lambda: [Float; 4],
 }
 
 /// The modes of the column's horizontal motion.
@@ -27,16 +28,16 @@ pub struct Modes {
     lumped: Lumped,
     nodes: usize,
     /// ω of each mode, rad/s.
-    pub frequencies: Vec<f64>,
+    pub frequencies: Vec<Float>,
     /// Mass-normalised shapes over `u₁ … u_top`, one column per mode.
-    shapes: DMatrix<f64>,
+    shapes: DMatrix<Float>,
 }
 
 impl Modes {
     pub fn of(lumped: Lumped, nodes: usize) -> Self {
         let free = nodes - 1;
         // K = k_b Σ b bᵀ over the interior nodes k, b = (1, -2, 1) at (k-1, k, k+1); u₀ = 0.
-        let mut stiffness = DMatrix::<f64>::zeros(free, free);
+        let mut stiffness = DMatrix::<Float>::zeros(free, free);
         for k in 1..nodes - 1 {
             let b = [(k - 1, 1.0), (k, -2.0), (k + 1, 1.0)];
             for &(i, bi) in b.iter().filter(|(i, _)| *i > 0) {
@@ -64,16 +65,16 @@ impl Modes {
 
     /// The highest frequency of the whole model, axial modes included (rad/s): the axial chain
     /// held at both ends has the largest eigenvalue `4 k_a/m · sin²(π (n-2) / (2 (n-1)))`.
-    pub fn highest_frequency(&self) -> f64 {
-        let n = self.nodes as f64;
+    pub fn highest_frequency(&self) -> Float {
+        let n = self.nodes as Float;
         let axial = 2.0
             * (self.lumped.axial_spring / self.lumped.node_mass).sqrt()
-            * (core::f64::consts::PI * (n - 2.0) / (2.0 * (n - 1.0))).sin();
-        self.frequencies.iter().copied().fold(axial, f64::max)
+            * (zeitner::scalar::consts::PI * (n - 2.0) / (2.0 * (n - 1.0))).sin();
+        self.frequencies.iter().copied().fold(axial, Float::max)
     }
 
     /// `u` and `u̇` of the free nodes at `t`.
-    fn horizontal(&self, t: f64) -> (Vec<f64>, Vec<f64>) {
+    fn horizontal(&self, t: Float) -> (Vec<Float>, Vec<Float>) {
         let (p0, rise) = (self.lumped.column.p0, self.lumped.column.rise);
         let top = self.nodes - 2;
         let mut u = vec![0.0; self.nodes - 1];
@@ -81,7 +82,7 @@ impl Modes {
         for (mode, &omega) in self.frequencies.iter().enumerate() {
             // A load p0 s/rise from s = 0 on, less the same from s = rise on.
             let zeta = 0.5 * self.lumped.damping * omega;
-            let ramp = |s: f64| {
+            let ramp = |s: Float| {
                 if s > 0.0 {
                     ramp_response(omega, zeta, s)
                 } else {
@@ -101,7 +102,7 @@ impl Modes {
     }
 
     /// The state at `t`, valid until the strut engages ([`Self::first_contact`]).
-    pub fn state(&self, t: f64) -> ModalState {
+    pub fn state(&self, t: Float) -> ModalState {
         let (u, du) = self.horizontal(t);
         let mut q = vec![0.0; 2 * self.nodes];
         let mut v = vec![0.0; 2 * self.nodes];
@@ -131,9 +132,9 @@ impl Modes {
 
     /// The time the strut node's `u` first reaches the clearance, to 1e-14 s: bisection on the
     /// closed form between sample points 1 ms apart.
-    pub fn first_contact(&self) -> f64 {
+    pub fn first_contact(&self) -> Float {
         let strut = self.lumped.strut;
-        let reach = |t: f64| self.horizontal(t).0[strut - 1] - self.lumped.column.clearance;
+        let reach = |t: Float| self.horizontal(t).0[strut - 1] - self.lumped.column.clearance;
         let (mut lo, mut hi) = (0.0, 1e-3);
         while reach(hi) < 0.0 {
             (lo, hi) = (hi, hi + 1e-3);
@@ -155,7 +156,7 @@ impl Modes {
 /// `(s - 2ζ/ω)/ω²` plus the free response that starts it from rest, under-, critically or
 /// overdamped; undamped, `(s - sin(ωs)/ω)/ω²`, or `s³/6` for the rigid mode (by its series
 /// where `ωs` is small, which keeps the cancellation out).
-fn ramp_response(omega: f64, zeta: f64, s: f64) -> (f64, f64) {
+fn ramp_response(omega: Float, zeta: Float, s: Float) -> (Float, Float) {
     if zeta == 0.0 {
         return undamped_ramp_response(omega, s);
     }
@@ -193,7 +194,7 @@ fn ramp_response(omega: f64, zeta: f64, s: f64) -> (f64, f64) {
     ((s - 2.0 * zeta / omega) / w2 + free, 1.0 / w2 + free_rate)
 }
 
-fn undamped_ramp_response(omega: f64, s: f64) -> (f64, f64) {
+fn undamped_ramp_response(omega: Float, s: Float) -> (Float, Float) {
     let x = omega * s;
     if x < 0.1 {
         // Taylor series of (x - sin x)/ω³ and (1 - cos x)/ω², truncated after x⁶: the next
@@ -215,11 +216,12 @@ mod tests {
     use super::*;
 
     /// `r̈ + 2ζω ṙ + ω² r = s` by classical Runge–Kutta at a step far below `1/ω`, to `s`.
-    fn integrated(omega: f64, zeta: f64, s: f64) -> (f64, f64) {
+    fn integrated(omega: Float, zeta: Float, s: Float) -> (Float, Float) {
         let steps = 200_000;
-        let h = s / steps as f64;
-        let rate =
-            |t: f64, (r, dr): (f64, f64)| (dr, t - 2.0 * zeta * omega * dr - omega * omega * r);
+        let h = s / steps as Float;
+        let rate = |t: Float, (r, dr): (Float, Float)| {
+            (dr, t - 2.0 * zeta * omega * dr - omega * omega * r)
+        };
         let (mut t, mut y) = (0.0, (0.0, 0.0));
         for _ in 0..steps {
             let k1 = rate(t, y);

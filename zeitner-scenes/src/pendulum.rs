@@ -1,24 +1,24 @@
 //! A point mass on a massless rod, in Cartesian coordinates (index 3).
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 pub struct Pendulum {
-    pub m: f64,
-    pub length: f64,
-    pub g: f64,
+    pub m: Float,
+    pub length: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Pendulum {
-    fn mass(&self) -> [f64; 2] {
+    fn mass(&self) -> [Float; 2] {
         [self.m, self.m]
     }
 
-    fn force(&self) -> [f64; 2] {
+    fn force(&self) -> [Float; 2] {
         [0.0, -self.m * self.g]
     }
 
-    fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] {
         [x * x + y * y - self.length * self.length]
     }
 }

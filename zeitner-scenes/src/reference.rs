@@ -5,15 +5,16 @@ use super::contact::WallPendulum;
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
 use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
+use zeitner::Float;
 
 /// A reference state and its multipliers at one time.
 pub struct State<const N: usize, const Z: usize> {
-    pub q: [f64; N],
-    pub v: [f64; N],
-    pub lambda: [f64; Z],
+    pub q: [Float; N],
+    pub v: [Float; N],
+    pub lambda: [Float; Z],
 }
 
-fn phi_rhs(s: &SteamGenerator, t: f64, y: &[f64; 2]) -> [f64; 2] {
+fn phi_rhs(s: &SteamGenerator, t: Float, y: &[Float; 2]) -> [Float; 2] {
     let (phi, w) = (y[0], y[1]);
     let (sin, cos) = phi.sin_cos();
     let p = s.load(t);
@@ -40,7 +41,7 @@ fn phi_rhs(s: &SteamGenerator, t: f64, y: &[f64; 2]) -> [f64; 2] {
 /// (it is consistent), with G = [[1, 0, -h3], [2 q1, 2 (q2 - h2), 0]].
 ///
 /// The steam generator's reduced-coordinate solution at `t`, integrated to about 1e-15.
-pub fn steam_generator(s: &SteamGenerator, t: f64) -> State<3, 2> {
+pub fn steam_generator(s: &SteamGenerator, t: Float) -> State<3, 2> {
     // Integrate across the load's kink at t = rise in two pieces, 1e-5 s steps (RK4 error ~1e-15).
     let y = rk4(
         |t, y| phi_rhs(s, t, y),
@@ -71,8 +72,8 @@ pub fn steam_generator(s: &SteamGenerator, t: f64) -> State<3, 2> {
     let r = [f[0] - s.m * a[0], f[1] - s.m * a[1], f[2] - s.j * a[2]];
     let g = [[1.0, 0.0, -s.h3], [2.0 * q[0], 2.0 * (q[1] - s.h2), 0.0]];
     // Normal equations (G Gᵀ) λ = G r.
-    let ggt = |i: usize, j: usize| (0..3).map(|k| g[i][k] * g[j][k]).sum::<f64>();
-    let gr = |i: usize| (0..3).map(|k| g[i][k] * r[k]).sum::<f64>();
+    let ggt = |i: usize, j: usize| (0..3).map(|k| g[i][k] * g[j][k]).sum::<Float>();
+    let gr = |i: usize| (0..3).map(|k| g[i][k] * r[k]).sum::<Float>();
     let det = ggt(0, 0) * ggt(1, 1) - ggt(0, 1) * ggt(1, 0);
     let lambda = [
         (ggt(1, 1) * gr(0) - ggt(0, 1) * gr(1)) / det,
@@ -84,19 +85,19 @@ pub fn steam_generator(s: &SteamGenerator, t: f64) -> State<3, 2> {
 /// Classical RK4 for a first-order system `y' = f(t, y)` of `K` components, fixed step `h`,
 /// from `t0` to `t1` (which `h` must divide). Used for reduced-coordinate references.
 pub fn rk4<const K: usize>(
-    f: impl Fn(f64, &[f64; K]) -> [f64; K],
-    t0: f64,
-    y0: [f64; K],
-    t1: f64,
+    f: impl Fn(Float, &[Float; K]) -> [Float; K],
+    t0: Float,
+    y0: [Float; K],
+    t1: Float,
     steps: usize,
-) -> [f64; K] {
-    let h = (t1 - t0) / steps as f64;
+) -> [Float; K] {
+    let h = (t1 - t0) / steps as Float;
     let mut y = y0;
-    let axpy = |y: &[f64; K], a: f64, k: &[f64; K]| -> [f64; K] {
+    let axpy = |y: &[Float; K], a: Float, k: &[Float; K]| -> [Float; K] {
         core::array::from_fn(|i| y[i] + a * k[i])
     };
     for s in 0..steps {
-        let t = t0 + s as f64 * h;
+        let t = t0 + s as Float * h;
         let k1 = f(t, &y);
         let k2 = f(t + h / 2.0, &axpy(&y, h / 2.0, &k1));
         let k3 = f(t + h / 2.0, &axpy(&y, h / 2.0, &k2));
@@ -109,13 +110,13 @@ pub fn rk4<const K: usize>(
 /// The pendulum released horizontally at rest, from its angle ODE θ'' = -(g/L) sin θ
 /// (θ from the downward vertical, x = L sin θ, y = -L cos θ), with λ from the radial balance
 /// m L θ'² + m g cos θ = 2 L λ (G = (2x, 2y)). RK4 with steps of about 2e-5 s.
-pub fn pendulum_released_horizontally(p: &Pendulum, t: f64) -> State<2, 1> {
+pub fn pendulum_released_horizontally(p: &Pendulum, t: Float) -> State<2, 1> {
     let (g, l, m) = (p.g, p.length, p.m);
     let steps = (t / 2e-5).round().max(1.0) as usize;
     let y = rk4(
-        |_, y: &[f64; 2]| [y[1], -(g / l) * y[0].sin()],
+        |_, y: &[Float; 2]| [y[1], -(g / l) * y[0].sin()],
         0.0,
-        [core::f64::consts::FRAC_PI_2, 0.0],
+        [zeitner::scalar::consts::FRAC_PI_2, 0.0],
         t,
         steps,
     );
@@ -131,7 +132,7 @@ pub fn pendulum_released_horizontally(p: &Pendulum, t: f64) -> State<2, 1> {
 /// The pendulum beside an elastic wall (`e = 1`) released horizontally away from it: the free
 /// pendulum mirrored at the wall (`x` and `x'` reflected where the free one has crossed), and no
 /// force in the open gap.
-pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: f64) -> State<2, 2> {
+pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: Float) -> State<2, 2> {
     let free = pendulum_released_horizontally(
         &Pendulum {
             m: p.m,
@@ -157,12 +158,12 @@ pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: f64) -> State<2,
 ///   m l cos θ x_s'' + m l sin θ y_s'' + m l² θ'' = -m g l sin θ.
 /// The multiplier from the bob's equation `m b'' = (0, -m g) - 2 (b - p) λ`.
 /// RK4 with 2e-7 s steps (the support's frequency times the step is 0.02).
-pub fn spring_supported_pendulum(s: &SpringSupportedPendulum, t: f64) -> State<4, 1> {
+pub fn spring_supported_pendulum(s: &SpringSupportedPendulum, t: Float) -> State<4, 1> {
     let start = s.start();
     let y0 = [
         start[0],
         start[1],
-        core::f64::consts::FRAC_PI_2,
+        zeitner::scalar::consts::FRAC_PI_2,
         0.0,
         0.0,
         0.0,
@@ -189,7 +190,7 @@ pub fn spring_supported_pendulum(s: &SpringSupportedPendulum, t: f64) -> State<4
 }
 
 /// `(x_s, y_s, θ, x_s', y_s', θ')'` of the reduced equations above.
-fn spring_support_rhs(s: &SpringSupportedPendulum, y: &[f64; 6]) -> [f64; 6] {
+fn spring_support_rhs(s: &SpringSupportedPendulum, y: &[Float; 6]) -> [Float; 6] {
     let (sin, cos) = y[2].sin_cos();
     let (total, ml) = (s.support + s.m, s.m * s.l);
     let w = y[5];
@@ -208,8 +209,8 @@ fn spring_support_rhs(s: &SpringSupportedPendulum, y: &[f64; 6]) -> [f64; 6] {
 }
 
 /// `M x = b` for a 3×3 `M` by Cramer's rule.
-fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
-    let det = |m: &[[f64; 3]; 3]| {
+fn solve3(m: [[Float; 3]; 3], b: [Float; 3]) -> [Float; 3] {
+    let det = |m: &[[Float; 3]; 3]| {
         m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
@@ -231,16 +232,16 @@ fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
 /// so `m h2² φ'' = Q_φ` and `J q3'' = P h1`. The strut engages where the travel
 /// `|h2 sin φ - h3 q3|` reaches the clearance. RK4 with 1e-5 s steps across the load's kink, the
 /// crossing refined by bisection on RK4 steps from the last grid point. Returns the time.
-pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> f64 {
+pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
     let b = &s.base;
-    let rhs = |t: f64, y: &[f64; 4]| -> [f64; 4] {
+    let rhs = |t: Float, y: &[Float; 4]| -> [Float; 4] {
         let (phi, w, _q3, w3) = (y[0], y[1], y[2], y[3]);
         let (sin, cos) = phi.sin_cos();
         let p = b.load(t);
         let q_phi = (p - b.d * b.h2 * cos * w) * b.h2 * cos - b.m * b.g * b.h2 * sin;
         [w, q_phi / (b.m * b.h2 * b.h2), w3, p * b.h1 / b.j]
     };
-    let travel = |y: &[f64; 4]| (b.h2 * y[0].sin() - b.h3 * y[2]).abs();
+    let travel = |y: &[Float; 4]| (b.h2 * y[0].sin() - b.h3 * y[2]).abs();
     let h = 1e-5;
     let (mut t, mut y) = (0.0, [0.0; 4]);
     // Up to the kink, then on in steps of h until the travel passes the clearance.

@@ -5,29 +5,29 @@
 //! short step that ends on such a crossing.
 
 use super::reference::State;
-use zeitner::{constrained_system, Vector};
+use zeitner::{constrained_system, Float, Vector};
 
 pub struct SliderCrankOnAxis {
     /// The crank pin's mass and the slider's (kg).
-    pub m: f64,
-    pub ms: f64,
+    pub m: Float,
+    pub ms: Float,
     /// Crank radius and rod length (m), `l > r`.
-    pub r: f64,
-    pub l: f64,
-    pub g: f64,
+    pub r: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl SliderCrankOnAxis {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         [self.m, self.m, self.ms, self.ms]
     }
 
-    fn force(&self) -> [f64; 4] {
+    fn force(&self) -> [Float; 4] {
         [0.0, -self.m * self.g, 0.0, -self.ms * self.g]
     }
 
-    fn constraints(&self, [x1, y1, x2, y2]: [f64; 4]) -> [f64; 3] {
+    fn constraints(&self, [x1, y1, x2, y2]: [Float; 4]) -> [Float; 3] {
         [
             x1 * x1 + y1 * y1 - self.r * self.r,
             (x2 - x1) * (x2 - x1) + (y2 - y1) * (y2 - y1) - self.l * self.l,
@@ -35,7 +35,7 @@ impl SliderCrankOnAxis {
         ]
     }
 
-    fn events(&self, [_x1, y1, _x2, _y2]: [f64; 4]) -> [f64; 1] {
+    fn events(&self, [_x1, y1, _x2, _y2]: [Float; 4]) -> [Float; 1] {
         [y1]
     }
 }
@@ -52,14 +52,14 @@ impl SliderCrankOnAxis {
     }
 
     /// The consistent state at rest with the crank at angle `phi` above the axis.
-    pub fn at_rest(&self, phi: f64) -> (Vector<4>, Vector<4>) {
+    pub fn at_rest(&self, phi: Float) -> (Vector<4>, Vector<4>) {
         let (x1, y1) = (self.r * phi.cos(), self.r * phi.sin());
         let x2 = x1 + (self.l * self.l - y1 * y1).sqrt();
         (Vector::<4>::new(x1, y1, x2, 0.0), Vector::zeros())
     }
 
     /// Kinetic plus potential energy (J).
-    pub fn energy(&self, q: &Vector<4>, v: &Vector<4>) -> f64 {
+    pub fn energy(&self, q: &Vector<4>, v: &Vector<4>) -> Float {
         let kinetic = 0.5 * self.m * (v[0] * v[0] + v[1] * v[1])
             + 0.5 * self.ms * (v[2] * v[2] + v[3] * v[3]);
         kinetic + self.g * (self.m * q[1] + self.ms * q[3])
@@ -74,15 +74,15 @@ impl SliderCrankOnAxis {
 /// with the multipliers from `Gᵀλ = F - M q''` (consistent, solved row by row).
 pub fn reduced(
     scene: &SliderCrankOnAxis,
-    phi0: f64,
-    t_end: f64,
-    dt: f64,
-) -> (Vec<f64>, State<4, 3>) {
+    phi0: Float,
+    t_end: Float,
+    dt: Float,
+) -> (Vec<Float>, State<4, 3>) {
     let steps = (t_end / dt).ceil().max(1.0) as usize;
-    let dt = t_end / steps as f64;
-    let rate = |x: [f64; 2]| reduced_rate(scene, x);
-    let step = |x: [f64; 2]| {
-        let add = |x: [f64; 2], k: [f64; 2], a: f64| [x[0] + a * k[0], x[1] + a * k[1]];
+    let dt = t_end / steps as Float;
+    let rate = |x: [Float; 2]| reduced_rate(scene, x);
+    let step = |x: [Float; 2]| {
+        let add = |x: [Float; 2], k: [Float; 2], a: Float| [x[0] + a * k[0], x[1] + a * k[1]];
         let k1 = rate(x);
         let k2 = rate(add(x, k1, dt / 2.0));
         let k3 = rate(add(x, k2, dt / 2.0));
@@ -95,7 +95,7 @@ pub fn reduced(
         let (y0, y1) = (x[0].sin(), next[0].sin());
         if y0 != 0.0 && y0.signum() != y1.signum() {
             let (d0, d1) = (x[0].cos() * x[1] * dt, next[0].cos() * next[1] * dt);
-            crossings.push((k as f64 + hermite_root(y0, d0, y1, d1)) * dt);
+            crossings.push((k as Float + hermite_root(y0, d0, y1, d1)) * dt);
         }
         x = next;
     }
@@ -103,7 +103,7 @@ pub fn reduced(
 }
 
 /// `(x₂', x₂'')` by φ.
-fn slider_derivatives(scene: &SliderCrankOnAxis, phi: f64) -> (f64, f64) {
+fn slider_derivatives(scene: &SliderCrankOnAxis, phi: Float) -> (Float, Float) {
     let (r, l) = (scene.r, scene.l);
     let (s, c) = phi.sin_cos();
     let root = (l * l - r * r * s * s).sqrt();
@@ -112,7 +112,7 @@ fn slider_derivatives(scene: &SliderCrankOnAxis, phi: f64) -> (f64, f64) {
     (dx, d2x)
 }
 
-fn reduced_rate(scene: &SliderCrankOnAxis, [phi, w]: [f64; 2]) -> [f64; 2] {
+fn reduced_rate(scene: &SliderCrankOnAxis, [phi, w]: [Float; 2]) -> [Float; 2] {
     let SliderCrankOnAxis { m, ms, r, g, .. } = *scene;
     let (dx, d2x) = slider_derivatives(scene, phi);
     let inertia = m * r * r + ms * dx * dx;
@@ -123,7 +123,7 @@ fn reduced_rate(scene: &SliderCrankOnAxis, [phi, w]: [f64; 2]) -> [f64; 2] {
 }
 
 /// The Cartesian state and multipliers of the crank angle and rate `[φ, φ']`.
-fn cartesian(scene: &SliderCrankOnAxis, [phi, w]: [f64; 2]) -> State<4, 3> {
+fn cartesian(scene: &SliderCrankOnAxis, [phi, w]: [Float; 2]) -> State<4, 3> {
     let SliderCrankOnAxis { m, ms, r, l, g } = *scene;
     let a = reduced_rate(scene, [phi, w])[1];
     let (s, c) = phi.sin_cos();
@@ -140,7 +140,7 @@ fn cartesian(scene: &SliderCrankOnAxis, [phi, w]: [f64; 2]) -> State<4, 3> {
     ];
     let force = [0.0, -m * g, 0.0, -ms * g];
     let mass = [m, m, ms, ms];
-    let res: [f64; 4] = core::array::from_fn(|i| force[i] - mass[i] * acc[i]);
+    let res: [Float; 4] = core::array::from_fn(|i| force[i] - mass[i] * acc[i]);
     // G = [[2x1, 2y1, 0, 0], [-2dx, -2dy, 2dx, 2dy], [0, 0, 0, 1]], (dx, dy) = (x2 - x1, -y1).
     let (ex, ey) = (x2 - x1, -y1);
     let lambda2 = res[2] / (2.0 * ex);
@@ -159,8 +159,8 @@ fn cartesian(scene: &SliderCrankOnAxis, [phi, w]: [f64; 2]) -> State<4, 3> {
 
 /// The root in `[0, 1]` of the cubic Hermite interpolant of values `y0`, `y1` (of opposite
 /// signs) and scaled slopes `d0`, `d1`, by bisection.
-fn hermite_root(y0: f64, d0: f64, y1: f64, d1: f64) -> f64 {
-    let y = |s: f64| {
+fn hermite_root(y0: Float, d0: Float, y1: Float, d1: Float) -> Float {
+    let y = |s: Float| {
         let (s2, s3) = (s * s, s * s * s);
         (2.0 * s3 - 3.0 * s2 + 1.0) * y0
             + (s3 - 2.0 * s2 + s) * d0

@@ -5,24 +5,24 @@
 //! implicit ones step over it. `reference::spring_supported_pendulum` integrates the same
 //! mechanics in reduced coordinates `(x_s, y_s, θ)`.
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 pub struct SpringSupportedPendulum {
-    pub support: f64,
-    pub m: f64,
-    pub l: f64,
-    pub k: f64,
-    pub c: f64,
-    pub g: f64,
+    pub support: Float,
+    pub m: Float,
+    pub l: Float,
+    pub k: Float,
+    pub c: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl SpringSupportedPendulum {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         [self.support, self.support, self.m, self.m]
     }
 
-    fn force(&self, [xs, ys, _xb, _yb]: [f64; 4], [us, ws, _ub, _wb]: [f64; 4]) -> [f64; 4] {
+    fn force(&self, [xs, ys, _xb, _yb]: [Float; 4], [us, ws, _ub, _wb]: [Float; 4]) -> [Float; 4] {
         [
             -self.k * xs - self.c * us,
             -self.k * ys - self.c * ws - self.support * self.g,
@@ -31,11 +31,11 @@ impl SpringSupportedPendulum {
         ]
     }
 
-    fn constraints(&self, [xs, ys, xb, yb]: [f64; 4]) -> [f64; 1] {
+    fn constraints(&self, [xs, ys, xb, yb]: [Float; 4]) -> [Float; 1] {
         [(xb - xs).powi(2) + (yb - ys).powi(2) - self.l * self.l]
     }
 
-    fn parameters(&self) -> [f64; 2] {
+    fn parameters(&self) -> [Float; 2] {
         [self.k, self.c]
     }
 }
@@ -52,7 +52,7 @@ impl SpringSupportedPendulum {
     };
 
     /// Released with the rod horizontal, at rest, the support where its own weight puts it.
-    pub fn start(&self) -> [f64; 4] {
+    pub fn start(&self) -> [Float; 4] {
         let ys = -self.support * self.g / self.k;
         [0.0, ys, self.l, ys]
     }

@@ -1,29 +1,29 @@
 //! The paper's scene (eqs. 12–13): a steam generator on a pendulum column and a lateral strut.
 //! q1, q2: horizontal and vertical displacement of the centre of mass; q3: rotation.
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 pub struct SteamGenerator {
     /// Mass, kg.
-    pub m: f64,
+    pub m: Float,
     /// Moment of inertia about the centre of mass, kg m².
-    pub j: f64,
+    pub j: Float,
     /// Gravity, m/s².
-    pub g: f64,
+    pub g: Float,
     /// Height of the load's line of action above the centre of mass, m.
-    pub h1: f64,
+    pub h1: Float,
     /// Length of the pendulum column, m.
-    pub h2: f64,
+    pub h2: Float,
     /// Lever arm of the lateral strut at C, m.
-    pub h3: f64,
+    pub h3: Float,
     /// Damper coefficient, N s/m.
-    pub d: f64,
+    pub d: Float,
     /// Peak horizontal load, N.
-    pub p0: f64,
+    pub p0: Float,
     /// Rise time of the load, s.
-    pub rise: f64,
+    pub rise: Float,
     /// The load is switched off from this time on, s (infinite: never).
-    pub off: f64,
+    pub off: Float,
 }
 
 impl SteamGenerator {
@@ -39,12 +39,12 @@ impl SteamGenerator {
             d: 2.0e6,
             p0: 1.0e6,
             rise: 0.01,
-            off: f64::INFINITY,
+            off: Float::INFINITY,
         }
     }
 
     /// The horizontal load P(t): a ramp to `p0` over the rise time, zero from `off` on.
-    pub fn load(&self, t: f64) -> f64 {
+    pub fn load(&self, t: Float) -> Float {
         if t < self.off {
             self.p0 * (t / self.rise).min(1.0)
         } else {
@@ -55,16 +55,21 @@ impl SteamGenerator {
 
 #[constrained_system]
 impl SteamGenerator {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         [self.m, self.m, self.j]
     }
 
-    fn force(&self, [_q1, _q2, _q3]: [f64; 3], [v1, _v2, _v3]: [f64; 3], t: f64) -> [f64; 3] {
+    fn force(
+        &self,
+        [_q1, _q2, _q3]: [Float; 3],
+        [v1, _v2, _v3]: [Float; 3],
+        t: Float,
+    ) -> [Float; 3] {
         let p = self.load(t);
         [p - self.d * v1, -self.m * self.g, p * self.h1]
     }
 
-    fn constraints(&self, [q1, q2, q3]: [f64; 3]) -> [f64; 2] {
+    fn constraints(&self, [q1, q2, q3]: [Float; 3]) -> [Float; 2] {
         [
             q1 - self.h3 * q3,
             q1 * q1 + (q2 - self.h2).powi(2) - self.h2 * self.h2,
@@ -72,13 +77,13 @@ impl SteamGenerator {
     }
 
     /// The load's kink at the end of its ramp and its switch-off: steps land on them.
-    fn time_events(&self) -> [f64; 2] {
+    fn time_events(&self) -> [Float; 2] {
         [self.rise, self.off]
     }
 
     /// The supports' geometry and the damper, for sensitivities (the load's `p0` and `rise`
     /// are read in `load`, an opaque method, so they cannot be parameters).
-    fn parameters(&self) -> [f64; 4] {
+    fn parameters(&self) -> [Float; 4] {
         [self.h3, self.h2, self.d, self.m]
     }
 }
@@ -89,9 +94,9 @@ impl SteamGenerator {
 pub struct SteamGeneratorWithGap {
     pub base: SteamGenerator,
     /// The clearance on either side, m.
-    pub clearance: f64,
+    pub clearance: Float,
     /// Newton's coefficient of restitution of the strut's contact.
-    pub e: f64,
+    pub e: Float,
 }
 
 impl SteamGeneratorWithGap {
@@ -104,18 +109,23 @@ impl SteamGeneratorWithGap {
         }
     }
 
-    pub fn load(&self, t: f64) -> f64 {
+    pub fn load(&self, t: Float) -> Float {
         self.base.load(t)
     }
 }
 
 #[constrained_system]
 impl SteamGeneratorWithGap {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         [self.base.m, self.base.m, self.base.j]
     }
 
-    fn force(&self, [_q1, _q2, _q3]: [f64; 3], [v1, _v2, _v3]: [f64; 3], t: f64) -> [f64; 3] {
+    fn force(
+        &self,
+        [_q1, _q2, _q3]: [Float; 3],
+        [v1, _v2, _v3]: [Float; 3],
+        t: Float,
+    ) -> [Float; 3] {
         let p = self.load(t);
         [
             p - self.base.d * v1,
@@ -124,25 +134,25 @@ impl SteamGeneratorWithGap {
         ]
     }
 
-    fn constraints(&self, [q1, q2, _q3]: [f64; 3]) -> [f64; 1] {
+    fn constraints(&self, [q1, q2, _q3]: [Float; 3]) -> [Float; 1] {
         [q1 * q1 + (q2 - self.base.h2).powi(2) - self.base.h2 * self.base.h2]
     }
 
     /// The strut's travel left before it engages, pushed (first) and pulled (second).
-    fn gaps(&self, [q1, _q2, q3]: [f64; 3]) -> [f64; 2] {
+    fn gaps(&self, [q1, _q2, q3]: [Float; 3]) -> [Float; 2] {
         let travel = q1 - self.base.h3 * q3;
         [self.clearance - travel, self.clearance + travel]
     }
 
-    fn restitution(&self) -> [f64; 2] {
+    fn restitution(&self) -> [Float; 2] {
         [self.e, self.e]
     }
 
-    fn time_events(&self) -> [f64; 2] {
+    fn time_events(&self) -> [Float; 2] {
         [self.base.rise, self.base.off]
     }
 
-    fn parameters(&self) -> [f64; 3] {
+    fn parameters(&self) -> [Float; 3] {
         [self.base.h3, self.clearance, self.base.d]
     }
 }

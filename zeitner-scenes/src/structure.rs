@@ -22,33 +22,33 @@
 //! coordinates), [`Structure32`], [`Structure64`], [`Structure100`] (200 coordinates, the
 //! benchmark's scene).
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 /// The physical data shared by every size: a 10 m steel column of 100 t.
 #[derive(Clone, Copy, Debug)]
 pub struct Column {
     /// Height, m.
-    pub height: f64,
+    pub height: Float,
     /// Total mass, kg.
-    pub mass: f64,
+    pub mass: Float,
     /// Axial stiffness E·A, N.
-    pub axial: f64,
+    pub axial: Float,
     /// Bending stiffness E·I, N m².
-    pub bending: f64,
+    pub bending: Float,
     /// Gravity, m/s².
-    pub g: f64,
+    pub g: Float,
     /// Peak horizontal load at the top, N.
-    pub p0: f64,
+    pub p0: Float,
     /// Rise time of the load, s.
-    pub rise: f64,
+    pub rise: Float,
     /// The strut's clearance, m.
-    pub clearance: f64,
+    pub clearance: Float,
     /// The strut's coefficient of restitution.
-    pub restitution: f64,
+    pub restitution: Float,
     /// The fraction of critical damping in the first bending mode of the continuous column
     /// (pinned at its base, free to swing at its top), from which the stiffness-proportional
     /// damping `β` follows.
-    pub damping_ratio: f64,
+    pub damping_ratio: Float,
 }
 
 impl Column {
@@ -80,15 +80,15 @@ impl Column {
     /// The first bending frequency of the continuous column, rad/s: a pinned–free beam,
     /// `ω₁ = (β₁L)² √(EI / (m̄ L⁴))` with `β₁L = 3.926 602 3`, the first positive root of
     /// `tan x = tanh x` (Blevins, *Formulas for natural frequency and mode shape*, table 8-1).
-    pub fn first_bending_frequency(&self) -> f64 {
-        const ROOT: f64 = 3.926_602_312_047_919;
+    pub fn first_bending_frequency(&self) -> Float {
+        const ROOT: Float = 3.926_602_312_047_919;
         let per_length = self.mass / self.height;
         ROOT * ROOT * (self.bending / (per_length * self.height.powi(4))).sqrt()
     }
 
     /// `β` of the damping `C = βK`, s: `ζ = βω/2` in every mode, `damping_ratio` in the first
     /// bending one.
-    pub fn stiffness_damping(&self) -> f64 {
+    pub fn stiffness_damping(&self) -> Float {
         2.0 * self.damping_ratio / self.first_bending_frequency()
     }
 }
@@ -98,24 +98,24 @@ impl Column {
 pub struct Lumped {
     pub column: Column,
     /// The mass of one node, kg.
-    pub node_mass: f64,
+    pub node_mass: Float,
     /// E·A / spacing, N/m.
-    pub axial_spring: f64,
+    pub axial_spring: Float,
     /// E·I / spacing³, N/m: the force per unit second difference of `u`.
-    pub bending_spring: f64,
+    pub bending_spring: Float,
     /// The strut's node.
     pub strut: usize,
     /// `β` of the damping `C = βK`, s.
-    pub damping: f64,
+    pub damping: Float,
 }
 
 impl Lumped {
     /// The column cut into `nodes` nodes, the strut at two thirds of its height.
     pub fn of(column: Column, nodes: usize) -> Self {
-        let spacing = column.height / (nodes - 1) as f64;
+        let spacing = column.height / (nodes - 1) as Float;
         Lumped {
             column,
-            node_mass: column.mass / nodes as f64,
+            node_mass: column.mass / nodes as Float,
             axial_spring: column.axial / spacing,
             bending_spring: column.bending / spacing.powi(3),
             strut: (2 * (nodes - 1)) / 3,
@@ -124,18 +124,18 @@ impl Lumped {
     }
 
     /// The horizontal load at the top: a ramp to `p0` over the rise time.
-    pub fn load(&self, t: f64) -> f64 {
+    pub fn load(&self, t: Float) -> Float {
         self.column.p0 * (t / self.column.rise).clamp(0.0, 1.0)
     }
 
     /// The static sag under gravity with the top held (`w_top = 0`) and the base pinned: the
     /// start at rest, so that gravity excites no axial vibration. `w` of every node, base first.
-    pub fn sag(&self, nodes: usize) -> impl Iterator<Item = f64> {
+    pub fn sag(&self, nodes: usize) -> impl Iterator<Item = Float> {
         // Between two held ends, equal springs under equal loads: w_k = -m g k (n-1-k) / (2 k_a).
         let (weight, spring) = (self.node_mass * self.column.g, self.axial_spring);
-        let last = (nodes - 1) as f64;
+        let last = (nodes - 1) as Float;
         (0..nodes).map(move |k| {
-            let k = k as f64;
+            let k = k as Float;
             -weight * k * (last - k) / (2.0 * spring)
         })
     }
@@ -157,7 +157,7 @@ macro_rules! structure {
             }
 
             /// At rest under gravity, the strut open: `(q, q')`.
-            pub fn start(&self) -> ([f64; 2 * $nodes], [f64; 2 * $nodes]) {
+            pub fn start(&self) -> ([Float; 2 * $nodes], [Float; 2 * $nodes]) {
                 let mut q = [0.0; 2 * $nodes];
                 for (k, w) in self.0.sag($nodes).enumerate() {
                     q[2 * k + 1] = w;
@@ -165,7 +165,7 @@ macro_rules! structure {
                 (q, [0.0; 2 * $nodes])
             }
 
-            fn load(&self, t: f64) -> f64 {
+            fn load(&self, t: Float) -> Float {
                 self.0.load(t)
             }
         }
@@ -175,16 +175,16 @@ macro_rules! structure {
             const NODES: usize = $nodes;
             const STRUT: usize = (2 * ($nodes - 1)) / 3;
 
-            fn mass(&self) -> [f64; 2 * Self::NODES] {
+            fn mass(&self) -> [Float; 2 * Self::NODES] {
                 [self.0.node_mass; 2 * Self::NODES]
             }
 
             fn force(
                 &self,
-                q: [f64; 2 * Self::NODES],
-                v: [f64; 2 * Self::NODES],
-                t: f64,
-            ) -> [f64; 2 * Self::NODES] {
+                q: [Float; 2 * Self::NODES],
+                v: [Float; 2 * Self::NODES],
+                t: Float,
+            ) -> [Float; 2 * Self::NODES] {
                 // Each spring's force with its damper's: `C = βK` acts on the rates of the
                 // springs' own deformations.
                 let beta = self.0.damping;
@@ -210,20 +210,20 @@ macro_rules! structure {
                 f
             }
 
-            fn constraints(&self, q: [f64; 2 * Self::NODES]) -> [f64; 3] {
+            fn constraints(&self, q: [Float; 2 * Self::NODES]) -> [Float; 3] {
                 [q[0], q[1], q[2 * Self::NODES - 1]]
             }
 
-            fn gaps(&self, q: [f64; 2 * Self::NODES]) -> [f64; 1] {
+            fn gaps(&self, q: [Float; 2 * Self::NODES]) -> [Float; 1] {
                 [self.0.column.clearance - q[2 * Self::STRUT]]
             }
 
-            fn restitution(&self) -> [f64; 1] {
+            fn restitution(&self) -> [Float; 1] {
                 [self.0.column.restitution]
             }
 
             /// The load's kink at the end of its ramp.
-            fn time_events(&self) -> [f64; 1] {
+            fn time_events(&self) -> [Float; 1] {
                 [self.0.column.rise]
             }
         }

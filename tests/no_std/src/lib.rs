@@ -10,24 +10,24 @@ mod scene;
 use scene::SteamGenerator;
 #[cfg(feature = "exact")]
 use zeitner::Sensitivity;
-use zeitner::{Options, Simulator, Vector};
+use zeitner::{Float, Options, Simulator, Vector};
 
 /// Integrates the steam generator for `steps` steps of 1 ms with RK4 and returns the final
 /// horizontal displacement, or NaN on a failed step. The feature `exact` picks the exact
 /// sensitivity (which pulls in the force and constraint-force Jacobians) over the paper's.
 #[no_mangle]
-pub extern "C" fn zeitner_steam_generator(steps: u32) -> f64 {
+pub extern "C" fn zeitner_steam_generator(steps: u32) -> Float {
     let scene = SteamGenerator::paper();
     #[cfg(feature = "exact")]
     let options = Options { sensitivity: Sensitivity::Exact, ..Options::paper(1e-3) };
     #[cfg(not(feature = "exact"))]
     let options = Options::paper(1e-3);
     let Ok(mut sim) = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options) else {
-        return f64::NAN;
+        return Float::NAN;
     };
-    match sim.advance_to(f64::from(steps) * 1e-3, |_| {}) {
+    match sim.advance_to(steps as Float * 1e-3, |_| {}) {
         Ok(_) => sim.last().end.q[0],
-        Err(_) => f64::NAN,
+        Err(_) => Float::NAN,
     }
 }
 

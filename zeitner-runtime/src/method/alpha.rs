@@ -20,6 +20,8 @@ use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
 use crate::polynomial::Multipliers;
+use crate::scalar::floors::{STAGE_CONVERGED, STAGE_STALLED};
+use crate::scalar::Float;
 use crate::storage::{Combination, Iteration, Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
@@ -29,16 +31,16 @@ use crate::system::{ConstrainedSystem, Matrix, Vector};
 /// damping least).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Parameters {
-    pub alpha_m: f64,
-    pub alpha_f: f64,
-    pub gamma: f64,
-    pub beta: f64,
+    pub alpha_m: Float,
+    pub alpha_f: Float,
+    pub gamma: Float,
+    pub beta: Float,
 }
 
 impl Parameters {
     /// `α_m = (2ρ∞ − 1)/(ρ∞ + 1)`, `α_f = ρ∞/(ρ∞ + 1)`, `γ = 1/2 + α_f − α_m`,
     /// `β = (γ + 1/2)²/4`; `ρ∞` in `0..=1` (the options refuse others).
-    pub fn new(rho_inf: f64) -> Self {
+    pub fn new(rho_inf: Float) -> Self {
         let alpha_m = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
         let alpha_f = rho_inf / (rho_inf + 1.0);
         let gamma = 0.5 + alpha_f - alpha_m;
@@ -58,7 +60,7 @@ impl Parameters {
 struct Candidate<const N: usize> {
     abar: Vector<N>,
     v: Vector<N>,
-    hg: f64,
+    hg: Float,
 }
 
 /// The method, its memory and its workspace.
@@ -72,7 +74,7 @@ pub(crate) struct GeneralizedAlpha<const N: usize, D: Storage<N>> {
     /// The iteration matrix's factor and the step it was formed for (`None` before the first
     /// and after a failed refresh).
     iteration: D::Iteration,
-    formed_for: Option<f64>,
+    formed_for: Option<Float>,
     factorizations: u64,
 }
 
@@ -82,15 +84,15 @@ struct Known<'m, const N: usize, const Z: usize> {
     q: Vector<N>,
     v: Vector<N>,
     rhs: Vector<N>,
-    t: f64,
+    t: Float,
     lambda: &'m Vector<Z>,
     /// `h² β`, `h γ`.
-    hhb: f64,
-    hg: f64,
+    hhb: Float,
+    hg: Float,
 }
 
 impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
-    pub fn new<S: ConstrainedSystem<N, Z>, const Z: usize>(rho_inf: f64) -> Self {
+    pub fn new<S: ConstrainedSystem<N, Z>, const Z: usize>(rho_inf: Float) -> Self {
         GeneralizedAlpha {
             parameters: Parameters::new(rho_inf),
             committed: None,
@@ -103,7 +105,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
 
     /// `(1 − α_m) I − (1 − α_f)(h γ ∂a/∂q' + h² β ∂a/∂q)`, factorised and kept for steps near
     /// `h`; `false` where it is singular.
-    fn refresh(&mut self, h: f64, (dq, dv): (&D::Square, &D::Square)) -> bool {
+    fn refresh(&mut self, h: Float, (dq, dv): (&D::Square, &D::Square)) -> bool {
         let p = self.parameters;
         let (hg, hhb) = (h * p.gamma, h * h * p.beta);
         let combination = Combination {
@@ -118,7 +120,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     }
 
     /// Whether the kept iteration matrix was formed for a step near `h`.
-    fn kept(&self, h: f64) -> bool {
+    fn kept(&self, h: Float) -> bool {
         self.formed_for
             .is_some_and(|formed_for| serves_step(formed_for, h))
     }
@@ -162,7 +164,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError> {
@@ -224,7 +226,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         model: &mut Model<'_, Sys, N, Z>,
         known: &Known<'_, N, Z>,
         guess: Vector<N>,
-        h: f64,
+        h: Float,
     ) -> Result<Option<Vector<N>>, StepError> {
         let mut kept = self.kept(h);
         loop {
@@ -258,7 +260,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         limit: usize,
     ) -> Option<Result<Vector<N>, StepError>> {
         let p = self.parameters;
-        let mut last_norm = f64::INFINITY;
+        let mut last_norm = Float::INFINITY;
         for _ in 0..limit {
             let (q, v) = (known.q + known.hhb * abar, known.v + known.hg * abar);
             let a = match model.acceleration(&q, &v, known.t, known.lambda) {
@@ -269,10 +271,12 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
             let delta = self.iteration.solve(&residual);
             abar -= delta;
             let norm = delta.amax();
-            let scale = abar.amax() + known.rhs.amax() + f64::MIN_POSITIVE;
+            let scale = abar.amax() + known.rhs.amax() + Float::MIN_POSITIVE;
             // Converged; or stalled at the rounding floor, which stiff forces raise well above
             // the accelerations' own precision (as in the DIRK stages).
-            if norm <= 1e-12 * scale || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm) {
+            if norm <= STAGE_CONVERGED * scale
+                || (norm <= STAGE_STALLED * scale && norm >= 0.5 * last_norm)
+            {
                 return Some(Ok(abar));
             }
             if !norm.is_finite() || norm > 1e3 * last_norm {
@@ -296,7 +300,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         end: &mut StepEnd<N, Z, K>,
-        (start, h): (&Start<N, Z, K>, f64),
+        (start, h): (&Start<N, Z, K>, Float),
         multipliers: &Multipliers<Z, K>,
         (da0, dabar0): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
     ) -> Option<Result<(), StepError>> {

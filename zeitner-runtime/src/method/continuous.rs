@@ -7,6 +7,7 @@ use super::explicit::{stiffness_against_end, Tableau};
 use crate::error::StepError;
 use crate::model::Model;
 use crate::output::Point;
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector};
 
 /// A pair's continuous extension over its `ST` stages.
@@ -19,13 +20,13 @@ pub(crate) trait Extension<const N: usize, const ST: usize> {
     /// like any stage).
     fn polynomial<S: ConstrainedSystem<N, Z>, const Z: usize>(
         model: &mut Model<'_, S, N, Z>,
-        start: (f64, Vector<N>, Vector<N>, f64),
+        start: (Float, Vector<N>, Vector<N>, Float),
         slopes: &([Vector<N>; ST], [Vector<N>; ST]),
         end: &Point<N, Z>,
     ) -> Result<Self::Polynomial, StepError>;
 
     /// `(q, q')` at `s` of the step.
-    fn evaluate(polynomial: &Self::Polynomial, s: f64) -> (Vector<N>, Vector<N>);
+    fn evaluate(polynomial: &Self::Polynomial, s: Float) -> (Vector<N>, Vector<N>);
 }
 
 /// The last step a pair integrated with the multipliers at every stage, kept for its
@@ -34,7 +35,7 @@ pub(crate) struct Continuous<const N: usize, const ST: usize, E: Extension<N, ST
     /// The stages' slopes `(q', q'')`, written by the integration.
     pub slopes: ([Vector<N>; ST], [Vector<N>; ST]),
     /// The step the slopes are of: its start `(t, q, q')` and size.
-    step: Option<(f64, Vector<N>, Vector<N>, f64)>,
+    step: Option<(Float, Vector<N>, Vector<N>, Float)>,
     /// The polynomial, once formed.
     polynomial: Option<E::Polynomial>,
 }
@@ -49,7 +50,7 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
     }
 
     /// The slopes now held are those of the step from `(t, q, q')` of size `h`.
-    pub fn integrated(&mut self, (t, q, v): (f64, &Vector<N>, &Vector<N>), h: f64) {
+    pub fn integrated(&mut self, (t, q, v): (Float, &Vector<N>, &Vector<N>), h: Float) {
         self.step = Some((t, *q, *v, h));
         self.polynomial = None;
     }
@@ -58,11 +59,11 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
     /// size `h` (to the rounding of the times).
     pub fn slopes_of(
         &self,
-        (t, q, v): (f64, &Vector<N>, &Vector<N>),
-        h: f64,
+        (t, q, v): (Float, &Vector<N>, &Vector<N>),
+        h: Float,
     ) -> Option<&([Vector<N>; ST], [Vector<N>; ST])> {
         let (t0, q0, v0, h0) = self.step.as_ref()?;
-        let same_size = (h0 - h).abs() <= 4.0 * f64::EPSILON * (t + h).abs().max(h.abs());
+        let same_size = (h0 - h).abs() <= 4.0 * Float::EPSILON * (t + h).abs().max(h.abs());
         (*t0 == t && q0 == q && v0 == v && same_size).then_some(&self.slopes)
     }
 
@@ -79,7 +80,7 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
         &self,
         tableau: &Tableau<ST>,
         end: &Point<N, Z>,
-    ) -> Option<f64> {
+    ) -> Option<Float> {
         let (_, q0, v0, h) = self.step.as_ref()?;
         let slopes = (&self.slopes.0, &self.slopes.1);
         stiffness_against_end(tableau, ((q0, v0), *h), slopes, (end.q, end.v, end.a))
@@ -91,12 +92,12 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         (start, end): (&Point<N, Z>, &Point<N, Z>),
-        t: f64,
+        t: Float,
     ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
         let (t0, q0, v0, h) = self.step?;
         // The step the slopes are of starts and ends where the one asked for does (its end to
         // the rounding of the times).
-        let same_end = (t0 + h - end.t).abs() <= 4.0 * f64::EPSILON * end.t.abs().max(h);
+        let same_end = (t0 + h - end.t).abs() <= 4.0 * Float::EPSILON * end.t.abs().max(h);
         if !(t0 == start.t && q0 == start.q && v0 == start.v && same_end) {
             return None;
         }
@@ -115,8 +116,8 @@ impl<const N: usize, const ST: usize, E: Extension<N, ST>> Continuous<N, ST, E> 
 /// stage's state, or a term of the polynomial.
 pub(crate) fn weighted<const N: usize, const L: usize>(
     (mut q, mut v): (Vector<N>, Vector<N>),
-    h: f64,
-    w: &[f64; L],
+    h: Float,
+    w: &[Float; L],
     (kq, kv): (&[Vector<N>; L], &[Vector<N>; L]),
 ) -> (Vector<N>, Vector<N>) {
     for (j, &w) in w.iter().enumerate().filter(|(_, &w)| w != 0.0) {

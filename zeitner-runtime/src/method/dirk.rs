@@ -7,6 +7,8 @@
 // Stage indices read as the tableau is written.
 #![allow(clippy::needless_range_loop)]
 
+use crate::scalar::floors::{STAGE_CONVERGED, STAGE_STALLED};
+use crate::scalar::{Float, Lm};
 use core::marker::PhantomData;
 
 use super::{Blocks, Method, Start, StepEnd, MAX_COEFFICIENTS};
@@ -19,21 +21,21 @@ use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A stiffly accurate DIRK tableau with `S` stages: the step end is the last stage.
 pub(crate) struct DirkTableau<const S: usize> {
-    pub a: [[f64; S]; S],
-    pub gamma: f64,
+    pub a: [[Float; S]; S],
+    pub gamma: Float,
     /// The embedded solution's weights, if any (for the error estimate).
-    pub embedded: Option<[f64; S]>,
+    pub embedded: Option<[Float; S]>,
     pub order: u32,
     pub embedded_order: Option<u32>,
 }
 
 impl<const S: usize> DirkTableau<S> {
-    fn c(&self, i: usize) -> f64 {
+    fn c(&self, i: usize) -> Float {
         self.a[i].iter().sum()
     }
 }
 
-const ALEXANDER_GAMMA: f64 = 1.0 - core::f64::consts::FRAC_1_SQRT_2;
+const ALEXANDER_GAMMA: Float = 1.0 - crate::scalar::consts::FRAC_1_SQRT_2;
 
 /// Alexander's 2-stage SDIRK, order 2, L-stable, stiffly accurate (R. Alexander, SIAM J. Numer.
 /// Anal. 14 (1977), Theorem 5). No error estimate: fixed steps.
@@ -50,15 +52,15 @@ pub(crate) const SDIRK2: DirkTableau<2> = DirkTableau {
 
 /// `γ` of Kværnø's ESDIRK 3(2): the root in (0, 1/2) of `γ³ - 3γ² + 3γ/2 - 1/6 = 0`, which makes
 /// the method L-stable (the `γ` of the 3-stage L-stable SDIRK of Alexander, 1977).
-const KVAERNO_GAMMA: f64 = 0.435_866_521_508_458_999_416_019_451_193_556_8;
+const KVAERNO_GAMMA: Float = 0.435_866_521_508_458_999_416_019_451_193_556_8;
 /// Stage 3 (`c = 1`) is the embedded order-2 solution: `Σ b̂ c = 1/2`.
-const KVAERNO_A32: f64 = (1.0 - 2.0 * KVAERNO_GAMMA) / (4.0 * KVAERNO_GAMMA);
-const KVAERNO_A31: f64 = 1.0 - KVAERNO_GAMMA - KVAERNO_A32;
+const KVAERNO_A32: Float = (1.0 - 2.0 * KVAERNO_GAMMA) / (4.0 * KVAERNO_GAMMA);
+const KVAERNO_A31: Float = 1.0 - KVAERNO_GAMMA - KVAERNO_A32;
 /// Stage 4 (`c = 1`) is the order-3 solution: `Σ b c = 1/2`, `Σ b c² = 1/3` (which then gives
 /// `Σ b A c = 1/6` too).
-const KVAERNO_B2: f64 = 1.0 / (12.0 * KVAERNO_GAMMA * (1.0 - 2.0 * KVAERNO_GAMMA));
-const KVAERNO_B3: f64 = 0.5 - KVAERNO_GAMMA - 2.0 * KVAERNO_GAMMA * KVAERNO_B2;
-const KVAERNO_B1: f64 = 1.0 - KVAERNO_GAMMA - KVAERNO_B2 - KVAERNO_B3;
+const KVAERNO_B2: Float = 1.0 / (12.0 * KVAERNO_GAMMA * (1.0 - 2.0 * KVAERNO_GAMMA));
+const KVAERNO_B3: Float = 0.5 - KVAERNO_GAMMA - 2.0 * KVAERNO_GAMMA * KVAERNO_B2;
+const KVAERNO_B1: Float = 1.0 - KVAERNO_GAMMA - KVAERNO_B2 - KVAERNO_B3;
 
 /// Kværnø's ESDIRK 3(2) with 4 stages (A. Kværnø, BIT 44 (2004) 489–502): explicit first stage,
 /// `c = (0, 2γ, 1, 1)`, order 3, L-stable and stiffly accurate, with a stiffly accurate embedded
@@ -84,7 +86,7 @@ pub(crate) const KVAERNO3: DirkTableau<4> = DirkTableau {
 /// L-stable (`R̂(-∞) = -3/20`, which the filtered estimate of [`Dirk::end`] repairs). The
 /// coefficients are the published rationals (checked exactly against SUNDIALS'
 /// `ARK436L2SA_DIRK_6_3_4`, OrdinaryDiffEq.jl's `KenCarp4Tableau`, PETSc's `TSARKIMEX4` and
-/// diffrax's `kencarp4.py`; the quotients round correctly to the nearest `f64`).
+/// diffrax's `kencarp4.py`; the quotients round correctly to the nearest `Float`).
 pub(crate) const KENNEDY_CARPENTER4: DirkTableau<6> = DirkTableau {
     a: [
         [0.0; 6],
@@ -129,8 +131,8 @@ pub(crate) const KENNEDY_CARPENTER4: DirkTableau<6> = DirkTableau {
 };
 
 /// `γ` and the abscissae of [`KENNEDY_CARPENTER5`].
-const KC5_GAMMA: f64 = 23.0 / 125.0;
-const KC5_C: [f64; 7] = [
+const KC5_GAMMA: Float = 23.0 / 125.0;
+const KC5_C: [Float; 7] = [
     0.0,
     46.0 / 125.0,
     7121331996143.0 / 11335814405378.0,
@@ -140,7 +142,7 @@ const KC5_C: [f64; 7] = [
     1.0,
 ];
 /// The published entries right of the first column, the weights without the first.
-const KC5_A: [[f64; 7]; 7] = [
+const KC5_A: [[Float; 7]; 7] = [
     [0.0; 7],
     [0.0, KC5_GAMMA, 0.0, 0.0, 0.0, 0.0, 0.0],
     [
@@ -189,7 +191,7 @@ const KC5_A: [[f64; 7]; 7] = [
         KC5_GAMMA,
     ],
 ];
-const KC5_EMBEDDED: [f64; 7] = [
+const KC5_EMBEDDED: [Float; 7] = [
     0.0,
     -582099335757.0 / 7214068459310.0,
     615023338567.0 / 3362626566945.0,
@@ -201,7 +203,7 @@ const KC5_EMBEDDED: [f64; 7] = [
 
 /// The first entry that makes `row` sum to `total`: the paper defines the first column of `A`
 /// (from `c`) and the first weights (from `Σ b = 1`) so.
-const fn with_first_entry(mut row: [f64; 7], total: f64) -> [f64; 7] {
+const fn with_first_entry(mut row: [Float; 7], total: Float) -> [Float; 7] {
     let mut first = total;
     let mut j = 1;
     while j < 7 {
@@ -266,7 +268,7 @@ impl Tableau<7> for KennedyCarpenter5 {
 }
 
 /// The tolerances stage equations are solved against: those of adaptive steps.
-fn tolerances(step: StepControl) -> Option<(f64, f64)> {
+fn tolerances(step: StepControl) -> Option<(Float, Float)> {
     match step {
         StepControl::Adaptive { rtol, atol, .. } => Some((rtol, atol)),
         StepControl::Fixed { .. } => None,
@@ -278,11 +280,11 @@ pub(super) const STAGE_ITERATIONS: usize = 25;
 /// A stage that needs more sweeps than this with a kept iteration matrix refreshes it.
 pub(super) const SLOW_STAGE: usize = 6;
 /// A kept iteration matrix serves steps within this ratio of the step it was formed for.
-const STEP_RATIO_KEPT: f64 = 1.25;
+const STEP_RATIO_KEPT: Float = 1.25;
 
 /// Whether an iteration matrix formed for a step `formed_for` serves a step `h`.
 #[inline]
-pub(super) fn serves_step(formed_for: f64, h: f64) -> bool {
+pub(super) fn serves_step(formed_for: Float, h: Float) -> bool {
     (1.0 / STEP_RATIO_KEPT..=STEP_RATIO_KEPT).contains(&(h / formed_for))
 }
 
@@ -292,12 +294,12 @@ pub(crate) struct Dirk<T, const S: usize, const N: usize, const Z: usize, D: Sto
     tableau: PhantomData<T>,
     /// `(rtol, atol)` of adaptive steps, which the stage equations are solved against; fixed
     /// steps solve them to rounding.
-    tolerances: Option<(f64, f64)>,
+    tolerances: Option<(Float, Float)>,
     /// The iteration matrix's factor, with the `∂a/∂q` it was formed from (for filtering the
     /// error estimate).
     iteration: D::Iteration,
     /// The step it was formed for; `None` before the first and after a failed refresh.
-    formed_for: Option<f64>,
+    formed_for: Option<Float>,
     factorizations: u64,
     /// Each stage's sensitivities, written and read within one step.
     sensitivities: D::Rows<StageSensitivity<N, Z>, S>,
@@ -347,7 +349,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     /// `I - hγ ∂a/∂q' - (hγ)² ∂a/∂q`, factorised and kept for steps near `h`; `false` where
     /// it is singular.
     #[inline]
-    fn refresh(&mut self, h: f64, (dq, dv): (&D::Square, &D::Square)) -> bool {
+    fn refresh(&mut self, h: Float, (dq, dv): (&D::Square, &D::Square)) -> bool {
         let hg = h * Self::TABLEAU.gamma;
         let combination = Combination {
             identity: 1.0,
@@ -361,7 +363,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     }
 
     /// Whether the kept iteration matrix was formed for a step near `h`.
-    fn kept(&self, h: f64) -> bool {
+    fn kept(&self, h: Float) -> bool {
         self.formed_for
             .is_some_and(|formed_for| serves_step(formed_for, h))
     }
@@ -386,7 +388,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         start: &Start<N, Z, K>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError> {
@@ -435,7 +437,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         start: &Start<N, Z, K>,
         stages: &mut Stages<S, N>,
         i: usize,
-        h: f64,
+        h: Float,
         lambda: &Vector<Z>,
     ) -> Result<Option<Acceleration<FactorOf<Sys, N, Z>, N, Z>>, StepError> {
         let (a, hg) = (&Self::TABLEAU.a, h * Self::TABLEAU.gamma);
@@ -494,7 +496,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
         (start, stages): (&Start<N, Z, K>, &Stages<S, N>),
-        (i, t, h): (usize, f64, f64),
+        (i, t, h): (usize, Float, Float),
         (multipliers, lambda): (&Multipliers<Z, K>, &Vector<Z>),
         acceleration: &Acceleration<FactorOf<Sys, N, Z>, N, Z>,
     ) -> Option<Result<(), StepError>> {
@@ -538,7 +540,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     fn end<const K: usize>(
         &self,
         stages: &Stages<S, N>,
-        h: f64,
+        h: Float,
         start: &Start<N, Z, K>,
         sensitivity: bool,
     ) -> StepEnd<N, Z, K> {
@@ -584,9 +586,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
 /// The fraction of the error tolerance a stage's last Newton correction must fall below: that of
 /// Hairer & Wanner's RADAU5 (`FNEWT`, *Solving ODEs II*, IV.8), `max(10 u / rtol, min(0.03,
 /// √rtol))`, so that the stage equations' error stays well below the step's.
-fn stage_fraction(rtol: f64) -> f64 {
+fn stage_fraction(rtol: Float) -> Float {
     // Never above RADAU5's cap of 0.03, which `10 u / rtol` passes below rtol ≈ 7e-14.
-    (10.0 * f64::EPSILON / rtol).max(libm::sqrt(rtol)).min(0.03)
+    (10.0 * Float::EPSILON / rtol).max(Lm::sqrt(rtol)).min(0.03)
 }
 
 /// Newton on one stage's velocity with the given iteration matrix, at most `limit` sweeps;
@@ -603,13 +605,13 @@ fn solve_stage<Sys, const N: usize, const Z: usize>(
     lu: &impl Iteration<N, SquareOf<Sys, N, Z>>,
     (q_known, v_known): (Vector<N>, Vector<N>),
     mut v: Vector<N>,
-    (t, hg, lambda): (f64, f64, &Vector<Z>),
-    (limit, tolerances): (usize, Option<(f64, f64)>),
+    (t, hg, lambda): (Float, Float, &Vector<Z>),
+    (limit, tolerances): (usize, Option<(Float, Float)>),
 ) -> Option<Result<(Vector<N>, Acceleration<FactorOf<Sys, N, Z>, N, Z>), StepError>>
 where
     Sys: ConstrainedSystem<N, Z>,
 {
-    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>, left: f64| {
+    let within_tolerance = |delta: &Vector<N>, v: &Vector<N>, left: Float| {
         tolerances.is_some_and(|(rtol, atol)| {
             let fraction = stage_fraction(rtol);
             (0..N).all(|i| {
@@ -618,7 +620,7 @@ where
             })
         })
     };
-    let mut last_norm = f64::INFINITY;
+    let mut last_norm = Float::INFINITY;
     for _ in 0..limit {
         let q = q_known + hg * v;
         let mut acceleration = match model.acceleration(&q, &v, t, lambda) {
@@ -628,7 +630,7 @@ where
         let delta = lu.solve(&(v - v_known - hg * acceleration.a));
         v -= delta;
         let norm = delta.amax();
-        let scale = v.amax() + v_known.amax() + f64::MIN_POSITIVE;
+        let scale = v.amax() + v_known.amax() + Float::MIN_POSITIVE;
         // `θ/(1 - θ)` with `θ = norm/last_norm`, in one division: the sweeps wait on it.
         let left = if last_norm.is_finite() && norm < last_norm {
             norm / (last_norm - norm)
@@ -643,8 +645,8 @@ where
         // at error 1e-6: 729 steps instead of 194 when weighed).
         let floor = if tolerances.is_some() { 1.0 } else { left };
         if within_tolerance(&delta, &v, left)
-            || floor * norm <= 1e-12 * scale
-            || (norm <= 1e-9 * scale && norm >= 0.5 * last_norm)
+            || floor * norm <= STAGE_CONVERGED * scale
+            || (norm <= STAGE_STALLED * scale && norm >= 0.5 * last_norm)
         {
             // The stage's acceleration from its equation, not evaluated again at the converged
             // `v`: as accurate, and spared the stiffness's amplification of the Newton error
@@ -665,22 +667,22 @@ where
 mod tests {
     use super::*;
 
-    fn times<const S: usize>(x: [f64; S], y: [f64; S]) -> [f64; S] {
+    fn times<const S: usize>(x: [Float; S], y: [Float; S]) -> [Float; S] {
         core::array::from_fn(|i| x[i] * y[i])
     }
 
-    fn apply<const S: usize>(a: &[[f64; S]; S], x: [f64; S]) -> [f64; S] {
+    fn apply<const S: usize>(a: &[[Float; S]; S], x: [Float; S]) -> [Float; S] {
         core::array::from_fn(|i| (0..S).map(|j| a[i][j] * x[j]).sum())
     }
 
     /// `Σ wᵢ Φᵢ(t) - 1/γ(t)` for the 17 rooted trees `t` of orders 1 to 5 (Butcher, *Numerical
     /// Methods for ODEs*, 2016, Table 311(I)), as `(order, residual)`.
-    fn order_residuals<const S: usize>(a: &[[f64; S]; S], w: &[f64; S]) -> [(u32, f64); 17] {
+    fn order_residuals<const S: usize>(a: &[[Float; S]; S], w: &[Float; S]) -> [(u32, Float); 17] {
         let one = [1.0; S];
         let c = apply(a, one);
         let ac = apply(a, c);
         let c2 = times(c, c);
-        let dot = |x: [f64; S], exact: f64| (0..S).map(|i| w[i] * x[i]).sum::<f64>() - exact;
+        let dot = |x: [Float; S], exact: Float| (0..S).map(|i| w[i] * x[i]).sum::<Float>() - exact;
         [
             (1, dot(one, 1.0)),
             (2, dot(c, 1.0 / 2.0)),

@@ -10,11 +10,12 @@ use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::output::Point;
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector};
 
 /// The weights of the eighth-order solution. `dop853.f`'s thirteenth stage, the solution's
 /// slope, serves the next step (first same as last) and the dense output, not the estimates.
-const B: [f64; 12] = row(&[
+const B: [Float; 12] = row(&[
     (0, 5.42937341165687622380535766363e-2),
     (5, 4.45031289275240888144113950566),
     (6, 1.89151789931450038304281599044),
@@ -26,7 +27,7 @@ const B: [f64; 12] = row(&[
 ]);
 
 /// `b` less the third-order weights `bhh` of `dop853.f`.
-const E3: [f64; 12] = {
+const E3: [Float; 12] = {
     let mut e = B;
     e[0] -= 0.244094488188976377952755905512;
     e[8] -= 0.733846688281611857341361741547;
@@ -152,11 +153,11 @@ pub(crate) const DOP853: Tableau<12> = Tableau {
 const SLOPES: usize = 16;
 
 /// The nodes of the extra stages (`dop853.f`'s `c14`, `c15`, `c16`).
-const EXTRA_C: [f64; 3] = [0.1, 0.2, 0.777777777777777777777777777778];
+const EXTRA_C: [Float; 3] = [0.1, 0.2, 0.777777777777777777777777777778];
 
 /// The extra stages' coefficients on the slopes before them (`dop853.f`'s `a14j`, `a15j`,
 /// `a16j`; index 12 is the end point's slope).
-const EXTRA_A: [[f64; SLOPES]; 3] = [
+const EXTRA_A: [[Float; SLOPES]; 3] = [
     row(&[
         (0, 5.61675022830479523392909219681e-2),
         (6, 2.53500210216624811088794765333e-1),
@@ -190,7 +191,7 @@ const EXTRA_A: [[f64; SLOPES]; 3] = [
 ];
 
 /// The dense output's higher coefficients on the slopes (`dop853.f`'s `d4j` … `d7j`).
-const DENSE_D: [[f64; SLOPES]; 4] = [
+const DENSE_D: [[Float; SLOPES]; 4] = [
     row(&[
         (0, -0.84289382761090128651353491142e+01),
         (5, 0.56671495351937776962531783590),
@@ -262,14 +263,14 @@ impl<const N: usize> Extension<N, 12> for Dense {
 
     fn polynomial<S: ConstrainedSystem<N, Z>, const Z: usize>(
         model: &mut Model<'_, S, N, Z>,
-        start: (f64, Vector<N>, Vector<N>, f64),
+        start: (Float, Vector<N>, Vector<N>, Float),
         slopes: &([Vector<N>; 12], [Vector<N>; 12]),
         end: &Point<N, Z>,
     ) -> Result<Self::Polynomial, StepError> {
         coefficients_for(model, start, slopes, end)
     }
 
-    fn evaluate(c: &Self::Polynomial, s: f64) -> (Vector<N>, Vector<N>) {
+    fn evaluate(c: &Self::Polynomial, s: Float) -> (Vector<N>, Vector<N>) {
         let s1 = 1.0 - s;
         // `r₁ + s(r₂ + s₁(r₃ + s(r₄ + s₁(r₅ + s(r₆ + s₁(r₇ + s r₈))))))`.
         let mut q = c[7].0;
@@ -287,7 +288,7 @@ impl<const N: usize> Extension<N, 12> for Dense {
 /// slopes `slopes` to `end`, the three extra stages solved at every stage like the step's own.
 fn coefficients_for<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (t0, q0, v0, h): (f64, Vector<N>, Vector<N>, f64),
+    (t0, q0, v0, h): (Float, Vector<N>, Vector<N>, Float),
     slopes: &([Vector<N>; 12], [Vector<N>; 12]),
     end: &Point<N, Z>,
 ) -> Result<[(Vector<N>, Vector<N>); 8], StepError> {

@@ -5,12 +5,13 @@ use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::polynomial::Multipliers;
+use crate::scalar::{Float, Lm};
 use crate::storage::{Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A row of `L` coefficients from its nonzero entries (a tableau's, whose published rows list
 /// only those).
-pub(crate) const fn row<const L: usize>(entries: &[(usize, f64)]) -> [f64; L] {
+pub(crate) const fn row<const L: usize>(entries: &[(usize, Float)]) -> [Float; L] {
     let mut row = [0.0; L];
     let mut k = 0;
     while k < entries.len() {
@@ -22,14 +23,14 @@ pub(crate) const fn row<const L: usize>(entries: &[(usize, f64)]) -> [f64; L] {
 
 /// An explicit Runge–Kutta tableau with `S` stages.
 pub(crate) struct Tableau<const S: usize> {
-    pub a: [[f64; S]; S],
-    pub b: [f64; S],
-    pub c: [f64; S],
+    pub a: [[Float; S]; S],
+    pub b: [Float; S],
+    pub c: [Float; S],
     /// `b - b̂` of the embedded method, if any.
-    pub e: Option<[f64; S]>,
+    pub e: Option<[Float; S]>,
     /// `b - b̂` of a second, lower-order embedded method that tempers the first's estimate
     /// (DOP853's third-order one), if any.
-    pub e_low: Option<[f64; S]>,
+    pub e_low: Option<[Float; S]>,
     pub order: u32,
     pub embedded_order: Option<u32>,
     /// How the steps estimate the stiffness, if they can.
@@ -42,7 +43,7 @@ pub(crate) struct Tableau<const S: usize> {
 /// the negative real axis, the step is bound by stability rather than accuracy.
 pub(crate) struct StiffnessProbe {
     pub states: ProbeStates,
-    pub boundary: f64,
+    pub boundary: Float,
 }
 
 /// The two states a [`StiffnessProbe`] compares.
@@ -175,7 +176,7 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
             substeps: substeps.max(1),
             estimates_stiffness: estimates_stiffness && tableau.stiffness.is_some(),
             sensitivities: D::rows(SlopeSensitivity { dq: zero, dv: zero }),
-            stage_multipliers: [Vector::repeat(f64::NAN); ST],
+            stage_multipliers: [Vector::repeat(Float::NAN); ST],
         }
     }
 
@@ -203,11 +204,11 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError> {
-        let share = 1.0 / f64::from(self.substeps);
+        let share = 1.0 / self.substeps as Float;
         let hs = h * share;
         let workspace = self.sensitivities.as_mut();
         let mut end = stages(
@@ -221,13 +222,13 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
         )?;
         for k in 1..self.substeps {
             let at = Start {
-                t: start.t + f64::from(k) * hs,
+                t: start.t + k as Float * hs,
                 q: end.q,
                 v: end.v,
                 dq_dc: end.dq_dc,
                 dv_dc: end.dv_dc,
             };
-            let s0 = f64::from(k) * share;
+            let s0 = k as Float * share;
             end = stages(
                 model,
                 (self.tableau, &mut *workspace),
@@ -244,8 +245,8 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
     fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: (f64, &Vector<N>, &Vector<N>),
-        h: f64,
+        start: (Float, &Vector<N>, &Vector<N>),
+        h: Float,
         first: Option<&Vector<N>>,
     ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
         let mut slopes = ([Vector::zeros(); ST], [Vector::zeros(); ST]);
@@ -273,15 +274,15 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
     pub fn integrate_every_stage_into<S>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        (t, q, v): (f64, &Vector<N>, &Vector<N>),
-        h: f64,
+        (t, q, v): (Float, &Vector<N>, &Vector<N>),
+        h: Float,
         first: Option<&Vector<N>>,
         slopes: &mut ([Vector<N>; ST], [Vector<N>; ST]),
     ) -> Result<StepEnd<N, Z, 0>, StepError>
     where
         S: ConstrainedSystem<N, Z>,
     {
-        let hs = h / f64::from(self.substeps);
+        let hs = h / self.substeps as Float;
         let stiffness = self.estimates_stiffness;
         let tableau = self.tableau;
         let lambdas = &mut self.stage_multipliers;
@@ -295,7 +296,7 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
         );
         for k in 1..self.substeps {
             let at = end?;
-            let t = t + f64::from(k) * hs;
+            let t = t + k as Float * hs;
             let start = (t, &at.q, &at.v);
             let into = (&mut *slopes, &mut *lambdas);
             end = index1_stages(model, tableau, start, hs, (None, false), into);
@@ -313,9 +314,9 @@ fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     (tableau, dk): (&Tableau<ST>, &mut [SlopeSensitivity<N, Z>]),
     start: &Start<N, Z, K>,
-    h: f64,
+    h: Float,
     multipliers: &Multipliers<Z, K>,
-    (s0, span): (f64, f64),
+    (s0, span): (Float, Float),
     (sensitivity, stiffness): (bool, bool),
 ) -> Result<StepEnd<N, Z, K>, StepError>
 where
@@ -369,7 +370,8 @@ where
             end.dv_dc[k] += w * dk[i].dv[k];
         }
     }
-    if stiffness {
+    // Only the automatic method's switch to an implicit one reads it.
+    if stiffness && cfg!(feature = "implicit") {
         end.stiffness = stiffness_estimate(tableau, (&start.q, &start.v), h, (&kq, &kv));
     }
     Ok(end)
@@ -380,7 +382,7 @@ where
 pub(crate) fn stage_state<const N: usize, const ST: usize, const C: usize>(
     tableau: &Tableau<ST>,
     i: usize,
-    h: f64,
+    h: Float,
     (q0, v0): (&Matrix<N, C>, &Matrix<N, C>),
     (kq, kv): (&[Matrix<N, C>; ST], &[Matrix<N, C>; ST]),
 ) -> (Matrix<N, C>, Matrix<N, C>) {
@@ -398,12 +400,12 @@ pub(crate) fn stage_state<const N: usize, const ST: usize, const C: usize>(
 #[inline(always)]
 fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
     tableau: &Tableau<ST>,
-    h: f64,
+    h: Float,
     (q0, v0): (&Vector<N>, &Vector<N>),
     (dq_dc, dv_dc): ([Matrix<N, Z>; K], [Matrix<N, Z>; K]),
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
 ) -> StepEnd<N, Z, K> {
-    let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[f64; ST]| {
+    let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[Float; ST]| {
         for i in 0..ST {
             q += (h * w[i]) * kq[i];
             v += (h * w[i]) * kv[i];
@@ -429,8 +431,8 @@ fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
 fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
     model: &mut Model<'_, S, N, Z>,
     tableau: &Tableau<ST>,
-    (t0, q0, v0): (f64, &Vector<N>, &Vector<N>),
-    h: f64,
+    (t0, q0, v0): (Float, &Vector<N>, &Vector<N>),
+    h: Float,
     (first, stiffness): (Option<&Vector<N>>, bool),
     ((kq, kv), lambdas): (
         &mut ([Vector<N>; ST], [Vector<N>; ST]),
@@ -444,7 +446,7 @@ where
         let (q, v) = stage_state(tableau, i, h, (q0, v0), (&*kq, &*kv));
         kq[i] = v;
         (kv[i], lambdas[i]) = match first.filter(|_| i == 0) {
-            Some(a) => (*a, Vector::repeat(f64::NAN)),
+            Some(a) => (*a, Vector::repeat(Float::NAN)),
             None => {
                 let point = consistent_point(model, t0 + tableau.c[i] * h, q, v)?;
                 (point.a, point.lambda)
@@ -452,7 +454,7 @@ where
         };
     }
     let mut end = solution(tableau, h, (q0, v0), ([], []), (&*kq, &*kv));
-    if stiffness {
+    if stiffness && cfg!(feature = "implicit") {
         end.stiffness = stiffness_estimate(tableau, (q0, v0), h, (&*kq, &*kv));
     }
     Ok(end)
@@ -465,9 +467,9 @@ where
 fn stiffness_estimate<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     start: (&Vector<N>, &Vector<N>),
-    h: f64,
+    h: Float,
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
-) -> Option<f64> {
+) -> Option<Float> {
     let probe = tableau.stiffness.as_ref()?;
     let ProbeStates::Stages(first, second) = probe.states else {
         return None;
@@ -483,10 +485,10 @@ fn stiffness_estimate<const N: usize, const ST: usize>(
 /// `(q, q', q'')` (DOP853's), from the step's start, size and stage slopes.
 pub(crate) fn stiffness_against_end<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
-    (start, h): ((&Vector<N>, &Vector<N>), f64),
+    (start, h): ((&Vector<N>, &Vector<N>), Float),
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
     end: (Vector<N>, Vector<N>, Vector<N>),
-) -> Option<f64> {
+) -> Option<Float> {
     let probe = tableau.stiffness.as_ref()?;
     let ProbeStates::LastStageAndEnd = probe.states else {
         return None;
@@ -498,15 +500,15 @@ pub(crate) fn stiffness_against_end<const N: usize, const ST: usize>(
 /// `h‖Δf‖/‖Δy‖` between two states `(q, q', q'')` at one time, over the stability `boundary`;
 /// none where they coincide.
 fn stiffness_ratio<const N: usize>(
-    h: f64,
-    boundary: f64,
+    h: Float,
+    boundary: Float,
     (q1, v1, a1): (Vector<N>, Vector<N>, Vector<N>),
     (q2, v2, a2): (Vector<N>, Vector<N>, Vector<N>),
-) -> Option<f64> {
+) -> Option<Float> {
     let dv = (v2 - v1).norm_squared();
     let slope = (a2 - a1).norm_squared() + dv;
     let state = (q2 - q1).norm_squared() + dv;
-    (state > 0.0).then(|| h * libm::sqrt(slope / state) / boundary)
+    (state > 0.0).then(|| h * Lm::sqrt(slope / state) / boundary)
 }
 
 #[cfg(test)]
@@ -520,8 +522,11 @@ mod tests {
     /// stage `i` (Butcher, *Numerical Methods for ODEs*, 2016, ch. 3): a tree is a root with a
     /// multiset of subtrees, `Φᵢ(t) = Πᵤ (A Φ(u))ᵢ` over the subtrees `u` and
     /// `γ(t) = |t| Πᵤ γ(u)`. The counts are 1, 1, 2, 4, 9, 20, 48, 115 for orders 1 to 8.
-    fn trees<const S: usize>(a: &[[f64; S]; S], max_order: usize) -> Vec<(usize, f64, [f64; S])> {
-        let mut trees: Vec<(usize, f64, [f64; S])> = Vec::new();
+    fn trees<const S: usize>(
+        a: &[[Float; S]; S],
+        max_order: usize,
+    ) -> Vec<(usize, Float, [Float; S])> {
+        let mut trees: Vec<(usize, Float, [Float; S])> = Vec::new();
         for order in 1..=max_order {
             // Subtrees as non-decreasing indices into the trees of lower order, orders summing
             // to `order - 1`.
@@ -531,12 +536,12 @@ mod tests {
                 let used: usize = children.iter().map(|&k| trees[k].0).sum();
                 if used == order - 1 {
                     let mut phi = [1.0; S];
-                    let mut gamma = order as f64;
+                    let mut gamma = order as Float;
                     for &k in &children {
                         let (_, g, child) = trees[k];
                         gamma *= g;
                         for (i, p) in phi.iter_mut().enumerate() {
-                            *p *= (0..S).map(|j| a[i][j] * child[j]).sum::<f64>();
+                            *p *= (0..S).map(|j| a[i][j] * child[j]).sum::<Float>();
                         }
                     }
                     trees.push((order, gamma, phi));
@@ -555,17 +560,21 @@ mod tests {
     }
 
     /// The largest `|Σ wᵢ Φᵢ(t) - 1/γ(t)|` over the trees of each order, from 1.
-    fn residuals<const S: usize>(tableau: &Tableau<S>, w: &[f64; S], max_order: usize) -> Vec<f64> {
-        let mut worst = std::vec![0.0_f64; max_order];
+    fn residuals<const S: usize>(
+        tableau: &Tableau<S>,
+        w: &[Float; S],
+        max_order: usize,
+    ) -> Vec<Float> {
+        let mut worst = std::vec![0.0 as Float; max_order];
         for (order, gamma, phi) in trees(&tableau.a, max_order) {
-            let sum: f64 = (0..S).map(|i| w[i] * phi[i]).sum();
+            let sum: Float = (0..S).map(|i| w[i] * phi[i]).sum();
             worst[order - 1] = worst[order - 1].max((sum - 1.0 / gamma).abs());
         }
         worst
     }
 
     /// Weights that meet every condition up to `order` and miss one of the next.
-    fn check<const S: usize>(name: &str, tableau: &Tableau<S>, w: &[f64; S], order: usize) {
+    fn check<const S: usize>(name: &str, tableau: &Tableau<S>, w: &[Float; S], order: usize) {
         let worst = residuals(tableau, w, order + 1);
         for (k, r) in worst.iter().enumerate().take(order) {
             assert!(*r < 1e-13, "{name}: order {} condition off by {r:e}", k + 1);
@@ -573,7 +582,7 @@ mod tests {
         assert!(worst[order] > 1e-6, "{name}: order {} holds too", order + 1);
     }
 
-    fn embedded<const S: usize>(tableau: &Tableau<S>, e: Option<[f64; S]>) -> [f64; S] {
+    fn embedded<const S: usize>(tableau: &Tableau<S>, e: Option<[Float; S]>) -> [Float; S] {
         let e = e.unwrap();
         core::array::from_fn(|i| tableau.b[i] - e[i])
     }
@@ -618,7 +627,7 @@ mod tests {
     fn stages_are_consistent() {
         fn rows_sum_to_nodes<const S: usize>(name: &str, tableau: &Tableau<S>) {
             for i in 0..S {
-                let row: f64 = tableau.a[i].iter().sum();
+                let row: Float = tableau.a[i].iter().sum();
                 let c = tableau.c[i];
                 assert!((row - c).abs() < 1e-14, "{name}, stage {i}: {row} ≠ {c}");
             }

@@ -17,10 +17,12 @@ pub(crate) mod continuous;
 pub(crate) mod dirk;
 // Without `dense-output` the continuous extensions are built but never sampled.
 #[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
+#[cfg(feature = "high-order")]
 pub(crate) mod dop853;
 pub(crate) mod explicit;
 // Without `dense-output` the continuous extensions are built but never sampled.
 #[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
+#[cfg(feature = "high-order")]
 pub(crate) mod verner;
 
 use crate::error::StepError;
@@ -28,6 +30,7 @@ use crate::model::Model;
 use crate::options::{InnerMethod, MultiplierModel, StepControl};
 use crate::output::Point;
 use crate::polynomial::Multipliers;
+use crate::scalar::Float;
 use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
@@ -41,7 +44,7 @@ pub(crate) type Blocks<const N: usize, const Z: usize> = [Matrix<N, Z>; MAX_COEF
 
 /// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
 pub(crate) struct Start<const N: usize, const Z: usize, const K: usize> {
-    pub t: f64,
+    pub t: Float,
     pub q: Vector<N>,
     pub v: Vector<N>,
     pub dq_dc: [Matrix<N, Z>; K],
@@ -50,7 +53,7 @@ pub(crate) struct Start<const N: usize, const Z: usize, const K: usize> {
 
 impl<const N: usize, const Z: usize, const K: usize> Start<N, Z, K> {
     /// A step start, where nothing depends on the coming step's multipliers yet.
-    pub fn at(t: f64, q: Vector<N>, v: Vector<N>) -> Self {
+    pub fn at(t: Float, q: Vector<N>, v: Vector<N>) -> Self {
         Start {
             t,
             q,
@@ -75,7 +78,7 @@ pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
     /// `h|λ|` of the eigenvalue the step felt most over the boundary of the method's
     /// stability region, for explicit methods that estimate it between two stages: above 1 the
     /// step is bound by stability, not accuracy.
-    pub stiffness: Option<f64>,
+    pub stiffness: Option<Float>,
 }
 
 /// One inner method with the workspace it owns, in storage `D`.
@@ -92,7 +95,7 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError>;
@@ -103,8 +106,8 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
     fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: (f64, &Vector<N>, &Vector<N>),
-        h: f64,
+        start: (Float, &Vector<N>, &Vector<N>),
+        h: Float,
         first: Option<&Vector<N>>,
     ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
         let _ = (model, start, h, first);
@@ -118,14 +121,14 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         ends: (&Point<N, Z>, &Point<N, Z>),
-        t: f64,
+        t: Float,
     ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
         let _ = (model, ends, t);
         None
     }
     /// The stiffness estimate of the last step integrated, whose end point is `end`, for a
     /// method that compares its last stage with the end (DOP853, where it estimates it).
-    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<f64> {
+    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<Float> {
         let _ = end;
         None
     }
@@ -155,8 +158,10 @@ pub(crate) enum AnyMethod<const N: usize, const Z: usize, D: Storage<N>> {
     Explicit4(explicit::Explicit<4, N, Z, D>),
     Explicit7(explicit::Explicit<7, N, Z, D>),
     /// DOP853, with the last step kept for its continuous extension.
+    #[cfg(feature = "high-order")]
     Explicit12(explicit::Explicit<12, N, Z, D>, dop853::Continuous<N>),
     /// Verner's 9(8) pair, with the last step kept for its interpolant.
+    #[cfg(feature = "high-order")]
     Explicit16(explicit::Explicit<16, N, Z, D>, verner::Continuous<N>),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, Z, D>),
@@ -187,10 +192,12 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
             InnerMethod::DormandPrince54 | InnerMethod::Automatic => {
                 AnyMethod::Explicit7(explicit::Explicit::new(&explicit::DOPRI5, 1, automatic))
             }
+            #[cfg(feature = "high-order")]
             InnerMethod::Dop853 => AnyMethod::Explicit12(
                 explicit::Explicit::new(&dop853::DOP853, 1, automatic),
                 dop853::Continuous::new(),
             ),
+            #[cfg(feature = "high-order")]
             InnerMethod::Verner98 => AnyMethod::Explicit16(
                 explicit::Explicit::new(&verner::VERNER98, 1, automatic),
                 verner::Continuous::new(),
@@ -217,10 +224,9 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
     pub fn use_step_control(&mut self, step: StepControl) {
         let _ = step;
         match self {
-            AnyMethod::Explicit4(_)
-            | AnyMethod::Explicit7(_)
-            | AnyMethod::Explicit12(..)
-            | AnyMethod::Explicit16(..) => {}
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => {}
+            #[cfg(feature = "high-order")]
+            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) => {}
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
@@ -240,7 +246,9 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::order(m),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::order(m),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
@@ -260,7 +268,9 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(m) => Method::<N, Z, D>::embedded_order(m),
             AnyMethod::Explicit7(m) => Method::<N, Z, D>::embedded_order(m),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::embedded_order(m),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
@@ -280,14 +290,16 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         start: &Start<N, Z, K>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         sensitivity: bool,
     ) -> Result<StepEnd<N, Z, K>, StepError> {
         match self {
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
@@ -305,16 +317,18 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
     fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: (f64, &Vector<N>, &Vector<N>),
-        h: f64,
+        start: (Float, &Vector<N>, &Vector<N>),
+        h: Float,
         first: Option<&Vector<N>>,
     ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
         match self {
             AnyMethod::Explicit4(m) => m.integrate_every_stage(model, start, h, first),
             AnyMethod::Explicit7(m) => m.integrate_every_stage(model, start, h, first),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, continuous) => {
                 Some(kept_for_dense_output(m, continuous, model, start, h, first))
             }
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, continuous) => {
                 Some(kept_for_dense_output(m, continuous, model, start, h, first))
             }
@@ -327,17 +341,20 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         &mut self,
         model: &mut Model<'_, S, N, Z>,
         ends: (&Point<N, Z>, &Point<N, Z>),
-        t: f64,
+        t: Float,
     ) -> Option<Result<(Vector<N>, Vector<N>), StepError>> {
         match self {
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(_, continuous) => continuous.state(model, ends, t),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(_, continuous) => continuous.state(model, ends, t),
             _ => None,
         }
     }
 
-    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<f64> {
+    fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<Float> {
         match self {
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, continuous) if m.estimates_stiffness() => {
                 continuous.stiffness_against(m.tableau(), end)
             }
@@ -347,10 +364,9 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
 
     fn factorizations(&self) -> u64 {
         match self {
-            AnyMethod::Explicit4(_)
-            | AnyMethod::Explicit7(_)
-            | AnyMethod::Explicit12(..)
-            | AnyMethod::Explicit16(..) => 0,
+            AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => 0,
+            #[cfg(feature = "high-order")]
+            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) => 0,
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]
@@ -387,8 +403,8 @@ fn kept_for_dense_output<S, E, const N: usize, const Z: usize, const ST: usize, 
     method: &mut explicit::Explicit<ST, N, Z, D>,
     continuous: &mut continuous::Continuous<N, ST, E>,
     model: &mut Model<'_, S, N, Z>,
-    start: (f64, &Vector<N>, &Vector<N>),
-    h: f64,
+    start: (Float, &Vector<N>, &Vector<N>),
+    h: Float,
     first: Option<&Vector<N>>,
 ) -> Result<StepEnd<N, Z, 0>, StepError>
 where
@@ -445,7 +461,7 @@ mod tests {
             .unwrap();
         let delta = 1e-5;
         for k in 0..K {
-            let mut shifted = |sign: f64| {
+            let mut shifted = |sign: Float| {
                 let mut m = multipliers;
                 m.coefficients[k][0] += sign * delta;
                 stepper.integrate(&mut model, &start, h, &m, false).unwrap()
@@ -622,7 +638,7 @@ mod tests {
             .unwrap()
             .a;
         Method::<2, 1, Dense>::restart(&mut stepper, || Ok(a0));
-        let mut step = |stepper: &mut AnyMethod<2, 1, Dense>, h: f64| {
+        let mut step = |stepper: &mut AnyMethod<2, 1, Dense>, h: Float| {
             stepper
                 .integrate(&mut model, &start, h, &multipliers, false)
                 .unwrap()

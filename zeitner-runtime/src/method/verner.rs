@@ -14,6 +14,7 @@ use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
 use crate::output::Point;
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector};
 
 /// The pair's stages and the interpolant's.
@@ -21,7 +22,7 @@ const STAGES: usize = 21;
 
 /// The pair's sixteen stages and the five more of its continuous extension (stage 17 is the
 /// solution's slope, which the projected end point's replaces).
-const A: [[f64; STAGES]; STAGES] = [
+const A: [[Float; STAGES]; STAGES] = [
     [0.0; STAGES],
     row(&[(0, 0.0346200000000000)]),
     row(&[
@@ -185,7 +186,7 @@ const A: [[f64; STAGES]; STAGES] = [
     ]),
 ];
 /// The stages' nodes.
-const C: [f64; STAGES] = [
+const C: [Float; STAGES] = [
     0.0,
     0.0346200000000000,
     0.09702435063878044594828361677100617517633,
@@ -209,7 +210,7 @@ const C: [f64; STAGES] = [
     0.487000000000000,
 ];
 /// The ninth-order weights.
-const B: [f64; 16] = row(&[
+const B: [Float; 16] = row(&[
     (0, 0.01461197685842315252051541915018784713459),
     (7, -0.3915211862331339089410228267288242030810),
     (8, 0.2310932500289506415909675644868993669908),
@@ -221,7 +222,7 @@ const B: [f64; 16] = row(&[
     (14, 0.03057013983082797397721005067920369646664),
 ]);
 /// `b̂ - b`: the eighth-order weights less the ninth-order ones, as published.
-const D: [f64; 16] = row(&[
+const D: [Float; 16] = row(&[
     (0, 0.005357988290444578334669665030800840430050),
     (7, 2.583020491182463963471769926039661727945),
     (8, -0.1425225315468662612826303441690357783613),
@@ -234,7 +235,7 @@ const D: [f64; 16] = row(&[
     (15, 0.04834231373823958314376726739772871714902),
 ]);
 /// The interpolant's weights `bᵢ(s) = Σₖ P[k][i] sᵏ⁺¹` on the twenty-one slopes.
-const P: [[f64; STAGES]; 8] = [
+const P: [[Float; STAGES]; 8] = [
     row(&[(0, 1.0)]),
     row(&[
         (0, -12.74966541771576102412726774271024205003),
@@ -351,7 +352,7 @@ const P: [[f64; STAGES]; 8] = [
 ];
 
 /// `b` as a row over all the stages.
-const fn padded(b: &[f64; 16]) -> [f64; STAGES] {
+const fn padded(b: &[Float; 16]) -> [Float; STAGES] {
     let mut row = [0.0; STAGES];
     let mut i = 0;
     while i < 16 {
@@ -362,7 +363,7 @@ const fn padded(b: &[f64; 16]) -> [f64; STAGES] {
 }
 
 /// The leading `L × L` block of the stages' coefficients.
-const fn leading<const L: usize>(a: &[[f64; STAGES]; STAGES]) -> [[f64; L]; L] {
+const fn leading<const L: usize>(a: &[[Float; STAGES]; STAGES]) -> [[Float; L]; L] {
     let mut block = [[0.0; L]; L];
     let mut i = 0;
     while i < L {
@@ -434,7 +435,7 @@ impl<const N: usize> Extension<N, 16> for Dense {
 
     fn polynomial<S: ConstrainedSystem<N, Z>, const Z: usize>(
         model: &mut Model<'_, S, N, Z>,
-        (t0, q0, v0, h): (f64, Vector<N>, Vector<N>, f64),
+        (t0, q0, v0, h): (Float, Vector<N>, Vector<N>, Float),
         slopes: &([Vector<N>; 16], [Vector<N>; 16]),
         end: &Point<N, Z>,
     ) -> Result<Polynomial<N>, StepError> {
@@ -462,7 +463,7 @@ impl<const N: usize> Extension<N, 16> for Dense {
         })
     }
 
-    fn evaluate(p: &Polynomial<N>, s: f64) -> (Vector<N>, Vector<N>) {
+    fn evaluate(p: &Polynomial<N>, s: Float) -> (Vector<N>, Vector<N>) {
         let (mut q, mut v) = p.terms[7];
         for (tq, tv) in p.terms.iter().take(7).rev() {
             q = tq + s * q;
@@ -482,12 +483,12 @@ mod tests {
     #[test]
     fn the_interpolant_s_stages_are_consistent_and_it_ends_at_the_solution() {
         for i in 0..STAGES {
-            let row: f64 = A[i].iter().sum();
+            let row: Float = A[i].iter().sum();
             assert!((row - C[i]).abs() < 1e-14, "stage {i}: {row} ≠ {}", C[i]);
         }
         // bᵢ(1) = Σₖ P[k][i]: the pair's weights, and none on the interpolant's own stages.
         for i in 0..STAGES {
-            let at_one: f64 = P.iter().map(|p| p[i]).sum();
+            let at_one: Float = P.iter().map(|p| p[i]).sum();
             let weight = if i < 16 { B[i] } else { 0.0 };
             assert!(
                 (at_one - weight).abs() < 1e-11,
@@ -498,13 +499,13 @@ mod tests {
 
     /// `R(x) = 1 + x bᵀ(I - xA)⁻¹ 1` of the ninth-order solution, by forward substitution (`A`
     /// is strictly lower triangular).
-    fn stability(x: f64) -> f64 {
+    fn stability(x: Float) -> Float {
         let a = &VERNER98.a;
         let mut y = [0.0; 16];
         for i in 0..16 {
-            y[i] = 1.0 + x * (0..i).map(|j| a[i][j] * y[j]).sum::<f64>();
+            y[i] = 1.0 + x * (0..i).map(|j| a[i][j] * y[j]).sum::<Float>();
         }
-        1.0 + x * (0..16).map(|i| VERNER98.b[i] * y[i]).sum::<f64>()
+        1.0 + x * (0..16).map(|i| VERNER98.b[i] * y[i]).sum::<Float>()
     }
 
     /// The stability region reaches -4.47 on the negative real axis, and the stiffness test's
@@ -512,7 +513,7 @@ mod tests {
     #[test]
     fn the_stiffness_boundary_lies_within_the_stability_region() {
         let end = 4.47;
-        for x in (1..=1000).map(|k| -end * f64::from(k) / 1000.0) {
+        for x in (1..=1000).map(|k| -end * k as Float / 1000.0) {
             assert!(stability(x).abs() <= 1.0, "|R({x})| > 1");
         }
         assert!(stability(-end - 0.01).abs() > 1.0);

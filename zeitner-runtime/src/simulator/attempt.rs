@@ -13,6 +13,7 @@ use crate::multipliers::{self, NewtonOutcome, NewtonSettings};
 use crate::options::{MultiplierModel, StepControl, VelocityProjection};
 use crate::output::Point;
 use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A step whose constraints hold and whose error is within tolerance.
@@ -23,16 +24,16 @@ pub(super) struct Accepted<const N: usize, const Z: usize> {
     pub(super) point: Point<N, Z>,
     pub(super) multipliers: StepPolynomial<Z>,
     pub(super) integrations: u32,
-    pub(super) error_norm: f64,
+    pub(super) error_norm: Float,
     /// `G` and `G M⁻¹Gᵀ` at the end point.
     pub(super) gram: Gram<N, Z>,
     /// The inner method's `h|λ|` over its stability boundary, if it estimates it.
-    pub(super) stiffness: Option<f64>,
+    pub(super) stiffness: Option<Float>,
     /// Whether a constraint gradient had all but vanished at the end point (a cusp).
     pub(super) singular_end: bool,
     /// What a step's sensitivities need to take it again: the size its residual correction was
     /// made for, and whether its end's positions were projected.
-    pub(super) planned: f64,
+    pub(super) planned: Float,
     pub(super) positions_projected: bool,
 }
 
@@ -41,7 +42,7 @@ pub(super) enum Attempt<const N: usize, const Z: usize> {
     /// Retry with the step multiplied by `factor`; `cause` is the error if no smaller step is
     /// possible.
     Rejected {
-        factor: f64,
+        factor: Float,
         cause: StepError,
     },
 }
@@ -50,10 +51,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The next try: its size, its end time, and whether it lands on the stop time.
     pub(super) fn plan(
         &self,
-        h: f64,
-        limit: f64,
+        h: Float,
+        limit: Float,
         retry: bool,
-    ) -> Result<(f64, f64, bool), StepError> {
+    ) -> Result<(Float, Float, bool), StepError> {
         let sliver = self.options.controller.landing_fraction;
         plan_step(
             (self.time(), self.t_carry),
@@ -66,9 +67,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The step after a rejection, or the error when there is none.
     pub(super) fn retry(
         &mut self,
-        rejected: (f64, u32),
+        rejected: (Float, u32),
         cause: StepError,
-    ) -> Result<f64, StepError> {
+    ) -> Result<Float, StepError> {
         match retry_step(self.options.step, self.time(), rejected, cause) {
             Ok(h) => Ok(h),
             Err(cause) => Err(self.singular_configuration()?.unwrap_or(cause)),
@@ -85,7 +86,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The error naming the rows of `g` (at time `t`) whose gradients have all but vanished,
     /// if any: see [`Simulator::singular_configuration`].
-    pub(super) fn vanishing_rows(&self, g: &Matrix<Z, N>, t: f64) -> Option<StepError> {
+    pub(super) fn vanishing_rows(&self, g: &Matrix<Z, N>, t: Float) -> Option<StepError> {
         let mut rows = RowSet::new(S::POSITION_CONSTRAINTS);
         let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
         let open = self.model.open_gaps();
@@ -105,8 +106,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// aim at a crossing, which sets how far the step corrects the residuals it starts with.
     pub(super) fn attempt(
         &mut self,
-        (h, planned): (f64, f64),
-        t_end: f64,
+        (h, planned): (Float, Float),
+        t_end: Float,
     ) -> Result<Attempt<N, Z>, StepError> {
         let method = self.active;
         match self
@@ -139,7 +140,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The constant multipliers Newton starts from: with position-level rows only, those that
     /// make the linearised constraint hold at the step end; else extrapolated from the last two
     /// steps (or, without extrapolation, the last step's, as in the paper).
-    pub(super) fn constant_guess(&mut self, h: f64, planned: f64) -> Result<Vector<Z>, StepError> {
+    pub(super) fn constant_guess(
+        &mut self,
+        h: Float,
+        planned: Float,
+    ) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
         if let Some((at, consistent_v)) = self.state_gram.filter(|_| extrapolate) {
             // Position rows: `g` does not depend on the velocities (the report's serves), and
@@ -164,8 +169,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     pub(super) fn attempt_with<const K: usize>(
         &mut self,
-        (h, planned): (f64, f64),
-        t_end: f64,
+        (h, planned): (Float, Float),
+        t_end: Float,
         guess: Multipliers<Z, K>,
     ) -> Result<Attempt<N, Z>, StepError> {
         let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
@@ -228,7 +233,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         multipliers: &Multipliers<Z, K>,
         constant: bool,
         integrations: u32,
-        (h, t_end): (f64, f64),
+        (h, t_end): (Float, Float),
     ) -> Result<Attempt<N, Z>, StepError> {
         let tolerance = self.options.constraint_tolerance;
         let (point, gram) = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
@@ -321,8 +326,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn accept(
         &mut self,
         step: Accepted<N, Z>,
-        t_end: f64,
-        (h_used, h_planned): (f64, f64),
+        t_end: Float,
+        (h_used, h_planned): (Float, Float),
         landing: bool,
     ) -> Result<(), StepError> {
         let step_multipliers = step.multipliers.at_end();
@@ -383,11 +388,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// The step the controller plans after an accepted one.
     pub(super) fn next_step(
         &mut self,
-        h_used: f64,
-        h_planned: f64,
+        h_used: Float,
+        h_planned: Float,
         step: &Accepted<N, Z>,
         landing: bool,
-    ) -> f64 {
+    ) -> Float {
         let k = self.error_order();
         let accepted = (step.error_norm, step.integrations);
         next_step_size(

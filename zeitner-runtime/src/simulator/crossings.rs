@@ -9,6 +9,7 @@ use crate::error::StepError;
 use crate::events::{self, Crossing, Values};
 use crate::gaps::GapSet;
 use crate::output::{Direction, Point, StopReason};
+use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -17,7 +18,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn crossing(
         &mut self,
         step: &Accepted<N, Z>,
-        t_end: f64,
+        t_end: Float,
     ) -> Result<(Option<Values>, Option<Crossing>), StepError> {
         if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
             return Ok((None, None));
@@ -35,14 +36,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// The events' time tolerance, or what the time's resolution allows where it is coarser.
-    pub(super) fn time_tolerance(&self) -> f64 {
-        let resolution = 8.0 * f64::EPSILON * self.time().abs();
+    pub(super) fn time_tolerance(&self) -> Float {
+        let resolution = 8.0 * Float::EPSILON * self.time().abs();
         self.options.events.time_tolerance.max(resolution)
     }
 
     /// Where a step with a crossing should end instead of `t_end`: half the time tolerance
     /// beyond it (before it for a gap), or nowhere new if `t_end` is that already.
-    pub(super) fn aim(&self, crossing: Crossing, t_end: f64) -> Option<f64> {
+    pub(super) fn aim(&self, crossing: Crossing, t_end: Float) -> Option<Float> {
         let half = 0.5 * self.time_tolerance();
         let offset = if crossing.watched.lands_before() {
             -half
@@ -55,7 +56,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// The middle of a step with a crossing, unless the step is within the time tolerance.
-    pub(super) fn halve(&self, t_end: f64) -> Option<f64> {
+    pub(super) fn halve(&self, t_end: Float) -> Option<Float> {
         let now = self.time();
         let middle = now + 0.5 * (t_end - now);
         let wide = t_end - now > 0.5 * self.time_tolerance();
@@ -67,8 +68,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn after_step(
         &mut self,
         values: Option<&Values>,
-        t_end: f64,
-        (landing, time_event): (bool, Option<f64>),
+        t_end: Float,
+        (landing, time_event): (bool, Option<Float>),
         aimed: bool,
     ) -> Result<StopReason, StepError> {
         // A time event landed on is passed even where a crossing is reported first.

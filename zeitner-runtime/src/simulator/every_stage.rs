@@ -10,14 +10,15 @@ use crate::control::newton_tolerance;
 use crate::error::{InvalidOption, StepError};
 use crate::method::Method;
 use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector};
 
 impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S, N, Z> {
     /// One try of a step of size `h` ending at `t_end`.
     pub(super) fn attempt_every_stage(
         &mut self,
-        h: f64,
-        t_end: f64,
+        h: Float,
+        t_end: Float,
     ) -> Result<Attempt<N, Z>, StepError> {
         let t = self.time();
         // The last consistent point is the first stage's, unless the state moved since.

@@ -7,6 +7,8 @@
 //! one re-anchoring at a consistent point in `anchor`, and what an observer sees in
 //! `observation`.
 
+use crate::scalar::Float;
+
 mod anchor;
 mod attempt;
 mod crossings;
@@ -74,7 +76,7 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     q: Vector<N>,
     v: Vector<N>,
     /// What the rounding of the end times has lost so far (Neumaier summation).
-    t_carry: f64,
+    t_carry: Float,
     /// The consistent multipliers at the current time, the anchor of varying multipliers.
     lambda: Vector<Z>,
     /// `G` and `G M⁻¹Gᵀ` at the current state and the consistent velocities there, from the
@@ -82,9 +84,9 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     state_gram: Option<(Gram<N, Z>, Vector<N>)>,
     /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
     jacobian_row_scale: Vector<Z>,
-    stop_time: Option<f64>,
+    stop_time: Option<Float>,
     /// The step size the controller plans next.
-    planned_step: f64,
+    planned_step: Float,
     /// Whether the accepted steps still advance the time.
     progress: Progress,
     last: StepReport<N, Z>,
@@ -96,9 +98,9 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     pending: Pending,
     last_impact: Option<Impact<N, Z>>,
     /// Times the user asked steps to land on, besides the model's time events.
-    time_events: &'s [f64],
+    time_events: &'s [Float],
     /// The first time event ahead, the model's or the user's (found again once reached).
-    next_time_event: Option<f64>,
+    next_time_event: Option<Float>,
     /// The last accepted step as its sensitivities need it.
     last_step: LastStep<Z>,
 }
@@ -108,7 +110,7 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
 struct LastStep<const Z: usize> {
     multipliers: StepPolynomial<Z>,
     /// The size the step's residual correction was made for.
-    planned: f64,
+    planned: Float,
     positions_projected: bool,
 }
 
@@ -141,7 +143,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         system: &'s S,
         q0: Vector<N>,
         v0: Vector<N>,
-        t0: f64,
+        t0: Float,
         options: Options,
     ) -> Result<Self, StepError> {
         options.validate()?;
@@ -207,7 +209,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// from the acceleration-level system at the interpolated state, so that they are as
     /// accurate as the positions and velocities. `t` must lie within the last step.
     #[cfg(feature = "dense-output")]
-    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+    pub fn sample(&mut self, t: Float) -> Result<Point<N, Z>, StepError> {
         let (start, end) = (self.last.start.t, self.last.end.t);
         if !(t >= start && t <= end) {
             return Err(StepError::InvalidOption(InvalidOption::SampleTime));
@@ -233,7 +235,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// The current time: the end of the last accepted step.
-    pub fn time(&self) -> f64 {
+    pub fn time(&self) -> Float {
         self.last.end.t
     }
 
@@ -263,7 +265,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports
     /// [`StopReason::StopTimeReached`] and the stop time is cleared).
-    pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
+    pub fn set_stop_time(&mut self, t: Float) -> Result<(), StepError> {
         if !(t > self.time()) || !t.is_finite() {
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
@@ -284,7 +286,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Ok(StopReason::StopTimeReached);
         }
         self.progress.check(self.time())?;
-        let stop = self.stop_time.unwrap_or(f64::INFINITY);
+        let stop = self.stop_time.unwrap_or(Float::INFINITY);
         let time_event = self.next_time_event.filter(|&t| t > self.time());
         let limit = time_event.filter(|&t| t < stop).unwrap_or(stop);
         let (min_step, max_step) = bounds(self.options.step);
@@ -296,7 +298,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // The size the step's residual correction is made for: the controller's, until a
         // rejection replaces it; a step shortened to land or to aim at a crossing keeps it.
         let mut reach = h;
-        let (mut retry, mut target, mut relocations, mut attempts) = (false, None::<f64>, 0, 0);
+        let (mut retry, mut target, mut relocations, mut attempts) = (false, None::<Float>, 0, 0);
         loop {
             let (h_try, t_end, landing) = self.plan(h, target.unwrap_or(limit), retry)?;
             retry = true;
@@ -346,7 +348,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// step's report, can sample dense output and can stop the run.
     pub fn advance_to(
         &mut self,
-        t_end: f64,
+        t_end: Float,
         mut observer: impl FnMut(&mut Observation<'_, 's, S, N, Z>),
     ) -> Result<StopReason, StepError> {
         if already_there(self.time(), t_end)? {
@@ -377,7 +379,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
 /// Whether a run to `t_end` from `now` has nothing to do; an error when `t_end` is not a
 /// finite time from `now` on.
-pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
+pub(crate) fn already_there(now: Float, t_end: Float) -> Result<bool, StepError> {
     if !(t_end >= now) || !t_end.is_finite() {
         return Err(StepError::InvalidOption(InvalidOption::EndTime));
     }
@@ -385,7 +387,7 @@ pub(crate) fn already_there(now: f64, t_end: f64) -> Result<bool, StepError> {
 }
 
 /// The first step the options plan.
-pub(crate) fn first_step(step: StepControl) -> f64 {
+pub(crate) fn first_step(step: StepControl) -> Float {
     match step {
         StepControl::Fixed { step } => step,
         StepControl::Adaptive { initial_step, .. } => initial_step,

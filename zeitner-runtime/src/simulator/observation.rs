@@ -8,6 +8,8 @@ use crate::gaps::GapSet;
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
 use crate::output::{StepReport, StopReason};
+#[cfg(feature = "dense-output")]
+use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
 /// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
@@ -44,7 +46,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Observation<'_,
     /// Dense output within the step just taken, multipliers recomputed: see
     /// [`Simulator::sample`].
     #[cfg(feature = "dense-output")]
-    pub fn sample(&mut self, t: f64) -> Result<Point<N, Z>, StepError> {
+    pub fn sample(&mut self, t: Float) -> Result<Point<N, Z>, StepError> {
         self.simulator.sample(t)
     }
 

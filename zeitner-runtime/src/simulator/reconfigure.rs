@@ -7,6 +7,7 @@ use crate::control::{bounds, Progress, StiffnessTest};
 use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
 use crate::options::{InnerMethod, Options, StepControl};
+use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -98,7 +99,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
     /// below its level.
-    pub(super) fn state_within(&mut self, tolerance: f64) -> Result<bool, StepError> {
+    pub(super) fn state_within(&mut self, tolerance: Float) -> Result<bool, StepError> {
         if self.last.residual.amax() > tolerance {
             return Ok(false);
         }
@@ -116,7 +117,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// change of load made from outside), in any order; the multipliers' predictor and the
     /// step-size controller start afresh at each, as at the model's
     /// ([`crate::StopReason::TimeEventReached`]). Refused (and nothing changed) if one is not finite.
-    pub fn set_time_events(&mut self, times: &'s [f64]) -> Result<(), StepError> {
+    pub fn set_time_events(&mut self, times: &'s [Float]) -> Result<(), StepError> {
         if !times.iter().all(|t| t.is_finite()) {
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
@@ -132,13 +133,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// The first time event, the model's or the user's, after the current time.
-    pub(super) fn find_time_event(&self) -> Option<f64> {
+    pub(super) fn find_time_event(&self) -> Option<Float> {
         let now = self.time();
         let given = self.time_events.iter().copied().filter(|&t| t > now);
         let model = self.model.system.time_event_after(now).filter(|&t| t > now);
         given
             .chain(model)
-            .fold(None, |next, t| Some(next.map_or(t, |n: f64| n.min(t))))
+            .fold(None, |next, t| Some(next.map_or(t, |n: Float| n.min(t))))
     }
 }
 
@@ -151,7 +152,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// Learns from an accepted step's `h|λ|` estimate whether the run is stiff; once it is,
     /// [`InnerMethod::Automatic`] goes on with its implicit method from the state reached.
-    pub(super) fn watch_stiffness(&mut self, h_lambda: Option<f64>) {
+    pub(super) fn watch_stiffness(&mut self, h_lambda: Option<Float>) {
         if !self.stiffness.record(h_lambda) {
             return;
         }

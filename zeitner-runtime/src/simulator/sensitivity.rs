@@ -11,6 +11,7 @@ use crate::multipliers::carried_share;
 use crate::options::{InnerMethod, MultiplierModel, Options, VelocityProjection};
 use crate::output::{Sensitivities, StopReason};
 use crate::polynomial::{Multipliers, StepPolynomial};
+use crate::scalar::Float;
 use crate::sensitivity::{self as tangent, HeldStep, Recorded, Tangent};
 use crate::storage::Storage;
 use crate::system::{Matrix, ParametrisedSystem, Vector};
@@ -59,7 +60,7 @@ where
         system: &'s S,
         q0: Vector<N>,
         v0: Vector<N>,
-        t0: f64,
+        t0: Float,
         options: Options,
     ) -> Result<Self, StepError> {
         if !followed(options.method) {
@@ -142,7 +143,7 @@ where
 
     /// Steps to `t_end` as [`Simulator::advance_to`] does without an observer: returns at
     /// `t_end` or at an event ([`StopReason::Event`]), the sensitivities carried along.
-    pub fn advance_to(&mut self, t_end: f64) -> Result<StopReason, StepError> {
+    pub fn advance_to(&mut self, t_end: Float) -> Result<StopReason, StepError> {
         if super::already_there(self.simulator.time(), t_end)? {
             return Ok(StopReason::StopTimeReached);
         }
@@ -159,7 +160,7 @@ where
     }
 
     /// [`Simulator::set_stop_time`].
-    pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
+    pub fn set_stop_time(&mut self, t: Float) -> Result<(), StepError> {
         self.simulator.set_stop_time(t)
     }
 
@@ -306,7 +307,7 @@ where
     fn follow(
         &mut self,
         (stages, multipliers, open_before): (Stages, MultiplierModel, GapSet),
-        start: (f64, Vector<N>, Vector<N>),
+        start: (Float, Vector<N>, Vector<N>),
     ) -> Result<(), StepError> {
         // The step was taken with the contacts as they were; a contact its end opened is open
         // for what follows.
@@ -323,7 +324,7 @@ where
     fn step_tangent(
         &mut self,
         (stages, multipliers): (Stages, MultiplierModel),
-        (t0, q0, v0): (f64, Vector<N>, Vector<N>),
+        (t0, q0, v0): (Float, Vector<N>, Vector<N>),
     ) -> Result<(Tangent<N, P>, Tangent<N, P>), StepError> {
         let sim = &mut self.simulator;
         let point = sim.last.end;
@@ -368,7 +369,7 @@ where
 fn held_tangent<S, const N: usize, const Z: usize, const P: usize, const K: usize>(
     sim: &mut Simulator<'_, S, N, Z>,
     stages: Stages,
-    (start, h, t1): (Point<'_, N>, f64, f64),
+    (start, h, t1): (Point<'_, N>, Float, Float),
     record: &LastStep<Z>,
     x0: (&Tangent<N, P>, &Matrix<Z, P>),
 ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
@@ -386,14 +387,7 @@ where
 
 /// Whether the sensitivities follow `method` (while it stays explicit).
 fn followed(method: InnerMethod) -> bool {
-    matches!(
-        method,
-        InnerMethod::Rk4 { .. }
-            | InnerMethod::DormandPrince54
-            | InnerMethod::Dop853
-            | InnerMethod::Verner98
-            | InnerMethod::Automatic
-    )
+    !method.is_implicit()
 }
 
 /// The held multipliers of a step from its polynomial: constant (`K = 1`) or quadratic
@@ -416,14 +410,16 @@ fn held_multipliers<const Z: usize, const K: usize>(
     }
 }
 
-type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, f64);
+type Point<'a, const N: usize> = (&'a Vector<N>, &'a Vector<N>, Float);
 
 /// The tableau (and substeps) a step was taken with.
 #[derive(Clone, Copy)]
 enum Stages {
     Four(&'static Tableau<4>, u32),
     Seven(&'static Tableau<7>, u32),
+    #[cfg(feature = "high-order")]
     Twelve(&'static Tableau<12>, u32),
+    #[cfg(feature = "high-order")]
     Sixteen(&'static Tableau<16>, u32),
 }
 
@@ -434,7 +430,9 @@ impl Stages {
         Ok(match method {
             AnyMethod::Explicit4(m) => Stages::Four(m.tableau(), m.substeps()),
             AnyMethod::Explicit7(m) => Stages::Seven(m.tableau(), m.substeps()),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit12(m, _) => Stages::Twelve(m.tableau(), m.substeps()),
+            #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => Stages::Sixteen(m.tableau(), m.substeps()),
             #[allow(unreachable_patterns)]
             _ => {
@@ -451,7 +449,7 @@ impl Stages {
         self,
         (model, method): (&mut Model<'_, S, N, Z>, &AnyMethod<N, Z, D>),
         start: Point<'_, N>,
-        h: f64,
+        h: Float,
         x: &Tangent<N, P>,
     ) -> Result<((Vector<N>, Vector<N>), Tangent<N, P>), StepError>
     where
@@ -460,6 +458,7 @@ impl Stages {
     {
         let at = (start.2, start.0, start.1);
         match (self, method) {
+            #[cfg(feature = "high-order")]
             (Stages::Twelve(t, k), AnyMethod::Explicit12(m, kept)) => {
                 let recorded = kept.slopes_of(at, h).map(|slopes| Recorded {
                     slopes,
@@ -467,6 +466,7 @@ impl Stages {
                 });
                 tangent::every_stage(model, (t, k), start, h, (x, recorded))
             }
+            #[cfg(feature = "high-order")]
             (Stages::Sixteen(t, k), AnyMethod::Explicit16(m, kept)) => {
                 let recorded = kept.slopes_of(at, h).map(|slopes| Recorded {
                     slopes,
@@ -476,7 +476,9 @@ impl Stages {
             }
             (Stages::Four(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
             (Stages::Seven(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
+            #[cfg(feature = "high-order")]
             (Stages::Twelve(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
+            #[cfg(feature = "high-order")]
             (Stages::Sixteen(t, k), _) => tangent::every_stage(model, (t, k), start, h, (x, None)),
         }
     }
@@ -485,7 +487,7 @@ impl Stages {
         self,
         model: &mut Model<'_, S, N, Z>,
         start: Point<'_, N>,
-        h: f64,
+        h: Float,
         multipliers: &Multipliers<Z, K>,
         tangents: (&Tangent<N, P>, &Matrix<Z, P>),
     ) -> Result<HeldStep<N, Z, P, K>, StepError>
@@ -495,7 +497,9 @@ impl Stages {
         match self {
             Stages::Four(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
             Stages::Seven(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+            #[cfg(feature = "high-order")]
             Stages::Twelve(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
+            #[cfg(feature = "high-order")]
             Stages::Sixteen(t, k) => tangent::held(model, (t, k), start, h, multipliers, tangents),
         }
     }

@@ -11,6 +11,7 @@ use crate::gaps::GapSet;
 use crate::model::Model;
 use crate::options::{MultiplierModel, Options, StepControl};
 use crate::output::{Point, StepReport};
+use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -44,7 +45,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         &mut self,
         q: Vector<N>,
         v: Vector<N>,
-        t: f64,
+        t: Float,
     ) -> Result<StartReport<N, Z>, StepError> {
         let open = self.model.open_gaps();
         let tolerance = self.options.constraint_tolerance;
@@ -90,7 +91,7 @@ pub(super) fn suits_the_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z
 #[allow(clippy::type_complexity)]
 pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    (q, v, t): (Vector<N>, Vector<N>, f64),
+    (q, v, t): (Vector<N>, Vector<N>, Float),
     options: &Options,
 ) -> Result<(StepReport<N, Z>, StartReport<N, Z>, Matrix<Z, N>), StepError> {
     if !t.is_finite() {
@@ -130,7 +131,7 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
 pub(super) fn watch_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     point: &Point<N, Z>,
-    tolerance: f64,
+    tolerance: Float,
 ) -> Result<Watch, StepError> {
     if S::EVENTS == 0 && S::UNILATERAL_CONSTRAINTS == 0 {
         return Ok(Watch::default());

@@ -1,6 +1,7 @@
 //! One configuration of a sparse scene: `G`'s nonzeros, `M⁻¹` (diagonal) and the factor of
 //! `G M⁻¹Gᵀ` there — what projections, multipliers and the Newton on them solve with.
 
+use crate::scalar::Float;
 use alloc::vec;
 use alloc::vec::Vec;
 
@@ -40,7 +41,7 @@ impl Structure {
 
 /// `G`, `M⁻¹` and the factor of `G M⁻¹Gᵀ` at one point.
 pub(crate) struct Configuration<const N: usize, const Z: usize> {
-    pub jacobian: Vec<f64>,
+    pub jacobian: Vec<Float>,
     pub inverse_mass: Vector<N>,
     factor: GramFactor,
 }
@@ -60,7 +61,7 @@ impl<const N: usize, const Z: usize> Configuration<N, Z> {
         system: &S,
         structure: &Structure,
         evaluations: &mut Evaluations,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
     ) -> Result<(), StepError> {
         self.inverse_mass = inverse_mass(system, evaluations, q, t)?;
         jacobian_into(system, evaluations, (q, v, t), &mut self.jacobian)?;
@@ -119,7 +120,7 @@ impl<const N: usize, const Z: usize> Configuration<N, Z> {
 /// `Gᵀ y` from `G`'s nonzeros.
 pub(crate) fn transpose_times<const N: usize, const Z: usize>(
     structure: &Structure,
-    jacobian: &[f64],
+    jacobian: &[Float],
     y: &Vector<Z>,
 ) -> Vector<N> {
     let mut x = Vector::<N>::zeros();
@@ -134,8 +135,8 @@ pub(crate) fn transpose_times<const N: usize, const Z: usize>(
 pub(crate) fn jacobian_into<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     system: &S,
     evaluations: &mut Evaluations,
-    (q, v, t): (&Vector<N>, &Vector<N>, f64),
-    values: &mut [f64],
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    values: &mut [Float],
 ) -> Result<(), StepError> {
     evaluations.constraint_jacobians += 1;
     system.constraint_jacobian_nonzeros(q, v, t, values);
@@ -154,7 +155,7 @@ pub(crate) fn inverse_mass<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     system: &S,
     evaluations: &mut Evaluations,
     q: &Vector<N>,
-    t: f64,
+    t: Float,
 ) -> Result<Vector<N>, StepError> {
     evaluations.mass_factorizations += 1;
     let factor = system

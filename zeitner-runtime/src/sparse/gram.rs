@@ -7,13 +7,14 @@
 // Triangular solves read clearest with their indices.
 #![allow(clippy::needless_range_loop)]
 
+use crate::scalar::{Float, Lm};
 use alloc::vec;
 use alloc::vec::Vec;
 
 /// A pivot below this share of its row's diagonal marks the row as depending on earlier rows.
 /// Independent rows of a well-posed model stay far above it; rounding in a dependent row stays
 /// far below it (about `Z·ε`).
-const PIVOT_SHARE: f64 = 1e-10;
+const PIVOT_SHARE: Float = crate::scalar::floors::DEPENDENT_ROW_PIVOT;
 
 /// The nonzeros of `G` in the order the model writes them, and the envelope of `A` they make.
 pub(crate) struct GramStructure {
@@ -182,17 +183,17 @@ fn reverse_cuthill_mckee(neighbours: &[Vec<u32>]) -> Vec<u32> {
 /// `A` and its factor `L D Lᵀ` at one configuration, with the rows found redundant and the
 /// null space of `Gᵀ` they span (for minimum-norm solutions).
 pub(crate) struct GramFactor {
-    assembled: Vec<f64>,
-    factor: Vec<f64>,
-    pivots: Vec<f64>,
+    assembled: Vec<Float>,
+    factor: Vec<Float>,
+    pivots: Vec<Float>,
     /// Redundant rows, in factorisation order.
     pub dependent: Vec<u32>,
     /// One null vector of `A` per redundant row (factorisation order), and the Cholesky factor
     /// of their Gram matrix, row by row.
-    null_vectors: Vec<f64>,
-    null_gram: Vec<f64>,
-    coefficients: Vec<f64>,
-    work: Vec<f64>,
+    null_vectors: Vec<Float>,
+    null_gram: Vec<Float>,
+    coefficients: Vec<Float>,
+    work: Vec<Float>,
 }
 
 impl GramFactor {
@@ -215,8 +216,8 @@ impl GramFactor {
     pub fn factorise(
         &mut self,
         structure: &GramStructure,
-        jacobian: &[f64],
-        inverse_mass: &[f64],
+        jacobian: &[Float],
+        inverse_mass: &[Float],
     ) -> bool {
         self.assembled.fill(0.0);
         for &(slot, k1, k2, col) in &structure.products {
@@ -273,7 +274,7 @@ impl GramFactor {
 
     /// `x = A⁺ b` for `b` in the range of `A`: the basic solution (zero on redundant rows), then
     /// the part along the null space removed. `b` and `x` in the original row order.
-    pub fn solve(&mut self, structure: &GramStructure, b: &[f64], x: &mut [f64]) {
+    pub fn solve(&mut self, structure: &GramStructure, b: &[Float], x: &mut [Float]) {
         for (new, &old) in structure.order.iter().enumerate() {
             self.work[new] = b[old as usize];
         }
@@ -344,12 +345,12 @@ impl GramFactor {
                     &self.null_vectors[a * n..(a + 1) * n],
                     &self.null_vectors[b * n..(b + 1) * n],
                 );
-                let mut sum: f64 = va.iter().zip(vb).map(|(x, y)| x * y).sum();
+                let mut sum: Float = va.iter().zip(vb).map(|(x, y)| x * y).sum();
                 for k in 0..b {
                     sum -= self.null_gram[a * r + k] * self.null_gram[b * r + k];
                 }
                 self.null_gram[a * r + b] = if a == b {
-                    libm::sqrt(sum)
+                    Lm::sqrt(sum)
                 } else {
                     sum / self.null_gram[b * r + b]
                 };
@@ -368,7 +369,7 @@ impl GramFactor {
         let c = &mut self.coefficients;
         for a in 0..r {
             let v = &self.null_vectors[a * n..(a + 1) * n];
-            let mut sum: f64 = v.iter().zip(&self.work).map(|(x, y)| x * y).sum();
+            let mut sum: Float = v.iter().zip(&self.work).map(|(x, y)| x * y).sum();
             for k in 0..a {
                 sum -= self.null_gram[a * r + k] * c[k];
             }
@@ -405,7 +406,7 @@ mod tests {
     use super::*;
 
     /// `A` from a dense `G` and `M⁻¹`, for checking.
-    fn dense_gram(g: &[&[f64]], minv: &[f64]) -> Vec<Vec<f64>> {
+    fn dense_gram(g: &[&[Float]], minv: &[Float]) -> Vec<Vec<Float>> {
         let z = g.len();
         let mut a = vec![vec![0.0; z]; z];
         for i in 0..z {
@@ -416,7 +417,7 @@ mod tests {
         a
     }
 
-    fn pattern_and_values(g: &[&[f64]]) -> (Vec<(usize, usize)>, Vec<f64>) {
+    fn pattern_and_values(g: &[&[Float]]) -> (Vec<(usize, usize)>, Vec<Float>) {
         let mut pattern = Vec::new();
         let mut values = Vec::new();
         for (i, row) in g.iter().enumerate() {
@@ -431,7 +432,7 @@ mod tests {
     #[test]
     fn solves_a_chain_gram_exactly() {
         // A chain's G: row i couples coordinates i and i+1.
-        let g: [&[f64]; 4] = [
+        let g: [&[Float]; 4] = [
             &[2.0, 0.0, 0.0, 0.0, 0.0],
             &[-1.0, 1.5, 0.0, 0.0, 0.0],
             &[0.0, -0.5, 3.0, 0.0, 0.0],
@@ -448,7 +449,7 @@ mod tests {
         factor.solve(&structure, &b, &mut x);
         let a = dense_gram(&g, &minv);
         for i in 0..4 {
-            let ax: f64 = (0..4).map(|j| a[i][j] * x[j]).sum();
+            let ax: Float = (0..4).map(|j| a[i][j] * x[j]).sum();
             assert!((ax - b[i]).abs() < 1e-12, "row {i}: {ax} vs {}", b[i]);
         }
     }
@@ -456,7 +457,7 @@ mod tests {
     #[test]
     fn a_repeated_row_is_named_and_gets_the_minimum_norm_solution() {
         // Row 2 repeats row 0: the multipliers of both share the load equally.
-        let g: [&[f64]; 3] = [&[1.0, 0.0, 0.0], &[0.0, 1.0, 1.0], &[1.0, 0.0, 0.0]];
+        let g: [&[Float]; 3] = [&[1.0, 0.0, 0.0], &[0.0, 1.0, 1.0], &[1.0, 0.0, 0.0]];
         let minv = [1.0, 1.0, 1.0];
         let (pattern, values) = pattern_and_values(&g);
         let structure = GramStructure::new(3, &pattern);
@@ -467,11 +468,11 @@ mod tests {
         assert!(redundant[0] == 0 || redundant[0] == 2);
         // b in the range of A: A·(1, 1, 1).
         let a = dense_gram(&g, &minv);
-        let b: Vec<f64> = (0..3).map(|i| a[i].iter().sum()).collect();
+        let b: Vec<Float> = (0..3).map(|i| a[i].iter().sum()).collect();
         let mut x = [0.0; 3];
         factor.solve(&structure, &b, &mut x);
         for i in 0..3 {
-            let ax: f64 = (0..3).map(|j| a[i][j] * x[j]).sum();
+            let ax: Float = (0..3).map(|j| a[i][j] * x[j]).sum();
             assert!((ax - b[i]).abs() < 1e-12);
         }
         // Minimum norm: the two copies carry the same multiplier.

@@ -3,6 +3,7 @@
 //! consistent, test the error — with `G` stored by its nonzeros and `G M⁻¹Gᵀ` factorised in its
 //! envelope once per step.
 
+use crate::scalar::Float;
 use alloc::vec;
 use alloc::vec::Vec;
 
@@ -58,16 +59,16 @@ pub struct SparseSimulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const
     here: Configuration<N, Z>,
     there: Configuration<N, Z>,
     /// `G`'s nonzeros at a stage.
-    stage_jacobian: Vec<f64>,
+    stage_jacobian: Vec<Float>,
     options: Options,
     controller: Controller,
     predictor: Predictor<Z>,
     q: Vector<N>,
     v: Vector<N>,
-    t_carry: f64,
+    t_carry: Float,
     lambda: Vector<Z>,
-    stop_time: Option<f64>,
-    planned_step: f64,
+    stop_time: Option<Float>,
+    planned_step: Float,
     /// Whether the accepted steps still advance the time.
     progress: Progress,
     last: StepReport<N, Z>,
@@ -92,7 +93,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         system: &'s S,
         q0: Vector<N>,
         v0: Vector<N>,
-        t0: f64,
+        t0: Float,
         options: Options,
     ) -> Result<Self, StepError> {
         check_options::<S, N, Z>(&options)?;
@@ -128,7 +129,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
 
     /// The consistent start: positions and velocities projected in the mass metric, the
     /// multipliers of the acceleration-level system.
-    fn start(&mut self, q0: Vector<N>, v0: Vector<N>, t: f64) -> Result<(), StepError> {
+    fn start(&mut self, q0: Vector<N>, v0: Vector<N>, t: Float) -> Result<(), StepError> {
         if !q0.iter().chain(v0.iter()).all(|x| x.is_finite()) {
             return Err(StepError::non_finite_state(t));
         }
@@ -194,7 +195,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         &mut self,
         q: &Vector<N>,
         mut v: Vector<N>,
-        t: f64,
+        t: Float,
         at_start: bool,
     ) -> Result<Vector<N>, StepError> {
         let tolerance = self.options.constraint_tolerance;
@@ -221,7 +222,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         &mut self,
         q: Vector<N>,
         v: Vector<N>,
-        t: f64,
+        t: Float,
         at_start: bool,
     ) -> Result<Point<N, Z>, StepError> {
         let force = self.force(&q, &v, t)?;
@@ -267,7 +268,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     }
 
     /// The current time: the end of the last accepted step.
-    pub fn time(&self) -> f64 {
+    pub fn time(&self) -> Float {
         self.last.end.t
     }
 
@@ -285,7 +286,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
 
     /// Steps stop exactly at `t` (once; [`SparseSimulator::step`] then reports
     /// [`StopReason::StopTimeReached`]).
-    pub fn set_stop_time(&mut self, t: f64) -> Result<(), StepError> {
+    pub fn set_stop_time(&mut self, t: Float) -> Result<(), StepError> {
         if !(t > self.time()) || !t.is_finite() {
             return Err(StepError::InvalidOption(InvalidOption::EndTime));
         }
@@ -296,7 +297,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     /// Steps to `t_end`, calling `observer` with every accepted step's report.
     pub fn advance_to(
         &mut self,
-        t_end: f64,
+        t_end: Float,
         mut observer: impl FnMut(&StepReport<N, Z>),
     ) -> Result<StopReason, StepError> {
         if already_there(self.time(), t_end)? {
@@ -316,7 +317,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     /// leaves the state as it was.
     pub fn step(&mut self) -> Result<StopReason, StepError> {
         self.progress.check(self.time())?;
-        let stop = self.stop_time.unwrap_or(f64::INFINITY);
+        let stop = self.stop_time.unwrap_or(Float::INFINITY);
         // The model's next time event, which steps land on as `Simulator`'s do.
         let now = self.time();
         let time_event = self.system.time_event_after(now).filter(|&t| t > now);
@@ -365,9 +366,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     #[allow(clippy::type_complexity)]
     fn newton(
         &mut self,
-        (h, planned): (f64, f64),
-        t_end: f64,
-    ) -> Result<Result<End<N, Z>, (f64, StepError)>, StepError> {
+        (h, planned): (Float, Float),
+        t_end: Float,
+    ) -> Result<Result<End<N, Z>, (Float, StepError)>, StepError> {
         let mut p = self.guess(h, planned)?;
         let target = match carried_share(h, planned) {
             Some(kept) => {
@@ -377,7 +378,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             None => Vector::zeros(),
         };
         let tolerance = self.options.constraint_tolerance;
-        let mut worst = (f64::INFINITY, 0);
+        let mut worst = (Float::INFINITY, 0);
         for integrations in 1..=self.options.max_newton_iterations {
             self.statistics.newton_iterations += 1;
             let (q, v, error) = match self.integrate(h, &p) {
@@ -422,7 +423,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     }
 
     /// The multipliers Newton starts from (as [`crate::Simulator`] chooses them).
-    fn guess(&mut self, h: f64, planned: f64) -> Result<Vector<Z>, StepError> {
+    fn guess(&mut self, h: Float, planned: Float) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
         if extrapolate && S::POSITION_CONSTRAINTS == Z && self.statistics.steps > 0 {
             let w = self
@@ -447,16 +448,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     #[allow(clippy::type_complexity)]
     fn integrate(
         &mut self,
-        h: f64,
+        h: Float,
         p: &Vector<Z>,
     ) -> Result<(Vector<N>, Vector<N>, Option<(Vector<N>, Vector<N>)>), StepError> {
         match self.options.method {
             InnerMethod::Rk4 { substeps } => {
                 let substeps = substeps.max(1);
-                let hs = h / f64::from(substeps);
+                let hs = h / substeps as Float;
                 let (mut q, mut v) = (self.q, self.v);
                 for k in 0..substeps {
-                    let t = self.time() + f64::from(k) * hs;
+                    let t = self.time() + k as Float * hs;
                     (q, v, _) = self.stages(&RK4, (t, q, v), hs, p)?;
                 }
                 Ok((q, v, None))
@@ -472,8 +473,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     fn stages<const ST: usize>(
         &mut self,
         tableau: &Tableau<ST>,
-        (t, q0, v0): (f64, Vector<N>, Vector<N>),
-        h: f64,
+        (t, q0, v0): (Float, Vector<N>, Vector<N>),
+        h: Float,
         p: &Vector<Z>,
     ) -> Result<(Vector<N>, Vector<N>, Option<(Vector<N>, Vector<N>)>), StepError> {
         let mut kq = [Vector::<N>::zeros(); ST];
@@ -508,7 +509,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         p: &Vector<Z>,
     ) -> Result<Vector<N>, StepError> {
         let force = self.force(q, v, t)?;
@@ -537,9 +538,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     fn conclude(
         &mut self,
         end: End<N, Z>,
-        h: f64,
-        t_end: f64,
-    ) -> Result<Result<(End<N, Z>, Point<N, Z>, f64), (f64, StepError)>, StepError> {
+        h: Float,
+        t_end: Float,
+    ) -> Result<Result<(End<N, Z>, Point<N, Z>, Float), (Float, StepError)>, StepError> {
         self.there.evaluate(
             self.system,
             &self.structure,
@@ -570,7 +571,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     }
 
     /// The error of holding the multipliers while `G` turns ([`crate::control`]'s estimate).
-    fn freezing_error(&self, h: f64, lambda_end: &Vector<Z>) -> (Vector<N>, Vector<N>) {
+    fn freezing_error(&self, h: Float, lambda_end: &Vector<Z>) -> (Vector<N>, Vector<N>) {
         if !matches!(self.options.step, StepControl::Adaptive { .. }) {
             return (Vector::zeros(), Vector::zeros());
         }
@@ -587,8 +588,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         &mut self,
         end: End<N, Z>,
         point: Point<N, Z>,
-        (h, h_planned, t_end): (f64, f64, f64),
-        (error, landing): (f64, bool),
+        (h, h_planned, t_end): (Float, Float, Float),
+        (error, landing): (Float, bool),
     ) -> Result<(), StepError> {
         core::mem::swap(&mut self.here, &mut self.there);
         let mut reported = point;
@@ -634,7 +635,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         Ok(())
     }
 
-    fn force(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<N>, StepError> {
+    fn force(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<N>, StepError> {
         self.evaluations.forces += 1;
         finite(
             self.system.applied_force(q, v, t),
@@ -643,7 +644,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         )
     }
 
-    fn residual(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
+    fn residual(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_residuals += 1;
         finite(
             self.system.constraint_residual(q, v, t),
@@ -652,7 +653,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         )
     }
 
-    fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
+    fn rate(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<Z>, StepError> {
         self.evaluations.constraint_rates += 1;
         finite(
             self.system.constraint_rate(q, v, t),
@@ -661,7 +662,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         )
     }
 
-    fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: f64) -> Result<Vector<Z>, StepError> {
+    fn bias(&mut self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Result<Vector<Z>, StepError> {
         self.evaluations.acceleration_biases += 1;
         finite(
             self.system.constraint_acceleration_bias(q, v, t),
@@ -674,8 +675,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
 /// A start that could not be projected: the redundant rows when there are some (inconsistent
 /// redundant constraints), else the worst row.
 fn inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    t: f64,
-    (worst, residual): (usize, f64),
+    t: Float,
+    (worst, residual): (usize, Float),
     redundant: Option<RowSet>,
 ) -> StepError {
     match redundant.filter(|rows| !rows.is_empty()) {
@@ -729,7 +730,7 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
 }
 
-fn empty_report<const N: usize, const Z: usize>(t: f64) -> StepReport<N, Z> {
+fn empty_report<const N: usize, const Z: usize>(t: Float) -> StepReport<N, Z> {
     let point = Point {
         t,
         q: Vector::zeros(),

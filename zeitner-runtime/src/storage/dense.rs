@@ -5,6 +5,7 @@ use crate::dense::{Matrix, Vector};
 use crate::error::{ModelFunction, StepError};
 use crate::linalg::{all_finite, finite, IterationFactor};
 use crate::mass::MassFactor;
+use crate::scalar::Float;
 
 /// Fixed-size dense matrices on the stack: no heap, `no_std` without `alloc`. Its N×N
 /// matrices cost `8 N²` bytes each and their factorisation `N³`: for up to a few dozen
@@ -67,7 +68,7 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError> {
@@ -114,7 +115,7 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {

@@ -14,6 +14,8 @@
 //! with many coordinates and few constraints (structures on supports). Scenes with as many
 //! constraints as coordinates (chains, trusses) run on [`crate::SparseSimulator`].
 
+use crate::scalar::Float;
+
 pub mod dense;
 #[cfg(feature = "alloc")]
 pub mod sparse;
@@ -68,7 +70,7 @@ pub trait Derivatives<const N: usize, Q> {
     fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        point: (&Vector<N>, &Vector<N>, f64),
+        point: (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError>;
@@ -79,7 +81,7 @@ pub trait Derivatives<const N: usize, Q> {
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        point: (&Vector<N>, &Vector<N>, f64),
+        point: (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError>;
@@ -88,9 +90,9 @@ pub trait Derivatives<const N: usize, Q> {
 /// The coefficients of an iteration matrix `c₀ I - c₁ ∂a/∂q' - c₂ ∂a/∂q`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Combination {
-    pub identity: f64,
-    pub dv: f64,
-    pub dq: f64,
+    pub identity: Float,
+    pub dv: Float,
+    pub dq: Float,
 }
 
 /// An implicit method's iteration matrix and its factor, formed in place.
@@ -116,27 +118,31 @@ pub trait JacobianSource<const N: usize, const Z: usize> {
     /// [`crate::ConstrainedSystem::SPARSITY`].
     const SPARSITY: Option<Sparsity>;
     /// `(∂F/∂q, ∂F/∂q')`.
-    fn force_jacobians(&self, q: &Vector<N>, v: &Vector<N>, t: f64)
-        -> (Matrix<N, N>, Matrix<N, N>);
+    fn force_jacobians(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Matrix<N, N>, Matrix<N, N>);
     /// `(∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q')` for fixed `λ`.
     fn constraint_force_jacobians(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
     ) -> (Matrix<N, N>, Matrix<N, N>);
     /// `∂(M(q) a)/∂q` for fixed `a`.
-    fn mass_jacobian_product(&self, q: &Vector<N>, t: f64, a: &Vector<N>) -> Matrix<N, N>;
+    fn mass_jacobian_product(&self, q: &Vector<N>, t: Float, a: &Vector<N>) -> Matrix<N, N>;
     /// `∂F/∂q`'s and `∂F/∂q'`'s values at their patterns.
-    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: f64, values: &mut [f64]);
+    fn force_jacobian_nonzeros(&self, q: &Vector<N>, v: &Vector<N>, t: Float, values: &mut [Float]);
     /// `∂(Gᵀλ)/∂q`'s and `∂(Gᵀλ)/∂q'`'s values at their patterns.
     fn constraint_force_jacobian_nonzeros(
         &self,
         q: &Vector<N>,
         v: &Vector<N>,
-        t: f64,
+        t: Float,
         lambda: &Vector<Z>,
-        values: &mut [f64],
+        values: &mut [Float],
     );
 }

@@ -2,6 +2,7 @@
 //! iteration matrix factorised by faer's sparse LU (COLAMD ordering and symbolic analysis once,
 //! when the simulator is built; each refresh is a numeric factorisation into kept storage).
 
+use crate::scalar::Float;
 use alloc::boxed::Box;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -113,7 +114,7 @@ impl Pattern {
 #[derive(Clone, Debug)]
 pub struct SparseSquare {
     pattern: Pattern,
-    values: Vec<f64>,
+    values: Vec<Float>,
 }
 
 impl SparseSquare {
@@ -176,10 +177,10 @@ pub struct SparseDerivatives {
     dv: SparseSquare,
     /// `∂F/∂q`'s then `∂F/∂q'`'s nonzeros as generated, and where each goes: a slot of `dq`,
     /// or of `dv` offset by `dq`'s nonzeros.
-    force: Vec<f64>,
+    force: Vec<Float>,
     force_slots: Vec<usize>,
     /// The same for `∂(Gᵀλ)/∂q`, `∂(Gᵀλ)/∂q'`, and where `∂(Gᵀλ)/∂q`'s values are.
-    reaction: Vec<f64>,
+    reaction: Vec<Float>,
     reaction_slots: Vec<usize>,
     reaction_dq: Vec<(usize, usize)>,
 }
@@ -214,7 +215,7 @@ impl SparseDerivatives {
     }
 
     /// The value kept at a combined slot.
-    fn at(&mut self, slot: usize) -> Option<&mut f64> {
+    fn at(&mut self, slot: usize) -> Option<&mut Float> {
         let offset = self.dq.values.len();
         if slot < offset {
             Some(&mut self.dq.values[slot])
@@ -228,7 +229,7 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
     fn evaluate<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         at: AccelerationAt<'_, impl MassFactor<N>, N>,
     ) -> Result<(), StepError> {
@@ -255,7 +256,7 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
                 *value *= inverse_mass[row];
             }
         }
-        let finite = |x: &[f64]| x.iter().all(|x| x.is_finite());
+        let finite = |x: &[Float]| x.iter().all(|x| x.is_finite());
         if !(finite(&self.dq.values) && finite(&self.dv.values)) {
             let function = if !finite(&self.reaction) {
                 ModelFunction::ConstraintForceJacobians
@@ -280,7 +281,7 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
-        (q, v, t): (&Vector<N>, &Vector<N>, f64),
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
         lambda: &Vector<Z>,
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
@@ -305,7 +306,7 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
 pub struct SparseIteration {
     n: usize,
     pattern: Pattern,
-    values: Vec<f64>,
+    values: Vec<Float>,
     /// Where the diagonal and each of `∂a/∂q`'s and `∂a/∂q'`'s values go.
     diagonal_slots: Vec<usize>,
     dq_slots: Vec<usize>,
@@ -313,7 +314,7 @@ pub struct SparseIteration {
     /// The `∂a/∂q` of the last factorisation.
     dq: SparseSquare,
     symbolic: SymbolicLu<usize>,
-    numeric: NumericLu<usize, f64>,
+    numeric: NumericLu<usize, Float>,
     factor_scratch: MemBuffer,
     /// For solves with up to `columns` right-hand sides at once; `solve` takes `&self`.
     solve_scratch: RefCell<MemBuffer>,
@@ -330,10 +331,10 @@ impl SparseIteration {
         let symbolic = factorize_symbolic_lu(pattern.symbolic(n), LuSymbolicParams::default())
             .expect("a square pattern with its diagonal has a symbolic LU");
         let factor_scratch = MemBuffer::new(
-            symbolic.factorize_numeric_lu_scratch::<f64>(Par::Seq, Default::default()),
+            symbolic.factorize_numeric_lu_scratch::<Float>(Par::Seq, Default::default()),
         );
         let solve_scratch = RefCell::new(MemBuffer::new(
-            symbolic.solve_in_place_scratch::<f64>(columns, Par::Seq),
+            symbolic.solve_in_place_scratch::<Float>(columns, Par::Seq),
         ));
         let mut iteration = SparseIteration {
             n,
@@ -355,12 +356,12 @@ impl SparseIteration {
         // off the diagonal, which a long step's `(hγ)² ∂a/∂q` does).
         let varied = |p: &Pattern| SparseSquare {
             values: (0..p.nonzeros())
-                .map(|k| 1.0 + (k % 7) as f64 / 7.0)
+                .map(|k| 1.0 + (k % 7) as Float / 7.0)
                 .collect(),
             pattern: p.clone(),
         };
         let (dq, dv) = (varied(dq), varied(dv));
-        let weak = -1.0 / (4.0 * (n as f64 + 1.0));
+        let weak = -1.0 / (4.0 * (n as Float + 1.0));
         for (identity, off) in [(1.0, weak), (1e-6, -1.0)] {
             let combination = Combination {
                 identity,
@@ -457,7 +458,7 @@ mod tests {
         {
             let entries: Vec<_> = square.pattern.entries().collect();
             for (k, (r, c)) in entries.into_iter().enumerate() {
-                let value = scale * (1.0 + k as f64) / 7.0;
+                let value = scale * (1.0 + k as Float) / 7.0;
                 square.values[k] = value;
                 dense[(r, c)] = value;
             }
@@ -468,7 +469,7 @@ mod tests {
     #[test]
     fn products_and_solves_match_the_dense_ones() {
         let (dq, dv, dense_q, dense_v) = squares();
-        let x = Matrix::<4, 2>::from_fn(|i, j| 1.0 + i as f64 - 0.5 * j as f64);
+        let x = Matrix::<4, 2>::from_fn(|i, j| 1.0 + i as Float - 0.5 * j as Float);
         let product = Square::<4>::times(&dq, &x);
         assert!((product - dense_q * x).amax() < 1e-15);
         let c = Combination {
@@ -493,7 +494,7 @@ mod tests {
         let (dq, dv, ..) = squares();
         let mut iteration = SparseIteration::new(4, (&dq.pattern, &dv.pattern), 1);
         let nan = Combination {
-            identity: f64::NAN,
+            identity: Float::NAN,
             dv: 0.0,
             dq: 0.0,
         };

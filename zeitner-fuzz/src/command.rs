@@ -1,6 +1,6 @@
-//! `zeitner-bench fuzz`: the runtime fuzzer's watchdog and its worker.
+//! `zeitner-fuzz`: the runtime fuzzer's watchdog and its worker.
 //!
-//! The parent runs the cases in a child process — this binary's hidden `fuzz-worker` command —
+//! The parent runs the cases in a child process — this binary with the hidden `--worker` flag —
 //! which prints `begin <seed>` before a case and one verdict line after it. A case that has not
 //! finished within the timeout is recorded as a hang, the worker is killed and restarted after
 //! it; a worker that dies inside a case is recorded as a crash. The worker catches panics and
@@ -14,13 +14,17 @@ use std::process::{Child, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
+use zeitner::Float;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::fuzz::accuracy::{self, AccuracyOutcome};
-use crate::fuzz::cases::{self, Budget, FailureClass};
+use crate::accuracy::{self, AccuracyOutcome};
+use crate::cases::{self, Budget, FailureClass};
 
-#[derive(clap::Args)]
+/// Fuzzes the runtime: random scenes, starts, options and calls against its promises, each case
+/// in a watched worker process; `--accuracy` counts silent wrong answers instead.
+#[derive(clap::Parser)]
+#[command(version, about)]
 pub struct FuzzArgs {
     /// Cases to run.
     #[arg(long, default_value_t = 100_000)]
@@ -45,16 +49,18 @@ pub struct FuzzArgs {
     /// Where to write every failure's seed and detail.
     #[arg(long, default_value = "target/zeitner/fuzz")]
     output_dir: std::path::PathBuf,
+    /// Run as the watchdog's worker: `runs` cases from `seed`, verdicts on stdout.
+    #[arg(long, hide = true)]
+    worker: bool,
 }
 
-#[derive(clap::Args)]
-pub struct WorkerArgs {
-    #[arg(long)]
-    seed: u64,
-    #[arg(long)]
-    runs: u64,
-    #[arg(long)]
-    accuracy: bool,
+/// The fuzzer as the command line asks: the watchdog, its worker, or one traced case.
+pub fn run(args: FuzzArgs) -> Result<(), Box<dyn std::error::Error>> {
+    if args.worker {
+        let seed = args.seed.ok_or("the worker needs --seed")?;
+        return worker(seed, args.runs, args.accuracy);
+    }
+    fuzz(args)
 }
 
 /// One line of the worker's report on a case, made single-line.
@@ -94,13 +100,13 @@ fn panic_message() -> String {
 /// Robustness verdicts: `case <seed> <class|ok> <steps> <errors> <detail>`; accuracy verdicts:
 /// `acc <seed> <ok|wrong|failed|panic> <scene> <rtol> <q> <v> <λ> <detail>`, with the errors
 /// over their tolerances.
-pub fn worker(args: WorkerArgs) -> Result<(), Box<dyn std::error::Error>> {
+fn worker(seed: u64, runs: u64, accuracy: bool) -> Result<(), Box<dyn std::error::Error>> {
     quiet_panics();
     let stdout = std::io::stdout();
     let budget = Budget::default();
-    for seed in args.seed..args.seed.saturating_add(args.runs) {
+    for seed in seed..seed.saturating_add(runs) {
         writeln!(stdout.lock(), "begin {seed}")?;
-        let verdict = if args.accuracy {
+        let verdict = if accuracy {
             accuracy_verdict(seed)
         } else {
             robustness_verdict(seed, &budget)
@@ -192,7 +198,7 @@ impl Worker {
     fn spawn(seed: u64, runs: u64, accuracy: bool) -> std::io::Result<Self> {
         let mut command = Command::new(std::env::current_exe()?);
         command
-            .args(["fuzz-worker", "--seed", &seed.to_string()])
+            .args(["--worker", "--seed", &seed.to_string()])
             .args(["--runs", &runs.to_string()])
             .stdin(Stdio::null())
             .stdout(Stdio::piped())
@@ -305,7 +311,7 @@ struct Tally {
     /// Typed errors by variant.
     errors: BTreeMap<String, u64>,
     /// Accuracy: (scene, error / tolerance of q, q', λ, seed, rtol) of every Ok run.
-    ratios: Vec<(String, [f64; 3], u64, f64)>,
+    ratios: Vec<(String, [Float; 3], u64, Float)>,
     /// Cases over the timeout that finished alone and whose options ask for that work (over
     /// 100 RK4 substeps or Newton integrations per step): not failures, listed.
     costly: Vec<(u64, String)>,
@@ -371,8 +377,8 @@ impl Tally {
             return self.failure("unreadable", u64::MAX, text.to_string());
         };
         let seed = seed.parse().unwrap_or(u64::MAX);
-        let rtol: f64 = rtol.parse().unwrap_or(f64::NAN);
-        let ratios = [eq, ev, el].map(|e| e.parse::<f64>().unwrap_or(f64::NAN));
+        let rtol: Float = rtol.parse().unwrap_or(Float::NAN);
+        let ratios = [eq, ev, el].map(|e| e.parse::<Float>().unwrap_or(Float::NAN));
         let detail = rest.first().unwrap_or(&"").to_string();
         match *verdict {
             "ok" | "wrong" => {
@@ -446,12 +452,12 @@ fn signature(class: &str, detail: &str) -> String {
     format!("{class}: {short}")
 }
 
-fn quantile(values: &mut [f64], q: f64) -> f64 {
+fn quantile(values: &mut [Float], q: Float) -> Float {
     if values.is_empty() {
-        return f64::NAN;
+        return Float::NAN;
     }
-    values.sort_by(f64::total_cmp);
-    values[((values.len() - 1) as f64 * q).round() as usize]
+    values.sort_by(Float::total_cmp);
+    values[((values.len() - 1) as Float * q).round() as usize]
 }
 
 fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> String {
@@ -491,7 +497,7 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
         for scene in scenes {
             let mut cells = Vec::new();
             for k in 0..3 {
-                let mut r: Vec<f64> = tally
+                let mut r: Vec<Float> = tally
                     .ratios
                     .iter()
                     .filter(|r| r.0 == scene)
@@ -507,8 +513,8 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
             let n = tally.ratios.iter().filter(|r| r.0 == scene).count();
             out.push_str(&format!("    {scene} ({n} runs): {}\n", cells.join(" | ")));
         }
-        let mut worst: Vec<&(String, [f64; 3], u64, f64)> = tally.ratios.iter().collect();
-        let largest = |r: &[f64; 3]| r.iter().copied().fold(0.0, f64::max);
+        let mut worst: Vec<&(String, [Float; 3], u64, Float)> = tally.ratios.iter().collect();
+        let largest = |r: &[Float; 3]| r.iter().copied().fold(0.0, Float::max);
         worst.sort_by(|a, b| largest(&b.1).total_cmp(&largest(&a.1)));
         out.push_str("  the largest error / tolerance (q, q', λ):\n");
         for (scene, r, seed, rtol) in worst.into_iter().take(8) {
@@ -586,7 +592,7 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
                 shown.join(" ")
             ));
         }
-        out.push_str("  replay one: cargo run --release -p zeitner-bench -- fuzz");
+        out.push_str("  replay one: cargo run --release -p zeitner-fuzz --");
         if args.accuracy {
             out.push_str(" --accuracy");
         }
@@ -667,7 +673,7 @@ fn trace(args: &FuzzArgs, first: u64) {
     }
 }
 
-pub fn fuzz(args: FuzzArgs) -> Result<(), Box<dyn std::error::Error>> {
+fn fuzz(args: FuzzArgs) -> Result<(), Box<dyn std::error::Error>> {
     let first = args.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)

@@ -18,21 +18,21 @@ use std::fmt;
 use rand::RngExt;
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity, Simulator,
-    StepControl, StepError, Vector, WithStorage,
+    ConstrainedSystem, Float, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity,
+    Simulator, StepControl, StepError, Vector, WithStorage,
 };
 
-use super::cases::{explicit_adaptive_method, multiplier_model, rng, variant, Rng};
-use crate::scenes::andrews::{self, Andrews};
-use crate::scenes::contact::Ball;
-use crate::scenes::pendulum::Pendulum;
-use crate::scenes::reference::{self, State};
-use crate::scenes::slider_crank::{self, SliderCrankOnAxis};
-use crate::scenes::steam_generator::SteamGenerator;
-use crate::scenes::stiff::DoublePendulum;
+use crate::cases::{explicit_adaptive_method, multiplier_model, rng, variant, Rng};
+use zeitner_scenes::andrews::{self, Andrews};
+use zeitner_scenes::contact::Ball;
+use zeitner_scenes::pendulum::Pendulum;
+use zeitner_scenes::reference::{self, State};
+use zeitner_scenes::slider_crank::{self, SliderCrankOnAxis};
+use zeitner_scenes::steam_generator::SteamGenerator;
+use zeitner_scenes::stiff::DoublePendulum;
 
 /// A result is a silent wrong answer when its error exceeds this multiple of `rtol`.
-pub const THRESHOLD: f64 = 1000.0;
+pub const THRESHOLD: Float = 1000.0;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AccuracyScene {
@@ -72,9 +72,9 @@ impl AccuracyScene {
 #[derive(Clone, Debug, Default)]
 pub struct Disturbances {
     /// Times to stop at on the way (sometimes two a few ulps apart), in order.
-    pub stops: Vec<f64>,
+    pub stops: Vec<Float>,
     /// Times given to `set_time_events`.
-    pub time_events: Vec<f64>,
+    pub time_events: Vec<Float>,
     /// After the stop with this index: `reinitialise` with the reported state there.
     pub reinitialise_after: Option<usize>,
     /// After the stop with this index: `set_options` with these (no looser tolerances).
@@ -92,22 +92,22 @@ pub struct AccuracyCase {
     pub scene: AccuracyScene,
     /// Scene parameters (pendulum: m, L, g; steam generator: p0, d; double pendulum: m1, m2,
     /// l1, l2, g, θ1, θ2, ω1, ω2; Andrews: none).
-    pub parameters: Vec<f64>,
-    pub t_end: f64,
+    pub parameters: Vec<Float>,
+    pub t_end: Float,
     pub options: Options,
     pub disturbances: Disturbances,
 }
 
 impl AccuracyCase {
-    pub fn rtol(&self) -> f64 {
+    pub fn rtol(&self) -> Float {
         self.tolerances().0
     }
 
     /// `(rtol, atol)` of the options.
-    pub fn tolerances(&self) -> (f64, f64) {
+    pub fn tolerances(&self) -> (Float, Float) {
         match self.options.step {
             StepControl::Adaptive { rtol, atol, .. } => (rtol, atol),
-            StepControl::Fixed { .. } => (f64::NAN, f64::NAN),
+            StepControl::Fixed { .. } => (Float::NAN, Float::NAN),
         }
     }
 }
@@ -127,8 +127,8 @@ impl fmt::Display for AccuracyCase {
 /// Sensible options: the default `Automatic`, Dormand–Prince or DOP853, adaptive, rtol 1e-6..1e-10, atol rtol·(1e-4..1), a random
 /// multiplier model and sensitivity; the defaults otherwise.
 fn sensible_options(rng: &mut Rng) -> Options {
-    let rtol = 10f64.powf(rng.random_range(-10.0..=-6.0));
-    let atol = rtol * 10f64.powf(rng.random_range(-4.0..=0.0));
+    let rtol = (10 as Float).powf(rng.random_range(-10.0..=-6.0));
+    let atol = rtol * (10 as Float).powf(rng.random_range(-4.0..=0.0));
     let method = explicit_adaptive_method(rng);
     let multipliers = if rng.random_bool(0.5) {
         MultiplierModel::Constant
@@ -172,7 +172,7 @@ pub fn generate(seed: u64) -> AccuracyCase {
             AccuracyScene::SteamGenerator,
             vec![rng.random_range(0.5e6..2e6), rng.random_range(1e6..4e6)],
             // Whole multiples of the reference's 1e-5 s.
-            (rng.random_range(0.02..2.0) * 1e5f64).round() * 1e-5,
+            (rng.random_range(0.02..2.0) * 1e5 as Float).round() * 1e-5,
         ),
         6..=8 => (
             AccuracyScene::DoublePendulum,
@@ -187,7 +187,7 @@ pub fn generate(seed: u64) -> AccuracyCase {
                 rng.random_range(-1.0..1.0),
                 rng.random_range(-1.0..1.0),
             ],
-            (rng.random_range(0.1..1.0) * 1e5f64).round() * 1e-5,
+            (rng.random_range(0.1..1.0) * 1e5 as Float).round() * 1e-5,
         ),
         9 => (AccuracyScene::Andrews, Vec::new(), 0.03),
         10..=11 => (
@@ -214,7 +214,7 @@ pub fn generate(seed: u64) -> AccuracyCase {
     let mut disturbances = disturbances(&mut rng, scene, t_end, &options);
     disturbances.sparse_storage = !disturbances.sparse
         && scene.constant_diagonal_mass()
-        && super::cases::sparse_storage(seed);
+        && crate::cases::sparse_storage(seed);
     let mut options = options;
     if disturbances.sparse {
         // What the sparse simulator runs.
@@ -239,19 +239,19 @@ pub fn generate(seed: u64) -> AccuracyCase {
 fn disturbances(
     rng: &mut Rng,
     scene: AccuracyScene,
-    t_end: f64,
+    t_end: Float,
     options: &Options,
 ) -> Disturbances {
-    let mut stops: Vec<f64> = (0..rng.random_range(0..4))
+    let mut stops: Vec<Float> = (0..rng.random_range(0..4))
         .map(|_| rng.random_range(0.0..1.0) * t_end)
         .collect();
     if rng.random_bool(1.0 / 3.0) {
         let t = rng.random_range(0.0..1.0) * t_end;
         let ulps = rng.random_range(1..64);
-        stops.extend([t, f64::from_bits(t.to_bits() + ulps)]);
+        stops.extend([t, Float::from_bits(t.to_bits() + ulps)]);
     }
     stops.retain(|&t| t > 0.0 && t < t_end);
-    stops.sort_by(f64::total_cmp);
+    stops.sort_by(Float::total_cmp);
     stops.dedup();
     let sparse_scene = matches!(
         scene,
@@ -315,13 +315,13 @@ pub enum AccuracyOutcome {
     /// Errors of q, q', λ relative to their scales, the tolerances the options ask of them, and
     /// the errors the reference can vouch for.
     Ok {
-        errors: [f64; 3],
-        tolerances: [f64; 3],
-        reliability: [f64; 3],
+        errors: [Float; 3],
+        tolerances: [Float; 3],
+        reliability: [Float; 3],
         /// The largest energy error along the run over its scale, over the tolerance (0 where
         /// the scene keeps no energy), and whether the event crossings were as many as the
         /// reference's.
-        energy: f64,
+        energy: Float,
         crossings_agree: bool,
     },
     /// A typed error: the run failed loudly. Its variant, and the error.
@@ -332,7 +332,7 @@ impl AccuracyOutcome {
     /// Error over tolerance of q, q', λ; where the reference vouches for less than the
     /// tolerance, over a hundredth of what it vouches for (so that `THRESHOLD` is then ten times
     /// the reference's reliability).
-    pub fn ratios(&self) -> [f64; 3] {
+    pub fn ratios(&self) -> [Float; 3] {
         match self {
             AccuracyOutcome::Ok {
                 errors,
@@ -340,7 +340,7 @@ impl AccuracyOutcome {
                 reliability,
                 ..
             } => core::array::from_fn(|k| errors[k] / tolerances[k].max(reliability[k] / 100.0)),
-            AccuracyOutcome::Failed(..) => [f64::NAN; 3],
+            AccuracyOutcome::Failed(..) => [Float::NAN; 3],
         }
     }
 
@@ -373,11 +373,11 @@ impl AccuracyOutcome {
 /// `max_i |x_i - ref_i|` over the scale: the largest magnitude of the quantity along the run
 /// (a component passing through zero, as the pendulum's λ at its turning points, has no relative
 /// error of its own).
-fn relative(x: &[f64], reference: &[f64], scale: f64) -> f64 {
+fn relative(x: &[Float], reference: &[Float], scale: Float) -> Float {
     let diff = x
         .iter()
         .zip(reference)
-        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        .fold(0.0 as Float, |m, (a, b)| m.max((a - b).abs()));
     if scale > 0.0 {
         diff / scale
     } else {
@@ -390,9 +390,9 @@ fn relative(x: &[f64], reference: &[f64], scale: f64) -> f64 {
 /// q' and is held to the larger of their two tolerances.
 fn compare<const N: usize, const Z: usize>(
     run: &Run<N, Z>,
-    (reference, crossings): (&State<N, Z>, Option<&[f64]>),
-    (rtol, atol): (f64, f64),
-    reliability: [f64; 3],
+    (reference, crossings): (&State<N, Z>, Option<&[Float]>),
+    (rtol, atol): (Float, Float),
+    reliability: [Float; 3],
 ) -> AccuracyOutcome {
     let (end, scales) = (&run.end, &run.scales);
     let errors = [
@@ -418,21 +418,21 @@ fn compare<const N: usize, const Z: usize>(
 /// scene keeps none).
 struct Run<const N: usize, const Z: usize> {
     end: zeitner::Point<N, Z>,
-    scales: [f64; 3],
-    crossings: Vec<f64>,
-    energy_drift: f64,
+    scales: [Float; 3],
+    crossings: Vec<Float>,
+    energy_drift: Float,
 }
 
 /// A kept quantity of a scene, `E(q, q')`, and its scale.
-type Energy<'e, const N: usize> = Option<(&'e dyn Fn(&Vector<N>, &Vector<N>) -> f64, f64)>;
+type Energy<'e, const N: usize> = Option<(&'e dyn Fn(&Vector<N>, &Vector<N>) -> Float, Float)>;
 
 /// What a run sees along the way: the largest |q|, |q'|, |λ| (at the start and every step
 /// end) and the largest change of the kept energy from the start.
 struct Along<'e, const N: usize, const Z: usize> {
     energy: Energy<'e, N>,
-    start_energy: f64,
-    scales: [f64; 3],
-    drift: f64,
+    start_energy: Float,
+    scales: [Float; 3],
+    drift: Float,
 }
 
 impl<'e, const N: usize, const Z: usize> Along<'e, N, Z> {
@@ -448,7 +448,7 @@ impl<'e, const N: usize, const Z: usize> Along<'e, N, Z> {
         along
     }
 
-    fn kept(&self, p: &zeitner::Point<N, Z>) -> f64 {
+    fn kept(&self, p: &zeitner::Point<N, Z>) -> Float {
         self.energy.map_or(0.0, |(e, _)| e(&p.q, &p.v))
     }
 
@@ -460,7 +460,7 @@ impl<'e, const N: usize, const Z: usize> Along<'e, N, Z> {
         self.drift = self.drift.max((self.kept(p) - self.start_energy).abs());
     }
 
-    fn run(self, end: zeitner::Point<N, Z>, crossings: Vec<f64>) -> Run<N, Z> {
+    fn run(self, end: zeitner::Point<N, Z>, crossings: Vec<Float>) -> Run<N, Z> {
         Run {
             end,
             scales: self.scales,
@@ -476,11 +476,11 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     (q, v): (Vector<N>, Vector<N>),
     case: &AccuracyCase,
-    (stops, energy): (&[f64], Energy<'_, N>),
+    (stops, energy): (&[Float], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
     let disturbances = &case.disturbances;
-    let mut stops: Vec<f64> = disturbances.stops.iter().chain(stops).copied().collect();
-    stops.sort_by(f64::total_cmp);
+    let mut stops: Vec<Float> = disturbances.stops.iter().chain(stops).copied().collect();
+    stops.sort_by(Float::total_cmp);
     stops.dedup();
     if disturbances.sparse {
         return integrate_sparse(scene, (q, v), case.options, (&stops, energy));
@@ -497,7 +497,7 @@ fn integrate_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     (q, v): (Vector<N>, Vector<N>),
     case: &AccuracyCase,
-    (stops, energy): (&[f64], Energy<'_, N>),
+    (stops, energy): (&[Float], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
     let disturbances = &case.disturbances;
     let mut sim = Simulator::new(scene, q, v, 0.0, case.options)?;
@@ -528,7 +528,7 @@ fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     (q, v): (Vector<N>, Vector<N>),
     options: Options,
-    (stops, energy): (&[f64], Energy<'_, N>),
+    (stops, energy): (&[Float], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
     let mut sim = zeitner::SparseSimulator::new(scene, q, v, 0.0, options)?;
     let mut along = Along::from(&sim.last().end, energy);
@@ -540,9 +540,9 @@ fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 
 /// The double pendulum's angle equations (θ from the downward vertical, point masses), RK4 at
 /// 1e-5 s, and the Cartesian state, acceleration and multipliers at `t_end`.
-pub fn double_pendulum_reference(p: &[f64], t_end: f64) -> State<4, 2> {
+pub fn double_pendulum_reference(p: &[Float], t_end: Float) -> State<4, 2> {
     let (m1, m2, l1, l2, g) = (p[0], p[1], p[2], p[3], p[4]);
-    let rhs = |_: f64, y: &[f64; 4]| -> [f64; 4] {
+    let rhs = |_: Float, y: &[Float; 4]| -> [Float; 4] {
         let (t1, t2, w1, w2) = (y[0], y[1], y[2], y[3]);
         let delta = t1 - t2;
         let den = 2.0 * m1 + m2 - m2 * (2.0 * delta).cos();
@@ -577,7 +577,7 @@ pub fn double_pendulum_reference(p: &[f64], t_end: f64) -> State<4, 2> {
     // Gᵀλ = F - M a, with G = [[2x1, 2y1, 0, 0], [-2dx, -2dy, 2dx, 2dy]].
     let force = [0.0, -m1 * g, 0.0, -m2 * g];
     let mass = [m1, m1, m2, m2];
-    let r: [f64; 4] = core::array::from_fn(|i| force[i] - mass[i] * acc[i]);
+    let r: [Float; 4] = core::array::from_fn(|i| force[i] - mass[i] * acc[i]);
     let (dx, dy) = (q[2] - q[0], q[3] - q[1]);
     let lambda2 = (dx * r[2] + dy * r[3]) / (2.0 * l2 * l2);
     let lambda1 =
@@ -590,7 +590,7 @@ pub fn double_pendulum_reference(p: &[f64], t_end: f64) -> State<4, 2> {
 }
 
 /// The Cartesian start of the double pendulum for `p`.
-fn double_pendulum_start(p: &[f64]) -> (Vector<4>, Vector<4>) {
+fn double_pendulum_start(p: &[Float]) -> (Vector<4>, Vector<4>) {
     let (l1, l2) = (p[2], p[3]);
     let (t1, t2, w1, w2) = (p[5], p[6], p[7], p[8]);
     let (s1, c1) = t1.sin_cos();
@@ -608,7 +608,11 @@ fn double_pendulum_start(p: &[f64]) -> (Vector<4>, Vector<4>) {
 /// The ball dropped from rest at height `h0` (restitution `e`, a bounce only when it lands
 /// faster than `rest`), in closed form at `t_end`: the state and the contact multiplier
 /// (`-m g` at rest on the floor, 0 in flight).
-fn ball_reference((m, g, e, h0): (f64, f64, f64, f64), rest: f64, t_end: f64) -> State<1, 1> {
+fn ball_reference(
+    (m, g, e, h0): (Float, Float, Float, Float),
+    rest: Float,
+    t_end: Float,
+) -> State<1, 1> {
     let (mut t, mut y, mut v) = (0.0, h0, 0.0);
     loop {
         let speed = (v * v + 2.0 * g * y).sqrt();
@@ -661,7 +665,7 @@ pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
             };
             let reference = reference::steam_generator(&scene, case.t_end);
             // Stop at the load's kink, as a user would.
-            let stops: Vec<f64> = [scene.rise, case.t_end]
+            let stops: Vec<Float> = [scene.rise, case.t_end]
                 .into_iter()
                 .filter(|&t| t <= case.t_end)
                 .collect();

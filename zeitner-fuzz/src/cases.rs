@@ -41,19 +41,19 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, ControllerSettings, Direction, EventSettings, GapSet, Impact, InnerMethod,
-    InvalidOption, MassKind, MassMatrix, MultiplierModel, Options, Point, Sensitivity, Simulator,
-    StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason, Vector,
+    ConstrainedSystem, ControllerSettings, Direction, EventSettings, Float, GapSet, Impact,
+    InnerMethod, InvalidOption, MassKind, MassMatrix, MultiplierModel, Options, Point, Sensitivity,
+    Simulator, StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason, Vector,
     VelocityProjection, WithStorage,
 };
 
-use super::scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
-use crate::scenes::andrews::Andrews;
-use crate::scenes::chain::{Chain2, Chain4};
-use crate::scenes::contact::{Ball, FallingBar, WallPendulum};
-use crate::scenes::pendulum::Pendulum;
-use crate::scenes::steam_generator::SteamGenerator;
-use crate::scenes::stiff::{
+use crate::fuzz_scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
+use zeitner_scenes::andrews::Andrews;
+use zeitner_scenes::chain::{Chain2, Chain4};
+use zeitner_scenes::contact::{Ball, FallingBar, WallPendulum};
+use zeitner_scenes::pendulum::Pendulum;
+use zeitner_scenes::steam_generator::SteamGenerator;
+use zeitner_scenes::stiff::{
     CoupledMassPendulum, CuspBead, DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum,
 };
 
@@ -100,7 +100,7 @@ impl SceneKind {
     }
 
     /// The restitution of the contact scenes (every gap of a scene has the same).
-    pub fn restitution(self, p: &[f64]) -> Option<f64> {
+    pub fn restitution(self, p: &[Float]) -> Option<Float> {
         match self {
             SceneKind::Ball => Some(p[2]),
             SceneKind::WallPendulum => Some(p[3]),
@@ -110,7 +110,7 @@ impl SceneKind {
     }
 
     /// The size of the gap functions' terms besides `|q|` (the bar's half length).
-    pub fn gap_scale(self, p: &[f64]) -> f64 {
+    pub fn gap_scale(self, p: &[Float]) -> Float {
         match self {
             SceneKind::FallingBar => p[2].abs().max(1.0),
             _ => 1.0,
@@ -157,7 +157,7 @@ impl SceneKind {
     }
 
     /// The parameters the case varies, with their nominal values.
-    pub fn parameters(self) -> &'static [(&'static str, f64)] {
+    pub fn parameters(self) -> &'static [(&'static str, Float)] {
         match self {
             SceneKind::Pendulum => &[("m", 1.0), ("length", 1.0), ("g", 9.81)],
             SceneKind::SteamGenerator => &[
@@ -170,7 +170,7 @@ impl SceneKind {
                 ("d", 2.0e6),
                 ("p0", 1.0e6),
                 ("rise", 0.01),
-                ("off", f64::INFINITY),
+                ("off", Float::INFINITY),
             ],
             SceneKind::Andrews => &[
                 ("m1", 0.04325),
@@ -245,9 +245,9 @@ impl SceneKind {
 
     /// A consistent start for the given parameters (the scene's own, where it has one), with a
     /// random configuration along its free directions where that is easy to write down.
-    fn nominal_state(self, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
-        let angle: f64 = rng.random_range(-3.0..3.0);
-        let rate: f64 = if rng.random_bool(0.5) {
+    fn nominal_state(self, p: &[Float], rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
+        let angle: Float = rng.random_range(-3.0..3.0);
+        let rate: Float = if rng.random_bool(0.5) {
             0.0
         } else {
             rng.random_range(-3.0..3.0)
@@ -272,7 +272,7 @@ impl SceneKind {
                 let q = (0..8)
                     .map(|k| {
                         if k % 2 == 0 {
-                            l * (k / 2 + 1) as f64
+                            l * (k / 2 + 1) as Float
                         } else {
                             0.0
                         }
@@ -336,20 +336,20 @@ impl SceneKind {
 
 /// A gap's distance at a contact scene's start: well above, exactly touching, a hair above,
 /// below (inside the floor or the wall), or `-0.0`.
-fn gap_offset(rng: &mut Rng) -> f64 {
+fn gap_offset(rng: &mut Rng) -> Float {
     match rng.random_range(0..10) {
         0..=2 => rng.random_range(0.0..2.0),
         3 | 4 => 0.0,
         5 => log_uniform(rng, -16.0, -8.0),
         6 | 7 => -log_uniform(rng, -12.0, 0.0),
         8 => -0.0,
-        _ => -f64::MIN_POSITIVE,
+        _ => -Float::MIN_POSITIVE,
     }
 }
 
 /// A gap's rate at a contact scene's start: at rest, approaching, separating, or a hair
 /// either way.
-fn gap_speed(rng: &mut Rng) -> f64 {
+fn gap_speed(rng: &mut Rng) -> Float {
     match rng.random_range(0..8) {
         0 | 1 => 0.0,
         2 | 3 => -rng.random_range(0.0..10.0),
@@ -367,22 +367,22 @@ fn gap_speed(rng: &mut Rng) -> f64 {
 
 /// A start of a contact scene on its bilateral rows, with its gaps above, touching or below
 /// zero and approaching, resting or separating.
-fn contact_state(scene: SceneKind, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
+fn contact_state(scene: SceneKind, p: &[Float], rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
     match scene {
         SceneKind::Ball => (vec![gap_offset(rng)], vec![gap_speed(rng)]),
         SceneKind::WallPendulum => {
             // The bob at angle φ from the downward vertical, x = L sin φ ≥ 0 for φ in [0, π].
             let l = p[1];
             let phi = match rng.random_range(0..8) {
-                0 | 1 => rng.random_range(0.0..std::f64::consts::PI),
+                0 | 1 => rng.random_range(0.0..zeitner::scalar::consts::PI),
                 2 | 3 => 0.0,
-                4 => std::f64::consts::FRAC_PI_2,
-                5 => std::f64::consts::PI,
+                4 => zeitner::scalar::consts::FRAC_PI_2,
+                5 => zeitner::scalar::consts::PI,
                 6 => -rng.random_range(0.0..1.0),
                 _ => -log_uniform(rng, -14.0, -2.0),
             };
             let (sin, cos) = phi.sin_cos();
-            let x = if phi == std::f64::consts::PI {
+            let x = if phi == zeitner::scalar::consts::PI {
                 0.0
             } else {
                 l * sin
@@ -400,8 +400,8 @@ fn contact_state(scene: SceneKind, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f
                     let x = log_uniform(rng, -12.0, -3.0);
                     signed(rng, x)
                 }
-                6 => std::f64::consts::FRAC_PI_2,
-                _ => -std::f64::consts::FRAC_PI_2,
+                6 => zeitner::scalar::consts::FRAC_PI_2,
+                _ => -zeitner::scalar::consts::FRAC_PI_2,
             };
             let y = a * theta.sin().abs() + gap_offset(rng);
             let w = if rng.random_bool(0.5) {
@@ -416,23 +416,23 @@ fn contact_state(scene: SceneKind, p: &[f64], rng: &mut Rng) -> (Vec<f64>, Vec<f
 }
 
 /// A restitution: within `[0, 1]`, its ends, or hostile (NaN, negative, above 1, huge).
-fn restitution(rng: &mut Rng) -> f64 {
+fn restitution(rng: &mut Rng) -> Float {
     match rng.random_range(0..14) {
         0..=3 => rng.random_range(0.0..=1.0),
         4 => 0.0,
         5 => 1.0,
         6 => 1.0 - 1e-12,
-        7 => f64::NAN,
+        7 => Float::NAN,
         8 => -rng.random_range(0.0..1.0),
         9 => 1.0 + rng.random_range(0.0..1.0),
-        10 => [1e300, f64::INFINITY, f64::NEG_INFINITY, 1e-300][rng.random_range(0..4)],
+        10 => [1e300, Float::INFINITY, Float::NEG_INFINITY, 1e-300][rng.random_range(0..4)],
         11 => -0.0,
         _ => hostile(rng),
     }
 }
 
 /// The contact scenes' own hostile parameters: restitution, and the event's height.
-fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut [f64]) {
+fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut [Float]) {
     let e = match scene {
         SceneKind::Ball => 2,
         SceneKind::WallPendulum => 3,
@@ -458,14 +458,14 @@ fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut [f64]) {
 #[derive(Clone, Copy, Debug)]
 pub enum Time {
     /// `time() + dt`.
-    Ahead(f64),
+    Ahead(Float),
     /// `start + s (end - start)` of the last step.
-    InStep(f64),
-    Absolute(f64),
+    InStep(Float),
+    Absolute(Float),
 }
 
 impl Time {
-    fn resolve<const N: usize, const Z: usize>(self, last: &StepReport<N, Z>) -> f64 {
+    fn resolve<const N: usize, const Z: usize>(self, last: &StepReport<N, Z>) -> Float {
         match self {
             Time::Ahead(dt) => last.end.t + dt,
             Time::InStep(s) => last.start.t + s * (last.end.t - last.start.t),
@@ -478,8 +478,8 @@ impl Time {
 #[derive(Clone, Debug)]
 pub enum StateChange {
     Keep,
-    Add(Vec<f64>),
-    Replace(Vec<f64>),
+    Add(Vec<Float>),
+    Replace(Vec<Float>),
 }
 
 impl StateChange {
@@ -505,7 +505,7 @@ pub enum Call {
     AdvanceTo {
         target: Time,
         sample_every: u32,
-        sample_at: f64,
+        sample_at: Float,
         stop_after: Option<u32>,
     },
     Sample(Time),
@@ -516,7 +516,7 @@ pub enum Call {
         t: Time,
     },
     /// `set_initial_multipliers`: an error must leave the simulator as it was.
-    SetInitialMultipliers(Vec<f64>),
+    SetInitialMultipliers(Vec<Float>),
     /// `step()` until it returns [`StopReason::Impact`] (at most `max_steps` calls), then
     /// `sample` within the (zero-length) report if given.
     StepUntilImpact {
@@ -530,12 +530,12 @@ pub enum Call {
 pub struct Case {
     pub seed: u64,
     pub scene: SceneKind,
-    pub parameters: Vec<f64>,
-    pub q0: Vec<f64>,
-    pub v0: Vec<f64>,
-    pub t0: f64,
+    pub parameters: Vec<Float>,
+    pub q0: Vec<Float>,
+    pub v0: Vec<Float>,
+    pub t0: Float,
     pub options: Options,
-    pub initial_multipliers: Option<Vec<f64>>,
+    pub initial_multipliers: Option<Vec<Float>>,
     pub calls: Vec<Call>,
     /// Run on the sparse storage (scenes with a constant diagonal mass; the others keep their
     /// own).
@@ -605,11 +605,11 @@ impl Default for Budget {
 // ---------------------------------------------------------------------------------------------
 // Generation.
 
-fn log_uniform(rng: &mut Rng, low: f64, high: f64) -> f64 {
-    10f64.powf(rng.random_range(low..high))
+fn log_uniform(rng: &mut Rng, low: Float, high: Float) -> Float {
+    (10 as Float).powf(rng.random_range(low..high))
 }
 
-fn signed(rng: &mut Rng, x: f64) -> f64 {
+fn signed(rng: &mut Rng, x: Float) -> Float {
     if rng.random_bool(0.5) {
         x
     } else {
@@ -617,20 +617,20 @@ fn signed(rng: &mut Rng, x: f64) -> f64 {
     }
 }
 
-const SPECIAL: [f64; 18] = [
-    f64::NAN,
-    f64::INFINITY,
-    f64::NEG_INFINITY,
+const SPECIAL: [Float; 18] = [
+    Float::NAN,
+    Float::INFINITY,
+    Float::NEG_INFINITY,
     0.0,
     -0.0,
     1e300,
     -1e300,
     1e-300,
     -1e-300,
-    f64::MIN_POSITIVE,
+    Float::MIN_POSITIVE,
     5e-324,
-    f64::MAX,
-    f64::MIN,
+    Float::MAX,
+    Float::MIN,
     1e15,
     -1e15,
     -1.0,
@@ -639,7 +639,7 @@ const SPECIAL: [f64; 18] = [
 ];
 
 /// A hostile number: a special value, or a huge or tiny one of either sign.
-fn hostile(rng: &mut Rng) -> f64 {
+fn hostile(rng: &mut Rng) -> Float {
     if rng.random_bool(0.6) {
         SPECIAL[rng.random_range(0..SPECIAL.len())]
     } else {
@@ -649,8 +649,8 @@ fn hostile(rng: &mut Rng) -> f64 {
 }
 
 /// Parameters: near nominal, one or two scaled far, or some hostile.
-fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<f64> {
-    let nominal: Vec<f64> = scene.parameters().iter().map(|&(_, x)| x).collect();
+fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<Float> {
+    let nominal: Vec<Float> = scene.parameters().iter().map(|&(_, x)| x).collect();
     match rng.random_range(0..10) {
         0..=3 => nominal,
         4..=5 => nominal
@@ -681,14 +681,14 @@ fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<f64> {
     }
 }
 
-fn noise(rng: &mut Rng, n: usize, scale: f64) -> Vec<f64> {
+fn noise(rng: &mut Rng, n: usize, scale: Float) -> Vec<Float> {
     (0..n)
         .map(|_| scale * rng.random_range(-1.0..1.0))
         .collect()
 }
 
 /// A start: consistent, perturbed off the constraints, random, or with hostile components.
-fn start(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
+fn start(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> (Vec<Float>, Vec<Float>, Float) {
     let (n, _) = scene.dimensions();
     let (mut q, mut v) = scene.nominal_state(p, rng);
     match rng.random_range(0..20) {
@@ -842,7 +842,7 @@ fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
         _ => initial_step * log_uniform(rng, -12.0, 0.0),
     };
     let max_step = match rng.random_range(0..6) {
-        0 | 1 => f64::INFINITY,
+        0 | 1 => Float::INFINITY,
         2 => initial_step,
         3 => 1e300,
         _ => initial_step * log_uniform(rng, 0.0, 6.0),
@@ -1033,7 +1033,7 @@ fn state_change(rng: &mut Rng, n: usize) -> StateChange {
     }
 }
 
-fn multipliers(rng: &mut Rng, z: usize) -> Vec<f64> {
+fn multipliers(rng: &mut Rng, z: usize) -> Vec<Float> {
     let scale = log_uniform(rng, -3.0, 6.0);
     let mut lambda = noise(rng, z, scale);
     if rng.random_bool(0.2) {
@@ -1045,7 +1045,7 @@ fn multipliers(rng: &mut Rng, z: usize) -> Vec<f64> {
 
 /// A call of the contact scenes: step until an impact (and sample on its zero-length report),
 /// re-initialise into contact, advance across impacts sampling every step.
-fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
+fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> Call {
     match rng.random_range(0..4) {
         0 | 1 => Call::StepUntilImpact {
             max_steps: rng.random_range(1..=400),
@@ -1082,7 +1082,7 @@ fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
     }
 }
 
-fn call(rng: &mut Rng, scene: SceneKind, p: &[f64]) -> Call {
+fn call(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> Call {
     let (n, z) = scene.dimensions();
     if scene.has_contacts() && rng.random_bool(0.35) {
         return contact_call(rng, scene, p);
@@ -1258,14 +1258,14 @@ pub struct Outcome {
     pub every_stage: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
     /// largest step.
-    recent_steps: std::collections::VecDeque<f64>,
-    last_end: f64,
-    largest_step: f64,
+    recent_steps: std::collections::VecDeque<Float>,
+    last_end: Float,
+    largest_step: Float,
 }
 
 impl Outcome {
     /// Counts an accepted step from `start` to `end`.
-    fn record_step(&mut self, (start, end): (f64, f64)) {
+    fn record_step(&mut self, (start, end): (Float, Float)) {
         self.steps += 1;
         self.largest_step = self.largest_step.max(end - start);
         if self.recent_steps.len() == STALL_WINDOW {
@@ -1279,10 +1279,10 @@ impl Outcome {
     /// (the larger of the time and the largest step), and by less than half `max_step` each.
     /// Summed step by step, so that a `reinitialise` back in time within the window counts as
     /// no move.
-    fn stalled(&self, max_step: f64) -> bool {
+    fn stalled(&self, max_step: Float) -> bool {
         let scale = self.last_end.abs().max(self.largest_step);
-        let advance: f64 = self.recent_steps.iter().sum();
-        let mean = advance / STALL_WINDOW as f64;
+        let advance: Float = self.recent_steps.iter().sum();
+        let mean = advance / STALL_WINDOW as Float;
         self.recent_steps.len() == STALL_WINDOW && advance < 1e-7 * scale && mean < 0.5 * max_step
     }
 }
@@ -1338,7 +1338,7 @@ fn report_finite<const N: usize, const Z: usize>(r: &StepReport<N, Z>) -> Option
     if let Some(field) = point_finite(&r.end) {
         return Some(format!("end.{field}"));
     }
-    let vectors: [(&str, &[f64]); 4] = [
+    let vectors: [(&str, &[Float]); 4] = [
         ("step_multipliers", r.step_multipliers.as_slice()),
         ("constraint_force", r.constraint_force.as_slice()),
         ("residual", r.residual.as_slice()),
@@ -1350,7 +1350,7 @@ fn report_finite<const N: usize, const Z: usize>(r: &StepReport<N, Z>) -> Option
         .map(|(name, _)| name.to_string())
 }
 
-fn same_bits(a: &[f64], b: &[f64]) -> bool {
+fn same_bits(a: &[Float], b: &[Float]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
@@ -1386,7 +1386,7 @@ fn same_start_report<const N: usize, const Z: usize>(
 /// An `Ok` report: finite, and on the constraints (`|g_j| ≤ ε` for every row).
 fn check_report<const N: usize, const Z: usize>(
     report: &StepReport<N, Z>,
-    tolerance: f64,
+    tolerance: Float,
     position_rows: usize,
     call: &str,
 ) -> Check {
@@ -1400,7 +1400,7 @@ fn check_report<const N: usize, const Z: usize>(
         // A row linear in the velocities with unit coefficients (the fuzzer's velocity rows)
         // cannot be evaluated closer than a few ulps of the largest velocity: the runtime
         // promises `|g_j| ≤ max(ε, that floor)` for velocity rows.
-        let floor = 8.0 * f64::EPSILON * report.end.v.amax();
+        let floor = 8.0 * Float::EPSILON * report.end.v.amax();
         if j >= position_rows && g.abs() <= floor {
             continue;
         }
@@ -1428,10 +1428,10 @@ fn check_report<const N: usize, const Z: usize>(
 }
 
 /// The largest and smallest step the options allow, besides a landing one.
-fn step_bounds(step: StepControl) -> (f64, f64) {
+fn step_bounds(step: StepControl) -> (Float, Float) {
     // The runtime takes no step longer than 1e300 (beyond it `t + h` overflows): a fixed step
-    // of `f64::MAX` runs at that.
-    const LARGEST_STEP: f64 = 1e300;
+    // of `Float::MAX` runs at that.
+    const LARGEST_STEP: Float = 1e300;
     match step {
         StepControl::Fixed { step } => (step.min(LARGEST_STEP), step.min(LARGEST_STEP)),
         StepControl::Adaptive {
@@ -1447,7 +1447,7 @@ fn check_step<const N: usize, const Z: usize>(
     previous: &StepReport<N, Z>,
     report: &StepReport<N, Z>,
     (options, position_rows): (&Options, usize),
-    (stop, crossing): (Option<f64>, bool),
+    (stop, crossing): (Option<Float>, bool),
     call: &str,
 ) -> Check {
     check_report(report, options.constraint_tolerance, position_rows, call)?;
@@ -1478,7 +1478,7 @@ fn check_step<const N: usize, const Z: usize>(
         }
     }
     // The end time is `t + h` rounded (with the carry of earlier roundings): a few ulps.
-    let slack = 4.0 * f64::EPSILON * (t0.abs().max(t1.abs()) + h);
+    let slack = 4.0 * Float::EPSILON * (t0.abs().max(t1.abs()) + h);
     let (min, max) = step_bounds(options.step);
     let landing_max = max * (1.0 + options.controller.landing_fraction);
     if landing {
@@ -1507,14 +1507,14 @@ fn check_step<const N: usize, const Z: usize>(
 /// know what it should be).
 struct Snapshot<const N: usize, const Z: usize> {
     last: StepReport<N, Z>,
-    time: f64,
+    time: Float,
     options: Options,
     start_report: Option<StartReport<N, Z>>,
     closed_gaps: Option<GapSet>,
     last_impact: Option<Option<Impact<N, Z>>>,
 }
 
-/// Bit-for-bit equality of two impacts (through `Debug`, which prints every `f64` exactly).
+/// Bit-for-bit equality of two impacts (through `Debug`, which prints every `Float` exactly).
 fn same_impact<const N: usize, const Z: usize>(
     a: Option<&Impact<N, Z>>,
     b: Option<&Impact<N, Z>>,
@@ -1593,7 +1593,7 @@ fn check_time<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 
 fn check_sample<const N: usize, const Z: usize>(
     result: &Result<Point<N, Z>, StepError>,
-    t: f64,
+    t: Float,
     last: &StepReport<N, Z>,
     call: &str,
 ) -> Check {
@@ -1644,9 +1644,9 @@ fn check_sample<const N: usize, const Z: usize>(
 #[derive(Clone, Copy, Debug)]
 struct ContactFacts {
     /// The scene's restitution (every gap's); `None` without gaps.
-    restitution: Option<f64>,
+    restitution: Option<Float>,
     /// The size of the gap functions' terms besides `|q|`, for their rounding.
-    gap_scale: f64,
+    gap_scale: Float,
 }
 
 impl ContactFacts {
@@ -1659,9 +1659,9 @@ impl ContactFacts {
 
 fn kinetic_energy<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
-    (q, t): (&Vector<N>, f64),
+    (q, t): (&Vector<N>, Float),
     v: &Vector<N>,
-) -> f64 {
+) -> Float {
     0.5 * v.dot(&scene.mass_matrix(q, t).mul(v))
 }
 
@@ -1670,7 +1670,7 @@ fn kinetic_energy<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 fn state_within<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     before: &Snapshot<N, Z>,
-    tolerance: f64,
+    tolerance: Float,
 ) -> bool {
     let (gaps, _) = gaps_at(scene, &before.last.end);
     let closed = before.closed_gaps.unwrap_or(GapSet::EMPTY);
@@ -1682,7 +1682,7 @@ fn state_within<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 fn gaps_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     p: &Point<N, Z>,
-) -> (Vec<f64>, Vec<f64>) {
+) -> (Vec<Float>, Vec<Float>) {
     let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
     let g = scene.constraint_residual(&p.q, &p.v, p.t);
     let w = scene.constraint_rate(&p.q, &p.v, p.t);
@@ -1696,7 +1696,11 @@ fn gaps_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// A lower bound of a gap's largest speed over a step: the speeds at its ends and its mean
 /// speed (a gap whose speed changes within the step — a body spinning fast — moves faster
 /// inside it than at either end).
-fn largest_gap_speed((g0, g1): (f64, f64), (w0, w1): (f64, f64), (t0, t1): (f64, f64)) -> f64 {
+fn largest_gap_speed(
+    (g0, g1): (Float, Float),
+    (w0, w1): (Float, Float),
+    (t0, t1): (Float, Float),
+) -> Float {
     let mean = (g1 - g0).abs() / (t1 - t0);
     // A step of zero length, or a subnormal one that overflows the mean, says nothing of the
     // speed and must not waive the check.
@@ -1711,15 +1715,15 @@ fn largest_gap_speed((g0, g1): (f64, f64), (w0, w1): (f64, f64), (t0, t1): (f64,
 /// How far below zero a gap may be at a step end: the event time tolerance times the gap's
 /// speed (twice: the step aims half a tolerance before a crossing located within a quarter),
 /// plus the constraint tolerance, plus rounding.
-fn penetration_allowed(options: &Options, speed: f64, p: (f64, f64), scale: f64) -> f64 {
+fn penetration_allowed(options: &Options, speed: Float, p: (Float, Float), scale: Float) -> Float {
     let (q_size, t) = p;
     let rounding =
-        64.0 * f64::EPSILON * (1.0 + q_size) * scale + 4.0 * f64::EPSILON * t.abs() * speed;
+        64.0 * Float::EPSILON * (1.0 + q_size) * scale + 4.0 * Float::EPSILON * t.abs() * speed;
     // The runtime's time tolerance is never below what the time's resolution allows.
     let time_tolerance = options
         .events
         .time_tolerance
-        .max(8.0 * f64::EPSILON * t.abs());
+        .max(8.0 * Float::EPSILON * t.abs());
     2.0 * time_tolerance * speed + options.constraint_tolerance.max(0.0) + rounding
 }
 
@@ -1807,7 +1811,7 @@ fn ends_at_a_crossing<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize
     (options, open): (&Options, GapSet),
     facts: &ContactFacts,
 ) -> bool {
-    let near = |f0: f64, f1: f64, allowed: f64| f1.abs() <= 0.05 * (f1 - f0).abs() + allowed;
+    let near = |f0: Float, f1: Float, allowed: Float| f1.abs() <= 0.05 * (f1 - f0).abs() + allowed;
     if S::UNILATERAL_CONSTRAINTS > 0 {
         let (g0, w0) = gaps_at(scene, &report.start);
         let (g1, w1) = gaps_at(scene, &report.end);
@@ -2079,7 +2083,7 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             StepControl::Fixed { .. } => 0.0,
         });
     if outcome.failure.is_none() && outcome.steps >= budget.steps && outcome.stalled(max_step) {
-        let advance: f64 = outcome.recent_steps.iter().sum();
+        let advance: Float = outcome.recent_steps.iter().sum();
         let detail = format!(
             "the step budget ran out while the last {STALL_WINDOW} steps moved the time by {advance:e} \
              to {:e}, without an error",
@@ -2099,7 +2103,7 @@ struct Run<'s, 't, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     scene: &'s S,
     facts: ContactFacts,
     sim: Option<Simulator<'s, S, N, Z>>,
-    stop: Option<f64>,
+    stop: Option<Float>,
     budget: Budget,
     outcome: Outcome,
     trace: &'t mut dyn FnMut(String),
@@ -2175,7 +2179,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
         Ok(())
     }
 
-    fn set_initial_multipliers(&mut self, call: &str, lambda: &[f64]) -> Check {
+    fn set_initial_multipliers(&mut self, call: &str, lambda: &[Float]) -> Check {
         let mut sim = self.sim.take().expect("a simulator");
         let before = Snapshot::of(&sim);
         let given = Vector::<Z>::from_column_slice(lambda);
@@ -2190,7 +2194,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
         let call = format!("{call} (set_initial_multipliers)");
         // The same state, accepted under the tolerance of its time (the options may have
         // changed since): finite, and the same residual.
-        check_report(sim.last(), f64::INFINITY, 0, &call)?;
+        check_report(sim.last(), Float::INFINITY, 0, &call)?;
         check_time(&sim, &call)?;
         let residual = (sim.last().residual, before.last.residual);
         if !same_bits(residual.0.as_slice(), residual.1.as_slice()) {
@@ -2685,7 +2689,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
 #[derive(Clone, Copy)]
 struct Observer {
     sample_every: u32,
-    sample_at: f64,
+    sample_at: Float,
     stop_after: Option<u32>,
 }
 

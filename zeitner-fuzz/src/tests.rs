@@ -1,13 +1,13 @@
-//! A short seeded run of the runtime fuzzer (`cargo run --release -p zeitner-bench -- fuzz` runs
+//! A short seeded run of the runtime fuzzer (`cargo run --release -p zeitner-fuzz --` runs
 //! the long one): a few hundred cases, each in its own thread with a time limit, none of which
 //! may panic, hang or break a promise of the runtime. A failing seed replays with
-//! `cargo run --release -p zeitner-bench -- fuzz --seed S --runs 1 --trace`.
+//! `cargo run --release -p zeitner-fuzz -- --seed S --runs 1 --trace`.
 
 use std::panic::{self, AssertUnwindSafe};
 use std::sync::mpsc;
 use std::time::Duration;
 
-use super::cases::{self, Budget, FailureClass};
+use crate::cases::{self, Budget, FailureClass};
 
 /// The seeds of this run: fixed, so that a failure here is a failure every time.
 const SEEDS: std::ops::Range<u64> = 0..300;
@@ -85,12 +85,14 @@ fn a_seeded_fuzz_run_breaks_no_promise() {
 
 // ---------------------------------------------------------------------------------------------
 // Minimal repros of the runtime bugs the fuzzer found, ignored until they are fixed (run them
-// with `cargo test -p zeitner-bench fuzz -- --ignored`). Each states the promise it checks; once its bug
+// with `cargo test -p zeitner-fuzz -- --ignored`). Each states the promise it checks; once its bug
 // is fixed, remove its `#[ignore]` and it guards the fix.
 
-use super::scenes::{FollowerPendulum, Sleigh};
-use crate::scenes::pendulum::Pendulum;
-use zeitner::{ControllerSettings, Options, Simulator, StepControl, Vector, VelocityProjection};
+use crate::fuzz_scenes::{FollowerPendulum, Sleigh};
+use zeitner::{
+    ControllerSettings, Float, Options, Simulator, StepControl, Vector, VelocityProjection,
+};
+use zeitner_scenes::pendulum::Pendulum;
 
 const PENDULUM: Pendulum = Pendulum {
     m: 1.0,
@@ -118,7 +120,7 @@ fn within_time(body: impl FnOnce() + Send + 'static) -> Result<(), String> {
 
 /// Regression (fixed: `is_valid` requires `min_factor <= max_factor_after_rejection`). It took
 /// `min_factor` above `max_factor_after_rejection`, and
-/// the first step rejected by the error test panics in `f64::clamp` (`Controller::rejected`).
+/// the first step rejected by the error test panics in `Float::clamp` (`Controller::rejected`).
 /// Fuzz seeds 186, 1659, 2196, ….
 #[test]
 fn min_factor_above_the_factor_after_a_rejection_must_not_panic() {
@@ -127,7 +129,7 @@ fn min_factor_above_the_factor_after_a_rejection_must_not_panic() {
             step: StepControl::Adaptive {
                 initial_step: 0.5,
                 min_step: 1e-12,
-                max_step: f64::INFINITY,
+                max_step: Float::INFINITY,
                 rtol: 1e-8,
                 atol: 1e-10,
             },
@@ -147,18 +149,18 @@ fn min_factor_above_the_factor_after_a_rejection_must_not_panic() {
 }
 
 /// Regression (fixed: steps are capped at 1e300, `plan` cannot overflow, `retry` refuses a
-/// non-finite step). A step of `f64::MAX` without a stop time: `plan` took `h (1 + landing_fraction)` = ∞ as
+/// non-finite step). A step of `Float::MAX` without a stop time: `plan` took `h (1 + landing_fraction)` = ∞ as
 /// landing on the infinite limit, the try of size ∞ fails, and `retry` accepts ∞ · 0.25 = ∞
 /// again: `step()` never returns. (Fuzz seed 9312 gets there through `set_options` from
-/// `Fixed { step: f64::MAX }` to adaptive steps, which keeps the planned step.)
+/// `Fixed { step: Float::MAX }` to adaptive steps, which keeps the planned step.)
 #[test]
 fn a_step_of_f64_max_must_end() {
     let result = within_time(|| {
         let options = Options {
             step: StepControl::Adaptive {
-                initial_step: f64::MAX,
+                initial_step: Float::MAX,
                 min_step: 1e-12,
-                max_step: f64::INFINITY,
+                max_step: Float::INFINITY,
                 rtol: 1e-8,
                 atol: 1e-10,
             },
@@ -172,7 +174,7 @@ fn a_step_of_f64_max_must_end() {
 }
 
 /// Regression (fixed: `consistent_point` checks the interpolated state). A free coordinate near
-/// the largest `f64` (`z`, tied to `x` only through `z' = x'`): the
+/// the largest `Float` (`z`, tied to `x` only through `z' = x'`): the
 /// dense output's velocity overflows to NaN and `Simulator::sample` returns it as `Ok` —
 /// `consistent_point` checks the accelerations and multipliers it computes, not the
 /// interpolated state. Fuzz seed 4310.
@@ -209,11 +211,11 @@ fn a_start_must_meet_its_velocity_level_rows() {
     // On the plane exactly (g = 0), sliding sideways at various speeds.
     for k in 0..10 {
         let q = Vector::<4>::new(0.0, 0.0, 0.0, 0.1);
-        let v = Vector::<4>::new(1.0 + 0.37 * f64::from(k), 0.3 * f64::from(k), 0.2, 0.0);
+        let v = Vector::<4>::new(1.0 + 0.37 * Float::from(k), 0.3 * Float::from(k), 0.2, 0.0);
         if let Ok(sim) = Simulator::new(&scene, q, v, 0.0, options) {
             // Below rounding, the promise is the rounding floor of `G q'`.
             let w = sim.last().residual[1];
-            let floor = 64.0 * f64::EPSILON * sim.last().end.v.amax();
+            let floor = 64.0 * Float::EPSILON * sim.last().end.v.amax();
             assert!(
                 w.abs() <= floor,
                 "|w| = {w:e} > {floor:e} after the start from {v}"
@@ -243,7 +245,7 @@ fn every_step_report_must_meet_its_velocity_level_rows() {
         }
         // ε is below the rounding of `G q'` here: the promise is that floor.
         let w = sim.last().residual[1];
-        let floor = 1e-16f64.max(8.0 * f64::EPSILON * sim.last().end.v.amax());
+        let floor = (1e-16 as Float).max(8.0 * Float::EPSILON * sim.last().end.v.amax());
         assert!(
             w.abs() <= floor,
             "|w| = {w:e} > {floor:e} at t = {}",
@@ -263,7 +265,7 @@ fn a_step_ending_on_the_stop_time_must_land_there() {
     let t0 = 1e12;
     let mut broken = Vec::new();
     for k in 2..=20 {
-        let h = 1e-4 * f64::from(k);
+        let h = 1e-4 * Float::from(k);
         let options = Options {
             step: StepControl::Fixed { step: h },
             ..Options::default()
@@ -303,12 +305,12 @@ fn a_step_ending_on_the_stop_time_must_land_there() {
 fn a_rejected_landing_step_must_shrink() {
     let result = within_time(|| {
         for k in 0..40 {
-            let rtol = 10f64.powf(-4.0 - 0.2 * f64::from(k));
+            let rtol = (10 as Float).powf(-4.0 - 0.2 * Float::from(k));
             let options = Options {
                 step: StepControl::Adaptive {
                     initial_step: 0.1,
                     min_step: 1e-12,
-                    max_step: f64::INFINITY,
+                    max_step: Float::INFINITY,
                     rtol,
                     atol: rtol,
                 },
@@ -364,15 +366,15 @@ fn contact_scene_seeds_of_the_long_run() {
 // ---------------------------------------------------------------------------------------------
 // Contact scenes: gaps that must not be passed through. Both fail today (not fixed yet).
 
-use crate::scenes::contact::{Ball, FallingBar};
+use zeitner_scenes::contact::{Ball, FallingBar};
 
 /// The lowest gap value at any step end of `advance_to(t_end)` with the default options.
 fn lowest_gap<const N: usize, const Z: usize, S: zeitner::ConstrainedSystem<N, Z>>(
     scene: &S,
     (q0, v0): (Vector<N>, Vector<N>),
-    t_end: f64,
-    gap: impl Fn(&Vector<N>) -> f64,
-) -> f64 {
+    t_end: Float,
+    gap: impl Fn(&Vector<N>) -> Float,
+) -> Float {
     let mut sim = Simulator::new(scene, q0, v0, 0.0, Options::default()).unwrap();
     let mut lowest = gap(&sim.last().end.q);
     while sim.time() < t_end {
@@ -436,7 +438,7 @@ fn a_bar_started_into_one_contact_must_not_sink_its_other_end() {
 /// its end time, or stop with a typed error, within a bounded number of steps.
 #[test]
 fn a_two_link_arm_must_not_stall() {
-    use super::scenes::TwoLinkArm;
+    use crate::fuzz_scenes::TwoLinkArm;
     use zeitner::{MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector};
     for sensitivity in [Sensitivity::Paper, Sensitivity::Exact] {
         let q0 = Vector::<2>::new(-0.000414, 0.0470);

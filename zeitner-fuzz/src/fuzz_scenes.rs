@@ -3,7 +3,7 @@
 //! and a pendulum with a follower). Kept here rather than in `zeitner-scenes`, whose every file has an
 //! expansion snapshot.
 
-use zeitner::constrained_system;
+use zeitner::{constrained_system, Float};
 
 /// A planar two-link arm in its joint angles `(θ1, θ2)` (θ1 from the x axis, θ2 relative to the
 /// first link), point masses `m1` at the elbow and `m2` at the tip, links `l1`, `l2`, gravity
@@ -12,18 +12,18 @@ use zeitner::constrained_system;
 /// `M11 = (m1 + m2) l1² + m2 l2² + 2 m2 l1 l2 cos θ2`, `M12 = m2 l2² + m2 l1 l2 cos θ2`,
 /// `M22 = m2 l2²`.
 pub struct TwoLinkArm {
-    pub m1: f64,
-    pub m2: f64,
-    pub l1: f64,
-    pub l2: f64,
-    pub d: f64,
-    pub c: f64,
-    pub g: f64,
+    pub m1: Float,
+    pub m2: Float,
+    pub l1: Float,
+    pub l2: Float,
+    pub d: Float,
+    pub c: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl TwoLinkArm {
-    fn mass(&self, [_theta1, theta2]: [f64; 2]) -> [[f64; 2]; 2] {
+    fn mass(&self, [_theta1, theta2]: [Float; 2]) -> [[Float; 2]; 2] {
         let coupling = self.m2 * self.l1 * self.l2 * theta2.cos();
         let m22 = self.m2 * self.l2 * self.l2;
         let m11 = (self.m1 + self.m2) * self.l1 * self.l1 + m22 + 2.0 * coupling;
@@ -31,7 +31,7 @@ impl TwoLinkArm {
         [[m11, m12], [m12, m22]]
     }
 
-    fn force(&self, [theta1, theta2]: [f64; 2], [w1, w2]: [f64; 2]) -> [f64; 2] {
+    fn force(&self, [theta1, theta2]: [Float; 2], [w1, w2]: [Float; 2]) -> [Float; 2] {
         let h = self.m2 * self.l1 * self.l2 * theta2.sin();
         let tip = self.m2 * self.g * self.l2 * (theta1 + theta2).cos();
         [
@@ -43,7 +43,7 @@ impl TwoLinkArm {
         ]
     }
 
-    fn constraints(&self, [theta1, theta2]: [f64; 2]) -> [f64; 1] {
+    fn constraints(&self, [theta1, theta2]: [Float; 2]) -> [Float; 1] {
         [self.l1 * theta1.cos() + self.l2 * (theta1 + theta2).cos() - self.d]
     }
 }
@@ -62,7 +62,7 @@ impl TwoLinkArm {
     }
 
     /// Joint angles with the tip on the line for a given `θ1` (elbow up), if it reaches.
-    pub fn on_line(&self, theta1: f64) -> [f64; 2] {
+    pub fn on_line(&self, theta1: Float) -> [Float; 2] {
         let reach = (self.d - self.l1 * theta1.cos()) / self.l2;
         [theta1, reach.clamp(-1.0, 1.0).acos() - theta1]
     }
@@ -75,22 +75,22 @@ impl TwoLinkArm {
 /// velocity-level (nonholonomic) row. Gravity along -z, pushed along the blade by `push`, turned
 /// by `torque`, damped by `c`.
 pub struct Sleigh {
-    pub m: f64,
-    pub j: f64,
-    pub slope: f64,
-    pub push: f64,
-    pub torque: f64,
-    pub c: f64,
-    pub g: f64,
+    pub m: Float,
+    pub j: Float,
+    pub slope: Float,
+    pub push: Float,
+    pub torque: Float,
+    pub c: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl Sleigh {
-    fn mass(&self) -> [f64; 4] {
+    fn mass(&self) -> [Float; 4] {
         [self.m, self.m, self.m, self.j]
     }
 
-    fn force(&self, [_x, _y, _z, theta]: [f64; 4], [vx, vy, vz, w]: [f64; 4]) -> [f64; 4] {
+    fn force(&self, [_x, _y, _z, theta]: [Float; 4], [vx, vy, vz, w]: [Float; 4]) -> [Float; 4] {
         let ca = self.slope.cos();
         let sa = self.slope.sin();
         [
@@ -101,15 +101,15 @@ impl Sleigh {
         ]
     }
 
-    fn constraints(&self, [x, _y, z, _theta]: [f64; 4]) -> [f64; 1] {
+    fn constraints(&self, [x, _y, z, _theta]: [Float; 4]) -> [Float; 1] {
         [z * self.slope.cos() - x * self.slope.sin()]
     }
 
     fn velocity_constraints(
         &self,
-        [_x, _y, _z, theta]: [f64; 4],
-        [vx, vy, vz, _w]: [f64; 4],
-    ) -> [f64; 1] {
+        [_x, _y, _z, theta]: [Float; 4],
+        [vx, vy, vz, _w]: [Float; 4],
+    ) -> [Float; 1] {
         let ca = self.slope.cos();
         let sa = self.slope.sin();
         [-theta.sin() * ca * vx + theta.cos() * vy - theta.sin() * sa * vz]
@@ -131,7 +131,7 @@ impl Sleigh {
 
     /// A consistent start at the origin: heading `theta`, speed `speed` along the blade, turning
     /// at `w`.
-    pub fn start(&self, theta: f64, speed: f64, w: f64) -> ([f64; 4], [f64; 4]) {
+    pub fn start(&self, theta: Float, speed: Float, w: Float) -> ([Float; 4], [Float; 4]) {
         let (ca, sa) = (self.slope.cos(), self.slope.sin());
         let (s, c) = theta.sin_cos();
         (
@@ -144,27 +144,27 @@ impl Sleigh {
 /// A pendulum of length `l` in (x, y) with a third coordinate `z` that follows `x` through a
 /// velocity-level row `z' - x' = 0`: one position-level and one velocity-level row.
 pub struct FollowerPendulum {
-    pub m: f64,
-    pub mz: f64,
-    pub l: f64,
-    pub g: f64,
+    pub m: Float,
+    pub mz: Float,
+    pub l: Float,
+    pub g: Float,
 }
 
 #[constrained_system]
 impl FollowerPendulum {
-    fn mass(&self) -> [f64; 3] {
+    fn mass(&self) -> [Float; 3] {
         [self.m, self.m, self.mz]
     }
 
-    fn force(&self) -> [f64; 3] {
+    fn force(&self) -> [Float; 3] {
         [0.0, -self.m * self.g, 0.0]
     }
 
-    fn constraints(&self, [x, y, _z]: [f64; 3]) -> [f64; 1] {
+    fn constraints(&self, [x, y, _z]: [Float; 3]) -> [Float; 1] {
         [x * x + y * y - self.l * self.l]
     }
 
-    fn velocity_constraints(&self, _q: [f64; 3], [vx, _vy, vz]: [f64; 3]) -> [f64; 1] {
+    fn velocity_constraints(&self, _q: [Float; 3], [vx, _vy, vz]: [Float; 3]) -> [Float; 1] {
         [vz - vx]
     }
 }

@@ -1,0 +1,17 @@
+//! The runtime fuzzer: seeded cases (a scene with hostile parameters, a hostile start, random
+//! options over every field and a random sequence of calls) checked against the runtime's
+//! promises after every call, each case in a watched worker process; and the accuracy fuzzer,
+//! which counts silent wrong answers against independent references.
+//!
+//! `cargo run --release -p zeitner-fuzz -- --runs 100000 --seed 1` (`--accuracy` for the
+//! accuracy fuzz); with `--features f32` the whole build, runtime and scenes, is in `f32`.
+
+// `!(x <= limit)` is how the checks count a NaN as a failure: on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod accuracy;
+pub mod cases;
+pub mod command;
+pub mod fuzz_scenes;
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,104 @@
+//! The scalar every number of a build is: `f64`, or `f32` with the feature `f32` (for
+//! microcontrollers whose FPU computes only single precision, such as the Cortex-M4F). One
+//! scalar per build, as parry and rapier choose theirs: the step is the same code for both and
+//! the `f64` build is the code it was; models write [`Float`] where they should build in either.
+//!
+//! The feature is not additive: it turns every crate of the build that uses Zeitner to `f32`.
+//! Enable it in the firmware's own crate, never in a library.
+//!
+//! The numeric policy that depends on the scalar lives here, each value derived from its
+//! epsilon or given per scalar with the reason: tolerances below what the scalar resolves would
+//! have Newton iterate on rounding noise.
+
+/// The scalar of this build.
+#[cfg(not(feature = "f32"))]
+pub type Float = f64;
+/// The scalar of this build.
+#[cfg(feature = "f32")]
+pub type Float = f32;
+
+/// `libm`'s functions at this build's precision, for the runtime itself (models call the
+/// methods of [`crate::math::Real`]).
+pub(crate) type Lm = libm::Libm<Float>;
+
+/// The default constraint tolerance: `1e-10` in `f64` (about 4.5e5 ε, the paper's "ε" with
+/// room above rounding); in `f32`, `1e-5` (84 ε), the tightest that positions of order one
+/// meter hold after the cancellation in a loop closure such as `x² + y² - l²`.
+#[cfg(not(feature = "f32"))]
+pub const DEFAULT_CONSTRAINT_TOLERANCE: Float = 1e-10;
+/// The default constraint tolerance (see the `f64` build's).
+#[cfg(feature = "f32")]
+pub const DEFAULT_CONSTRAINT_TOLERANCE: Float = 1e-5;
+
+/// The default relative tolerance of adaptive steps (`atol` is a hundredth of it): `1e-8` in
+/// `f64`; `1e-5` (84 ε) in `f32`.
+#[cfg(not(feature = "f32"))]
+pub const DEFAULT_RTOL: Float = 1e-8;
+/// The default relative tolerance of adaptive steps (see the `f64` build's).
+#[cfg(feature = "f32")]
+pub const DEFAULT_RTOL: Float = 1e-5;
+
+/// The default tolerance of event times, s: `1e-12` in `f64`; `1e-6` in `f32`, where a time of
+/// a few seconds resolves to about 2.4e-7 s.
+#[cfg(not(feature = "f32"))]
+pub const DEFAULT_TIME_TOLERANCE: Float = 1e-12;
+/// The default tolerance of event times, s (see the `f64` build's).
+#[cfg(feature = "f32")]
+pub const DEFAULT_TIME_TOLERANCE: Float = 1e-6;
+
+/// The smallest `rtol` an adaptive step may ask for: ε. A relative accuracy below the scalar's
+/// resolution cannot be met, and is refused rather than shrinking steps until they stall.
+pub const SMALLEST_RTOL: Float = Float::EPSILON;
+
+/// Relative slacks and floors, each the same multiple of ε in both scalars unless it says
+/// otherwise (`f64`'s values are the ones measured and tuned; `f32`'s follow by the ratio of
+/// the epsilons, 5.4e8).
+#[cfg(not(feature = "f32"))]
+// Each floor is read only by the features that need it.
+#[allow(dead_code)]
+pub(crate) mod floors {
+    use super::Float;
+    /// An impact may add this share of the energy (rounding) and still count as elastic.
+    pub const ENERGY_SLACK: Float = 1e-12;
+    /// A closed contact opens where its multiplier pulls by more than this share of the forces.
+    pub const CONTACT_RELEASE: Float = 1e-12;
+    /// Cholesky pivots below this share of the largest diagonal entry count as lost rank.
+    pub const RELATIVE_PIVOT: Float = 1e-12;
+    /// An `L D Lᵀ` pivot below this share of the largest one is singular.
+    pub const SINGULAR_PIVOT: Float = 1e-13;
+    /// Sparse Gram pivots below this share of their row's diagonal mark a dependent row.
+    pub const DEPENDENT_ROW_PIVOT: Float = 1e-10;
+    /// An implicit stage's Newton has converged below this share of the stage's scale...
+    pub const STAGE_CONVERGED: Float = 1e-12;
+    /// ... or has stalled at rounding below this share, with the last correction not halving.
+    pub const STAGE_STALLED: Float = 1e-9;
+}
+#[cfg(feature = "f32")]
+#[allow(dead_code)]
+pub(crate) mod floors {
+    use super::Float;
+    pub const ENERGY_SLACK: Float = 5e-4;
+    pub const CONTACT_RELEASE: Float = 5e-4;
+    pub const RELATIVE_PIVOT: Float = 5e-4;
+    pub const SINGULAR_PIVOT: Float = 5e-5;
+    /// Not by the ratio (that would be 0.05, rows far from dependent): 1e-4, 840 ε.
+    pub const DEPENDENT_ROW_PIVOT: Float = 1e-4;
+    /// Not by the ratio (that would stop Newton at 5e-4): 8 ε and 840 ε.
+    pub const STAGE_CONVERGED: Float = 1e-6;
+    pub const STAGE_STALLED: Float = 1e-4;
+}
+
+/// No step is longer (about `Float::MAX / 1e8`): beyond it the time itself would overflow.
+#[cfg(not(feature = "f32"))]
+pub(crate) const LARGEST_STEP: Float = 1e300;
+#[cfg(feature = "f32")]
+pub(crate) const LARGEST_STEP: Float = 1e30;
+
+#[cfg(all(feature = "implicit", feature = "f32"))]
+pub(crate) use core::f32::consts;
+/// The mathematical constants at this build's precision (`core::f64::consts` or
+/// `core::f32::consts`), for models that build in either.
+#[cfg(not(feature = "f32"))]
+pub use core::f64::consts;
+#[cfg(feature = "f32")]
+pub use core::f32::consts;
