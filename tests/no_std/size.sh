@@ -2,6 +2,7 @@
 # Code size of the no_std stepping loop over the steam generator for thumbv7em-none-eabihf
 # (opt-level "s", LTO): the .text of the crate's own object, which holds the scene's generated
 # code, the runtime and the libm functions it calls (compiler_builtins, linked as needed, apart).
+# `size`'s "text" column: `.text` with the read-only data (the tableaux, libm's tables).
 set -euo pipefail
 cd "$(dirname "$0")"
 target=thumbv7em-none-eabihf
@@ -13,6 +14,7 @@ while IFS='|' read -r features label sensitivity; do
   echo "| $label | $sensitivity | $bytes |"
 done <<'PLAN'
 |none (minimal)|paper
+f32|f32 (minimal)|paper
 exact|exact-sensitivity|exact
 full|exact-sensitivity, implicit, high-order, dense-output (the defaults but std)|exact
 PLAN

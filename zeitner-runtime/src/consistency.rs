@@ -379,7 +379,10 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
         None => model.jacobian(&end.q, &end.v, end.t)?,
     };
     let constraint_force = -g.tr_mul(&end.lambda);
-    if !constraint_force.iter().all(|x| x.is_finite()) {
+    // The step's multipliers too: a row that no force reads (a closed contact's, masked) can
+    // carry an overflowed prediction through Newton untouched (f32 fuzz, a ball under
+    // g = f32::MAX: λ = -3.4e38 extrapolated to -∞).
+    if !all_finite(constraint_force.iter().chain(step_multipliers.iter())) {
         return Err(StepError::non_finite_state(end.t));
     }
     Ok(StepReport {

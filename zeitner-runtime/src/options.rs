@@ -86,6 +86,7 @@ impl InnerMethod {
     /// [`InnerMethod::Automatic`] resolved. With the multipliers at every stage, the pair for
     /// the tolerance: Verner's 9(8) for adaptive steps at `rtol` ≤ [`VERNER_FROM_RTOL`], DOP853
     /// for looser ones and for fixed steps.
+    #[cfg_attr(not(feature = "high-order"), allow(unused_variables))]
     pub fn first(self, multipliers: MultiplierModel, step: StepControl) -> InnerMethod {
         match (self, multipliers) {
             #[cfg(feature = "high-order")]

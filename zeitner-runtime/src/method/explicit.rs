@@ -11,6 +11,7 @@ use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// A row of `L` coefficients from its nonzero entries (a tableau's, whose published rows list
 /// only those).
+#[cfg_attr(not(feature = "high-order"), allow(dead_code))]
 pub(crate) const fn row<const L: usize>(entries: &[(usize, Float)]) -> [Float; L] {
     let mut row = [0.0; L];
     let mut k = 0;
@@ -51,6 +52,7 @@ pub(crate) enum ProbeStates {
     /// Two stages (DOPRI5's last two).
     Stages(usize, usize),
     /// The last stage and the step end, whose slope is the next step's first stage (DOP853's).
+    #[cfg_attr(not(feature = "high-order"), allow(dead_code))]
     LastStageAndEnd,
 }
 
@@ -182,6 +184,7 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
 
     /// Each stage's multipliers of the last (sub)step taken with the multipliers at every
     /// stage, NaN where none was solved.
+    #[cfg_attr(not(feature = "high-order"), allow(dead_code))]
     pub fn stage_multipliers(&self) -> &[Vector<Z>; ST] {
         &self.stage_multipliers
     }
@@ -256,6 +259,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
 
 impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST, N, Z, D> {
     /// Whether the steps estimate the stiffness.
+    #[cfg_attr(not(feature = "high-order"), allow(dead_code))]
     pub fn estimates_stiffness(&self) -> bool {
         self.estimates_stiffness
     }
@@ -483,6 +487,7 @@ fn stiffness_estimate<const N: usize, const ST: usize>(
 
 /// The stiffness estimate of a tableau that compares its last stage with the step end
 /// `(q, q', q'')` (DOP853's), from the step's start, size and stage slopes.
+#[cfg(feature = "high-order")]
 pub(crate) fn stiffness_against_end<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     (start, h): ((&Vector<N>, &Vector<N>), Float),

@@ -12,6 +12,7 @@
 pub(crate) mod alpha;
 // Without `dense-output` the continuous extensions are built but never sampled.
 #[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
+#[cfg(feature = "high-order")]
 pub(crate) mod continuous;
 #[cfg(feature = "implicit")]
 pub(crate) mod dirk;
@@ -337,6 +338,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         }
     }
 
+    #[cfg_attr(not(feature = "high-order"), allow(unused_variables))]
     fn dense_state<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
@@ -352,6 +354,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         }
     }
 
+    #[cfg_attr(not(feature = "high-order"), allow(unused_variables))]
     fn stiffness_against_end(&self, end: &Point<N, Z>) -> Option<Float> {
         match self {
             #[cfg(feature = "high-order")]
@@ -399,6 +402,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
 
 /// [`Method::integrate_every_stage`] of a pair with a continuous extension: the step's slopes
 /// kept for it, or forgotten where the integration failed part way.
+#[cfg(feature = "high-order")]
 fn kept_for_dense_output<S, E, const N: usize, const Z: usize, const ST: usize, D>(
     method: &mut explicit::Explicit<ST, N, Z, D>,
     continuous: &mut continuous::Continuous<N, ST, E>,

@@ -12,7 +12,9 @@ use crate::options::{InnerMethod, MultiplierModel, Options, VelocityProjection};
 use crate::output::{Sensitivities, StopReason};
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
-use crate::sensitivity::{self as tangent, HeldStep, Recorded, Tangent};
+#[cfg(feature = "high-order")]
+use crate::sensitivity::Recorded;
+use crate::sensitivity::{self as tangent, HeldStep, Tangent};
 use crate::storage::Storage;
 use crate::system::{Matrix, ParametrisedSystem, Vector};
 
@@ -456,6 +458,7 @@ impl Stages {
         S: ParametrisedSystem<N, Z, P>,
         D: Storage<N>,
     {
+        #[cfg(feature = "high-order")]
         let at = (start.2, start.0, start.1);
         match (self, method) {
             #[cfg(feature = "high-order")]
