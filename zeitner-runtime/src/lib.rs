@@ -32,6 +32,8 @@
 #![no_std]
 // `!(x > y)` is how this crate rejects NaN along with the too-small values: on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
+// Published coefficients are written once, at `f64`'s precision, for both scalars.
+#![cfg_attr(feature = "f32", allow(clippy::excessive_precision))]
 
 #[cfg(feature = "alloc")]
 extern crate alloc;

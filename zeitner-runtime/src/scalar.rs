@@ -96,9 +96,9 @@ pub(crate) const LARGEST_STEP: Float = 1e300;
 #[cfg(feature = "f32")]
 pub(crate) const LARGEST_STEP: Float = 1e30;
 
+#[cfg(feature = "f32")]
+pub use core::f32::consts;
 /// The mathematical constants at this build's precision (`core::f64::consts` or
 /// `core::f32::consts`), for models that build in either.
 #[cfg(not(feature = "f32"))]
 pub use core::f64::consts;
-#[cfg(feature = "f32")]
-pub use core::f32::consts;

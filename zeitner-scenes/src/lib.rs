@@ -2,6 +2,9 @@
 //! independent references. Shared by the examples, the tests and the benchmark, which compile
 //! them once as this crate.
 
+// Constants are written once, at `f64`'s precision, for both scalars (`zeitner::Float`).
+#![allow(clippy::excessive_precision)]
+
 pub mod andrews;
 pub mod chain;
 pub mod contact;
