@@ -772,7 +772,7 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
 
 /// The default `Automatic` (which starts with DOP853, or Dormand–Prince with held multipliers),
 /// Dormand–Prince, or one of the high-order pairs (DOP853, Verner's 9(8)), drawn from a stream
-/// of its own like [`implicit_method`], so that every case's model and settings stay as they
+/// of its own like `implicit_method`, so that every case's model and settings stay as they
 /// were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
     let mut side = side_stream(rng, 0xa070_3a71_c0de_5eed);
