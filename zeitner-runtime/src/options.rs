@@ -19,7 +19,7 @@ pub enum InnerMethod {
     /// & Wanner, *Solving ODEs I*, II.10). For smooth scenes at tight tolerances. It takes
     /// the multipliers solved at every stage only ([`MultiplierModel::EveryStage`], its
     /// automatic model): multipliers held polynomial over a step would cap its order at 5,
-    /// which its estimate does not see.
+    /// which its estimate does not see. Needs the `high-order` feature.
     #[cfg(feature = "high-order")]
     Dop853,
     /// Verner's "most efficient" 9(8) pair (Verner 2010): order 9, 16 stages, its step
@@ -27,7 +27,7 @@ pub enum InnerMethod {
     /// for dense output. For smooth scenes at tight tolerances, where its order saves more
     /// steps than its four extra stages cost (`Automatic` starts with it at `rtol` ≤
     /// [`VERNER_FROM_RTOL`]). Like `Dop853`, it takes the multipliers solved at every stage
-    /// only.
+    /// only. Needs the `high-order` feature.
     #[cfg(feature = "high-order")]
     Verner98,
     /// The method chosen for the scene as it runs: [`InnerMethod::Dop853`] (at `rtol` ≤
@@ -37,7 +37,8 @@ pub enum InnerMethod {
     /// stability rather than accuracy (15 accepted steps on the boundary of its stability
     /// region), then [`InnerMethod::Esdirk54`] for the rest of the run, from the state reached.
     /// [`crate::Simulator::method`] says which one steps now, [`crate::Statistics`] when it
-    /// changed. The default. Without the `implicit` feature, the explicit method throughout.
+    /// changed. The default. Without the `implicit` feature, the explicit method throughout;
+    /// without `high-order`, [`InnerMethod::DormandPrince54`] from the start.
     Automatic,
     /// Alexander's 2-stage SDIRK: order 2, L-stable, stiffly accurate, for stiff forces; fixed
     /// steps. Uses `∂F/∂q`, `∂F/∂q'`. Needs the `implicit` feature.

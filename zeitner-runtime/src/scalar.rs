@@ -1,7 +1,7 @@
 //! The scalar every number of a build is: `f64`, or `f32` with the feature `f32` (for
 //! microcontrollers whose FPU computes only single precision, such as the Cortex-M4F). One
-//! scalar per build, as parry and rapier choose theirs: the step is the same code for both and
-//! the `f64` build is the code it was; models write [`Float`] where they should build in either.
+//! scalar per build, as parry and rapier choose theirs: the step is the same code for both;
+//! models write [`Float`] where they should build in either.
 //!
 //! The feature is not additive: it turns every crate of the build that uses Zeitner to `f32`.
 //! Enable it in the firmware's own crate, never in a library.

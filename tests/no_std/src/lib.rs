@@ -2,12 +2,8 @@
 //! `thumbv7em-none-eabihf` in CI; `size.sh` measures its code size.
 #![no_std]
 
-// The scenes crate needs `std`; its file is included as it is, the gap variant unused here.
-#[path = "../../../zeitner-scenes/src/steam_generator.rs"]
-#[allow(dead_code)]
-mod scene;
 
-use scene::SteamGenerator;
+use zeitner_scenes::steam_generator::SteamGenerator;
 #[cfg(feature = "exact")]
 use zeitner::Sensitivity;
 use zeitner::{Float, Options, Simulator, Vector};

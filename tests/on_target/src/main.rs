@@ -7,14 +7,10 @@
 #![no_std]
 #![no_main]
 
-// The scenes crate needs `std`; its file is included as it is, the gap variant unused here.
-#[path = "../../../zeitner-scenes/src/steam_generator.rs"]
-#[allow(dead_code)]
-mod scene;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
-use scene::SteamGenerator;
+use zeitner_scenes::steam_generator::SteamGenerator;
 use zeitner::math::Real as _;
 use zeitner::{ConstrainedSystem, Float, MultiplierModel, Options, Simulator, Vector};
 
