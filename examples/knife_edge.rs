@@ -4,15 +4,13 @@
 //!
 //! `cargo run --release --example knife_edge -- --help`
 
-#[path = "support/figure.rs"]
-mod figure;
 use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
-use figure::{write_panels, Panel};
+use zeitner_figures::{write_panels, Panel};
 use scenes::knife_edge::KnifeEdge;
 use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
 

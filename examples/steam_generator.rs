@@ -4,8 +4,6 @@
 //!
 //! `cargo run --release --example steam_generator -- --help`
 
-#[path = "support/figure.rs"]
-mod figure;
 use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
@@ -13,7 +11,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
-use figure::{write_panels, Panel};
+use zeitner_figures::{write_panels, Panel};
 use scenes::steam_generator::SteamGenerator;
 use zeitner::{
     ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,

@@ -5,15 +5,13 @@
 //!
 //! `cargo run --release --example steam_generator_gap -- --help`
 
-#[path = "support/figure.rs"]
-mod figure;
 use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
-use figure::{write_panels, Panel};
+use zeitner_figures::{write_panels, Panel};
 use scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
 use zeitner::{Options, Simulator, StepControl, StopReason, Vector};
 

@@ -10,15 +10,13 @@
 //!
 //! `cargo run --release --example structure -- --help`
 
-#[path = "support/figure.rs"]
-mod figure;
 use zeitner_scenes as scenes;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
-use figure::{write_panels, Panel};
+use zeitner_figures::{write_panels, Panel};
 use scenes::modal::Modes;
 use scenes::structure::Structure100;
 use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, StopReason, Vector};

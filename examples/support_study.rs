@@ -9,14 +9,12 @@
 //! `support_study plan --grid 41`, `support_study run --shard 3/8`, `support_study gather`
 //! (`tools/dask_study.py` drives them on Dask).
 
-#[path = "support/figure.rs"]
-mod figure;
 use zeitner_scenes as scenes;
 
 use std::path::PathBuf;
 
 use clap::Parser;
-use figure::{write_heatmaps, Heatmap};
+use zeitner_figures::{write_heatmaps, Heatmap};
 use scenes::steam_generator::SteamGeneratorWithGap;
 use zeitner::{
     Matrix, Options, SensitivitySimulator, Simulator, StepControl, StepError, StopReason, Vector,

@@ -8,8 +8,6 @@
 mod de_peer;
 #[cfg(feature = "diffsol")]
 mod diffsol_peer;
-#[path = "../../examples/support/figure.rs"]
-mod figure;
 mod first_result;
 mod hand_written;
 mod impacts;
@@ -24,6 +22,7 @@ mod sensitivity_cost;
 mod stability;
 mod work_precision;
 
+use zeitner_figures as figure;
 use zeitner_scenes as scenes;
 
 use std::path::PathBuf;

@@ -1,6 +1,6 @@
-//! Line charts as SVG and PNG, stacked in panels, with a font shipped in a crate so that a
-//! fresh machine needs no system fonts.
-#![allow(dead_code)] // shared by the example and the benchmark; each uses a part
+//! The figures of the examples and the benchmark: line charts and heat maps as SVG and PNG,
+//! stacked in panels, with a font shipped in a crate so that a fresh machine needs no system
+//! fonts.
 
 use std::path::Path;
 
