@@ -53,6 +53,36 @@
 //! let closed_form = (end.t / (2.0 * 9.81)) * end.v;
 //! assert!((s.q.column(1) - closed_form).amax() < 1e-6);
 //! ```
+//!
+//! In `f32` or `f64`: [`Float`] is the build's scalar, `f64` unless the feature `f32` is on (for
+//! microcontrollers whose FPU computes single precision only; see [`scalar`]). A model written
+//! with it builds in either; in `f32`, solve the multipliers at every stage, which the step
+//! end's positions alone fix only to about `ε·2m/τ²`.
+//!
+//! ```
+//! use zeitner::{constrained_system, Float, MultiplierModel, Options, Simulator, Vector};
+//!
+//! pub struct Pendulum { pub m: Float, pub l: Float, pub g: Float }
+//!
+//! #[constrained_system]
+//! impl Pendulum {
+//!     fn mass(&self) -> [Float; 2] { [self.m, self.m] }
+//!     fn force(&self) -> [Float; 2] { [0.0, -self.m * self.g] }
+//!     fn constraints(&self, [x, y]: [Float; 2]) -> [Float; 1] { [x * x + y * y - self.l * self.l] }
+//! }
+//!
+//! let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+//! // A firmware's fixed-step loop: RK4 at 1 ms, the multipliers at every stage.
+//! let options = Options { multipliers: MultiplierModel::EveryStage, ..Options::paper(1e-3) };
+//! let q0 = Vector::<2>::new(1.0, 0.0);
+//! let mut sim = Simulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).unwrap();
+//! for _ in 0..1000 {
+//!     sim.step().unwrap();
+//! }
+//! // On the rod within the default constraint tolerance of either scalar (1e-10; 1e-5 in f32).
+//! let tolerance = Options::default().constraint_tolerance;
+//! assert!(sim.last().residual.amax() <= tolerance);
+//! ```
 #![no_std]
 
 pub use zeitner_macros::constrained_system;
