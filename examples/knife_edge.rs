@@ -10,9 +10,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
-use zeitner_figures::{write_panels, Panel};
 use scenes::knife_edge::KnifeEdge;
 use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
+use zeitner_figures::{write_panels, Panel};
 
 #[derive(Parser)]
 struct Args {

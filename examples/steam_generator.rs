@@ -11,12 +11,12 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
-use zeitner_figures::{write_panels, Panel};
 use scenes::steam_generator::SteamGenerator;
 use zeitner::{
     ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
     StopReason, Vector, VelocityProjection,
 };
+use zeitner_figures::{write_panels, Panel};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum Method {

@@ -11,9 +11,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
-use zeitner_figures::{write_panels, Panel};
 use scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
 use zeitner::{Options, Simulator, StepControl, StopReason, Vector};
+use zeitner_figures::{write_panels, Panel};
 
 /// Simulates the steam generator with a clearance at its strut and writes its figures.
 #[derive(Parser, Debug)]

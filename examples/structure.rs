@@ -16,10 +16,10 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
-use zeitner_figures::{write_panels, Panel};
 use scenes::modal::Modes;
 use scenes::structure::Structure100;
 use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, StopReason, Vector};
+use zeitner_figures::{write_panels, Panel};
 
 /// Simulates the column on its supports and writes its figures.
 #[derive(Parser, Debug)]

@@ -14,11 +14,11 @@ use zeitner_scenes as scenes;
 use std::path::PathBuf;
 
 use clap::Parser;
-use zeitner_figures::{write_heatmaps, Heatmap};
 use scenes::steam_generator::SteamGeneratorWithGap;
 use zeitner::{
     Matrix, Options, SensitivitySimulator, Simulator, StepControl, StepError, StopReason, Vector,
 };
+use zeitner_figures::{write_heatmaps, Heatmap};
 use zeitner_study::{Case, Parameter, Results, Study, StudyCommand};
 
 /// Studies the steam generator's strut: peak support forces over its lever arm and clearance.

@@ -76,8 +76,8 @@ fn a_seeded_fuzz_run_breaks_no_promise() {
     assert!(runs >= 100, "only {runs} of the seeds are not costly");
     assert!(
         failures.is_empty(),
-        "{} of {runs} fuzz cases broke a promise (replay: cargo run --release -p zeitner-bench \
-         -- fuzz --seed S --runs 1 --trace):\n{}",
+        "{} of {runs} fuzz cases broke a promise (replay: cargo run --release -p zeitner-fuzz \
+         -- --seed S --runs 1 --trace):\n{}",
         failures.len(),
         failures.join("\n")
     );
