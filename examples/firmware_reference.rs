@@ -1,9 +1,9 @@
 //! The host's run of the loop `tests/on_target` steps on the emulated Cortex-M4F: the paper's
-//! steam generator with RK4 at 1 ms (`Options::paper`), printed in the target's format, so that
+//! steam generator with RK4 at 1 ms (`firmware_options`), printed in the target's format, so that
 //! `tests/on_target/run.sh` can compare the two. `firmware_reference [steps]` (default 2 000).
 
-use zeitner::{ConstrainedSystem, MultiplierModel, Options, Simulator, Vector};
-use zeitner_scenes::steam_generator::SteamGenerator;
+use zeitner::{ConstrainedSystem, Simulator, Vector};
+use zeitner_scenes::steam_generator::{firmware_options, SteamGenerator};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let steps: u32 = match std::env::args().nth(1) {
@@ -16,10 +16,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Vector::zeros(),
         Vector::zeros(),
         0.0,
-        Options {
-            multipliers: MultiplierModel::EveryStage,
-            ..Options::paper(1e-3)
-        },
+        firmware_options(),
     )?;
     sim.advance_to(f64::from(steps) * 1e-3, |_| {})?;
     let end = sim.last().end;

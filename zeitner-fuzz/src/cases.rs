@@ -39,6 +39,7 @@ use std::fmt;
 
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
+use zeitner::scalar::per_scalar;
 use zeitner::storage::Sparse;
 use zeitner::{
     ConstrainedSystem, ControllerSettings, Direction, EventSettings, Float, GapSet, Impact,
@@ -63,25 +64,13 @@ pub type Rng = Xoshiro256PlusPlus;
 /// The share of the kinetic energy an impact may gain by rounding: 1e-9 in `f64`; in `f32`
 /// twice the runtime's own slack (1e-4, 840 ε: an impulse from `G q'` of speeds of 1e7 m/s
 /// rounds the energy by 2.2e-5, fuzz seed 50828).
-#[cfg(not(feature = "f32"))]
-const ENERGY_ROUNDING: Float = 1e-9;
-#[cfg(feature = "f32")]
-const ENERGY_ROUNDING: Float = 2e-4;
+const ENERGY_ROUNDING: Float = per_scalar(1e-9, 2e-4);
 
 /// Hostile magnitudes at the build's scalar: the largest and smallest normal numbers' orders
 /// and the smallest subnormal (`f64`: 1e300, 1e-300, 5e-324; `f32`: 1e30, 1e-30, 1e-45).
-#[cfg(not(feature = "f32"))]
-pub const HUGE: Float = 1e300;
-#[cfg(not(feature = "f32"))]
-pub const TINY: Float = 1e-300;
-#[cfg(not(feature = "f32"))]
-pub const SUBNORMAL: Float = 5e-324;
-#[cfg(feature = "f32")]
-pub const HUGE: Float = 1e30;
-#[cfg(feature = "f32")]
-pub const TINY: Float = 1e-30;
-#[cfg(feature = "f32")]
-pub const SUBNORMAL: Float = 1e-45;
+pub const HUGE: Float = per_scalar(1e300, 1e30);
+pub const TINY: Float = per_scalar(1e-300, 1e-30);
+pub const SUBNORMAL: Float = per_scalar(5e-324, 1e-45);
 
 pub fn rng(seed: u64) -> Rng {
     Rng::seed_from_u64(seed)

@@ -228,10 +228,7 @@ pub(crate) fn consistent_point_and_gram<
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Point<N, Z>, Gram<N, Z>), StepError> {
-    if !all_finite(q.iter().chain(v.iter())) {
-        return Err(StepError::non_finite_state(t));
-    }
-    let directions = model.directions(&q, &v, t)?;
+    let directions = directions_at(model, t, &q, &v)?;
     point_with(model, (t, q, v), directions)
 }
 
@@ -255,12 +252,23 @@ pub(crate) fn consistent_point_and_directions<
     ),
     StepError,
 > {
+    let directions = directions_at(model, t, &q, &v)?;
+    let (point, gram) = point_with(model, (t, q, v), directions.clone())?;
+    Ok((point, directions, gram.gram))
+}
+
+/// The constraints' directions at a state, which must be finite.
+#[inline]
+fn directions_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: Float,
+    q: &Vector<N>,
+    v: &Vector<N>,
+) -> Result<ConstraintDirections<FactorOf<S, N, Z>, N, Z>, StepError> {
     if !all_finite(q.iter().chain(v.iter())) {
         return Err(StepError::non_finite_state(t));
     }
-    let directions = model.directions(&q, &v, t)?;
-    let (point, gram) = point_with(model, (t, q, v), directions.clone())?;
-    Ok((point, directions, gram.gram))
+    model.directions(q, v, t)
 }
 
 /// The consistent point at a finite state whose directions are known.

@@ -9,9 +9,9 @@ use crate::options::{ControllerSettings, Options, StepControl};
 use crate::scalar::{Float, Lm};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
-/// No step is longer: beyond it the time itself would overflow (an `initial_step` of `Float::MAX`
-/// is valid, but `t + h` would not be).
-pub(crate) const LARGEST_STEP: Float = crate::scalar::LARGEST_STEP;
+// No step is longer: beyond it the time itself would overflow (an `initial_step` of
+// `Float::MAX` is valid, but `t + h` would not be).
+pub(crate) use crate::scalar::LARGEST_STEP;
 
 /// The controller's memory: the logarithm of the last accepted step's error norm (one `ln`
 /// and one `exp` per step instead of two powers).

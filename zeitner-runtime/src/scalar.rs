@@ -21,80 +21,67 @@ pub type Float = f32;
 /// methods of [`crate::math::Real`]).
 pub(crate) type Lm = libm::Libm<Float>;
 
+/// `in_f64` in an `f64` build, `in_f32` in an `f32` one: a value of the numeric policy, both
+/// written where it is defined.
+pub const fn per_scalar(in_f64: f64, in_f32: f32) -> Float {
+    #[cfg(not(feature = "f32"))]
+    {
+        let _ = in_f32;
+        in_f64
+    }
+    #[cfg(feature = "f32")]
+    {
+        let _ = in_f64;
+        in_f32
+    }
+}
+
 /// The default constraint tolerance: `1e-10` in `f64` (about 4.5e5 ε, the paper's "ε" with
 /// room above rounding); in `f32`, `1e-5` (84 ε), the tightest that positions of order one
 /// meter hold after the cancellation in a loop closure such as `x² + y² - l²`.
-#[cfg(not(feature = "f32"))]
-pub const DEFAULT_CONSTRAINT_TOLERANCE: Float = 1e-10;
-/// The default constraint tolerance (see the `f64` build's).
-#[cfg(feature = "f32")]
-pub const DEFAULT_CONSTRAINT_TOLERANCE: Float = 1e-5;
+pub const DEFAULT_CONSTRAINT_TOLERANCE: Float = per_scalar(1e-10, 1e-5);
 
 /// The default relative tolerance of adaptive steps (`atol` is a hundredth of it): `1e-8` in
 /// `f64`; `1e-5` (84 ε) in `f32`.
-#[cfg(not(feature = "f32"))]
-pub const DEFAULT_RTOL: Float = 1e-8;
-/// The default relative tolerance of adaptive steps (see the `f64` build's).
-#[cfg(feature = "f32")]
-pub const DEFAULT_RTOL: Float = 1e-5;
+pub const DEFAULT_RTOL: Float = per_scalar(1e-8, 1e-5);
 
 /// The default tolerance of event times, s: `1e-12` in `f64`; `1e-6` in `f32`, where a time of
 /// a few seconds resolves to about 2.4e-7 s.
-#[cfg(not(feature = "f32"))]
-pub const DEFAULT_TIME_TOLERANCE: Float = 1e-12;
-/// The default tolerance of event times, s (see the `f64` build's).
-#[cfg(feature = "f32")]
-pub const DEFAULT_TIME_TOLERANCE: Float = 1e-6;
+pub const DEFAULT_TIME_TOLERANCE: Float = per_scalar(1e-12, 1e-6);
 
 /// The smallest `rtol` an adaptive step may ask for: ε. A relative accuracy below the scalar's
 /// resolution cannot be met, and is refused rather than shrinking steps until they stall.
 pub const SMALLEST_RTOL: Float = Float::EPSILON;
 
-/// Relative slacks and floors, each the same multiple of ε in both scalars unless it says
-/// otherwise (`f64`'s values are the ones measured and tuned; `f32`'s follow by the ratio of
-/// the epsilons, 5.4e8).
-#[cfg(not(feature = "f32"))]
+/// Relative slacks and floors: `f64`'s are the ones measured and tuned; `f32`'s follow by the
+/// ratio of the epsilons (5.4e8) unless a note says otherwise.
 // Each floor is read only by the features that need it.
 #[allow(dead_code)]
 pub(crate) mod floors {
-    use super::Float;
-    /// An impact may add this share of the energy (rounding) and still count as elastic.
-    pub const ENERGY_SLACK: Float = 1e-12;
+    use super::{per_scalar, Float};
+    /// An impact may add this share of the energy (rounding) and still count as elastic. In
+    /// `f32` not by the ratio (that would be 5e-4): 840 ε, above the 2.2e-5 an impulse at
+    /// 1e7 m/s rounds the energy by.
+    pub const ENERGY_SLACK: Float = per_scalar(1e-12, 1e-4);
     /// A closed contact opens where its multiplier pulls by more than this share of the forces.
-    pub const CONTACT_RELEASE: Float = 1e-12;
+    pub const CONTACT_RELEASE: Float = per_scalar(1e-12, 5e-4);
     /// Cholesky pivots below this share of the largest diagonal entry count as lost rank.
-    pub const RELATIVE_PIVOT: Float = 1e-12;
+    pub const RELATIVE_PIVOT: Float = per_scalar(1e-12, 5e-4);
     /// An `L D Lᵀ` pivot below this share of the largest one is singular.
-    pub const SINGULAR_PIVOT: Float = 1e-13;
-    /// Sparse Gram pivots below this share of their row's diagonal mark a dependent row.
-    pub const DEPENDENT_ROW_PIVOT: Float = 1e-10;
-    /// An implicit stage's Newton has converged below this share of the stage's scale...
-    pub const STAGE_CONVERGED: Float = 1e-12;
-    /// ... or has stalled at rounding below this share, with the last correction not halving.
-    pub const STAGE_STALLED: Float = 1e-9;
-}
-#[cfg(feature = "f32")]
-#[allow(dead_code)]
-pub(crate) mod floors {
-    use super::Float;
-    /// Not by the ratio (that would be 5e-4): 840 ε, above the 2.2e-5 an impulse at 1e7 m/s
-    /// rounds the energy by.
-    pub const ENERGY_SLACK: Float = 1e-4;
-    pub const CONTACT_RELEASE: Float = 5e-4;
-    pub const RELATIVE_PIVOT: Float = 5e-4;
-    pub const SINGULAR_PIVOT: Float = 5e-5;
-    /// Not by the ratio (that would be 0.05, rows far from dependent): 1e-4, 840 ε.
-    pub const DEPENDENT_ROW_PIVOT: Float = 1e-4;
-    /// Not by the ratio (that would stop Newton at 5e-4): 8 ε and 840 ε.
-    pub const STAGE_CONVERGED: Float = 1e-6;
-    pub const STAGE_STALLED: Float = 1e-4;
+    pub const SINGULAR_PIVOT: Float = per_scalar(1e-13, 5e-5);
+    /// Sparse Gram pivots below this share of their row's diagonal mark a dependent row. In
+    /// `f32` not by the ratio (that would be 0.05, rows far from dependent): 840 ε.
+    pub const DEPENDENT_ROW_PIVOT: Float = per_scalar(1e-10, 1e-4);
+    /// An implicit stage's Newton has converged below this share of the stage's scale... In
+    /// `f32` not by the ratio (that would stop Newton at 5e-4): 8 ε.
+    pub const STAGE_CONVERGED: Float = per_scalar(1e-12, 1e-6);
+    /// ... or has stalled at rounding below this share, with the last correction not halving
+    /// (`f32`: 840 ε).
+    pub const STAGE_STALLED: Float = per_scalar(1e-9, 1e-4);
 }
 
 /// No step is longer (about `Float::MAX / 1e8`): beyond it the time itself would overflow.
-#[cfg(not(feature = "f32"))]
-pub(crate) const LARGEST_STEP: Float = 1e300;
-#[cfg(feature = "f32")]
-pub(crate) const LARGEST_STEP: Float = 1e30;
+pub(crate) const LARGEST_STEP: Float = per_scalar(1e300, 1e30);
 
 #[cfg(feature = "f32")]
 pub use core::f32::consts;

@@ -10,9 +10,9 @@
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
-use zeitner_scenes::steam_generator::SteamGenerator;
+use zeitner_scenes::steam_generator::{firmware_options, SteamGenerator};
 use zeitner::math::Real as _;
-use zeitner::{ConstrainedSystem, Float, MultiplierModel, Options, Simulator, Vector};
+use zeitner::{ConstrainedSystem, Float, Simulator, Vector};
 
 /// Steps to take, from `ZEITNER_TARGET_STEPS` at build time (2 000: two seconds).
 const STEPS: u32 = match option_env!("ZEITNER_TARGET_STEPS") {
@@ -80,10 +80,7 @@ fn main() -> ! {
     // reported every 100 ticks.
     let mut stepping_stack = 0;
     let mut run = || -> Result<_, zeitner::StepError> {
-        // The multipliers solved at every stage from the acceleration-level system: well
-        // conditioned in `f32` too (Newton on held multipliers finds them from the step end's
-        // positions, which in `f32` fix them only to about `ε·2m/τ²`).
-        let options = Options { multipliers: MultiplierModel::EveryStage, ..Options::paper(1e-3) };
+        let options = firmware_options();
         let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options)?;
         for tick in 1..=STEPS {
             sim.step()?;
