@@ -2,7 +2,7 @@
 //! steam generator with RK4 at 1 ms (`firmware_options`), printed in the target's format, so that
 //! `tests/on_target/run.sh` can compare the two. `firmware_reference [steps]` (default 2 000).
 
-use zeitner::{ConstrainedSystem, Simulator, Vector};
+use zeitner::{ConstrainedSystem, Simulator, Start, Vector};
 use zeitner_scenes::steam_generator::{firmware_options, SteamGenerator};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -13,9 +13,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let scene = SteamGenerator::paper();
     let mut sim = Simulator::new(
         &scene,
-        Vector::zeros(),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         firmware_options(),
     )?;
     sim.advance_to(f64::from(steps) * 1e-3, |_| {})?;

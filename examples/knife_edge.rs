@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 use clap::Parser;
 use scenes::knife_edge::KnifeEdge;
-use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector};
+use zeitner::{MultiplierModel, Options, Simulator, Start, StepControl, Vector};
 use zeitner_figures::{write_panels, Panel};
 
 #[derive(Parser)]
@@ -53,9 +53,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let start = exact(0.0);
     let mut sim = Simulator::new(
         &scene,
-        Vector::from(start.q),
-        Vector::from(start.v),
-        0.0,
+        Start {
+            q: Vector::from(start.q),
+            v: Vector::from(start.v),
+            t: 0.0,
+        },
         options,
     )?;
     let header = "t,x,y,theta,vx,vy,omega,lambda,g,x_exact,y_exact,lambda_exact";

@@ -13,8 +13,8 @@ use std::time::Instant;
 use clap::{Parser, ValueEnum};
 use scenes::steam_generator::SteamGenerator;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
-    StopReason, Vector, VelocityProjection,
+    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, Start,
+    StepControl, StopReason, Vector, VelocityProjection,
 };
 use zeitner_figures::{write_panels, Panel};
 
@@ -139,7 +139,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     print!("{}", <SteamGenerator as ConstrainedSystem<3, 2>>::SUMMARY);
 
     let clock = Instant::now();
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options)?;
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )?;
     let mut rows: Vec<String> = Vec::new();
     let mut newton = Vec::new();
     let mut step_ends: Vec<(f64, f64, f64)> = Vec::new();

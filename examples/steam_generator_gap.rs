@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use clap::Parser;
 use scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
-use zeitner::{Options, Simulator, StepControl, StopReason, Vector};
+use zeitner::{Options, Simulator, Start, StepControl, StopReason, Vector};
 use zeitner_figures::{write_panels, Panel};
 
 /// Simulates the steam generator with a clearance at its strut and writes its figures.
@@ -76,7 +76,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect();
 
     // With the gap: rows are the column, then the strut pushed and pulled.
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options)?;
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )?;
     let mut gap = Vec::new();
     let mut impacts = Vec::new();
     let mut next = 0;
@@ -107,7 +115,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // The paper's scene: the strut always engaged (row 0), the column (row 1).
     let free = SteamGenerator::paper();
-    let mut reference = Simulator::new(&free, Vector::zeros(), Vector::zeros(), 0.0, options)?;
+    let mut reference = Simulator::new(
+        &free,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )?;
     let mut gapfree = Vec::new();
     for &t in &times {
         if t > reference.time() {

@@ -18,7 +18,9 @@ use std::path::PathBuf;
 use clap::{Parser, ValueEnum};
 use scenes::modal::Modes;
 use scenes::structure::Structure100;
-use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, StopReason, Vector};
+use zeitner::{
+    InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, StopReason, Vector,
+};
 use zeitner_figures::{write_panels, Panel};
 
 /// Simulates the column on its supports and writes its figures.
@@ -78,7 +80,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
     let (q0, v0) = scene.start();
     let clock = std::time::Instant::now();
-    let mut sim = Simulator::new(&scene, Vector::from(q0), Vector::from(v0), 0.0, options)?;
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::from(q0),
+            v: Vector::from(v0),
+            t: 0.0,
+        },
+        options,
+    )?;
     let times: Vec<f64> = (0..)
         .map(|k| k as f64 * args.output_interval)
         .take_while(|&t| t <= args.end_time * (1.0 + 1e-12))

@@ -16,7 +16,8 @@ use std::path::PathBuf;
 use clap::Parser;
 use scenes::steam_generator::SteamGeneratorWithGap;
 use zeitner::{
-    Matrix, Options, SensitivitySimulator, Simulator, StepControl, StepError, StopReason, Vector,
+    Matrix, Options, SensitivitySimulator, Simulator, Start, StepControl, StepError, StopReason,
+    Vector,
 };
 use zeitner_figures::{write_heatmaps, Heatmap};
 use zeitner_study::{Case, Parameter, Results, Study, StudyCommand};
@@ -77,7 +78,15 @@ fn scene(h3: f64, clearance: f64, d: f64) -> SteamGeneratorWithGap {
 fn peak_forces(case: &Case) -> Result<[f64; 4], StepError> {
     let scene = scene(case.get("h3"), case.get("clearance"), PAPER[2]);
     let h2 = scene.base.h2;
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options())?;
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options(),
+    )?;
     sim.set_stop_time(END_TIME)?;
     // Rows: the column (|∂g/∂(q1, q2)| = 2 × its length), then the strut pushed and pulled.
     let forces = |q: &Vector<3>, lambda: &Vector<3>| {
@@ -330,7 +339,15 @@ fn strut_peak_with_gradient(
     scene: &SteamGeneratorWithGap,
 ) -> Result<(f64, Matrix<1, 3>), StepError> {
     let zero = Vector::zeros();
-    let mut sim = SensitivitySimulator::<_, 3, 3, 3>::new(scene, zero, zero, 0.0, options())?;
+    let mut sim = SensitivitySimulator::<_, 3, 3, 3>::new(
+        scene,
+        Start {
+            q: zero,
+            v: zero,
+            t: 0.0,
+        },
+        options(),
+    )?;
     sim.set_stop_time(END_TIME)?;
     let (mut peak, mut gradient) = (0.0, Matrix::<1, 3>::zeros());
     loop {

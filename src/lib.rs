@@ -6,7 +6,7 @@
 //! with W. Zeitner's constant-multiplier method.
 //!
 //! ```
-//! use zeitner::{constrained_system, Options, Simulator, Vector};
+//! use zeitner::{constrained_system, Options, Simulator, Start, Vector};
 //!
 //! /// A point mass on a rod of length `l`, in Cartesian coordinates.
 //! pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
@@ -20,7 +20,8 @@
 //!
 //! let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
 //! let q0 = Vector::<2>::new(1.0, 0.0);
-//! let mut sim = Simulator::new(&pendulum, q0, Vector::zeros(), 0.0, Options::default()).unwrap();
+//! let start = Start { q: q0, v: Vector::zeros(), t: 0.0 };
+//! let mut sim = Simulator::new(&pendulum, start, Options::default()).unwrap();
 //! sim.advance_to(1.0, |_| {}).unwrap();
 //! let end = sim.last().end;
 //! assert!((end.q.norm() - 1.0).abs() < 1e-9);
@@ -30,7 +31,7 @@
 //! derivatives of the state and the multipliers by them through the run.
 //!
 //! ```
-//! use zeitner::{constrained_system, Options, SensitivitySimulator, Vector};
+//! use zeitner::{constrained_system, Options, SensitivitySimulator, Start, Vector};
 //!
 //! pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
 //!
@@ -44,9 +45,9 @@
 //!
 //! let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
 //! let q0 = Vector::<2>::new(1.0, 0.0);
-//! let mut sim =
-//!     SensitivitySimulator::<_, 2, 1, 2>::new(&pendulum, q0, Vector::zeros(), 0.0, Options::default())
-//!         .unwrap();
+//! let start = Start { q: q0, v: Vector::zeros(), t: 0.0 };
+//! let mut sim = SensitivitySimulator::<_, 2, 1, 2>::new(&pendulum, start, Options::default())
+//!     .unwrap();
 //! sim.advance_to(1.0).unwrap();
 //! let (end, s) = (sim.simulator().last().end, sim.sensitivities());
 //! // The motion runs in the time t √(g/l): ∂q/∂g = t q' / (2g).
@@ -60,7 +61,7 @@
 //! end's positions alone fix only to about `ε·2m/τ²`.
 //!
 //! ```
-//! use zeitner::{constrained_system, Float, MultiplierModel, Options, Simulator, Vector};
+//! use zeitner::{constrained_system, Float, MultiplierModel, Options, Simulator, Start, Vector};
 //!
 //! pub struct Pendulum { pub m: Float, pub l: Float, pub g: Float }
 //!
@@ -75,7 +76,8 @@
 //! // A firmware's fixed-step loop: RK4 at 1 ms, the multipliers at every stage.
 //! let options = Options { multipliers: MultiplierModel::EveryStage, ..Options::paper(1e-3) };
 //! let q0 = Vector::<2>::new(1.0, 0.0);
-//! let mut sim = Simulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).unwrap();
+//! let start = Start { q: q0, v: Vector::zeros(), t: 0.0 };
+//! let mut sim = Simulator::new(&pendulum, start, options).unwrap();
 //! for _ in 0..1000 {
 //!     sim.step().unwrap();
 //! }

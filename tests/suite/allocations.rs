@@ -10,7 +10,8 @@ use common::andrews::Andrews;
 use common::steam_generator::SteamGenerator;
 use zeitner::storage::Dense;
 use zeitner::{
-    InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector, WithStorage,
+    InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, Start, StepControl, Vector,
+    WithStorage,
 };
 
 struct Counting;
@@ -95,8 +96,16 @@ fn ten_thousand_steps_allocate_nothing() {
         },
     ];
     for options in configurations {
-        let mut sim =
-            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = Simulator::new(
+            &scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         let allocations = allocations_during(&mut sim, 10_000);
         assert_eq!(allocations, 0, "{options:?}");
         assert_eq!(sim.statistics().steps, 10_000);
@@ -109,9 +118,11 @@ fn ten_thousand_steps_allocate_nothing() {
     };
     let mut sim = Simulator::new(
         &andrews,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from(Andrews::Q0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options,
     )
     .unwrap();
@@ -131,7 +142,16 @@ fn the_default_method_turns_implicit_without_allocating() {
             let dense = WithStorage::<_, Dense>::new(&scene);
             let (q0, v0) = scene.start();
             let (q0, v0) = (Vector::from(q0), Vector::from(v0));
-            let mut sim = Simulator::new(&dense, q0, v0, 0.0, Options::default()).unwrap();
+            let mut sim = Simulator::new(
+                &dense,
+                Start {
+                    q: q0,
+                    v: v0,
+                    t: 0.0,
+                },
+                Options::default(),
+            )
+            .unwrap();
             let first = sim.method();
             let allocations = allocations_during(&mut sim, 200);
             let after = sim.statistics().turned_implicit_after;
@@ -174,8 +194,16 @@ fn the_sparse_simulator_allocates_only_when_built() {
             ..Options::default()
         },
     ] {
-        let mut sim =
-            zeitner::SparseSimulator::new(&scene, start, Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = zeitner::SparseSimulator::new(
+            &scene,
+            Start {
+                q: start,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         // A redundant row: the minimum-norm correction runs on every solve.
         assert_eq!(sim.start_report().redundant_rows.len(), 1);
         let before = ALLOCATIONS.with(Cell::get);
@@ -208,7 +236,16 @@ fn the_sparse_storage_allocates_only_when_built() {
                     ..Options::default()
                 };
                 let (q0, v0) = (Vector::from(q0), Vector::from(v0));
-                let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+                let mut sim = Simulator::new(
+                    &scene,
+                    Start {
+                        q: q0,
+                        v: v0,
+                        t: 0.0,
+                    },
+                    options,
+                )
+                .unwrap();
                 // Through the strut's first impacts (at 0.0585 s; ESDIRK 5(4) takes 699 steps
                 // to 0.06 s).
                 let allocations = allocations_during(&mut sim, 1000);

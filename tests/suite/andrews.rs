@@ -7,8 +7,8 @@ use crate::common;
 
 use common::andrews::{published_end, Andrews};
 use zeitner::{
-    InnerMethod, MultiplierModel, Options, Point, Simulator, Statistics, StepControl, StepError,
-    Vector, VelocityProjection,
+    InnerMethod, MultiplierModel, Options, Point, Simulator, Start, Statistics, StepControl,
+    StepError, Vector, VelocityProjection,
 };
 
 /// Component-wise relative error, the largest over the components.
@@ -24,9 +24,11 @@ fn the_consistent_start_reproduces_the_published_initial_multipliers_and_acceler
     let scene = Andrews::published();
     let sim = Simulator::new(
         &scene,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from(Andrews::Q0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         Options::default(),
     )
     .unwrap();
@@ -66,7 +68,16 @@ fn the_consistent_start_reproduces_the_published_initial_multipliers_and_acceler
 fn end_at_the_published_time(options: Options) -> (Point<7, 6>, Statistics) {
     let scene = Andrews::published();
     let start = Vector::from(Andrews::Q0);
-    let mut sim = Simulator::new(&scene, start, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: start,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     sim.advance_to(0.03, |_| {}).unwrap();
     (sim.last().end, sim.statistics())
 }
@@ -170,7 +181,16 @@ fn an_impossible_tolerance_is_refused_without_exhausting_the_newton_on_every_try
         1.747996293336694,
         -0.9309888439795757,
     ]);
-    let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let outcome = sim.step();
     let integrations = sim.statistics().newton_iterations;
     assert!(

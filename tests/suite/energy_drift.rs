@@ -9,7 +9,9 @@
 use crate::common;
 
 use common::stiff::DoublePendulum;
-use zeitner::{MultiplierModel, Options, Simulator, StepControl, Vector, VelocityProjection};
+use zeitner::{
+    MultiplierModel, Options, Simulator, Start, StepControl, Vector, VelocityProjection,
+};
 
 const SCENE: DoublePendulum = DoublePendulum {
     m1: 1.0,
@@ -40,7 +42,16 @@ fn drift_with(
         *r = rtol;
     }
     let q0 = Vector::<4>::new(1.0, 0.0, 1.5, 0.0);
-    let mut sim = Simulator::new(&SCENE, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &SCENE,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let energy = |sim: &Simulator<'_, DoublePendulum, 4, 2>| {
         let end = sim.last().end;
         SCENE.energy(end.q.as_slice(), end.v.as_slice())

@@ -6,7 +6,7 @@ use common::pendulum::Pendulum;
 use proptest::prelude::*;
 use zeitner::{
     constrained_system, InnerMethod, InvalidOption, ModelFunction, MultiplierModel, Options,
-    Sensitivity, Simulator, StepControl, StepError, Vector, VelocityProjection,
+    Sensitivity, Simulator, Start, StepControl, StepError, Vector, VelocityProjection,
 };
 
 fn released() -> (Vector<2>, Vector<2>) {
@@ -104,7 +104,7 @@ fn absurd_options_are_refused() {
         ),
     ];
     for (options, expected) in cases {
-        let error = Simulator::new(&PENDULUM, q, v, 0.0, options).err();
+        let error = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).err();
         assert_eq!(
             error,
             Some(StepError::InvalidOption(expected)),
@@ -120,7 +120,7 @@ fn non_finite_parameters_and_states_name_the_culprit() {
         g: f64::NAN,
         ..PENDULUM
     };
-    let error = Simulator::new(&nan_gravity, q, v, 0.0, Options::default()).err();
+    let error = Simulator::new(&nan_gravity, Start { q, v, t: 0.0 }, Options::default()).err();
     assert!(
         matches!(
             error,
@@ -136,14 +136,16 @@ fn non_finite_parameters_and_states_name_the_culprit() {
         ..PENDULUM
     };
     assert!(matches!(
-        Simulator::new(&infinite_length, q, v, 0.0, Options::default()),
+        Simulator::new(&infinite_length, Start { q, v, t: 0.0 }, Options::default()),
         Err(StepError::NonFinite { .. })
     ));
     let error = Simulator::new(
         &PENDULUM,
-        Vector::<2>::new(f64::NAN, 0.0),
-        v,
-        0.0,
+        Start {
+            q: Vector::<2>::new(f64::NAN, 0.0),
+            v,
+            t: 0.0,
+        },
         Options::default(),
     )
     .err();
@@ -163,8 +165,12 @@ fn non_finite_parameters_and_states_name_the_culprit() {
 fn zero_and_negative_masses_are_not_positive_definite() {
     let (q, v) = released();
     for m in [0.0, -1.0] {
-        let error =
-            Simulator::new(&Pendulum { m, ..PENDULUM }, q, v, 0.0, Options::default()).err();
+        let error = Simulator::new(
+            &Pendulum { m, ..PENDULUM },
+            Start { q, v, t: 0.0 },
+            Options::default(),
+        )
+        .err();
         assert!(
             matches!(error, Some(StepError::MassNotPositiveDefinite { .. })),
             "m = {m}: {error:?}"
@@ -175,9 +181,7 @@ fn zero_and_negative_masses_are_not_positive_definite() {
             m: f64::NAN,
             ..PENDULUM
         },
-        q,
-        v,
-        0.0,
+        Start { q, v, t: 0.0 },
         Options::default(),
     )
     .err();
@@ -212,7 +216,7 @@ impl Redundant {
 #[test]
 fn redundant_constraints_are_named() {
     let (q, v) = released();
-    let error = Simulator::new(&Redundant, q, v, 0.0, Options::default()).err();
+    let error = Simulator::new(&Redundant, Start { q, v, t: 0.0 }, Options::default()).err();
     let Some(StepError::RankDeficientConstraints { dependent_rows, .. }) = error else {
         panic!("expected rank deficiency, got {error:?}");
     };
@@ -232,7 +236,7 @@ fn redundant_constraints_are_named() {
 fn an_inconsistent_start_is_projected_onto_the_constraints() {
     let q = Vector::<2>::new(1.1, 0.05);
     let v = Vector::<2>::new(0.3, 0.4);
-    let sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     let start = sim.last().end;
     assert!((start.q.norm() - 1.0).abs() < 1e-10, "{}", start.q);
     assert!(
@@ -250,7 +254,7 @@ fn a_failed_step_keeps_the_last_accepted_state_and_the_run_can_go_on() {
         constraint_tolerance: 1e-14,
         ..Options::paper(0.2)
     };
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).unwrap();
     let before = *sim.last();
     let error = sim.step().err();
     assert!(
@@ -267,7 +271,7 @@ fn a_failed_step_keeps_the_last_accepted_state_and_the_run_can_go_on() {
 #[test]
 fn end_times_in_the_past_are_refused() {
     let (q, v) = released();
-    let mut sim = Simulator::new(&PENDULUM, q, v, 1.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 1.0 }, Options::default()).unwrap();
     assert_eq!(
         sim.advance_to(0.5, |_| {}),
         Err(StepError::InvalidOption(InvalidOption::EndTime))
@@ -368,7 +372,7 @@ proptest! {
         let scene = Pendulum { m: params[0], length: params[1], g: params[2] };
         let q = Vector::<2>::new(state[0], state[1]);
         let v = Vector::<2>::new(state[2], state[3]);
-        if let Ok(mut sim) = Simulator::new(&scene, q, v, 0.0, options) {
+        if let Ok(mut sim) = Simulator::new(&scene, Start { q, v, t: 0.0 }, options) {
             if sim.set_stop_time(t_end).is_err() {
                 return Ok(());
             }

@@ -12,7 +12,8 @@ use common::reference::steam_generator;
 use common::steam_generator::SteamGenerator;
 use common::{relative_errors, steam_generator_errors};
 use zeitner::{
-    InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, StepControl, StepError, Vector,
+    InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, Start, StepControl, StepError,
+    Vector,
 };
 
 /// The pendulum of these tests: 1 kg on 1 m.
@@ -98,7 +99,16 @@ fn verner_s_pair_keeps_its_order_9() {
         let start = common::reference::pendulum_released_horizontally(&pendulum, t0);
         let (q0, v0) = (Vector::from(start.q), Vector::from(start.v));
         let options = fixed(InnerMethod::Verner98, h);
-        let mut sim = Simulator::new(&pendulum, q0, v0, t0, options).unwrap();
+        let mut sim = Simulator::new(
+            &pendulum,
+            Start {
+                q: q0,
+                v: v0,
+                t: t0,
+            },
+            options,
+        )
+        .unwrap();
         sim.step().unwrap();
         let reference = common::reference::pendulum_released_horizontally(&pendulum, t0 + h);
         relative_errors(&sim.last().end, &reference)
@@ -122,7 +132,7 @@ const OMEGA: f64 = 2.0;
 fn knife_edge(options: Options) -> Simulator<'static, KnifeEdge, 3, 1> {
     let s = KnifeEdge::PAPER.exact(OMEGA, 0.0);
     let (q, v) = (Vector::from(s.q), Vector::from(s.v));
-    Simulator::new(&KnifeEdge::PAPER, q, v, 0.0, options).unwrap()
+    Simulator::new(&KnifeEdge::PAPER, Start { q, v, t: 0.0 }, options).unwrap()
 }
 
 /// The errors of q, q', λ at `point` against the knife edge's closed form, each scaled by the
@@ -226,8 +236,16 @@ fn adaptive_steps_follow_the_tolerance() {
             },
             ..Options::default()
         };
-        let mut sim =
-            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = Simulator::new(
+            &scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         // Stop at the kink of the load's ramp.
         sim.advance_to(scene.rise, |_| {}).unwrap();
         sim.advance_to(1.0, |_| {}).unwrap();
@@ -253,7 +271,15 @@ fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
         ..fixed(InnerMethod::Esdirk54, 1e-2)
     };
     let q0 = Vector::<2>::new(1.0, 0.0);
-    let refused = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options);
+    let refused = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    );
     assert!(matches!(
         refused.err(),
         Some(StepError::InvalidOption(
@@ -276,7 +302,15 @@ fn the_high_order_pairs_refuse_held_multipliers() {
             multipliers,
             ..fixed(method, 1e-2)
         };
-        let refused = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options);
+        let refused = Simulator::new(
+            &scene,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        );
         assert!(matches!(
             refused.err(),
             Some(StepError::InvalidOption(
@@ -296,7 +330,16 @@ fn the_default_chooses_the_pair_for_the_tolerance() {
         step: StepControl::adaptive(rtol),
         ..Options::default()
     };
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, at(1e-4)).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        at(1e-4),
+    )
+    .unwrap();
     assert_eq!(sim.method(), InnerMethod::Dop853);
     sim.advance_to(0.1, |_| {}).unwrap();
     sim.set_options(at(1e-8)).unwrap();
@@ -309,6 +352,15 @@ fn the_default_chooses_the_pair_for_the_tolerance() {
         step: StepControl::Fixed { step: 1e-2 },
         ..Options::default()
     };
-    let sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, fixed).unwrap();
+    let sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        fixed,
+    )
+    .unwrap();
     assert_eq!(sim.method(), InnerMethod::Dop853);
 }

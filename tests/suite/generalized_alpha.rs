@@ -11,7 +11,8 @@ use common::reference::spring_supported_pendulum;
 use common::relative_error;
 use common::spring_support::SpringSupportedPendulum;
 use zeitner::{
-    InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, StepControl, StepError, Vector,
+    InnerMethod, InvalidOption, MultiplierModel, Options, Simulator, Start, StepControl, StepError,
+    Vector,
 };
 
 const PENDULUM: Pendulum = Pendulum {
@@ -72,7 +73,16 @@ fn pendulum_converges_at_order_2_with_constant_multipliers() {
 fn quadratic_multipliers_are_refused_and_automatic_is_constant() {
     let q0 = Vector::<2>::new(1.0, 0.0);
     let options = fixed(0.9, MultiplierModel::Quadratic, 0.01);
-    let refused = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).err();
+    let refused = Simulator::new(
+        &PENDULUM,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .err();
     assert_eq!(
         refused,
         Some(StepError::InvalidOption(
@@ -93,7 +103,16 @@ fn spectral_radius_outside_0_to_1_and_adaptive_steps_are_refused() {
     let q0 = Vector::<2>::new(1.0, 0.0);
     for rho_inf in [-0.1, 1.5, f64::NAN, f64::INFINITY] {
         let options = fixed(rho_inf, MultiplierModel::Constant, 0.01);
-        let refused = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).err();
+        let refused = Simulator::new(
+            &PENDULUM,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .err();
         assert_eq!(
             refused,
             Some(StepError::InvalidOption(InvalidOption::SpectralRadius)),
@@ -104,7 +123,16 @@ fn spectral_radius_outside_0_to_1_and_adaptive_steps_are_refused() {
         method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
         ..Options::default()
     };
-    let refused = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, adaptive).err();
+    let refused = Simulator::new(
+        &PENDULUM,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        adaptive,
+    )
+    .err();
     assert_eq!(
         refused,
         Some(StepError::InvalidOption(
@@ -151,7 +179,16 @@ fn stiff_run(rho_inf: f64, h: f64, lift: f64, watched: usize, end: f64) -> (Vec<
     };
     let mut q0 = Vector::from(scene.start());
     q0[1] += lift;
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let mut deviations = Vec::new();
     sim.advance_to(end, |step| {
         if deviations.len() < watched {
@@ -243,7 +280,16 @@ fn pendulum_after(steps: usize, fail: Option<usize>, linearised: bool) -> (Vecto
         ..fixed(0.6, MultiplierModel::Constant, 0.01)
     };
     let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &PENDULUM,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     for n in 0..steps {
         if fail == Some(n) {
             let impossible = Options {
@@ -311,7 +357,16 @@ fn a_ball_bounces_at_the_closed_form_times_and_comes_to_rest() {
         velocity_projection: zeitner::VelocityProjection::Off,
         ..fixed(0.9, MultiplierModel::Automatic, step)
     };
-    let mut sim = Simulator::new(&ball, Vector::from([h0]), Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &ball,
+        Start {
+            q: Vector::from([h0]),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let mut impacts = Vec::new();
     sim.advance_to(rest_time + 0.05, |report| {
         if let Some(impact) = report.impact() {

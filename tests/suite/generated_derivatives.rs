@@ -3,9 +3,7 @@
 //! against dual numbers of an independent transcription of the published constraints.
 
 use crate::common;
-#[allow(dead_code)]
-#[path = "../ui/pass/full_grammar.rs"]
-mod full_grammar;
+use zeitner_scenes::full_grammar;
 
 use common::andrews::Andrews;
 use common::pendulum::Pendulum;

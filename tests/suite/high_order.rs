@@ -9,7 +9,7 @@ use common::andrews::{published_end, Andrews};
 use common::pendulum::Pendulum;
 use common::reference::pendulum_released_horizontally;
 use common::{pendulum_errors, steam_generator_errors};
-use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, Vector};
+use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, Vector};
 
 fn quadratic(step: StepControl, tolerance: f64) -> Options {
     Options {
@@ -66,9 +66,11 @@ fn andrews_within_the_published_reliability() {
     };
     let mut sim = Simulator::new(
         &scene,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from(Andrews::Q0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         quadratic(step, 1e-14),
     )
     .unwrap();
@@ -111,9 +113,11 @@ fn dense_output_keeps_the_order_between_steps() {
         let options = quadratic(StepControl::Fixed { step: h }, 1e-14);
         let mut sim = Simulator::new(
             &scene,
-            Vector::<2>::new(1.0, 0.0),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::<2>::new(1.0, 0.0),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             options,
         )
         .unwrap();

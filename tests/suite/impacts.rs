@@ -2,7 +2,7 @@
 
 use zeitner::{
     ConstrainedSystem, DiagonalMass, InnerMethod, MassKind, Matrix, Options, SceneSummary,
-    Simulator, StepControl, StopReason, Vector,
+    Simulator, Start, StepControl, StopReason, Vector,
 };
 
 /// A ball of mass `m` above a floor: `y ≥ 0`, restitution `e`; written by hand.
@@ -77,9 +77,11 @@ fn a_ball_bounces_at_the_closed_form_times() {
     let h0 = 1.0;
     let mut sim = Simulator::new(
         &ball,
-        Vector::from([h0]),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from([h0]),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         Options::default(),
     )
     .unwrap();
@@ -117,7 +119,16 @@ use common::contact::{Ball as GeneratedBall, FallingBar, WallPendulum};
 /// A generated ball dropped from 1 m at rest, default options.
 fn dropped(ball: &GeneratedBall) -> Simulator<'_, GeneratedBall, 1, 1> {
     let start = (Vector::from([1.0]), Vector::zeros());
-    Simulator::new(ball, start.0, start.1, 0.0, Options::default()).unwrap()
+    Simulator::new(
+        ball,
+        Start {
+            q: start.0,
+            v: start.1,
+            t: 0.0,
+        },
+        Options::default(),
+    )
+    .unwrap()
 }
 
 #[test]
@@ -206,9 +217,11 @@ fn a_ball_with_restitution_one_keeps_its_energy_over_100_impacts() {
     let fall = (2.0 * h0 / ball.g).sqrt();
     let mut sim = Simulator::new(
         &ball,
-        Vector::from([h0]),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from([h0]),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         Options::default(),
     )
     .unwrap();
@@ -246,9 +259,11 @@ fn a_ball_with_restitution_one_half_loses_three_quarters_of_its_height_each_boun
     let v0 = ball.g * fall;
     let mut sim = Simulator::new(
         &ball,
-        Vector::from([h0]),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from([h0]),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         Options::default(),
     )
     .unwrap();
@@ -343,9 +358,11 @@ fn wall_pendulum_with(
     };
     let mut sim = Simulator::new(
         pendulum,
-        Vector::from([l, 0.0]),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from([l, 0.0]),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options,
     )
     .unwrap();
@@ -390,9 +407,11 @@ fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
         };
         let mut sim = Simulator::new(
             &bar,
-            Vector::from([0.0, 0.3, 0.0]),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::from([0.0, 0.3, 0.0]),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             Options {
                 method,
                 ..Options::default()
@@ -451,7 +470,16 @@ fn strut_engages_with(
         },
         ..Options::default()
     };
-    let mut sim = Simulator::new(scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let (impacts, _) = run_until(&mut sim, 0.5);
     let first = impacts[0];
     println!(
@@ -504,7 +532,15 @@ fn the_sparse_simulator_refuses_gaps_and_events_typed() {
         e: 0.5,
     };
     let start = (Vector::from([1.0]), Vector::zeros());
-    let refused = zeitner::SparseSimulator::new(&ball, start.0, start.1, 0.0, Options::default());
+    let refused = zeitner::SparseSimulator::new(
+        &ball,
+        Start {
+            q: start.0,
+            v: start.1,
+            t: 0.0,
+        },
+        Options::default(),
+    );
     assert!(matches!(
         refused.err(),
         Some(zeitner::StepError::InvalidOption(
@@ -518,7 +554,15 @@ fn a_restitution_outside_zero_to_one_is_refused_typed() {
     for e in [-0.1, 1.5, f64::NAN] {
         let ball = GeneratedBall { m: 1.0, g: 9.81, e };
         let start = (Vector::from([1.0]), Vector::zeros());
-        let refused = Simulator::new(&ball, start.0, start.1, 0.0, Options::default());
+        let refused = Simulator::new(
+            &ball,
+            Start {
+                q: start.0,
+                v: start.1,
+                t: 0.0,
+            },
+            Options::default(),
+        );
         assert_eq!(
             refused.err(),
             Some(zeitner::StepError::InvalidOption(

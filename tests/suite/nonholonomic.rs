@@ -5,8 +5,8 @@ use crate::common;
 
 use common::knife_edge::{KnifeEdge, SteeredKnifeEdge};
 use zeitner::{
-    InnerMethod, InvalidOption, MultiplierModel, Options, Sensitivity, Simulator, StepControl,
-    StepError, Vector,
+    InnerMethod, InvalidOption, MultiplierModel, Options, Sensitivity, Simulator, Start,
+    StepControl, StepError, Vector,
 };
 
 const OMEGA: f64 = 2.0;
@@ -21,7 +21,7 @@ fn start(scene: &KnifeEdge) -> (Vector<3>, Vector<3>) {
 fn errors(options: Options) -> [f64; 3] {
     let scene = KnifeEdge::PAPER;
     let (q, v) = start(&scene);
-    let mut sim = Simulator::new(&scene, q, v, 0.0, options).unwrap();
+    let mut sim = Simulator::new(&scene, Start { q, v, t: 0.0 }, options).unwrap();
     sim.advance_to(T_END, |_| {}).unwrap();
     let end = sim.last().end;
     let exact = scene.exact(OMEGA, T_END);
@@ -98,9 +98,11 @@ fn local_error_report() {
         );
         let mut sim = Simulator::new(
             &scene,
-            Vector::from(exact.q),
-            Vector::from(exact.v),
-            t0,
+            Start {
+                q: Vector::from(exact.q),
+                v: Vector::from(exact.v),
+                t: t0,
+            },
             options,
         )
         .unwrap();
@@ -215,7 +217,7 @@ fn steered_knife_edge_orders() {
     };
     let run = |options: Options| {
         let (q, v) = start(&scene.edge);
-        let mut sim = Simulator::new(&scene, q, v, 0.0, options).unwrap();
+        let mut sim = Simulator::new(&scene, Start { q, v, t: 0.0 }, options).unwrap();
         sim.advance_to(T_END, |_| {}).unwrap();
         let end = sim.last().end;
         let exact = scene.edge.exact(OMEGA, T_END);
@@ -300,7 +302,7 @@ fn constant_multipliers_with_adaptive_steps_are_refused_on_a_velocity_row() {
         InvalidOption::ConstantMultipliersOnVelocityRows,
     ));
     let constant = adaptive(1e-8, MultiplierModel::Constant);
-    let error = Simulator::new(&scene, q, v, 0.0, constant).err();
+    let error = Simulator::new(&scene, Start { q, v, t: 0.0 }, constant).err();
     assert_eq!(error, refused);
     // One sentence that names what to use instead.
     let message = error.unwrap().to_string();
@@ -311,9 +313,7 @@ fn constant_multipliers_with_adaptive_steps_are_refused_on_a_velocity_row() {
     assert!(!message.contains("  "), "{message}");
     let mut sim = Simulator::new(
         &scene,
-        q,
-        v,
-        0.0,
+        Start { q, v, t: 0.0 },
         adaptive(1e-8, MultiplierModel::Automatic),
     )
     .unwrap();

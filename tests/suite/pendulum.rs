@@ -7,7 +7,7 @@ use crate::common;
 use common::pendulum::Pendulum;
 use common::reference::pendulum_released_horizontally;
 use zeitner::{
-    InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, StepControl, Vector,
+    InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, Start, StepControl, Vector,
     VelocityProjection,
 };
 
@@ -26,9 +26,11 @@ fn reference(t: f64) -> ([f64; 2], [f64; 2], f64) {
 fn start(options: Options) -> Simulator<'static, Pendulum, 2, 1> {
     Simulator::new(
         &SCENE,
-        Vector::<2>::new(1.0, 0.0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::<2>::new(1.0, 0.0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options,
     )
     .unwrap()

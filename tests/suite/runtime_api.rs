@@ -7,7 +7,7 @@ use crate::common;
 use common::pendulum::Pendulum;
 use zeitner::{
     constrained_system, InnerMethod, InvalidOption, MultiplierModel, Options, Sensitivity,
-    Simulator, StartPolicy, StepControl, StepError, StopReason, Vector,
+    Simulator, Start, StartPolicy, StepControl, StepError, StopReason, Vector,
 };
 
 const PENDULUM: Pendulum = Pendulum {
@@ -23,7 +23,7 @@ fn released() -> (Vector<2>, Vector<2>) {
 #[test]
 fn step_says_why_it_stopped_and_lands_on_the_stop_time() {
     let (q, v) = released();
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     sim.set_stop_time(0.05).unwrap();
     let mut reasons = Vec::new();
     loop {
@@ -47,7 +47,7 @@ fn step_says_why_it_stopped_and_lands_on_the_stop_time() {
 #[test]
 fn the_observer_samples_dense_output_and_can_stop_the_run() {
     let (q, v) = released();
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     let mut worst_g = 0.0f64;
     let mut steps = 0;
     let reason = sim
@@ -72,7 +72,7 @@ fn the_observer_samples_dense_output_and_can_stop_the_run() {
 #[test]
 fn sampling_outside_the_last_step_is_refused() {
     let (q, v) = released();
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     let refused = Err(StepError::InvalidOption(InvalidOption::SampleTime));
     assert_eq!(sim.sample(0.1), refused);
     sim.advance_to(0.1, |_| {}).unwrap();
@@ -85,7 +85,7 @@ fn sampling_outside_the_last_step_is_refused() {
 #[test]
 fn an_inconsistent_start_is_projected_with_a_report_or_refused() {
     let (q, v) = (Vector::<2>::new(3.0, 0.5), Vector::zeros());
-    let sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     let report = sim.start_report();
     let start = sim.last().end.q;
     assert!((start.norm() - 1.0).abs() < 1e-10, "{start}");
@@ -95,7 +95,9 @@ fn an_inconsistent_start_is_projected_with_a_report_or_refused() {
         start: StartPolicy::Refuse,
         ..Options::default()
     };
-    let error = Simulator::new(&PENDULUM, q, v, 0.0, refuse).err().unwrap();
+    let error = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, refuse)
+        .err()
+        .unwrap();
     assert!(
         matches!(error, StepError::InconsistentStart { .. }),
         "{error}"
@@ -103,7 +105,7 @@ fn an_inconsistent_start_is_projected_with_a_report_or_refused() {
     assert!(error.to_string().contains("constraints[0]"), "{error}");
     // A consistent start passes the refusing policy untouched.
     let (q, v) = released();
-    let sim = Simulator::new(&PENDULUM, q, v, 0.0, refuse).unwrap();
+    let sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, refuse).unwrap();
     assert_eq!(sim.start_report().position_change, Vector::<2>::zeros());
 }
 
@@ -111,10 +113,10 @@ fn an_inconsistent_start_is_projected_with_a_report_or_refused() {
 fn given_initial_multipliers_start_the_run() {
     let (q, v) = released();
     let options = Options::paper(1e-3);
-    let computed = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    let computed = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).unwrap();
     // Released at rest from the horizontal, the rod carries no load: λ(0) = 0.
     assert!(computed.last().end.lambda[0].abs() < 1e-12);
-    let mut given = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    let mut given = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).unwrap();
     given.set_initial_multipliers(Vector::from([3.0])).unwrap();
     assert_eq!(given.last().end.lambda[0], 3.0);
     assert!(given.start_report().multipliers_given);
@@ -133,12 +135,18 @@ fn given_initial_multipliers_start_the_run() {
 #[test]
 fn reinitialise_makes_the_new_state_consistent_and_goes_on() {
     let (q, v) = released();
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     sim.advance_to(0.3, |_| {}).unwrap();
     // Kick it: a velocity with a radial part, which the projection removes.
     let kicked = Vector::<2>::new(0.0, -1.0);
     let point = sim.last().end;
-    let report = sim.reinitialise(point.q, point.v + kicked, 0.3).unwrap();
+    let report = sim
+        .reinitialise(Start {
+            q: point.q,
+            v: point.v + kicked,
+            t: 0.3,
+        })
+        .unwrap();
     let end = sim.last().end;
     assert_eq!(end.t, 0.3);
     assert!(end.q.dot(&end.v).abs() < 1e-10);
@@ -148,7 +156,11 @@ fn reinitialise_makes_the_new_state_consistent_and_goes_on() {
     // A refused state leaves the simulator as it was.
     let before = *sim.last();
     assert!(sim
-        .reinitialise(Vector::from([f64::NAN, 0.0]), Vector::zeros(), 0.6)
+        .reinitialise(Start {
+            q: Vector::from([f64::NAN, 0.0]),
+            v: Vector::zeros(),
+            t: 0.6
+        })
         .is_err());
     assert_eq!(*sim.last(), before);
 }
@@ -167,7 +179,7 @@ fn the_step_stays_within_its_bounds() {
         step: bounded,
         ..Options::default()
     };
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).unwrap();
     let mut sizes = Vec::new();
     sim.advance_to(2.0, |step| sizes.push(step.end.t - step.start.t))
         .unwrap();
@@ -177,7 +189,7 @@ fn the_step_stays_within_its_bounds() {
         .all(|&h| (1e-4..=1e-2 * (1.0 + 1e-12)).contains(&h)));
     assert!(*last > 0.0);
     // Switching from fixed steps to a tighter maximum applies from the next step on.
-    let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, Options::paper(0.2)).unwrap();
+    let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::paper(0.2)).unwrap();
     sim.step().unwrap();
     let tight = StepControl::Adaptive {
         initial_step: 1e-3,
@@ -208,7 +220,8 @@ fn quadratic_multipliers_converge_with_the_papers_sensitivity_too() {
         ..Options::default()
     };
     let end = |sensitivity| {
-        let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options(sensitivity)).unwrap();
+        let mut sim =
+            Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options(sensitivity)).unwrap();
         sim.advance_to(1.0, |_| {}).unwrap();
         (sim.last().end, sim.statistics().newton_iterations)
     };
@@ -264,7 +277,7 @@ fn the_automatic_multiplier_model_is_quadratic_with_velocity_rows_or_an_adaptive
     assert_eq!(stiff, MultiplierModel::Quadratic);
     // A mixed scene runs with it and keeps both kinds of rows.
     let (q, v) = (Vector::<3>::new(1.0, 0.0, 0.0), Vector::zeros());
-    let mut sim = Simulator::new(&Follower, q, v, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(&Follower, Start { q, v, t: 0.0 }, Options::default()).unwrap();
     sim.advance_to(1.0, |step| {
         assert!(step.residual.amax() <= 1e-10, "{}", step.residual);
     })
@@ -287,7 +300,7 @@ fn vectors_of_any_size_are_built_from_arrays() {
 fn the_simulator_says_which_multiplier_model_automatic_chose() {
     let (q, v) = released();
     let chosen = |options: Options| {
-        Simulator::new(&PENDULUM, q, v, 0.0, options)
+        Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options)
             .unwrap()
             .multiplier_model()
     };

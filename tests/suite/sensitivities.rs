@@ -129,7 +129,7 @@ fn the_generated_derivatives_by_the_parameters_match_central_differences() {
 mod runs {
     use zeitner::{
         constrained_system, InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator,
-        StepControl, Vector,
+        Start, StepControl, Vector,
     };
     use zeitner_scenes::steam_generator::SteamGenerator;
 
@@ -211,9 +211,11 @@ mod runs {
             };
             let mut sim = SensitivitySimulator::<_, 2, 1, 3>::new(
                 &pendulum,
-                q0,
-                Vector::zeros(),
-                0.0,
+                Start {
+                    q: q0,
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
                 options,
             )
             .expect("a start");
@@ -265,9 +267,16 @@ mod runs {
         };
         let angle: f64 = 1.0;
         let q0 = Vector::<2>::new(1.3 * angle.sin(), -1.3 * angle.cos());
-        let mut sim =
-            SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, q0, Vector::zeros(), 0.0, options)
-                .expect("a start");
+        let mut sim = SensitivitySimulator::<_, 2, 1, 3>::new(
+            &pendulum,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .expect("a start");
         assert_eq!(
             sim.advance_to(2.0),
             Ok(zeitner::StopReason::StopTimeReached)
@@ -346,8 +355,16 @@ mod runs {
         options: Options,
         t_end: f64,
     ) -> (Vector<3>, Vector<3>, Vector<2>) {
-        let mut sim =
-            zeitner::Simulator::new(scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = zeitner::Simulator::new(
+            scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         sim.advance_to(t_end, |_| {}).unwrap();
         let end = sim.last().end;
         (end.q, end.v, end.lambda)
@@ -360,9 +377,11 @@ mod runs {
         let t_end = 0.3;
         let mut sim = SensitivitySimulator::<_, 3, 2, 4>::new(
             &paper,
-            Vector::zeros(),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             options,
         )
         .unwrap();
@@ -448,7 +467,7 @@ mod runs {
 
 mod velocity_rows {
     use zeitner::{
-        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator, Start,
         StepControl, StopReason, Vector,
     };
     use zeitner_scenes::knife_edge::{KnifeEdge, SteeredKnifeEdge};
@@ -487,9 +506,16 @@ mod velocity_rows {
                 ..Options::default()
             };
             let v0 = Vector::<3>::new(0.0, 0.0, omega);
-            let mut sim =
-                SensitivitySimulator::<_, 3, 1, 3>::new(&edge, Vector::zeros(), v0, 0.0, options)
-                    .unwrap();
+            let mut sim = SensitivitySimulator::<_, 3, 1, 3>::new(
+                &edge,
+                Start {
+                    q: Vector::zeros(),
+                    v: v0,
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             run_to(&mut sim, 2.0);
             let s = *sim.sensitivities();
             let end = sim.simulator().last().end;
@@ -548,16 +574,32 @@ mod velocity_rows {
             };
             let scene = steered(theta);
             let v0 = Vector::<3>::new(0.0, 0.0, theta[1]);
-            let mut sim =
-                SensitivitySimulator::<_, 3, 2, 3>::new(&scene, Vector::zeros(), v0, 0.0, options)
-                    .unwrap();
+            let mut sim = SensitivitySimulator::<_, 3, 2, 3>::new(
+                &scene,
+                Start {
+                    q: Vector::zeros(),
+                    v: v0,
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             sim.set_stop_time(1.0).unwrap();
             while sim.step().unwrap() != StopReason::StopTimeReached {}
             let s = *sim.sensitivities();
             let run = |theta: [f64; 3]| {
                 let scene = steered(theta);
                 let v0 = Vector::<3>::new(0.0, 0.0, theta[1]);
-                let mut sim = Simulator::new(&scene, Vector::zeros(), v0, 0.0, options).unwrap();
+                let mut sim = Simulator::new(
+                    &scene,
+                    Start {
+                        q: Vector::zeros(),
+                        v: v0,
+                        t: 0.0,
+                    },
+                    options,
+                )
+                .unwrap();
                 sim.advance_to(1.0, |_| {}).unwrap();
                 let end = sim.last().end;
                 (end.q, end.v, end.lambda)
@@ -597,7 +639,7 @@ mod velocity_rows {
 
 mod refusals {
     use zeitner::{
-        InnerMethod, InvalidOption, Options, SensitivitySimulator, StepError, Vector,
+        InnerMethod, InvalidOption, Options, SensitivitySimulator, Start, StepError, Vector,
         VelocityProjection,
     };
     use zeitner_scenes::spring_support::SpringSupportedPendulum;
@@ -615,13 +657,29 @@ mod refusals {
             method: InnerMethod::Esdirk54,
             ..Options::default()
         };
-        let error = SensitivitySimulator::<_, 3, 2, 4>::new(&paper, zero, zero, 0.0, implicit);
+        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
+            &paper,
+            Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            },
+            implicit,
+        );
         refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
         let raw = Options {
             velocity_projection: VelocityProjection::Off,
             ..Options::default()
         };
-        let error = SensitivitySimulator::<_, 3, 2, 4>::new(&paper, zero, zero, 0.0, raw);
+        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
+            &paper,
+            Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            },
+            raw,
+        );
         refused(
             error.err().unwrap(),
             InvalidOption::SensitivitiesOfRawOutput,
@@ -642,9 +700,11 @@ mod refusals {
         let q0 = Vector::<3>::from([0.0, 0.3, 0.0]);
         let mut sim = SensitivitySimulator::<_, 3, 3, 2>::new(
             &bar,
-            q0,
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             Options::default(),
         )
         .unwrap();
@@ -674,9 +734,11 @@ mod refusals {
         let q0 = Vector::<4>::from(scene.start());
         let mut sim = SensitivitySimulator::<_, 4, 1, 2>::new(
             &scene,
-            q0,
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             Options::default(),
         )
         .unwrap();
@@ -706,7 +768,7 @@ mod refusals {
 
 mod impacts {
     use zeitner::{
-        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator, Start,
         StepControl, StopReason, Vector,
     };
     use zeitner_scenes::contact::{Ball, WallPendulum};
@@ -749,9 +811,11 @@ mod impacts {
             };
             let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
                 &ball,
-                Vector::from([h]),
-                Vector::zeros(),
-                0.0,
+                Start {
+                    q: Vector::from([h]),
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
                 options,
             )
             .unwrap();
@@ -824,9 +888,11 @@ mod impacts {
         };
         let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
             ball,
-            Vector::from([y0]),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::from([y0]),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             options,
         )
         .unwrap();
@@ -912,9 +978,11 @@ mod impacts {
         let y0 = 2.0;
         let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
             &ball,
-            Vector::from([y0]),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::from([y0]),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             Options::default(),
         )
         .unwrap();
@@ -948,9 +1016,11 @@ mod impacts {
         };
         let mut sim = SensitivitySimulator::<_, 1, 1, 2>::new(
             &ball,
-            Vector::from([1.0]),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::from([1.0]),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             Options::default(),
         )
         .unwrap();
@@ -985,8 +1055,16 @@ mod impacts {
         let start = |theta: [f64; 2]| Vector::<2>::new(theta[0], 0.0);
         let run = |options: Options, theta: [f64; 2]| {
             let scene = wall(theta);
-            let mut sim =
-                Simulator::new(&scene, start(theta), Vector::zeros(), 0.0, options).unwrap();
+            let mut sim = Simulator::new(
+                &scene,
+                Start {
+                    q: start(theta),
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             sim.set_stop_time(t_end).unwrap();
             let mut impacts = 0;
             loop {
@@ -1014,9 +1092,11 @@ mod impacts {
             let scene = wall(theta);
             let mut sim = SensitivitySimulator::<_, 2, 2, 2>::new(
                 &scene,
-                start(theta),
-                Vector::zeros(),
-                0.0,
+                Start {
+                    q: start(theta),
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
                 options,
             )
             .unwrap();
@@ -1057,7 +1137,7 @@ mod impacts {
 
 mod paper_with_gap {
     use zeitner::{
-        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator,
+        InnerMethod, Matrix, MultiplierModel, Options, SensitivitySimulator, Simulator, Start,
         StepControl, StopReason, Vector,
     };
     use zeitner_scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
@@ -1084,10 +1164,26 @@ mod paper_with_gap {
         let sparse = WithStorage::<_, Sparse>::new(&s);
         let zero = Vector::zeros();
         let options = Options::default();
-        let mut on_dense =
-            SensitivitySimulator::<_, 3, 3, 3>::new(&s, zero, zero, 0.0, options).unwrap();
-        let mut on_sparse =
-            SensitivitySimulator::<_, 3, 3, 3>::new(&sparse, zero, zero, 0.0, options).unwrap();
+        let mut on_dense = SensitivitySimulator::<_, 3, 3, 3>::new(
+            &s,
+            Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
+        let mut on_sparse = SensitivitySimulator::<_, 3, 3, 3>::new(
+            &sparse,
+            Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         let (mut impacts, mut worst) = (0, 0.0_f64);
         for step in 0.. {
             let (a, b) = (on_dense.step().unwrap(), on_sparse.step().unwrap());
@@ -1118,8 +1214,16 @@ mod paper_with_gap {
         let fixed = StepControl::Fixed { step: 1e-3 };
         let run = |options: Options, theta: [f64; 3]| {
             let s = scene(theta);
-            let mut sim =
-                Simulator::new(&s, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+            let mut sim = Simulator::new(
+                &s,
+                Start {
+                    q: Vector::zeros(),
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             sim.set_stop_time(t_end).unwrap();
             let mut reasons = Vec::new();
             loop {
@@ -1147,9 +1251,11 @@ mod paper_with_gap {
             let s = scene(theta);
             let mut sim = SensitivitySimulator::<_, 3, 3, 3>::new(
                 &s,
-                Vector::zeros(),
-                Vector::zeros(),
-                0.0,
+                Start {
+                    q: Vector::zeros(),
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
                 options,
             )
             .unwrap();
@@ -1194,6 +1300,7 @@ mod wild_inputs {
 
     use super::runs::Pendulum;
     use crate::errors::{options, wild};
+    use zeitner::Start;
 
     proptest! {
         #![proptest_config(ProptestConfig {
@@ -1213,7 +1320,7 @@ mod wild_inputs {
         ) {
             let pendulum = Pendulum { l: params[0], g: params[1], m: params[2] };
             let (q, v) = (Vector::<2>::new(state[0], state[1]), Vector::<2>::new(state[2], state[3]));
-            if let Ok(mut sim) = SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, q, v, 0.0, options) {
+            if let Ok(mut sim) = SensitivitySimulator::<_, 2, 1, 3>::new(&pendulum, Start { q, v, t: 0.0 }, options) {
                 if sim.set_stop_time(t_end).is_ok() {
                     for _ in 0..3 {
                         if sim.step().is_err() {
@@ -1226,7 +1333,7 @@ mod wild_inputs {
             }
             let ball = Ball { m: params[2], g: params[1], e: 0.5 };
             let (q, v) = (Vector::<1>::new(state[0]), Vector::<1>::new(state[2]));
-            if let Ok(mut sim) = SensitivitySimulator::<_, 1, 1, 2>::new(&ball, q, v, 0.0, options) {
+            if let Ok(mut sim) = SensitivitySimulator::<_, 1, 1, 2>::new(&ball, Start { q, v, t: 0.0 }, options) {
                 if sim.set_stop_time(t_end).is_ok() {
                     for _ in 0..4 {
                         if sim.step().is_err() {
@@ -1243,7 +1350,7 @@ mod wild_inputs {
 
 mod spring_gap {
     use zeitner::{
-        constrained_system, Options, SensitivitySimulator, StepControl, StopReason, Vector,
+        constrained_system, Options, SensitivitySimulator, Start, StepControl, StopReason, Vector,
     };
 
     /// A mass on a spring with a stop: `x ≥ -d`, released from rest at `x = A > d`.
@@ -1298,9 +1405,11 @@ mod spring_gap {
         };
         let mut sim = SensitivitySimulator::<_, 1, 1, 3>::new(
             &scene,
-            Vector::from([a]),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::from([a]),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             options,
         )
         .unwrap();

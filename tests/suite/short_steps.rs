@@ -12,7 +12,8 @@ use common::relative_error;
 use common::slider_crank::{reduced, SliderCrankOnAxis};
 use common::steam_generator::SteamGenerator;
 use zeitner::{
-    InnerMethod, MultiplierModel, Options, Simulator, StepControl, StepError, StopReason, Vector,
+    InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, StepError, StopReason,
+    Vector,
 };
 
 const PENDULUM: Pendulum = Pendulum {
@@ -35,7 +36,16 @@ fn pendulum_with_stops(short_step: bool) -> f64 {
         ..Options::default()
     };
     let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &PENDULUM,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let e0 = pendulum_energy(&sim.last().end.q, &sim.last().end.v);
     let mut worst = 0.0f64;
     let mut watch = |r: &zeitner::StepReport<2, 1>| {
@@ -67,7 +77,16 @@ fn a_stop_time_a_picosecond_after_another_costs_no_energy() {
 fn slider_crank(options: Options, t_end: f64) -> (f64, Vec<f64>, zeitner::Statistics) {
     let scene = SliderCrankOnAxis::nominal();
     let (q0, v0) = scene.at_rest(30f64.to_radians());
-    let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let e0 = scene.energy(&sim.last().end.q, &sim.last().end.v);
     let mut worst = 0.0f64;
     let mut crossings = Vec::new();
@@ -110,7 +129,16 @@ fn crank_run(
         ..Options::default()
     };
     let (q0, v0) = scene.at_rest(phi0);
-    let mut sim = Simulator::new(scene, q0, v0, 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let mut crossings = Vec::new();
     while let StopReason::Event { .. } = sim.advance_to(t_end, |_| {}).unwrap() {
         crossings.push(sim.time());
@@ -199,8 +227,16 @@ fn steam_generator_with_time_events() -> (f64, f64) {
         .iter_mut()
         .zip([&[][..], &[0.043388798705954024, 0.032914576577866304]])
     {
-        let mut sim =
-            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = Simulator::new(
+            &scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         sim.set_time_events(events).unwrap();
         for stop in [scene.rise, t_end] {
             while sim.advance_to(stop, |_| {}).unwrap() != StopReason::StopTimeReached {}
@@ -286,7 +322,16 @@ fn one_newton_integration_per_step_still_advances() {
         ..Options::default()
     };
     let q0 = Vector::<2>::new(1.0, 0.0);
-    let mut sim = Simulator::new(&PENDULUM, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &PENDULUM,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let outcome = sim.advance_to(1.0, |_| {});
     let steps = sim.statistics().steps;
     eprintln!(
@@ -323,7 +368,16 @@ fn a_diverging_newton_does_not_call_a_regular_mechanism_singular() {
         ..Options::default()
     };
     let (q0, v0) = scene.at_rest(phi0);
-    let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     while sim.advance_to(t_end, |_| {}).unwrap() != StopReason::StopTimeReached {}
     let (_, reference) = reduced(&scene, phi0, t_end, 1e-5);
     let end = sim.last().end;
@@ -354,11 +408,25 @@ fn tighter_tolerances_then_a_stop_a_few_ulps_later() {
     };
     let loose = adaptive(2.2085540394605744e-9, 1.1592264999455646e-10);
     let q0 = Vector::<2>::new(scene.length, 0.0);
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, loose).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        loose,
+    )
+    .unwrap();
     let first = 2.237197767461887;
     sim.advance_to(first, |_| {}).unwrap();
     let end = sim.last().end;
-    sim.reinitialise(end.q, end.v, end.t).unwrap();
+    sim.reinitialise(Start {
+        q: end.q,
+        v: end.v,
+        t: end.t,
+    })
+    .unwrap();
     sim.set_options(adaptive(2.2085540394605744e-10, 1.1592264999455646e-11))
         .unwrap();
     let second = f64::from_bits(first.to_bits() + 16);

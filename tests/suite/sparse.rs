@@ -13,7 +13,7 @@ use common::steam_generator::SteamGenerator;
 use common::stiff::RedundantFourBar;
 use zeitner::{
     constrained_system, ConstrainedSystem, InnerMethod, Matrix, Options, Simulator,
-    SparseSimulator, StepControl, Vector,
+    SparseSimulator, Start, StepControl, Vector,
 };
 
 fn adaptive(rtol: f64) -> Options {
@@ -49,7 +49,16 @@ fn the_pendulum_follows_its_angle_reference() {
         ),
     ] {
         let q0 = Vector::<2>::new(1.0, 0.0);
-        let mut sim = SparseSimulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = SparseSimulator::new(
+            &scene,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         let mut max_g = 0.0f64;
         sim.advance_to(5.0, |r| max_g = max_g.max(r.residual.amax()))
             .unwrap();
@@ -85,13 +94,30 @@ fn the_knife_edge_follows_its_closed_form() {
         constraint_tolerance: 1e-12,
         ..Options::default()
     };
-    let mut sim = SparseSimulator::new(&scene, q0, v0, 0.0, fixed).unwrap();
+    let mut sim = SparseSimulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        fixed,
+    )
+    .unwrap();
     sim.advance_to(3.0, |_| {}).unwrap();
     let exact = scene.exact(omega, 3.0);
     let error = (sim.last().end.q - Vector::from(exact.q)).amax();
     println!("knife edge: q {error:.1e}, {:?}", sim.statistics());
     assert!(error < 2e-7, "{error:e}");
-    let refused = SparseSimulator::new(&scene, q0, v0, 0.0, adaptive(1e-10));
+    let refused = SparseSimulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        adaptive(1e-10),
+    );
     assert!(
         matches!(
             refused,
@@ -110,9 +136,11 @@ fn steps_land_on_the_models_time_events() {
     let scene = SteamGenerator::paper();
     let mut sim = SparseSimulator::new(
         &scene,
-        Vector::zeros(),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         adaptive(1e-8),
     )
     .unwrap();
@@ -204,14 +232,31 @@ impl FourBar {
 fn a_redundant_equation_runs_with_minimum_norm_multipliers() {
     let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
     let options = adaptive(1e-10);
-    let mut redundant =
-        SparseSimulator::new(&FOUR_BAR, start, Vector::zeros(), 0.0, options).unwrap();
+    let mut redundant = SparseSimulator::new(
+        &FOUR_BAR,
+        Start {
+            q: start,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let rows = redundant.start_report().redundant_rows;
     assert_eq!(rows.len(), 1, "{rows}");
     assert!(!rows.contains(1), "the coupler is independent: {rows}");
     // The dense simulator on the independent equations is the reference.
     let plain = FourBar(FOUR_BAR);
-    let mut reference = Simulator::new(&plain, start, Vector::zeros(), 0.0, options).unwrap();
+    let mut reference = Simulator::new(
+        &plain,
+        Start {
+            q: start,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     redundant.advance_to(2.0, |_| {}).unwrap();
     reference.advance_to(2.0, |_| {}).unwrap();
     let (a, b) = (redundant.last().end, reference.last().end);
@@ -254,8 +299,16 @@ fn a_chain_of_100_pendulums_written_with_loops_steps_on_a_2_mib_thread() {
                     constraint_tolerance: 1e-12,
                     ..Options::default()
                 };
-                let mut sim =
-                    SparseSimulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+                let mut sim = SparseSimulator::new(
+                    &scene,
+                    Start {
+                        q: q0,
+                        v: Vector::zeros(),
+                        t: 0.0,
+                    },
+                    options,
+                )
+                .unwrap();
                 let mut max_g = 0.0f64;
                 sim.advance_to(0.05, |r| max_g = max_g.max(r.residual.amax()))
                     .unwrap();
@@ -299,7 +352,16 @@ fn the_ladder_pinned_at_both_ends_hangs_in_equilibrium() {
             0.0
         }
     });
-    let mut sim = SparseSimulator::new(&scene, q0, Vector::zeros(), 0.0, adaptive(1e-8)).unwrap();
+    let mut sim = SparseSimulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        adaptive(1e-8),
+    )
+    .unwrap();
     let rows = sim.start_report().redundant_rows;
     assert_eq!(rows.len(), 1, "{rows}");
     sim.advance_to(1.0, |_| {}).unwrap();
@@ -353,7 +415,16 @@ fn what_it_does_not_run_is_refused_typed_and_a_failed_step_keeps_the_state() {
             ..Options::default()
         },
     ] {
-        let error = SparseSimulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).err();
+        let error = SparseSimulator::new(
+            &pendulum,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .err();
         assert!(refused(error), "{error:?}");
     }
     let full_mass = CoupledMassPendulum {
@@ -362,13 +433,29 @@ fn what_it_does_not_run_is_refused_typed_and_a_failed_step_keeps_the_state() {
         m22: 1.0,
         g: 9.81,
     };
-    let error =
-        SparseSimulator::new(&full_mass, q0, Vector::zeros(), 0.0, Options::default()).err();
+    let error = SparseSimulator::new(
+        &full_mass,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        Options::default(),
+    )
+    .err();
     assert!(refused(error), "{error:?}");
     // A start that is not finite.
     let nan = Vector::<2>::new(f64::NAN, 0.0);
-    let error =
-        SparseSimulator::new(&pendulum, nan, Vector::zeros(), 0.0, Options::default()).err();
+    let error = SparseSimulator::new(
+        &pendulum,
+        Start {
+            q: nan,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        Options::default(),
+    )
+    .err();
     assert!(
         matches!(error, Some(StepError::NonFinite { .. })),
         "{error:?}"
@@ -380,7 +467,16 @@ fn what_it_does_not_run_is_refused_typed_and_a_failed_step_keeps_the_state() {
         max_newton_iterations: 1,
         ..Options::default()
     };
-    let mut sim = SparseSimulator::new(&pendulum, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = SparseSimulator::new(
+        &pendulum,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let before = *sim.last();
     let error = sim.step().err();
     assert!(

@@ -7,7 +7,9 @@ use crate::common;
 use common::pendulum::Pendulum;
 use common::steam_generator::SteamGenerator;
 use common::stiff::{DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum};
-use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, StepError, Vector};
+use zeitner::{
+    ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
+};
 
 fn fixed(method: InnerMethod, h: f64) -> Options {
     Options {
@@ -26,7 +28,16 @@ fn run_bounded<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: Options,
     energy: impl Fn(&[f64], &[f64]) -> f64,
 ) -> (f64, f64) {
-    let mut sim = Simulator::new(scene, start.0, start.1, 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: start.0,
+            v: start.1,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let e0 = energy(sim.last().end.q.as_slice(), sim.last().end.v.as_slice());
     let (mut max_g, mut gain) = (0.0f64, 0.0f64);
     sim.advance_to(t_end, |r| {
@@ -78,9 +89,11 @@ fn explicit_rk4_on_a_stiff_spring_fails_typed_and_keeps_its_state() {
     let start = (Vector::from(SPRING_START.0), Vector::from(SPRING_START.1));
     let mut sim = Simulator::new(
         &scene,
-        start.0,
-        start.1,
-        0.0,
+        Start {
+            q: start.0,
+            v: start.1,
+            t: 0.0,
+        },
         fixed(InnerMethod::Rk4 { substeps: 1 }, 1e-3),
     )
     .unwrap();
@@ -190,7 +203,16 @@ fn a_dependent_equation_is_named() {
         g: 9.81,
     };
     let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
-    let error = Simulator::new(&scene, start, Vector::zeros(), 0.0, Options::default()).err();
+    let error = Simulator::new(
+        &scene,
+        Start {
+            q: start,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        Options::default(),
+    )
+    .err();
     let Some(StepError::RankDeficientConstraints { dependent_rows, .. }) = error else {
         panic!("expected rank deficiency, got {error:?}");
     };
@@ -211,9 +233,11 @@ fn a_load_rising_in_a_microsecond_and_switched_off() {
     };
     let mut sim = Simulator::new(
         &scene,
-        Vector::zeros(),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         Options::default(),
     )
     .unwrap();
@@ -243,17 +267,21 @@ fn the_same_pendulum_in_metres_and_millimetres() {
     };
     let mut a = Simulator::new(
         &metres,
-        Vector::<2>::new(1.0, 0.0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::<2>::new(1.0, 0.0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options(1.0),
     )
     .unwrap();
     let mut b = Simulator::new(
         &millimetres,
-        Vector::<2>::new(1000.0, 0.0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::<2>::new(1000.0, 0.0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options(1000.0),
     )
     .unwrap();
@@ -294,9 +322,11 @@ fn a_bead_sliding_into_a_cusp_stops_naming_the_vanishing_gradient() {
     ] {
         let mut sim = Simulator::new(
             &scene,
-            Vector::<2>::new(1.0, 1.0),
-            Vector::zeros(),
-            0.0,
+            Start {
+                q: Vector::<2>::new(1.0, 1.0),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
             options,
         )
         .unwrap();

@@ -7,7 +7,7 @@ use common::reference::steam_generator as reference;
 use common::relative_error;
 use common::steam_generator::SteamGenerator;
 use zeitner::{
-    InnerMethod, Options, Sensitivity, Simulator, StepControl, Vector, VelocityProjection,
+    InnerMethod, Options, Sensitivity, Simulator, Start, StepControl, Vector, VelocityProjection,
 };
 
 fn tight() -> Options {
@@ -31,7 +31,16 @@ fn tight() -> Options {
 #[test]
 fn matches_the_reduced_coordinate_solution() {
     let scene = SteamGenerator::paper();
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, tight()).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        tight(),
+    )
+    .unwrap();
     for t in [0.5, 1.0, 2.0] {
         sim.advance_to(t, |_| {}).unwrap();
         let end = sim.last().end;
@@ -57,7 +66,16 @@ fn constraints_hold_after_every_step_with_the_papers_method() {
         constraint_tolerance: 1e-9,
         ..Options::paper(1e-3)
     };
-    let mut sim = Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let mut steps = 0;
     sim.advance_to(2.0, |report| {
         steps += 1;
@@ -128,8 +146,16 @@ fn through_the_kink(options: Options, time_events: bool) -> (f64, u64, u64) {
     let scene = SteamGenerator::paper();
     let plain = WithoutTimeEvents(&scene);
     let (end, stats) = if time_events {
-        let mut sim =
-            Simulator::new(&scene, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = Simulator::new(
+            &scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         let mut landed = Vec::new();
         sim.advance_to(0.5, |step| {
             if step.reason() == zeitner::StopReason::TimeEventReached {
@@ -140,8 +166,16 @@ fn through_the_kink(options: Options, time_events: bool) -> (f64, u64, u64) {
         assert_eq!(landed, [scene.rise]);
         (sim.last().end, sim.statistics())
     } else {
-        let mut sim =
-            Simulator::new(&plain, Vector::zeros(), Vector::zeros(), 0.0, options).unwrap();
+        let mut sim = Simulator::new(
+            &plain,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .unwrap();
         sim.advance_to(0.5, |_| {}).unwrap();
         (sim.last().end, sim.statistics())
     };

@@ -7,7 +7,7 @@ use crate::common;
 use common::reference::spring_supported_pendulum;
 use common::relative_error;
 use common::spring_support::SpringSupportedPendulum;
-use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, StepControl, Vector};
+use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, Vector};
 
 const END: f64 = 0.25;
 
@@ -28,7 +28,16 @@ fn run(method: InnerMethod, multipliers: MultiplierModel, rtol: f64) -> ([f64; 3
         ..Options::default()
     };
     let q0 = Vector::from(scene.start());
-    let mut sim = Simulator::new(&scene, q0, Vector::zeros(), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     if let Err(e) = sim.advance_to(END, |_| {}) {
         panic!(
             "{method:?} {multipliers:?} rtol {rtol:e}: {e} at {:?}",

@@ -8,7 +8,7 @@ use common::modal::{ModalState, Modes};
 use common::structure::{Column, Lumped, Structure100, Structure16};
 use zeitner::storage::Sparse;
 use zeitner::{
-    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Point, Simulator, StepControl,
+    ConstrainedSystem, InnerMethod, MultiplierModel, Options, Point, Simulator, Start, StepControl,
     StopReason, Vector, WithStorage,
 };
 
@@ -30,7 +30,16 @@ where
         step: StepControl::adaptive(rtol),
         ..Options::default()
     };
-    let mut sim = Simulator::new(scene, Vector::from(q0), Vector::from(v0), 0.0, options).unwrap();
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: Vector::from(q0),
+            v: Vector::from(v0),
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     let contact = modes.first_contact();
     let t = contact - 1e-3;
     sim.advance_to(t, |_| {}).unwrap();
@@ -129,7 +138,16 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
             let (q0, v0) = scene.start();
             let options = Options::default();
             let (q0, v0) = (Vector::from(q0), Vector::from(v0));
-            let mut sim = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
+            let mut sim = Simulator::new(
+                &scene,
+                Start {
+                    q: q0,
+                    v: v0,
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             assert_eq!(sim.method(), InnerMethod::Verner98);
             let t = modes.first_contact() - 1e-3;
             sim.advance_to(t, |_| {}).unwrap();
@@ -165,8 +183,26 @@ fn both_storages_give_the_same_run() {
     };
     let sparse = WithStorage::<_, Sparse>::new(&scene);
     let (q0, v0) = (Vector::from(q0), Vector::from(v0));
-    let mut on_dense = Simulator::new(&scene, q0, v0, 0.0, options).unwrap();
-    let mut on_sparse = Simulator::new(&sparse, q0, v0, 0.0, options).unwrap();
+    let mut on_dense = Simulator::new(
+        &scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
+    let mut on_sparse = Simulator::new(
+        &sparse,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .unwrap();
     on_dense.advance_to(0.1, |_| {}).unwrap();
     on_sparse.advance_to(0.1, |_| {}).unwrap();
     let (dense, sparse) = (on_dense.last().end, on_sparse.last().end);

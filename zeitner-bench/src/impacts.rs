@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 
 use zeitner::{
-    ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, StopReason, Vector,
+    ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StopReason, Vector,
 };
 
 use crate::scenes::contact::{Ball, FallingBar, WallPendulum};
@@ -67,7 +67,16 @@ fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     t_end: f64,
     options: Options,
 ) -> Result<(Vec<zeitner::Impact<N, Z>>, f64, Simulator<'_, S, N, Z>), String> {
-    let mut sim = Simulator::new(scene, q0, v0, 0.0, options).map_err(|e| format!("{e:?}"))?;
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    )
+    .map_err(|e| format!("{e:?}"))?;
     let (mut impacts, mut deepest) = (Vec::new(), f64::INFINITY);
     let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
     loop {

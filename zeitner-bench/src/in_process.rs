@@ -1,6 +1,8 @@
 //! What the in-process Rust peers share: the consistent start and the timed repeats.
 
-use zeitner::{ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, Vector};
+use zeitner::{
+    ConstrainedSystem, MassFactor, MassMatrix, Matrix, Options, Simulator, Start, Vector,
+};
 
 use crate::measure::median;
 use crate::peers::{PeerEnd, PeerRun};
@@ -15,7 +17,15 @@ pub fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
         constraint_tolerance: 1e-12,
         ..Options::default()
     };
-    match Simulator::new(scene, start.0, start.1, 0.0, options) {
+    match Simulator::new(
+        scene,
+        Start {
+            q: start.0,
+            v: start.1,
+            t: 0.0,
+        },
+        options,
+    ) {
         Ok(sim) => {
             let end = sim.last().end;
             Ok(end

@@ -8,7 +8,7 @@ use std::time::Instant;
 use clap::Args;
 use zeitner::{
     InnerMethod, MultiplierModel, Options, ParametrisedSystem, SensitivitySimulator, Simulator,
-    StepControl, StopReason, Vector,
+    Start, StepControl, StopReason, Vector,
 };
 
 use crate::scenes::andrews::Andrews;
@@ -48,14 +48,31 @@ where
 {
     let mut steps = 0;
     let plain = fastest(repeats, || {
-        let mut sim = Simulator::new(scene, q0, v0, 0.0, options).expect("a start");
+        let mut sim = Simulator::new(
+            scene,
+            Start {
+                q: q0,
+                v: v0,
+                t: 0.0,
+            },
+            options,
+        )
+        .expect("a start");
         sim.advance_to(t_end, |_| {}).expect("a run");
         steps = sim.statistics().steps;
     });
     let mut failure = None;
     let with = fastest(repeats, || {
         let run = || -> Result<(), zeitner::StepError> {
-            let mut sim = SensitivitySimulator::<_, N, Z, P>::new(scene, q0, v0, 0.0, options)?;
+            let mut sim = SensitivitySimulator::<_, N, Z, P>::new(
+                scene,
+                Start {
+                    q: q0,
+                    v: v0,
+                    t: 0.0,
+                },
+                options,
+            )?;
             sim.set_stop_time(t_end)?;
             while sim.step()? != StopReason::StopTimeReached {}
             Ok(())

@@ -3,7 +3,9 @@
 
 use std::fmt::Write as _;
 
-use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, StepError, Vector};
+use zeitner::{
+    ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
+};
 
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference;
@@ -75,7 +77,15 @@ fn run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         constraint_tolerance: options.constraint_tolerance,
         ..Outcome::default()
     };
-    let mut sim = match Simulator::new(scene, q0, v0, 0.0, options) {
+    let mut sim = match Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        options,
+    ) {
         Ok(sim) => sim,
         Err(error) => {
             outcome.failure = Some(format!("{} (start)", variant_name(&error)));

@@ -19,7 +19,7 @@ use rand::RngExt;
 use zeitner::storage::Sparse;
 use zeitner::{
     ConstrainedSystem, Float, InnerMethod, MassKind, MultiplierModel, Options, Sensitivity,
-    Simulator, StepControl, StepError, Vector, WithStorage,
+    Simulator, Start, StepControl, StepError, Vector, WithStorage,
 };
 
 use crate::cases::{explicit_adaptive_method, multiplier_model, rng, variant, Rng};
@@ -500,7 +500,7 @@ fn integrate_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (stops, energy): (&[Float], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
     let disturbances = &case.disturbances;
-    let mut sim = Simulator::new(scene, q, v, 0.0, case.options)?;
+    let mut sim = Simulator::new(scene, Start { q, v, t: 0.0 }, case.options)?;
     sim.set_time_events(&disturbances.time_events)?;
     let mut along = Along::from(&sim.last().end, energy);
     let mut crossings = Vec::new();
@@ -514,7 +514,11 @@ fn integrate_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
         if disturbances.reinitialise_after == Some(k) {
             let end = sim.last().end;
-            sim.reinitialise(end.q, end.v, end.t)?;
+            sim.reinitialise(Start {
+                q: end.q,
+                v: end.v,
+                t: end.t,
+            })?;
         }
         if let Some((_, options)) = disturbances.set_options_after.filter(|(j, _)| *j == k) {
             sim.set_options(options)?;
@@ -530,7 +534,7 @@ fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: Options,
     (stops, energy): (&[Float], Energy<'_, N>),
 ) -> Result<Run<N, Z>, StepError> {
-    let mut sim = zeitner::SparseSimulator::new(scene, q, v, 0.0, options)?;
+    let mut sim = zeitner::SparseSimulator::new(scene, Start { q, v, t: 0.0 }, options)?;
     let mut along = Along::from(&sim.last().end, energy);
     for &stop in stops {
         sim.advance_to(stop, |step| along.see(&step.end))?;

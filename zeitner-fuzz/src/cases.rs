@@ -44,8 +44,8 @@ use zeitner::storage::Sparse;
 use zeitner::{
     ConstrainedSystem, ControllerSettings, Direction, EventSettings, Float, GapSet, Impact,
     InnerMethod, InvalidOption, MassKind, MassMatrix, MultiplierModel, Options, Point, Sensitivity,
-    Simulator, StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason, Vector,
-    VelocityProjection, WithStorage,
+    Simulator, Start, StartPolicy, StartReport, StepControl, StepError, StepReport, StopReason,
+    Vector, VelocityProjection, WithStorage,
 };
 
 use crate::fuzz_scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
@@ -1524,6 +1524,8 @@ struct Snapshot<const N: usize, const Z: usize> {
     start_report: Option<StartReport<N, Z>>,
     closed_gaps: Option<GapSet>,
     last_impact: Option<Option<Impact<N, Z>>>,
+    /// [`zeitner::Statistics::steps_aimed_at_crossings`] so far.
+    aimed_steps: u64,
 }
 
 /// Bit-for-bit equality of two impacts (through `Debug`, which prints every `Float` exactly).
@@ -1543,6 +1545,7 @@ impl<const N: usize, const Z: usize> Snapshot<N, Z> {
             start_report: Some(*sim.start_report()),
             closed_gaps: Some(sim.closed_gaps()),
             last_impact: Some(sim.last_impact().copied()),
+            aimed_steps: sim.statistics().steps_aimed_at_crossings,
         }
     }
 
@@ -1799,14 +1802,14 @@ fn check_gaps<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 }
 
 /// Whether `step()` says it ended a step early on purpose: at a time event, an event, a
-/// contact opening or just before gaps close.
+/// contact opening or just before gaps close (an aimed step whose crossing lay a little beyond
+/// is told by the statistics).
 fn landed_on_purpose(reason: StopReason) -> bool {
     matches!(
         reason,
         StopReason::Event { .. }
             | StopReason::ContactsOpened { .. }
             | StopReason::GapsClosing { .. }
-            | StopReason::CrossingAhead
             | StopReason::TimeEventReached
     )
 }
@@ -2049,7 +2052,15 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     outcome.calls += 1;
     let q0 = Vector::<N>::from_column_slice(&case.q0);
     let v0 = Vector::<N>::from_column_slice(&case.v0);
-    let sim = match Simulator::new(scene, q0, v0, case.t0, case.options) {
+    let sim = match Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: case.t0,
+        },
+        case.options,
+    ) {
         Ok(sim) => sim,
         Err(error) => {
             trace(format!("new: {error:?}"));
@@ -2348,7 +2359,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             (Change::Step, _) => {}
         }
         let landed = stop == Some(report.end.t);
-        let crossing = landed_on_purpose(reason) || {
+        let aimed = sim.statistics().steps_aimed_at_crossings > before.aimed_steps;
+        if aimed && (S::UNILATERAL_CONSTRAINTS + S::EVENTS == 0 || landed) {
+            return inconsistent("aimed at a crossing");
+        }
+        let crossing = aimed || landed_on_purpose(reason) || {
             let open = GapSet::first(S::UNILATERAL_CONSTRAINTS)
                 .without(before.closed_gaps.expect("taken"));
             ends_at_a_crossing(scene, &report, (options, open), &facts)
@@ -2378,7 +2393,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             StopReason::ContactsOpened { gaps } | StopReason::GapsClosing { gaps } => {
                 !gaps.is_empty() && (0..S::UNILATERAL_CONSTRAINTS).any(|k| gaps.contains(k))
             }
-            StopReason::CrossingAhead => S::UNILATERAL_CONSTRAINTS + S::EVENTS > 0 && !landed,
             _ => false,
         };
         if !consistent {
@@ -2672,7 +2686,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             time.resolve(&before.last),
         );
         let call = format!("{call} (reinitialise(t = {t:e}))");
-        match sim.reinitialise(q, v, t) {
+        match sim.reinitialise(Start { q, v, t }) {
             Ok(report) => {
                 (self.trace)(format!("{call}: Ok"));
                 self.started(&call)?;

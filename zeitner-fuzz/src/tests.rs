@@ -90,7 +90,7 @@ fn a_seeded_fuzz_run_breaks_no_promise() {
 
 use crate::fuzz_scenes::{FollowerPendulum, Sleigh};
 use zeitner::{
-    ControllerSettings, Float, Options, Simulator, StepControl, Vector, VelocityProjection,
+    ControllerSettings, Float, Options, Simulator, Start, StepControl, Vector, VelocityProjection,
 };
 use zeitner_scenes::pendulum::Pendulum;
 
@@ -141,7 +141,7 @@ fn min_factor_above_the_factor_after_a_rejection_must_not_panic() {
             ..Options::default()
         };
         let (q, v) = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
-        if let Ok(mut sim) = Simulator::new(&PENDULUM, q, v, 0.0, options) {
+        if let Ok(mut sim) = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options) {
             let _ = sim.step();
         }
     });
@@ -167,7 +167,8 @@ fn a_step_of_f64_max_must_end() {
             ..Options::default()
         };
         let (q, v) = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
-        let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).expect("a valid start");
+        let mut sim =
+            Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).expect("a valid start");
         let _ = sim.step();
     });
     assert_eq!(result, Ok(()));
@@ -188,7 +189,8 @@ fn sample_must_not_return_non_finite_velocities() {
     };
     let q = Vector::<3>::new(0.6, -0.8, -1e308);
     let v = Vector::<3>::new(0.8, 0.6, 0.8);
-    let mut sim = Simulator::new(&scene, q, v, 0.0, Options::default()).expect("a valid start");
+    let mut sim =
+        Simulator::new(&scene, Start { q, v, t: 0.0 }, Options::default()).expect("a valid start");
     sim.step().expect("a step");
     let middle = 0.5 * (sim.last().start.t + sim.last().end.t);
     if let Ok(point) = sim.sample(middle) {
@@ -212,7 +214,7 @@ fn a_start_must_meet_its_velocity_level_rows() {
     for k in 0..10 {
         let q = Vector::<4>::new(0.0, 0.0, 0.0, 0.1);
         let v = Vector::<4>::new(1.0 + 0.37 * Float::from(k), 0.3 * Float::from(k), 0.2, 0.0);
-        if let Ok(sim) = Simulator::new(&scene, q, v, 0.0, options) {
+        if let Ok(sim) = Simulator::new(&scene, Start { q, v, t: 0.0 }, options) {
             // Below rounding, the promise is the rounding floor of `G q'`.
             let w = sim.last().residual[1];
             let floor = 64.0 * Float::EPSILON * sim.last().end.v.amax();
@@ -237,8 +239,16 @@ fn every_step_report_must_meet_its_velocity_level_rows() {
         velocity_projection: VelocityProjection::State,
         ..Options::default()
     };
-    let mut sim = Simulator::new(&scene, Vector::from(q), Vector::from(v), 0.0, options)
-        .expect("a valid start");
+    let mut sim = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::from(q),
+            v: Vector::from(v),
+            t: 0.0,
+        },
+        options,
+    )
+    .expect("a valid start");
     for _ in 0..2000 {
         if sim.step().is_err() {
             break;
@@ -271,7 +281,8 @@ fn a_step_ending_on_the_stop_time_must_land_there() {
             ..Options::default()
         };
         let (q, v) = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
-        let mut sim = Simulator::new(&PENDULUM, q, v, t0, options).expect("a valid start");
+        let mut sim =
+            Simulator::new(&PENDULUM, Start { q, v, t: t0 }, options).expect("a valid start");
         let stop = t0 + 4.3 * h;
         sim.set_stop_time(stop).expect("a stop time ahead");
         for _ in 0..10 {
@@ -321,7 +332,8 @@ fn a_rejected_landing_step_must_shrink() {
                 ..Options::default()
             };
             let (q, v) = (Vector::<2>::new(1.0, 0.0), Vector::zeros());
-            let mut sim = Simulator::new(&PENDULUM, q, v, 0.0, options).expect("a valid start");
+            let mut sim =
+                Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, options).expect("a valid start");
             sim.set_stop_time(0.1).expect("a stop time ahead");
             let _ = sim.step();
         }
@@ -375,7 +387,16 @@ fn lowest_gap<const N: usize, const Z: usize, S: zeitner::ConstrainedSystem<N, Z
     t_end: Float,
     gap: impl Fn(&Vector<N>) -> Float,
 ) -> Float {
-    let mut sim = Simulator::new(scene, q0, v0, 0.0, Options::default()).unwrap();
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: v0,
+            t: 0.0,
+        },
+        Options::default(),
+    )
+    .unwrap();
     let mut lowest = gap(&sim.last().end.q);
     while sim.time() < t_end {
         sim.advance_to(t_end, |step| lowest = lowest.min(gap(&step.end.q)))
@@ -468,7 +489,16 @@ fn a_two_link_arm_must_not_stall() {
             ..Options::default()
         };
         let outcome = within_time(move || {
-            let mut sim = Simulator::new(&arm, q0, Vector::zeros(), 0.0, options).unwrap();
+            let mut sim = Simulator::new(
+                &arm,
+                Start {
+                    q: q0,
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
+                options,
+            )
+            .unwrap();
             sim.set_stop_time(1.0).unwrap();
             let mut result = Ok(zeitner::StopReason::StepTaken);
             while sim.statistics().steps < 200_000 {

@@ -39,8 +39,22 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
         .map(|configuration| {
             let mut own = Errors::new();
             let tokens = match generate(&item_impl, &configuration.members, &outlines, &mut own) {
-                Some(tokens) if own.is_empty() => tokens,
-                _ => return own.into_compile_errors_under(configuration.condition.as_ref()),
+                Ok(tokens) if own.is_empty() => tokens,
+                Ok(_) | Err(None) => {
+                    return own.into_compile_errors_under(configuration.condition.as_ref())
+                }
+                // Beside the errors, an impl of the trait whose sizes are known, so that the
+                // user's uses of the scene raise no follow-on errors.
+                Err(Some(sizes)) => {
+                    let condition = configuration.condition.as_ref();
+                    let errors = own.into_compile_errors_under(condition);
+                    let stub = stub_impl(&item_impl.self_ty, &sizes);
+                    let stub = match condition {
+                        Some(condition) => quote!(#[cfg(#condition)] #stub),
+                        None => stub,
+                    };
+                    return quote!(#errors #stub);
+                }
             };
             match &configuration.condition {
                 Some(condition) => quote!(#[cfg(#condition)] #tokens),
@@ -103,15 +117,68 @@ fn reemitted(item: TokenStream) -> TokenStream {
     tokens.into_iter().collect()
 }
 
+/// The trait impl, or on errors the model's sizes where they are known.
 fn generate(
     item: &syn::ItemImpl,
     members: &[bool],
     outlines: &Outlines,
     errors: &mut Errors,
-) -> Option<TokenStream> {
+) -> Result<TokenStream, Option<check::Sizes>> {
     let graph = zeitner_symbolic::Graph::new();
     let (scene, vars, calls) = analyse(item, members, outlines, graph, errors)?;
-    Some(expand_scene(&item.self_ty, &scene, &vars, &calls))
+    Ok(expand_scene(&item.self_ty, &scene, &vars, &calls))
+}
+
+/// `impl ConstrainedSystem` of the right sizes whose items are never evaluated, emitted beside
+/// a bad model's errors (as thiserror's fallback is): the crate does not build either way, but
+/// the user sees only the model's own mistakes, not every use of the scene failing as well.
+fn stub_impl(self_ty: &syn::Type, sizes: &check::Sizes) -> TokenStream {
+    let rt = quote!(::zeitner::__private);
+    let (n, z) = (
+        Literal::usize_unsuffixed(sizes.n),
+        Literal::usize_unsuffixed(sizes.z()),
+    );
+    let (r, k) = (
+        Literal::usize_unsuffixed(sizes.r),
+        Literal::usize_unsuffixed(sizes.k),
+    );
+    let vector = |len: &Literal| quote!(#rt::Vector<#len>);
+    let (vec_n, vec_z) = (vector(&n), vector(&z));
+    let state = quote!(_: &#vec_n, _: &#vec_n, _: #rt::Float);
+    let unavailable = quote!(::core::unreachable!("a model with errors is never built"));
+    quote! {
+        #[allow(unused_variables, unreachable_code, clippy::all)]
+        impl #rt::ConstrainedSystem<#n, #z> for #self_ty {
+            const POSITION_CONSTRAINTS: usize = #r;
+            const MASS_IS_CONSTANT: bool = true;
+            const SUMMARY: #rt::SceneSummary = #rt::SceneSummary {
+                coordinates: #n,
+                position_constraints: #r,
+                velocity_constraints: #k,
+                mass: #rt::MassKind::ConstantDiagonal,
+                time_dependent: false,
+                functions: &[],
+            };
+            type Mass = #rt::DiagonalMass<#n>;
+            type Storage = #rt::Dense;
+            fn mass_matrix(&self, _: &#vec_n, _: #rt::Float) -> Self::Mass { #unavailable }
+            fn applied_force(&self, #state) -> #vec_n { #unavailable }
+            fn constraint_residual(&self, #state) -> #vec_z { #unavailable }
+            fn constraint_jacobian(&self, #state) -> #rt::Matrix<#z, #n> { #unavailable }
+            fn constraint_rate(&self, #state) -> #vec_z { #unavailable }
+            fn constraint_acceleration_bias(&self, #state) -> #vec_z { #unavailable }
+            fn force_jacobians(&self, #state) -> (#rt::Matrix<#n, #n>, #rt::Matrix<#n, #n>) {
+                #unavailable
+            }
+            fn constraint_force_jacobians(
+                &self,
+                #state,
+                _: &#vec_z,
+            ) -> (#rt::Matrix<#n, #n>, #rt::Matrix<#n, #n>) {
+                #unavailable
+            }
+        }
+    }
 }
 
 /// Model → checks → lowering → symbolic stage, on the given graph, for the members of `item`
@@ -124,9 +191,12 @@ fn analyse(
     outlines: &Outlines,
     mut graph: zeitner_symbolic::Graph,
     errors: &mut Errors,
-) -> Option<(Scene, Vars, Vec<Call>)> {
+) -> Result<(Scene, Vars, Vec<Call>), Option<check::Sizes>> {
+    let before = errors.count();
     let model = Model::from_item(item, members, errors);
     let sizes = check::sizes(&model, errors);
+    // The sizes are the model's own only where its functions' signatures read cleanly.
+    let known = (errors.count() == before && sizes.n > 0).then_some(sizes);
     let mut vars = Vars::new(check::slots(&model, sizes));
     let mut calls = Vec::new();
     let mut lowerer = Lowerer {
@@ -150,10 +220,11 @@ fn analyse(
         .collect();
     symbolic::check(&model, &lowered, &graph, &vars, errors);
     if !errors.is_empty() {
-        return None;
+        return Err(known);
     }
-    let scene = symbolic::build(&model, sizes, &lowered, &mut graph, &mut vars, errors)?;
-    Some((scene, vars, calls))
+    let scene =
+        symbolic::build(&model, sizes, &lowered, &mut graph, &mut vars, errors).ok_or(known)?;
+    Ok((scene, vars, calls))
 }
 
 /// Operation counts per generated function: `(name, naive, simplified, simplified and shared)`,
@@ -177,7 +248,7 @@ pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, Op
         zeitner_symbolic::Graph::new(),
         &mut errors,
     );
-    let (Some((raw, ..)), Some((simplified, ..))) = (raw, simplified) else {
+    let (Ok((raw, ..)), Ok((simplified, ..))) = (raw, simplified) else {
         return Vec::new();
     };
     raw.functions

@@ -16,6 +16,24 @@ const POSITION_SWEEPS: u32 = 50;
 /// Newton sweeps when projecting a start onto the velocity-level constraints.
 const VELOCITY_SWEEPS: u32 = 20;
 
+/// Where a run starts (or is re-initialised): positions, velocities and time, named so that the
+/// two same-typed vectors cannot be swapped unseen. They need not be consistent: the start
+/// policy ([`StartPolicy`]) makes them so, and [`StartReport`] says how far they moved.
+///
+/// ```
+/// use zeitner_runtime::{consistency::Start, Vector};
+///
+/// // At rest, at t = 0.
+/// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+/// assert_eq!(start.v.norm(), 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Start<const N: usize> {
+    pub q: Vector<N>,
+    pub v: Vector<N>,
+    pub t: Float,
+}
+
 /// How a start (or a re-initialised state) was made consistent.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StartReport<const N: usize, const Z: usize> {

@@ -69,7 +69,7 @@ pub mod system;
 mod testing;
 mod with_storage;
 
-pub use consistency::StartReport;
+pub use consistency::{Start, StartReport};
 pub use contact::Impact;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use gaps::GapSet;

@@ -19,7 +19,7 @@ pub struct Point<const N: usize, const Z: usize> {
 /// What one accepted step produced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepReport<const N: usize, const Z: usize> {
-    /// The step's start and end; [`StepReport::sample`] interpolates between them.
+    /// The step's start and end; [`StepReport::interpolate`] interpolates between them.
     pub start: Point<N, Z>,
     /// Reported end point: velocities and multipliers as the options say (by default the
     /// velocities projected onto the velocity-level constraint, the multipliers from the
@@ -57,12 +57,12 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// ends and its derivative for `q'` (local errors `O(τ⁶)` and `O(τ⁵)`), linear in `q''` and
     /// `λ`. For multipliers as accurate as the positions, use `Simulator::sample`. Outside the
     /// step it extrapolates.
-    pub fn sample(&self, t: Float) -> Point<N, Z> {
+    pub fn interpolate(&self, t: Float) -> Point<N, Z> {
         interpolate(&self.start, &self.end, t)
     }
 }
 
-/// The quintic Hermite interpolant between two points (see [`StepReport::sample`]).
+/// The quintic Hermite interpolant between two points (see [`StepReport::interpolate`]).
 pub(crate) fn interpolate<const N: usize, const Z: usize>(
     a: &Point<N, Z>,
     b: &Point<N, Z>,
@@ -134,10 +134,6 @@ pub enum StopReason {
     /// (the later ones without a step). `advance_to` returns here, so that the caller can act
     /// (change parameters, `Simulator::reinitialise`).
     Event { index: usize, direction: Direction },
-    /// A step was shortened to end at a zero crossing located on the dense output, but the
-    /// crossing lies a little beyond its end: the next step goes on from nearer. `advance_to`
-    /// goes on.
-    CrossingAhead,
     /// A step landed just before gaps close (within the time tolerance): the next
     /// `Simulator::step` applies the impact. `advance_to` goes on.
     GapsClosing { gaps: GapSet },
@@ -173,7 +169,7 @@ mod tests {
             newton_iterations: 1,
         };
         for t in [1.0, 1.2, 1.37, 1.5] {
-            let sampled = report.sample(t);
+            let sampled = report.interpolate(t);
             let exact = point(t);
             assert!((sampled.q - exact.q).amax() < 1e-12, "q at {t}");
             assert!((sampled.v - exact.v).amax() < 1e-11, "q' at {t}");

@@ -34,8 +34,16 @@ pub fn pendulum_errors(options: zeitner::Options) -> [f64; 3] {
         g: 9.81,
     };
     let q0 = zeitner::Vector::<2>::new(1.0, 0.0);
-    let mut sim = zeitner::Simulator::new(&scene, q0, zeitner::Vector::zeros(), 0.0, options)
-        .expect("the pendulum starts");
+    let mut sim = zeitner::Simulator::new(
+        &scene,
+        zeitner::Start {
+            q: q0,
+            v: zeitner::Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .expect("the pendulum starts");
     sim.advance_to(1.0, |_| {})
         .expect("the pendulum runs to 1 s");
     relative_errors(
@@ -49,8 +57,16 @@ pub fn pendulum_errors(options: zeitner::Options) -> [f64; 3] {
 pub fn steam_generator_errors(options: zeitner::Options) -> [f64; 3] {
     let scene = steam_generator::SteamGenerator::paper();
     let zero = zeitner::Vector::zeros();
-    let mut sim = zeitner::Simulator::new(&scene, zero, zero, 0.0, options)
-        .expect("the steam generator starts");
+    let mut sim = zeitner::Simulator::new(
+        &scene,
+        zeitner::Start {
+            q: zero,
+            v: zero,
+            t: 0.0,
+        },
+        options,
+    )
+    .expect("the steam generator starts");
     sim.advance_to(scene.rise, |_| {})
         .expect("it runs to the kink");
     sim.advance_to(1.0, |_| {}).expect("it runs to 1 s");

@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use zeitner::{
-    ConstrainedSystem, InnerMethod, Options, Simulator, SparseSimulator, StepControl, Vector,
+    ConstrainedSystem, InnerMethod, Options, Simulator, SparseSimulator, Start, StepControl, Vector,
 };
 
 use crate::figure;
@@ -235,8 +235,16 @@ fn run_dense<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: Options,
     end: f64,
 ) -> Result<Run, String> {
-    let mut sim =
-        Simulator::new(scene, q0, Vector::zeros(), 0.0, options).map_err(|e| e.to_string())?;
+    let mut sim = Simulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .map_err(|e| e.to_string())?;
     let before = cpu_seconds();
     let mut steps = 0;
     sim.advance_to(end, |step| {
@@ -263,8 +271,16 @@ fn run_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: Options,
     end: f64,
 ) -> Result<Run, String> {
-    let mut sim = SparseSimulator::new(scene, q0, Vector::zeros(), 0.0, options)
-        .map_err(|e| e.to_string())?;
+    let mut sim = SparseSimulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .map_err(|e| e.to_string())?;
     let before = cpu_seconds();
     sim.advance_to(end, |_| {}).map_err(|e| e.to_string())?;
     let q = sim.last().end.q.as_slice().to_vec();
@@ -280,8 +296,16 @@ fn reference<S: ConstrainedSystem<N, Z> + Sync, const N: usize, const Z: usize>(
     scene: &S,
     q0: Vector<N>,
 ) -> Option<Vec<f64>> {
-    let mut sim =
-        SparseSimulator::new(scene, q0, Vector::zeros(), 0.0, reference_options()).ok()?;
+    let mut sim = SparseSimulator::new(
+        scene,
+        Start {
+            q: q0,
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        reference_options(),
+    )
+    .ok()?;
     sim.advance_to(END, |_| {}).ok()?;
     Some(sim.last().end.q.as_slice().to_vec())
 }

@@ -9,7 +9,7 @@
 //! A ladder's multipliers are not unique (its rows are dependent), so there the third part of
 //! every end state, ours and the peers', is the generalised constraint force `Gᵀλ`, which is.
 
-use zeitner::{ConstrainedSystem, Options, SparseSimulator, Vector};
+use zeitner::{ConstrainedSystem, Options, SparseSimulator, Start, Vector};
 
 use super::scene::{
     flattened, measure_runs, no_own_methods, rust_peers, worst_relative, Outcome, Scene,
@@ -87,8 +87,16 @@ fn sparse_run<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: Options,
     max_g: &mut f64,
 ) -> Result<Outcome, String> {
-    let mut sim = SparseSimulator::new(scene, (large.start)(), Vector::zeros(), 0.0, options)
-        .map_err(|e| e.to_string())?;
+    let mut sim = SparseSimulator::new(
+        scene,
+        Start {
+            q: (large.start)(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    )
+    .map_err(|e| e.to_string())?;
     let allocations_before = Allocations::count();
     let cpu_before = cpu_seconds();
     sim.advance_to(END, |r| *max_g = max_g.max(r.residual.amax()))

@@ -17,7 +17,7 @@ use crate::scenes::slider_crank::{self, SliderCrankOnAxis};
 use crate::scenes::spring_support::SpringSupportedPendulum;
 use crate::scenes::steam_generator::SteamGenerator;
 use crate::scenes::structure::Structure100;
-use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, Vector};
+use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, Vector};
 
 use super::large::{large_scene, Large};
 use super::methods::Method;
@@ -451,9 +451,11 @@ fn andrews_scene() -> Result<Scene, String> {
     };
     let mut sim = Simulator::new(
         &scene,
-        Vector::from(Andrews::Q0),
-        Vector::zeros(),
-        0.0,
+        Start {
+            q: Vector::from(Andrews::Q0),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
         options,
     )
     .map_err(|e| e.to_string())?;

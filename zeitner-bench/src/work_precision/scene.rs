@@ -3,7 +3,7 @@
 use crate::measure::{cpu_seconds, median, Allocations};
 use crate::peers;
 use crate::scenes::reference::State;
-use zeitner::{ConstrainedSystem, Options, Simulator, StopReason, Vector};
+use zeitner::{ConstrainedSystem, Options, Simulator, Start, StopReason, Vector};
 
 use super::methods::Method;
 
@@ -93,8 +93,16 @@ pub fn measure<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 ) -> Row {
     let budget = step_budget.unwrap_or(u64::MAX);
     let run = |max_g: &mut f64| -> Result<Outcome, String> {
-        let mut sim =
-            Simulator::new(scene, start.0, start.1, 0.0, options).map_err(|e| e.to_string())?;
+        let mut sim = Simulator::new(
+            scene,
+            Start {
+                q: start.0,
+                v: start.1,
+                t: 0.0,
+            },
+            options,
+        )
+        .map_err(|e| e.to_string())?;
         let allocations_before = Allocations::count();
         let cpu_before = cpu_seconds();
         let mut steps = 0u64;

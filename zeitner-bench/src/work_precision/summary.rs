@@ -6,7 +6,7 @@ use crate::figure;
 use crate::measure::{cpu_seconds, median};
 use crate::peers;
 use crate::scenes;
-use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, StepControl, Vector};
+use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, Vector};
 
 use super::registry::Entry;
 use super::scene::{peer_row, shortened, Row, Scene};
@@ -361,8 +361,16 @@ pub fn chain_scaling(
         let mut times = Vec::new();
         let mut steps = 0;
         for _ in 0..=repeats.max(1) {
-            let mut sim = Simulator::new(scene, q0, Vector::zeros(), 0.0, options)
-                .map_err(|e| e.to_string())?;
+            let mut sim = Simulator::new(
+                scene,
+                Start {
+                    q: q0,
+                    v: Vector::zeros(),
+                    t: 0.0,
+                },
+                options,
+            )
+            .map_err(|e| e.to_string())?;
             let before = cpu_seconds();
             sim.advance_to(1.0, |_| {}).map_err(|e| e.to_string())?;
             times.push(cpu_seconds() - before);

@@ -26,7 +26,7 @@ pub use sensitivity::SensitivitySimulator;
 use anchor::Forget;
 use attempt::Attempt;
 
-use crate::consistency::{Gram, StartReport};
+use crate::consistency::{Gram, Start, StartReport};
 use crate::contact::Impact;
 use crate::control::{bounds, Controller, Progress, StiffnessTest, LARGEST_STEP};
 use crate::error::{InvalidOption, StepError};
@@ -54,6 +54,10 @@ pub struct Statistics {
     pub max_newton_iterations: u32,
     /// Factorisations of an implicit method's iteration matrix.
     pub iteration_matrix_factorizations: u64,
+    /// Accepted steps shortened to end at a zero crossing located on the dense output that
+    /// then lay a little beyond their end (the next step goes on from nearer). They are
+    /// reported as [`StopReason::StepTaken`].
+    pub steps_aimed_at_crossings: u64,
     /// The accepted steps after which [`InnerMethod::Automatic`] found the run stiff and went
     /// on with its implicit method; none while it has not.
     pub turned_implicit_after: Option<u64>,
@@ -135,17 +139,11 @@ const RELOCATIONS: u32 = 64;
 const AIMED_RELOCATIONS: u32 = 8;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
-    /// Starts at `(q0, v0)` at time `t0`. With the default [`crate::StartPolicy::Project`] the
+    /// Starts at `start`. With the default [`crate::StartPolicy::Project`] the
     /// start is first made consistent — positions projected onto `g = 0` and velocities onto
     /// the velocity-level constraint, both in the mass-matrix metric, multipliers from the
     /// acceleration-level system — and [`Simulator::start_report`] says how far it moved.
-    pub fn new(
-        system: &'s S,
-        q0: Vector<N>,
-        v0: Vector<N>,
-        t0: Float,
-        options: Options,
-    ) -> Result<Self, StepError> {
+    pub fn new(system: &'s S, start: Start<N>, options: Options) -> Result<Self, StepError> {
         options.validate()?;
         suits_the_rows::<S, N, Z>(&options)?;
         let fits = S::EVENTS <= MAX_EVENTS
@@ -158,7 +156,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Err(StepError::InvalidOption(InvalidOption::Restitution));
         }
         let mut model = Model::new(system)?;
-        let (last, start_report, start_jacobian) = start_point(&mut model, (q0, v0, t0), &options)?;
+        let (last, start_report, start_jacobian) =
+            start_point(&mut model, (start.q, start.v, start.t), &options)?;
         let point = last.end;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
@@ -222,7 +221,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         {
             Some(state) => state?,
             None => {
-                let point = self.last.sample(t);
+                let point = self.last.interpolate(t);
                 (point.q, point.v)
             }
         };

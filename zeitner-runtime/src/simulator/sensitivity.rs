@@ -2,6 +2,7 @@
 //! again linearised (`crate::sensitivity`) to carry the derivatives by the parameters.
 
 use super::{LastStep, Simulator};
+use crate::consistency::Start;
 use crate::error::{InvalidOption, StepError};
 use crate::gaps::GapSet;
 use crate::method::explicit::Tableau;
@@ -58,13 +59,7 @@ where
     /// As [`Simulator::new`]; the start's derivatives are those of the start projected onto
     /// the constraints (whatever the start policy: a start the policy keeps is one the
     /// projection would not move).
-    pub fn new(
-        system: &'s S,
-        q0: Vector<N>,
-        v0: Vector<N>,
-        t0: Float,
-        options: Options,
-    ) -> Result<Self, StepError> {
+    pub fn new(system: &'s S, start: Start<N>, options: Options) -> Result<Self, StepError> {
         if !followed(options.method) {
             return Err(StepError::InvalidOption(
                 InvalidOption::SensitivitiesForMethod,
@@ -75,13 +70,13 @@ where
                 InvalidOption::SensitivitiesOfRawOutput,
             ));
         }
-        let simulator = Simulator::new(system, q0, v0, t0, options)?;
+        let simulator = Simulator::new(system, start, options)?;
         let mut sensitivities = SensitivitySimulator {
             simulator,
             state: Tangent::zero(),
             consistent: Matrix::zeros(),
             report: Sensitivities {
-                t: t0,
+                t: start.t,
                 q: Matrix::zeros(),
                 v: Matrix::zeros(),
                 lambda: Matrix::zeros(),

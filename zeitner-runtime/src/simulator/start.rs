@@ -2,7 +2,7 @@
 //! take, the values the event machinery watches there, given multipliers, and a new state.
 
 use super::{Forget, Pending, Simulator};
-use crate::consistency::{consistent_start, end_report, StartReport};
+use crate::consistency::{consistent_start, end_report, Start, StartReport};
 use crate::contact;
 use crate::control::Progress;
 use crate::error::{InvalidOption, StepError};
@@ -43,9 +43,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// state is unchanged.
     pub fn reinitialise(
         &mut self,
-        q: Vector<N>,
-        v: Vector<N>,
-        t: Float,
+        Start { q, v, t }: Start<N>,
     ) -> Result<StartReport<N, Z>, StepError> {
         let open = self.model.open_gaps();
         let tolerance = self.options.constraint_tolerance;

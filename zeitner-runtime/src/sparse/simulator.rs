@@ -10,7 +10,7 @@ use alloc::vec::Vec;
 use super::configuration::{
     inverse_mass, jacobian_into, transpose_times, Configuration, Structure,
 };
-use crate::consistency::StartReport;
+use crate::consistency::{Start, StartReport};
 use crate::control::{
     bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, Controller,
     Progress, LARGEST_STEP,
@@ -87,13 +87,15 @@ struct End<const N: usize, const Z: usize> {
 }
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimulator<'s, S, N, Z> {
-    /// Starts at `(q0, v0)` at `t0`, made consistent as [`crate::Simulator::new`] does (or
+    /// Starts at `start`, made consistent as [`crate::Simulator::new`] does (or
     /// refused, as the options say).
     pub fn new(
         system: &'s S,
-        q0: Vector<N>,
-        v0: Vector<N>,
-        t0: Float,
+        Start {
+            q: q0,
+            v: v0,
+            t: t0,
+        }: Start<N>,
         options: Options,
     ) -> Result<Self, StepError> {
         check_options::<S, N, Z>(&options)?;
