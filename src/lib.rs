@@ -89,3 +89,27 @@
 
 pub use zeitner_macros::constrained_system;
 pub use zeitner_runtime::*;
+
+/// The README's and the guide's Rust blocks, run as doctests: what a user copies compiles and
+/// does what the text says.
+#[cfg(doctest)]
+mod documentation {
+    #[doc = include_str!("../README.md")]
+    struct Readme;
+    #[doc = include_str!("../docs/guide/models.md")]
+    struct Models;
+    #[doc = include_str!("../docs/guide/running.md")]
+    struct Running;
+    #[doc = include_str!("../docs/guide/methods.md")]
+    struct Methods;
+    #[doc = include_str!("../docs/guide/events-and-gaps.md")]
+    struct EventsAndGaps;
+    #[doc = include_str!("../docs/guide/large-scenes.md")]
+    struct LargeScenes;
+    #[doc = include_str!("../docs/guide/studies.md")]
+    struct Studies;
+    #[doc = include_str!("../docs/guide/embedded.md")]
+    struct Embedded;
+    #[doc = include_str!("../docs/guide/testing.md")]
+    struct Testing;
+}

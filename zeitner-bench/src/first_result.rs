@@ -49,7 +49,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
                 "#[allow(dead_code)]\nmod scenes {{\n    #[path = {path:?}]\n    pub mod {file};\n    \
                  pub mod reference {{\n        pub struct State<const N: usize, const Z: usize> {{\n            \
                  pub q: [f64; N],\n            pub v: [f64; N],\n            pub lambda: [f64; Z],\n        \
-                 }}\n    }}\n}}\n\nuse zeitner::{{Options, Simulator, Vector}};\n",
+                 }}\n    }}\n}}\n\nuse zeitner::{{Options, Simulator, Start, Vector}};\n",
                 path = root.join("zeitner-scenes/src").join(format!("{file}.rs")),
             ),
             "Simulator",
@@ -58,7 +58,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
             format!(
                 "#[macro_use]\n#[allow(dead_code)]\n#[path = {path:?}]\nmod families;\n\n\
                  #[allow(unused_imports)]\nuse families::{{horizontal_chain, ladder_span, sagging_ladder}};\n\
-                 use zeitner::{{constrained_system, Options, SparseSimulator, Vector}};\n\n{invocation}\n",
+                 use zeitner::{{constrained_system, Options, SparseSimulator, Start, Vector}};\n\n{invocation}\n",
                 path = root.join("zeitner-bench/src/scaling/families.rs"),
             ),
             "SparseSimulator",
@@ -66,7 +66,8 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
     };
     let main = format!(
         "{model}\nfn main() {{\n    let scene = {construct};\n    let (q0, v0) = {start};\n    \
-         let mut sim = {simulator}::new(&scene, q0, v0, 0.0, Options::default())\n        \
+         let start = Start {{ q: q0, v: v0, t: 0.0 }};\n    \
+         let mut sim = {simulator}::new(&scene, start, Options::default())\n        \
          .expect(\"a consistent start\");\n    sim.advance_to({t_end:?}, |_| {{}}).expect(\"a run\");\n    \
          println!(\"{{:?}}\", sim.last().end.q);\n}}\n",
         construct = scene.construct,

@@ -54,7 +54,7 @@ use proc_macro::TokenStream;
 ///
 /// Sign convention: `M(q,t) q'' = F(q, q', t) - Gᵀλ` with `G = ∂g/∂q` for position-level rows
 /// and `G = ∂g/∂q'` for velocity-level rows. The user's methods stay as written and callable.
-/// The grammar is in the README: `let` bindings and a final array, `+ - * /`, f64 methods,
+/// The grammar is in the guide (`docs/guide/models.md`): `let` bindings and a final array, `+ - * /`, f64 methods,
 /// `self.field`, constants, `if`/`else` on time and parameters, opaque `self.method(t)` calls;
 /// for many bodies, `for` loops over ranges known at expansion time, `let mut` arrays filled
 /// by index, `[e; N]` repeats, sizes from the impl's own `const`s, and helper methods of the

@@ -11,7 +11,7 @@ use crate::system::{
 /// `scene` with storage `D` instead of the one `#[constrained_system]` chose for it: the same
 /// model, evaluated through the same functions. For example, to compare the storages, or to run
 /// a mid-sized scene on the sparse one:
-/// `Simulator::new(&WithStorage::<_, Sparse>::new(&scene), q0, v0, t0, options)`.
+/// `Simulator::new(&WithStorage::<_, Sparse>::new(&scene), start, options)`.
 pub struct WithStorage<'a, S, D> {
     pub scene: &'a S,
     storage: PhantomData<D>,
