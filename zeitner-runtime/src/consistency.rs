@@ -28,6 +28,7 @@ const VELOCITY_SWEEPS: u32 = 20;
 /// assert_eq!(start.v.norm(), 0.0);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Start<const N: usize> {
     pub q: Vector<N>,
     pub v: Vector<N>,
@@ -36,6 +37,7 @@ pub struct Start<const N: usize> {
 
 /// How a start (or a re-initialised state) was made consistent.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StartReport<const N: usize, const Z: usize> {
     /// The consistent positions minus the given ones.
     pub position_change: Vector<N>,

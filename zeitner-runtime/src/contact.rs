@@ -20,6 +20,7 @@ use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
 
 /// What one impact did.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Impact<const N: usize, const Z: usize> {
     pub t: Float,
     /// The gaps that closed approaching, and took part in the impulse.

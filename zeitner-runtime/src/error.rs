@@ -6,6 +6,7 @@ use core::fmt;
 
 /// The model function (or the state) in which a non-finite value appeared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum ModelFunction {
     MassMatrix,
@@ -50,6 +51,7 @@ const LISTED_ROWS: usize = 16;
 /// `velocity_constraints[j]` for velocity rows. The first 16 rows inserted are named; beyond
 /// them the set counts the rows and says how many more there are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RowSet {
     listed: [u32; LISTED_ROWS],
     count: usize,
@@ -112,6 +114,7 @@ impl RowSet {
 
 /// One constraint row, shown as the user wrote it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Row {
     pub index: usize,
     pub position_rows: usize,
@@ -145,6 +148,7 @@ impl fmt::Display for RowSet {
 
 /// Why options or arguments were refused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[non_exhaustive]
 pub enum InvalidOption {
     /// `constraint_tolerance` is not finite and positive.
@@ -306,6 +310,7 @@ impl fmt::Display for InvalidOption {
 
 /// Why a step, or the consistent start, failed.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[non_exhaustive]
 pub enum StepError {
     /// Newton on the multipliers did not bring `|g(t+τ)|` within tolerance.

@@ -4,6 +4,7 @@ use crate::system::MAX_GAPS;
 
 /// A set of gaps by their index in the model's `gaps` (`0..UNILATERAL_CONSTRAINTS`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GapSet(u32);
 
 impl GapSet {

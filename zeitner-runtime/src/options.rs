@@ -7,6 +7,7 @@ use crate::scalar::Float;
 /// The one-step method that integrates `M q'' = F - Gᵀλ(t)` with the multipliers prescribed over
 /// the step.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum InnerMethod {
     /// Classical Runge–Kutta, order 4, with `substeps` equal substeps per step (1 to 10 000). No
@@ -186,6 +187,7 @@ impl InnerMethod {
 
 /// How the change of the step-end state under a change of the multipliers is obtained.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum Sensitivity {
     /// The paper's estimate (eq. 7): `Δq = -τ²/2 M⁻¹Gᵀ Δp`, `Δq' = -τ M⁻¹Gᵀ Δp`, with `M⁻¹Gᵀ`
@@ -201,6 +203,7 @@ pub enum Sensitivity {
 
 /// What happens to the velocities at the step end.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum VelocityProjection {
     /// Report the raw step-end velocities and the step's multipliers (the paper).
@@ -215,6 +218,7 @@ pub enum VelocityProjection {
 
 /// How the multipliers vary over a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum MultiplierModel {
     /// `Quadratic` for a scene with velocity-level rows (where constant multipliers cap every
@@ -279,6 +283,7 @@ impl MultiplierModel {
 
 /// How the step size is chosen. Times in the model's time unit.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum StepControl {
     /// Every step has this size (the last one is shortened to land on the stop time).
     Fixed { step: Float },
@@ -292,10 +297,29 @@ pub enum StepControl {
     Adaptive {
         initial_step: Float,
         min_step: Float,
+        #[cfg_attr(feature = "serde", serde(with = "unbounded"))]
         max_step: Float,
         rtol: Float,
         atol: Float,
     },
+}
+
+/// `max_step`'s default `∞` as `None`: text formats such as JSON have no infinity.
+#[cfg(feature = "serde")]
+mod unbounded {
+    use crate::scalar::Float;
+
+    pub fn serialize<S: serde::Serializer>(x: &Float, serializer: S) -> Result<S::Ok, S::Error> {
+        let bounded = (*x != Float::INFINITY).then_some(*x);
+        serde::Serialize::serialize(&bounded, serializer)
+    }
+
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Float, D::Error> {
+        let bounded: Option<Float> = serde::Deserialize::deserialize(deserializer)?;
+        Ok(bounded.unwrap_or(Float::INFINITY))
+    }
 }
 
 impl StepControl {
@@ -347,6 +371,7 @@ impl StepControl {
 
 /// Whether a start that violates the constraints is moved onto them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum StartPolicy {
     /// Project positions and velocities onto the constraints in the mass metric; the start
@@ -359,6 +384,7 @@ pub enum StartPolicy {
 
 /// Everything that steers the integration.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Options {
     /// The inner method. Default [`InnerMethod::Automatic`].
     pub method: InnerMethod,
@@ -396,6 +422,7 @@ pub struct Options {
 /// How zero crossings of event functions and gaps are located, and when an impact ends in
 /// contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EventSettings {
     /// A step stops within this time of a zero crossing (s): after it for event functions and
     /// contacts that open, before it for gaps that close. Default 1e-12 (`f32`: 1e-6).
@@ -551,6 +578,7 @@ impl Options {
 
 /// The step-size controller's constants: plain data with documented defaults.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControllerSettings {
     /// Safety factor on every proposed step. Default 0.9.
     pub safety: Float,
@@ -609,5 +637,50 @@ impl ControllerSettings {
             && self.newton_failure_factor < 1.0
             && self.landing_fraction.is_finite()
             && (0.0..=0.5).contains(&self.landing_fraction)
+    }
+}
+
+#[cfg(all(test, feature = "serde"))]
+mod serde_tests {
+    use super::*;
+
+    /// Options survive JSON exactly, the unbounded largest step among them; a report too.
+    #[test]
+    fn options_and_reports_round_trip_through_json() {
+        for options in [
+            Options::default(),
+            Options::paper(1e-3),
+            Options {
+                step: StepControl::adaptive(1e-6).with_atol(1e-9),
+                method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+                ..Options::default()
+            },
+        ] {
+            let text = serde_json::to_string(&options).unwrap();
+            let back: Options = serde_json::from_str(&text).unwrap();
+            assert_eq!(back, options, "{text}");
+        }
+        let reason = crate::StopReason::Event {
+            index: 3,
+            direction: crate::Direction::Falling,
+        };
+        let text = serde_json::to_string(&reason).unwrap();
+        assert_eq!(
+            serde_json::from_str::<crate::StopReason>(&text).unwrap(),
+            reason
+        );
+        let mut point = crate::Point::<2, 1> {
+            t: 0.5,
+            q: crate::Vector::<2>::new(1.0, -2.0),
+            v: crate::Vector::zeros(),
+            a: crate::Vector::zeros(),
+            lambda: crate::Vector::<1>::new(3.0),
+        };
+        point.v[1] = 0.25;
+        let text = serde_json::to_string(&point).unwrap();
+        assert_eq!(
+            serde_json::from_str::<crate::Point<2, 1>>(&text).unwrap(),
+            point
+        );
     }
 }

@@ -8,6 +8,7 @@ use crate::system::{Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Point<const N: usize, const Z: usize> {
     pub t: Float,
     pub q: Vector<N>,
@@ -18,6 +19,7 @@ pub struct Point<const N: usize, const Z: usize> {
 
 /// What one accepted step produced.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StepReport<const N: usize, const Z: usize> {
     /// The step's start and end; [`StepReport::interpolate`] interpolates between them.
     pub start: Point<N, Z>,
@@ -41,6 +43,7 @@ pub struct StepReport<const N: usize, const Z: usize> {
 /// The derivatives of a reported point by the scene's `P` parameters, a column each
 /// ([`crate::SensitivitySimulator`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Sensitivities<const N: usize, const Z: usize, const P: usize> {
     pub t: Float,
     /// `∂q/∂θ`.
@@ -110,6 +113,7 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
 
 /// Which way an event function crossed zero.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Direction {
     Rising,
     Falling,
@@ -117,6 +121,7 @@ pub enum Direction {
 
 /// Why `Simulator::step` or `Simulator::advance_to` returned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum StopReason {
     /// A step was taken; the stop time, if any, is still ahead.

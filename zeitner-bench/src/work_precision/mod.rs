@@ -60,6 +60,8 @@ pub fn run(args: Args) -> Result<(), Box<dyn std::error::Error>> {
     }
     let repeats = if args.quick { 1 } else { args.repeats };
     let plan = plan(&built, &args);
+    std::fs::create_dir_all(&args.output_dir)?;
+    write_settings(&built, &plan, &args.output_dir)?;
     let progress = ProgressBar::new(plan.len() as u64).with_style(ProgressStyle::with_template(
         "{bar:40} {pos}/{len} {msg} [{elapsed}]",
     )?);
@@ -71,7 +73,6 @@ pub fn run(args: Args) -> Result<(), Box<dyn std::error::Error>> {
         progress.inc(1);
     }
     progress.finish_and_clear();
-    std::fs::create_dir_all(&args.output_dir)?;
     let mut first_results = String::new();
     if args.peers {
         let (peer_rows, setups) = summary::peer_rows(&built, &args);
@@ -147,6 +148,34 @@ fn plan(
                 .collect::<Vec<_>>()
         })
         .collect()
+}
+
+/// `settings.json`: the exact `Options` of every row of ours, by scene, method and setting, so
+/// that any point of the figures can be run again as it was.
+fn write_settings(
+    built: &[(&registry::Entry, Scene)],
+    plan: &[(usize, String, String, Options)],
+    output_dir: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    #[derive(serde::Serialize)]
+    struct Setting<'a> {
+        scene: &'a str,
+        method: &'a str,
+        setting: &'a str,
+        options: &'a Options,
+    }
+    let settings: Vec<Setting> = plan
+        .iter()
+        .map(|(k, method, setting, options)| Setting {
+            scene: built[*k].1.name,
+            method,
+            setting,
+            options,
+        })
+        .collect();
+    let file = std::fs::File::create(output_dir.join("settings.json"))?;
+    serde_json::to_writer_pretty(std::io::BufWriter::new(file), &settings)?;
+    Ok(())
 }
 
 /// The scene's CSV and its log–log plot.

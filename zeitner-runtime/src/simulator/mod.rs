@@ -44,6 +44,7 @@ use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub struct Statistics {
     pub steps: u64,
