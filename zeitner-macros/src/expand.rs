@@ -10,7 +10,7 @@ use crate::errors::Errors;
 use crate::lower::{self, Call, Lowerer, Vars};
 use crate::model::Model;
 use crate::outline::{self, Outlines};
-use crate::symbolic::{self, Generated, Scene};
+use crate::symbolic::{self, Generated, Output, Scene};
 
 /// The whole attribute: the user's impl, unchanged, followed by the generated trait impl, or by
 /// the errors when the model is bad.
@@ -254,7 +254,14 @@ pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, Op
     raw.functions
         .iter()
         .zip(&simplified.functions)
-        .map(|(r, s)| (s.method, r.unshared, s.unshared, s.program.op_counts()))
+        .map(|(r, s)| {
+            (
+                s.output.method(),
+                r.unshared,
+                s.unshared,
+                s.program.op_counts(),
+            )
+        })
         .collect()
 }
 
@@ -268,25 +275,18 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let z = Literal::usize_unsuffixed(scene.sizes.z());
     let r = Literal::usize_unsuffixed(scene.sizes.r);
     let emitter = Emitter { vars, calls };
-    let is_parameter_function = |g: &&Generated| {
-        g.method.starts_with("parameter_")
-            || matches!(
-                g.method,
-                "rate_jacobians" | "acceleration_constraint_jacobians" | "event_jacobians"
-            )
-    };
     let parametrised = parametrised_impl(self_ty, scene, &emitter, &rt);
     let methods = scene
         .functions
         .iter()
-        .filter(|g| !is_parameter_function(g))
+        .filter(|g| !g.output.is_parametrised())
         .map(|generated| {
-            let method = format_ident!("{}", generated.method);
+            let method = format_ident!("{}", generated.output.method());
             let body = emitter.body(generated, &rt);
             if let Some(wrapped) = values_only(generated, &body, &n, &rt) {
                 return wrapped;
             }
-            let (arguments, output) = signature(generated.method, &n, &z, &rt);
+            let (arguments, output) = signature(generated.output, &n, &z, &rt);
             quote! {
                 #[inline]
                 fn #method(&self, #arguments) -> #output {
@@ -304,13 +304,15 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let vec_n = quote!(#rt::Vector<#n>);
     let state = quote!(q: &#vec_n, v: &#vec_n, t: #rt::Float);
     let sparse_methods = scene.functions.iter().filter_map(|generated| {
-        let arguments = match generated.method {
-            "constraint_jacobian" => quote!(#state),
-            "force_jacobians" => quote!(#state),
-            "constraint_force_jacobians" => quote!(#state, lambda: &#rt::Vector<#z>),
+        let arguments = match generated.output {
+            Output::ConstraintJacobian | Output::ForceJacobians => quote!(#state),
+            Output::ConstraintForceJacobians => quote!(#state, lambda: &#rt::Vector<#z>),
             _ => return None,
         };
-        let method = format_ident!("{}_nonzeros", generated.method.trim_end_matches('s'));
+        let method = format_ident!(
+            "{}_nonzeros",
+            generated.output.method().trim_end_matches('s')
+        );
         let body = emitter.sparse_body(generated, &rt);
         Some(quote! {
             #[inline]
@@ -369,19 +371,19 @@ fn parametrised_impl(
     emitter: &Emitter<'_>,
     rt: &TokenStream,
 ) -> Option<TokenStream> {
-    let function = |name: &str| scene.functions.iter().find(|g| g.method == name);
-    let values = function("parameter_values")?;
+    let function = |output: Output| scene.functions.iter().find(|g| g.output == output);
+    let values = function(Output::ParameterValues)?;
     let (n, z) = (scene.sizes.n, scene.sizes.z());
     let p = values.blocks[0].rows;
     let names = &scene.parameter_names;
     let [n, z, p] = [n, z, p].map(Literal::usize_unsuffixed);
     let vec_n = quote!(#rt::Vector<#n>);
     let values_body = emitter.body(values, rt);
-    let force_body = emitter.body(function("parameter_force")?, rt);
-    let constraints_body = emitter.body(function("parameter_constraints")?, rt);
-    let rate_body = emitter.body(function("rate_jacobians")?, rt);
-    let level_body = emitter.body(function("acceleration_constraint_jacobians")?, rt);
-    let events = function("event_jacobians").map(|generated| {
+    let force_body = emitter.body(function(Output::ParameterForce)?, rt);
+    let constraints_body = emitter.body(function(Output::ParameterConstraints)?, rt);
+    let rate_body = emitter.body(function(Output::RateJacobians)?, rt);
+    let level_body = emitter.body(function(Output::AccelerationConstraintJacobians)?, rt);
+    let events = function(Output::EventJacobians).map(|generated| {
         let body = emitter.body(generated, rt);
         let e = Literal::usize_unsuffixed(generated.blocks[0].rows);
         quote! {
@@ -432,8 +434,8 @@ fn parametrised_impl(
 /// The `(row, column)` of every value the `_nonzeros` functions write, in their order: the
 /// entries each generated Jacobian computes (structural zeros left out).
 fn sparsity(scene: &Scene, rt: &TokenStream) -> TokenStream {
-    let pattern = |method: &str, block: usize| {
-        let Some(generated) = scene.functions.iter().find(|g| g.method == method) else {
+    let pattern = |output: Output, block: usize| {
+        let Some(generated) = scene.functions.iter().find(|g| g.output == output) else {
             return quote!(&[]);
         };
         let ranks = nonzero_ranks(generated);
@@ -455,11 +457,14 @@ fn sparsity(scene: &Scene, rt: &TokenStream) -> TokenStream {
             });
         quote!(&[#(#entries),*])
     };
-    let g = pattern("constraint_jacobian", 0);
-    let (fq, fv) = (pattern("force_jacobians", 0), pattern("force_jacobians", 1));
+    let g = pattern(Output::ConstraintJacobian, 0);
+    let (fq, fv) = (
+        pattern(Output::ForceJacobians, 0),
+        pattern(Output::ForceJacobians, 1),
+    );
     let (cq, cv) = (
-        pattern("constraint_force_jacobians", 0),
-        pattern("constraint_force_jacobians", 1),
+        pattern(Output::ConstraintForceJacobians, 0),
+        pattern(Output::ConstraintForceJacobians, 1),
     );
     quote!(#rt::Sparsity {
         constraint_jacobian: #g,
@@ -478,15 +483,15 @@ fn values_only(
 ) -> Option<TokenStream> {
     let vec_n = quote!(#rt::Vector<#n>);
     let count = Literal::usize_unsuffixed(generated.blocks[0].rows);
-    Some(match generated.method {
-        "restitution" => quote! {
+    Some(match generated.output {
+        Output::Restitution => quote! {
             #[inline]
             fn restitution(&self, gap: usize) -> #rt::Float {
                 let e = { #body };
                 if gap < #count { e[gap] } else { 0.0 }
             }
         },
-        "event_functions" => quote! {
+        Output::EventFunctions => quote! {
             #[inline]
             fn event_functions(&self, q: &#vec_n, v: &#vec_n, t: #rt::Float, values: &mut [#rt::Float]) {
                 let e = { #body };
@@ -495,7 +500,7 @@ fn values_only(
                 }
             }
         },
-        "time_event_after" => quote! {
+        Output::TimeEventAfter => quote! {
             #[inline]
             fn time_event_after(&self, after: #rt::Float) -> Option<#rt::Float> {
                 let times = { #body };
@@ -509,7 +514,7 @@ fn values_only(
 }
 
 fn signature(
-    method: &str,
+    output: Output,
     n: &Literal,
     z: &Literal,
     rt: &TokenStream,
@@ -517,27 +522,27 @@ fn signature(
     let vec_n = quote!(#rt::Vector<#n>);
     let state = quote!(q: &#vec_n, v: &#vec_n, t: #rt::Float);
     let square = quote!(#rt::Matrix<#n, #n>);
-    match method {
-        "mass_matrix" => (quote!(q: &#vec_n, t: #rt::Float), quote!(Self::Mass)),
-        "applied_force" => (state, vec_n),
-        "constraint_residual" | "constraint_rate" | "constraint_acceleration_bias" => {
-            (state, quote!(#rt::Vector<#z>))
-        }
-        "constraint_jacobian" | "constraint_position_partials" => {
+    match output {
+        Output::MassMatrix => (quote!(q: &#vec_n, t: #rt::Float), quote!(Self::Mass)),
+        Output::AppliedForce => (state, vec_n),
+        Output::ConstraintResidual
+        | Output::ConstraintRate
+        | Output::ConstraintAccelerationBias => (state, quote!(#rt::Vector<#z>)),
+        Output::ConstraintJacobian | Output::ConstraintPositionPartials => {
             (state, quote!(#rt::Matrix<#z, #n>))
         }
-        "force_jacobians" => (state, quote!((#square, #square))),
-        "constraint_force_jacobians" => (
+        Output::ForceJacobians => (state, quote!((#square, #square))),
+        Output::ConstraintForceJacobians => (
             quote!(#state, lambda: &#rt::Vector<#z>),
             quote!((#square, #square)),
         ),
-        "mass_jacobian_product" => (quote!(q: &#vec_n, t: #rt::Float, a: &#vec_n), square),
-        other => unreachable!("no signature for generated method {other}"),
+        Output::MassJacobianProduct => (quote!(q: &#vec_n, t: #rt::Float, a: &#vec_n), square),
+        other => unreachable!("no signature of its own for {other:?}"),
     }
 }
 
 fn function_summary(generated: &Generated, rt: &TokenStream) -> TokenStream {
-    let name = generated.method;
+    let name = generated.output.method();
     let ranks = nonzero_ranks(generated);
     let mut first_entry = 0;
     let blocks = generated.blocks.iter().map(|block| {
@@ -654,8 +659,8 @@ impl Emitter<'_> {
             .iter()
             .map(|b| format_ident!("{}", b.name))
             .collect();
-        let result = match (generated.method, names.as_slice()) {
-            ("mass_matrix", [m]) => {
+        let result = match (generated.output, names.as_slice()) {
+            (Output::MassMatrix, [m]) => {
                 if generated.blocks[0].cols == 1 {
                     quote!(#rt::DiagonalMass(#m))
                 } else {

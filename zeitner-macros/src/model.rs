@@ -413,41 +413,9 @@ fn parse_function<'a>(
 ) -> Option<ModelFn<'a>> {
     let sig = &function.sig;
     let before = errors.count();
-    let mut ok = true;
-    if !sig.generics.params.is_empty() || sig.asyncness.is_some() || sig.unsafety.is_some() {
-        errors.error_spanned_by(
-            sig,
-            format_args!(
-                "model functions are plain: expected `{}`",
-                role.signature_hint()
-            ),
-        );
-        ok = false;
-    }
-    let mut inputs = sig.inputs.iter();
-    match inputs.next() {
-        Some(FnArg::Receiver(receiver))
-            if receiver.reference.is_some() && receiver.mutability.is_none() => {}
-        Some(other) => {
-            errors.error_spanned_by(
-                other,
-                format_args!(
-                    "the first argument must be `&self`: expected `{}`",
-                    role.signature_hint()
-                ),
-            );
-            ok = false;
-        }
-        None => {
-            errors.error_spanned_by(
-                sig,
-                format_args!("missing `&self`: expected `{}`", role.signature_hint()),
-            );
-            ok = false;
-        }
-    }
+    let mut ok = plain_method(role, sig, errors);
     let (mut q, mut v, mut t) = (None, None, None);
-    for input in inputs {
+    for input in sig.inputs.iter().skip(1) {
         let FnArg::Typed(typed) = input else { continue };
         if refuse_inner_cfg(&typed.attrs, "an argument", errors) {
             ok = false;
@@ -470,134 +438,232 @@ fn parse_function<'a>(
                 ok = false;
                 continue;
             }
-            t = Some(match &*typed.pat {
-                Pat::Ident(p) => Some(&p.ident),
-                Pat::Wild(_) => None,
-                other => {
-                    errors
-                        .error_spanned_by(other, "the time argument must be a name, e.g. `t: f64`");
-                    ok = false;
-                    None
-                }
-            });
+            t = Some(time_name(typed, errors, &mut ok));
             continue;
         }
-        let Some((len, len_expr)) = array_len(&typed.ty, consts) else {
-            if !report_sizes(&typed.ty, consts, errors) {
-                errors.error_spanned_by(
-                    &typed.ty,
-                    format_args!(
-                        "unsupported argument type: coordinates and velocities are `[f64; N]`, time is `f64`; expected `{}`",
-                        role.signature_hint()
-                    ),
-                );
-            }
-            ok = false;
+        let Some(arg) = array_argument(role, typed, consts, errors, &mut ok) else {
             continue;
-        };
-        let binding = match &*typed.pat {
-            Pat::Ident(p) => ArrayBinding::Named(Some(&p.ident)),
-            Pat::Wild(_) => ArrayBinding::Named(None),
-            Pat::Slice(slice) => {
-                let mut names = Vec::new();
-                for element in &slice.elems {
-                    match element {
-                        Pat::Ident(p) => names.push(Some(&p.ident)),
-                        Pat::Wild(_) => names.push(None),
-                        other => {
-                            errors.error_spanned_by(
-                                other,
-                                "expected a name or `_` in the array pattern",
-                            );
-                            ok = false;
-                        }
-                    }
-                }
-                if names.len() != len {
-                    errors.error_spanned_by(
-                        slice,
-                        format_args!(
-                            "the pattern binds {} names but the array has {len}",
-                            names.len()
-                        ),
-                    );
-                    ok = false;
-                }
-                ArrayBinding::Elements(names)
-            }
-            other => {
-                errors.error_spanned_by(
-                    other,
-                    "expected a name (`q: [f64; N]`) or an array pattern (`[q1, q2]: [f64; 2]`)",
-                );
-                ok = false;
-                continue;
-            }
-        };
-        let arg = ArrayArg {
-            len,
-            len_expr,
-            binding,
-            pat: &typed.pat,
         };
         if q.is_none() {
             q = Some(arg);
         } else if v.is_none() && role.takes_velocities() {
             v = Some(arg);
         } else {
-            let message = if role.takes_velocities() {
-                format!(
-                    "too many array arguments: expected `{}`",
-                    role.signature_hint()
-                )
-            } else {
-                format!(
-                    "`{}` takes no velocities: expected `{}`{}",
-                    role.name(),
-                    role.signature_hint(),
-                    if matches!(role, Role::Constraints | Role::Gaps) {
-                        "; constraints on velocities go in `velocity_constraints`"
-                    } else {
-                        ""
-                    }
-                )
-            };
-            errors.error_spanned_by(typed, message);
+            errors.error_spanned_by(typed, surplus_array_message(role));
             ok = false;
         }
     }
-    // Positions come first: an array in the coordinates' place whose names read as velocities
-    // (`v`, `[vx, vy]`, `qdot`) is almost surely a velocity with `q` trimmed.
     if let Some(first) = &q {
-        if let Some(shown) = velocity_name(first) {
-            let n = first.len;
-            let message = match (role.takes_velocities(), v.is_some()) {
-                (true, false) => format!(
-                    "{shown} reads as a velocity, but the first array argument is the coordinates `q`: \
-                     to take velocities only, write `_q: [f64; {n}], {shown_arg}: [f64; {n}]`; if these \
-                     are coordinates, give them a coordinate's name",
-                    shown_arg = binding_text(first),
+        ok &= coordinates_named_as_coordinates(role, first, v.is_some(), errors);
+    }
+    let Some(shape) = return_shape(role, sig, consts, errors) else {
+        // The body is still read for the mistakes that need no signature, so they show in the
+        // same build.
+        scan_body(&function.block, errors);
+        return None;
+    };
+    if !ok || errors.count() != before {
+        return None;
+    }
+    Some(ModelFn {
+        role,
+        q,
+        v,
+        t,
+        shape,
+        body: &function.block,
+    })
+}
+
+/// No generics, `async` or `unsafe`, and `&self` first.
+fn plain_method(role: Role, sig: &syn::Signature, errors: &mut Errors) -> bool {
+    let mut ok = true;
+    if !sig.generics.params.is_empty() || sig.asyncness.is_some() || sig.unsafety.is_some() {
+        errors.error_spanned_by(
+            sig,
+            format_args!(
+                "model functions are plain: expected `{}`",
+                role.signature_hint()
+            ),
+        );
+        ok = false;
+    }
+    match sig.inputs.first() {
+        Some(FnArg::Receiver(receiver))
+            if receiver.reference.is_some() && receiver.mutability.is_none() => {}
+        Some(other) => {
+            errors.error_spanned_by(
+                other,
+                format_args!(
+                    "the first argument must be `&self`: expected `{}`",
+                    role.signature_hint()
                 ),
-                (true, true) => format!(
-                    "{shown} reads as a velocity, but the first array argument is the coordinates `q` and \
-                     the second the velocities `q'`: put the coordinates first; if these are \
-                     coordinates, give them a coordinate's name"
-                ),
-                (false, _) => format!(
-                    "{shown} reads as a velocity, but `{}` takes only the coordinates `q`{}; if these are \
-                     coordinates, give them a coordinate's name",
-                    role.name(),
-                    if role == Role::Constraints {
-                        ": constraints on velocities go in `velocity_constraints`"
-                    } else {
-                        " (and the time)"
-                    }
-                ),
-            };
-            errors.error_spanned_by(first.pat, message);
+            );
+            ok = false;
+        }
+        None => {
+            errors.error_spanned_by(
+                sig,
+                format_args!("missing `&self`: expected `{}`", role.signature_hint()),
+            );
             ok = false;
         }
     }
+    ok
+}
+
+/// The time argument's name (`None` for `_`).
+fn time_name<'a>(
+    typed: &'a syn::PatType,
+    errors: &mut Errors,
+    ok: &mut bool,
+) -> Option<&'a syn::Ident> {
+    match &*typed.pat {
+        Pat::Ident(p) => Some(&p.ident),
+        Pat::Wild(_) => None,
+        other => {
+            errors.error_spanned_by(other, "the time argument must be a name, e.g. `t: f64`");
+            *ok = false;
+            None
+        }
+    }
+}
+
+/// An array argument `q: [f64; N]` or `[q1, q2]: [f64; 2]`; `None` (reported) when it is not one.
+fn array_argument<'a>(
+    role: Role,
+    typed: &'a syn::PatType,
+    consts: &Consts,
+    errors: &mut Errors,
+    ok: &mut bool,
+) -> Option<ArrayArg<'a>> {
+    let Some((len, len_expr)) = array_len(&typed.ty, consts) else {
+        if !report_sizes(&typed.ty, consts, errors) {
+            errors.error_spanned_by(
+                &typed.ty,
+                format_args!(
+                    "unsupported argument type: coordinates and velocities are `[f64; N]`, time is `f64`; expected `{}`",
+                    role.signature_hint()
+                ),
+            );
+        }
+        *ok = false;
+        return None;
+    };
+    let binding = match &*typed.pat {
+        Pat::Ident(p) => ArrayBinding::Named(Some(&p.ident)),
+        Pat::Wild(_) => ArrayBinding::Named(None),
+        Pat::Slice(slice) => {
+            let mut names = Vec::new();
+            for element in &slice.elems {
+                match element {
+                    Pat::Ident(p) => names.push(Some(&p.ident)),
+                    Pat::Wild(_) => names.push(None),
+                    other => {
+                        errors
+                            .error_spanned_by(other, "expected a name or `_` in the array pattern");
+                        *ok = false;
+                    }
+                }
+            }
+            if names.len() != len {
+                errors.error_spanned_by(
+                    slice,
+                    format_args!(
+                        "the pattern binds {} names but the array has {len}",
+                        names.len()
+                    ),
+                );
+                *ok = false;
+            }
+            ArrayBinding::Elements(names)
+        }
+        other => {
+            errors.error_spanned_by(
+                other,
+                "expected a name (`q: [f64; N]`) or an array pattern (`[q1, q2]: [f64; 2]`)",
+            );
+            *ok = false;
+            return None;
+        }
+    };
+    Some(ArrayArg {
+        len,
+        len_expr,
+        binding,
+        pat: &typed.pat,
+    })
+}
+
+/// The message for an array argument beyond those the function takes.
+fn surplus_array_message(role: Role) -> String {
+    if role.takes_velocities() {
+        format!(
+            "too many array arguments: expected `{}`",
+            role.signature_hint()
+        )
+    } else {
+        format!(
+            "`{}` takes no velocities: expected `{}`{}",
+            role.name(),
+            role.signature_hint(),
+            if matches!(role, Role::Constraints | Role::Gaps) {
+                "; constraints on velocities go in `velocity_constraints`"
+            } else {
+                ""
+            }
+        )
+    }
+}
+
+/// Positions come first: an array in the coordinates' place whose names read as velocities
+/// (`v`, `[vx, vy]`, `qdot`) is almost surely a velocity with `q` trimmed. `false` (reported)
+/// for one.
+fn coordinates_named_as_coordinates(
+    role: Role,
+    first: &ArrayArg<'_>,
+    has_velocities: bool,
+    errors: &mut Errors,
+) -> bool {
+    let Some(shown) = velocity_name(first) else {
+        return true;
+    };
+    let n = first.len;
+    let message = match (role.takes_velocities(), has_velocities) {
+        (true, false) => format!(
+            "{shown} reads as a velocity, but the first array argument is the coordinates `q`: \
+             to take velocities only, write `_q: [f64; {n}], {shown_arg}: [f64; {n}]`; if these \
+             are coordinates, give them a coordinate's name",
+            shown_arg = binding_text(first),
+        ),
+        (true, true) => format!(
+            "{shown} reads as a velocity, but the first array argument is the coordinates `q` and \
+             the second the velocities `q'`: put the coordinates first; if these are \
+             coordinates, give them a coordinate's name"
+        ),
+        (false, _) => format!(
+            "{shown} reads as a velocity, but `{}` takes only the coordinates `q`{}; if these are \
+             coordinates, give them a coordinate's name",
+            role.name(),
+            if role == Role::Constraints {
+                ": constraints on velocities go in `velocity_constraints`"
+            } else {
+                " (and the time)"
+            }
+        ),
+    };
+    errors.error_spanned_by(first.pat, message);
+    false
+}
+
+/// What the function returns, `[f64; N]` (or `[[f64; N]; N]` for the mass); `None` (reported)
+/// otherwise.
+fn return_shape<'a>(
+    role: Role,
+    sig: &'a syn::Signature,
+    consts: &Consts,
+    errors: &mut Errors,
+) -> Option<Shape<'a>> {
     let shape = match &sig.output {
         ReturnType::Type(_, ty) => match (array_len(ty, consts), matrix_len(ty, consts)) {
             (Some((len, len_expr)), _) => Some(Shape::Vector { len, len_expr }),
@@ -621,23 +687,7 @@ fn parse_function<'a>(
             ),
         );
     }
-    let Some(shape) = shape else {
-        // The body is still read for the mistakes that need no signature, so they show in the
-        // same build.
-        scan_body(&function.block, errors);
-        return None;
-    };
-    if !ok || errors.count() != before {
-        return None;
-    }
-    Some(ModelFn {
-        role,
-        q,
-        v,
-        t,
-        shape,
-        body: &function.block,
-    })
+    shape
 }
 
 /// The statements of a body that are wrong whatever the signature says.

@@ -93,7 +93,6 @@ pub struct Lowered {
     pub spans: Vec<Span>,
 }
 
-#[path = "unroll.rs"]
 mod unroll;
 
 use unroll::Value;
