@@ -268,12 +268,32 @@ fn push_all<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
 }
 
-/// Every case of the report, with a callback for progress.
+/// Every case of the report, family by family, with a callback for progress.
 pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
     let mut cases = Vec::new();
-
-    // 1. Stiff spring on a pendulum, ω·τ from 0.1 to 1e4 at τ = 1 ms, undamped and damped.
     progress("stiff spring");
+    stiff_spring(&mut cases);
+    progress("small masses");
+    small_masses(&mut cases);
+    progress("mass ratios");
+    mass_ratios(&mut cases);
+    progress("dead centre");
+    dead_centre(&mut cases);
+    progress("redundant");
+    redundant_constraints(&mut cases);
+    progress("loads");
+    loads(&mut cases);
+    progress("long runs");
+    long_runs(&mut cases, long_steps);
+    progress("scales");
+    scales(&mut cases);
+    progress("bad starts");
+    bad_starts(&mut cases);
+    cases
+}
+
+/// Stiff spring on a pendulum, ω·τ from 0.1 to 1e4 at τ = 1 ms, undamped and damped.
+fn stiff_spring(cases: &mut Vec<Case>) {
     for damping_ratio in [0.0, 0.1] {
         for omega_tau in [0.1, 1.0, 10.0, 100.0, 1e3, 1e4] {
             let h = 1e-3;
@@ -298,7 +318,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
                 None
             };
             push_all(
-                &mut cases,
+                cases,
                 "stiff spring",
                 &variant,
                 &scene,
@@ -310,9 +330,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             );
         }
     }
+}
 
-    // 2. Singularly perturbed: mass ε², stiffness 1/ε², on a rigid link.
-    progress("small masses");
+/// Singularly perturbed: mass ε², stiffness 1/ε², on a rigid link.
+fn small_masses(cases: &mut Vec<Case>) {
     for eps in [1e-2, 1e-3, 1e-4] {
         let scene = SpringPendulum {
             m1: 1.0,
@@ -327,7 +348,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         let start = (Vector::<4>::new(1.0, 0.0, 1.0, -0.1), Vector::zeros());
         let variant = format!("ε = {eps:.0e} (m = ε², k = 1/ε²)");
         push_all(
-            &mut cases,
+            cases,
             "small masses",
             &variant,
             &scene,
@@ -338,9 +359,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             Some((&energy, 9.81)),
         );
     }
+}
 
-    // 3. Extreme mass ratios on a double pendulum.
-    progress("mass ratios");
+/// Extreme mass ratios on a double pendulum.
+fn mass_ratios(cases: &mut Vec<Case>) {
     for ratio in [1e-6, 1e-3, 1.0, 1e3, 1e6] {
         let scene = DoublePendulum {
             m1: 1.0,
@@ -354,7 +376,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         let scale = 9.81 * (1.0 + 2.0 * ratio);
         let variant = format!("m2/m1 = {ratio:.0e}");
         push_all(
-            &mut cases,
+            cases,
             "mass ratio",
             &variant,
             &scene,
@@ -365,9 +387,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             Some((&energy, scale)),
         );
     }
+}
 
-    // 4. Slider-crank through its dead centre (crank at 90° at t = 0.25 s).
-    progress("dead centre");
+/// Slider-crank through its dead centre (crank at 90° at t = 0.25 s).
+fn dead_centre(cases: &mut Vec<Case>) {
     let crank = SliderCrank {
         m: 1.0,
         ms: 1.0,
@@ -381,7 +404,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         Vector::<3>::new(0.0, omega, 0.0),
     );
     push_all(
-        &mut cases,
+        cases,
         "slider-crank",
         "through the dead centre",
         &crank,
@@ -396,7 +419,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
     let cusp = CuspBead { m: 1.0, g: 9.81 };
     let cusp_energy = |q: &[f64], v: &[f64]| 0.5 * (v[0] * v[0] + v[1] * v[1]) + 9.81 * q[1];
     push_all(
-        &mut cases,
+        cases,
         "cusp",
         "bead sliding into the cusp of y² = x³",
         &cusp,
@@ -406,9 +429,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         1e-10,
         Some((&cusp_energy, 9.81)),
     );
+}
 
-    // 5. Redundant constraints.
-    progress("redundant");
+/// Redundant constraints.
+fn redundant_constraints(cases: &mut Vec<Case>) {
     let four_bar = RedundantFourBar {
         m: 1.0,
         r1: 1.0,
@@ -420,7 +444,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
     let (xa, ya) = (0.0, 1.0);
     let (xb, yb) = (2.0 - 1.5f64 * 0.6, 1.5 * 0.8);
     push_all(
-        &mut cases,
+        cases,
         "redundant",
         "four-bar with a dependent equation",
         &four_bar,
@@ -430,9 +454,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         1e-10,
         None,
     );
+}
 
-    // 6. Impulsive and discontinuous loads on the steam generator.
-    progress("loads");
+/// Impulsive and discontinuous loads on the steam generator.
+fn loads(cases: &mut Vec<Case>) {
     let impulsive = SteamGenerator {
         rise: 1e-6,
         ..SteamGenerator::paper()
@@ -489,9 +514,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             });
         }
     }
+}
 
-    // 7. Long runs: `long_steps` steps of 1 ms, undamped and unloaded.
-    progress("long runs");
+/// Long runs: `long_steps` steps of 1 ms, undamped and unloaded.
+fn long_runs(cases: &mut Vec<Case>, long_steps: u64) {
     let pendulum = Pendulum {
         m: 1.0,
         length: 1.0,
@@ -562,10 +588,11 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             outcome,
         });
     }
+}
 
-    // 8. Scales: the pendulum from 1 µm to 10 km, in metres and in millimetres; ten periods at
-    // 200 steps a period, tolerances in the scene's own units (1e-10 L²).
-    progress("scales");
+/// Scales: the pendulum from 1 µm to 10 km, in metres and in millimetres; ten periods at
+/// 200 steps a period, tolerances in the scene's own units (1e-10 L²).
+fn scales(cases: &mut Vec<Case>) {
     for (label, length, g) in [
         ("L = 1 µm", 1e-6, 9.81),
         ("L = 1 m", 1.0, 9.81),
@@ -577,7 +604,7 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         let energy = |q: &[f64], v: &[f64]| 0.5 * (v[0] * v[0] + v[1] * v[1]) + g * q[1];
         let start = (Vector::<2>::new(length, 0.0), Vector::zeros());
         push_all(
-            &mut cases,
+            cases,
             "scale",
             label,
             &scene,
@@ -588,9 +615,10 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
             Some((&energy, g * length)),
         );
     }
+}
 
-    // 9. Inconsistent and bad starts.
-    progress("bad starts");
+/// Inconsistent and bad starts.
+fn bad_starts(cases: &mut Vec<Case>) {
     let pendulum_cases: [(&str, Pendulum, (Vector<2>, Vector<2>)); 6] = [
         (
             "positions off the circle",
@@ -657,7 +685,6 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
         step: 1e-3,
         outcome,
     });
-    cases
 }
 
 /// The default options with Dormand–Prince throughout, as the bad starts' rows are labelled.
