@@ -1,7 +1,7 @@
 //! Independent references, derived by hand in reduced coordinates and integrated far below
 //! any tolerance the tests use.
 
-use super::contact::WallPendulum;
+use super::contact::{Ball, WallPendulum};
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
 use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
@@ -149,6 +149,33 @@ pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: Float) -> State<
     }
 }
 
+/// The ball dropped at rest from `height` onto its floor, in closed form: it lands after
+/// `t₁ = √(2 h / g)`; the `k`-th flight after it leaves at `u_k = eᵏ g t₁` and lasts `2 u_k / g`.
+/// In flight the gap carries no force. Valid until the ball comes to rest, at
+/// `t₁ (1 + e) / (1 - e)`.
+pub fn ball_dropped(ball: &Ball, height: Float, t: Float) -> State<1, 1> {
+    let g = ball.g;
+    let first = (2.0 * height / g).sqrt();
+    if t <= first {
+        return State {
+            q: [height - 0.5 * g * t * t],
+            v: [-g * t],
+            lambda: [0.0],
+        };
+    }
+    let (mut leaves, mut speed) = (first, ball.e * g * first);
+    while t > leaves + 2.0 * speed / g {
+        leaves += 2.0 * speed / g;
+        speed *= ball.e;
+    }
+    let tau = t - leaves;
+    State {
+        q: [speed * tau - 0.5 * g * tau * tau],
+        v: [speed - g * tau],
+        lambda: [0.0],
+    }
+}
+
 /// The spring-supported pendulum in reduced coordinates: the support `p = (x_s, y_s)` and the
 /// rod angle `θ` from the downward vertical, bob `b = p + l (sin θ, -cos θ)`. Lagrange's
 /// equations with `T = ½ m_s |p'|² + ½ m |p' + l θ' (cos θ, sin θ)|²`,
@@ -266,4 +293,36 @@ pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
         }
     }
     t + 0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed form lands at zero height with the free fall's speed and leaves at `e` times
+    /// it, once per flight, up to the next landing.
+    #[test]
+    fn the_dropped_ball_leaves_each_landing_at_e_times_its_speed() {
+        let ball = Ball {
+            m: 1.0,
+            g: 9.81,
+            e: 0.8,
+        };
+        let (height, delta) = (1.0, 1e-9);
+        let mut landing = (2.0 * height / ball.g).sqrt();
+        let mut speed = ball.g * landing;
+        for _ in 0..3 {
+            let before = ball_dropped(&ball, height, landing - delta);
+            let after = ball_dropped(&ball, height, landing + delta);
+            assert!(before.q[0].abs() < 1e-7 && after.q[0].abs() < 1e-7);
+            assert!(
+                (before.v[0] + speed).abs() < 1e-7,
+                "{} {speed}",
+                before.v[0]
+            );
+            assert!((after.v[0] - ball.e * speed).abs() < 1e-7, "{}", after.v[0]);
+            speed *= ball.e;
+            landing += 2.0 * speed / ball.g;
+        }
+    }
 }

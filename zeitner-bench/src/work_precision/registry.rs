@@ -8,7 +8,7 @@ use crate::scaling::scenes::{
     Chain128, Chain32, IndependentLadder16, IndependentLadder64, Ladder16, Ladder64,
 };
 use crate::scenes::andrews::Andrews;
-use crate::scenes::contact::WallPendulum;
+use crate::scenes::contact::{Ball, WallPendulum};
 use crate::scenes::knife_edge::KnifeEdge;
 use crate::scenes::modal::Modes;
 use crate::scenes::pendulum::Pendulum;
@@ -88,6 +88,19 @@ pub const SCENES: &[Entry] = &[
                         height: -2.0 }",
             start: "(Vector::<2>::new(1.0, 0.0), Vector::zeros())",
             t_end: 10.0,
+        },
+    },
+    Entry {
+        name: "bouncing_ball",
+        build: bouncing_ball_scene,
+        script_peers: &[],
+        user_crate: SceneCrate {
+            // The file holds two more contact scenes, which this crate compiles too.
+            scene: "bouncing_ball",
+            source: Source::Example("contact"),
+            construct: "scenes::contact::Ball { m: 1.0, g: 9.81, e: 0.8 }",
+            start: "(Vector::<1>::new(1.0), Vector::zeros())",
+            t_end: 2.0,
         },
     },
     Entry {
@@ -274,6 +287,31 @@ fn wall_pendulum_scene() -> Result<Scene, String> {
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 2, 2, 4, 6>(WallPendulum { ..scene }, start, t_end),
         run: to_the_end("wall_pendulum", scene, start, t_end, None),
+    })
+}
+
+fn bouncing_ball_scene() -> Result<Scene, String> {
+    let (t_end, height) = (2.0, 1.0);
+    let scene = Ball {
+        m: 1.0,
+        g: 9.81,
+        e: 0.8,
+    };
+    let reference = reference::ball_dropped(&scene, height, t_end);
+    let start = (Vector::<1>::new(height), Vector::zeros());
+    Ok(Scene {
+        name: "bouncing_ball",
+        title: "A ball dropped from 1 m, restitution 0.8, three impacts, 2 s",
+        t_end,
+        constraint_tolerance: 1e-12,
+        tightest_rtol: 0.0,
+        reference: flattened(&reference),
+        large: false,
+        error_measure: worst_relative,
+        velocity_rows: has_velocity_rows(&scene),
+        own_methods: no_own_methods,
+        run_rust_peers: rust_peers::<_, 1, 1, 2, 3>(Ball { ..scene }, start, t_end),
+        run: to_the_end("bouncing_ball", scene, start, t_end, None),
     })
 }
 
