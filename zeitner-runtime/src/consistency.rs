@@ -36,6 +36,21 @@ pub struct Start<const N: usize> {
 }
 
 /// How a start (or a re-initialised state) was made consistent.
+///
+/// ```
+/// use zeitner_runtime::{RowSet, StartReport, Vector};
+///
+/// // A pendulum started 1 mm below its circle, at rest: projected up onto it.
+/// let report = StartReport::<2, 1> {
+///     position_change: Vector::<2>::new(0.0, 1e-3),
+///     velocity_change: Vector::zeros(),
+///     multipliers: Vector::<1>::new(9.81),
+///     multipliers_given: false,
+///     redundant_rows: RowSet::new(1),
+/// };
+/// assert_eq!(report.position_change.amax(), 1e-3); // the largest move
+/// assert!(report.redundant_rows.is_empty());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StartReport<const N: usize, const Z: usize> {

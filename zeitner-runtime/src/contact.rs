@@ -19,6 +19,23 @@ use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
 
 /// What one impact did.
+///
+/// ```
+/// use zeitner_runtime::{system::MAX_GAPS, GapSet, Impact, Vector};
+///
+/// // A unit mass hits the floor (gap `y ≥ 0`) at 2 m/s with restitution 0.5.
+/// let (mut gap_rate_before, mut gap_rate_after) = ([0.0; MAX_GAPS], [0.0; MAX_GAPS]);
+/// (gap_rate_before[0], gap_rate_after[0]) = (-2.0, 1.0);
+/// let (velocity_before, velocity_after) = (Vector::<1>::new(-2.0), Vector::<1>::new(1.0));
+/// let impact = Impact::<1, 1> {
+///     t: 0.45, gaps: GapSet::first(1), persistent: GapSet::EMPTY,
+///     impulse: Vector::<1>::new(-3.0), velocity_before, velocity_after,
+///     gap_rate_before, gap_rate_after, energy_lost: 1.5,
+/// };
+/// // The velocities jump by `-M⁻¹GᵀΛ` (here M = G = 1): an impulse that pushes is negative.
+/// assert_eq!(impact.velocity_after - impact.velocity_before, -impact.impulse);
+/// assert_eq!(impact.gap_rate_after[0], -0.5 * impact.gap_rate_before[0]);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Impact<const N: usize, const Z: usize> {

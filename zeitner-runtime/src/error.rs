@@ -5,6 +5,15 @@ use crate::scalar::Float;
 use core::fmt;
 
 /// The model function (or the state) in which a non-finite value appeared.
+///
+/// ```
+/// use zeitner_runtime::{ModelFunction, StepError};
+///
+/// assert_eq!(ModelFunction::AppliedForce.to_string(), "the applied force (`force`)");
+/// let error = StepError::NonFinite { t: 0.25, function: ModelFunction::AppliedForce };
+/// let message = error.to_string();
+/// assert!(message.starts_with("the applied force (`force`) became NaN or infinite at t = 0.25"));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -50,6 +59,21 @@ const LISTED_ROWS: usize = 16;
 /// A set of constraint rows, shown as the user wrote them: `constraints[j]` for position rows,
 /// `velocity_constraints[j]` for velocity rows. The first 16 rows inserted are named; beyond
 /// them the set counts the rows and says how many more there are.
+///
+/// ```
+/// use zeitner_runtime::RowSet;
+///
+/// // A scene with 2 position-level rows; rows 2 and up are velocity-level.
+/// let mut rows = RowSet::new(2);
+/// rows.insert(1);
+/// rows.insert(3);
+/// rows.insert(1); // once only
+/// assert_eq!(rows.len(), 2);
+/// assert_eq!(rows.to_string(), "constraints[1], velocity_constraints[1]");
+/// let mut many = RowSet::new(100);
+/// (0..20).for_each(|row| many.insert(row));
+/// assert!(!many.is_complete() && many.to_string().ends_with("constraints[15] and 4 more rows"));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RowSet {
@@ -113,6 +137,14 @@ impl RowSet {
 }
 
 /// One constraint row, shown as the user wrote it.
+///
+/// ```
+/// use zeitner_runtime::Row;
+///
+/// // Of a scene with 3 position-level rows, row 3 is the first velocity-level one.
+/// assert_eq!(Row { index: 2, position_rows: 3 }.to_string(), "constraints[2]");
+/// assert_eq!(Row { index: 3, position_rows: 3 }.to_string(), "velocity_constraints[0]");
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Row {
@@ -147,6 +179,19 @@ impl fmt::Display for RowSet {
 }
 
 /// Why options or arguments were refused.
+///
+/// ```
+/// use zeitner_runtime::{InvalidOption, Options, StepError};
+///
+/// let options = Options { max_newton_iterations: 0, ..Options::default() };
+/// let error = options.validate().unwrap_err();
+/// assert_eq!(error, StepError::InvalidOption(InvalidOption::IterationLimit));
+/// // Each message says what to change.
+/// assert_eq!(
+///     error.to_string(),
+///     "invalid option: `max_newton_iterations` must be between 1 and 1000 (default 12)"
+/// );
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[non_exhaustive]
@@ -309,6 +354,22 @@ impl fmt::Display for InvalidOption {
 }
 
 /// Why a step, or the consistent start, failed.
+///
+/// ```
+/// use zeitner_runtime::{Row, StepError};
+///
+/// let worst_row = Row { index: 0, position_rows: 1 };
+/// let (t, step, iterations, residual) = (0.5, 1e-3, 12, 2e-9);
+/// let error = StepError::NewtonDidNotConverge { t, step, iterations, residual, worst_row };
+/// let message = error.to_string();
+/// assert!(message.contains("after 12 integrations constraints[0] is still violated by 2e-9"));
+/// // Non-exhaustive: match the failures to act on, with a `_` arm for the rest.
+/// let retry_with = match error {
+///     StepError::NewtonDidNotConverge { step, .. } => Some(step / 2.0),
+///     _ => None,
+/// };
+/// assert_eq!(retry_with, Some(5e-4));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[non_exhaustive]

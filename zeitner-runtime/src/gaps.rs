@@ -3,6 +3,18 @@
 use crate::system::MAX_GAPS;
 
 /// A set of gaps by their index in the model's `gaps` (`0..UNILATERAL_CONSTRAINTS`).
+///
+/// ```
+/// use zeitner_runtime::GapSet;
+///
+/// let mut closed = GapSet::first(3); // gaps 0, 1 and 2
+/// closed.remove(1);
+/// assert_eq!(closed.iter().collect::<Vec<_>>(), [0, 2]);
+/// let opening = GapSet::first(1); // gap 0
+/// assert_eq!(closed.without(opening).iter().collect::<Vec<_>>(), [2]);
+/// assert_eq!(closed.union(GapSet::first(2)).len(), 3);
+/// assert!(!closed.contains(40) && GapSet::EMPTY.is_empty()); // at most 32 gaps
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GapSet(u32);

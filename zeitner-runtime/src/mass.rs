@@ -6,6 +6,18 @@ use nalgebra::Cholesky;
 use crate::dense::{Matrix, Vector};
 
 /// Storage of `M`, as the generated code returns it.
+///
+/// ```
+/// use zeitner_runtime::{DiagonalMass, Float, FullMass, MassMatrix, Matrix, Vector};
+///
+/// // The kinetic energy `½ vᵀ M v`, whatever the storage of `M`.
+/// fn kinetic<M: MassMatrix<2>>(mass: &M, v: &Vector<2>) -> Float {
+///     0.5 * v.dot(&mass.mul(v))
+/// }
+/// let v = Vector::<2>::new(1.0, 2.0);
+/// assert_eq!(kinetic(&DiagonalMass(Vector::<2>::new(2.0, 1.0)), &v), 3.0);
+/// assert_eq!(kinetic(&FullMass(Matrix::<2, 2>::identity() * 2.0), &v), 5.0);
+/// ```
 pub trait MassMatrix<const N: usize>: Copy {
     type Factor: MassFactor<N>;
     /// The factorisation, or `None` when `M` is not symmetric positive definite (or not finite).
@@ -15,16 +27,50 @@ pub trait MassMatrix<const N: usize>: Copy {
 }
 
 /// A factorised mass matrix.
+///
+/// ```
+/// use zeitner_runtime::{FullMass, MassFactor, MassMatrix, Matrix};
+///
+/// let m = Matrix::<2, 2>::new(2.0, 1.0, 1.0, 2.0);
+/// let factor = FullMass(m).factor().expect("symmetric positive definite");
+/// // `M⁻¹ B` for a block of columns: against the identity, the inverse.
+/// let inverse = MassFactor::solve(&factor, &Matrix::<2, 2>::identity());
+/// assert!((m * inverse - Matrix::<2, 2>::identity()).amax() < 1e-14);
+/// ```
 pub trait MassFactor<const N: usize>: Clone {
     /// `M⁻¹ B` for a block of columns.
     fn solve<const C: usize>(&self, b: &Matrix<N, C>) -> Matrix<N, C>;
 }
 
 /// A diagonal mass matrix, its diagonal.
+///
+/// ```
+/// use zeitner_runtime::{DiagonalMass, MassFactor, MassMatrix, Vector};
+///
+/// let mass = DiagonalMass(Vector::<2>::new(2.0, 4.0));
+/// assert_eq!(mass.mul(&Vector::<2>::new(1.0, 1.0)), Vector::<2>::new(2.0, 4.0));
+/// let factor = mass.factor().expect("positive diagonal");
+/// let solved = MassFactor::solve(&factor, &Vector::<2>::new(1.0, 1.0));
+/// assert_eq!(solved, Vector::<2>::new(0.5, 0.25));
+/// // A zero mass has no factor.
+/// assert!(DiagonalMass(Vector::<2>::new(1.0, 0.0)).factor().is_none());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DiagonalMass<const N: usize>(pub Vector<N>);
 
 /// A full symmetric mass matrix.
+///
+/// ```
+/// use zeitner_runtime::{FullMass, MassFactor, MassMatrix, Matrix, Vector};
+///
+/// let mass = FullMass(Matrix::<2, 2>::new(2.0, 1.0, 1.0, 2.0));
+/// let factor = mass.factor().expect("symmetric positive definite");
+/// let b = Vector::<2>::new(3.0, 3.0);
+/// let x = MassFactor::solve(&factor, &b);
+/// assert!((mass.mul(&x) - b).amax() < 1e-14);
+/// // Indefinite (eigenvalues 3 and -1): no factor.
+/// assert!(FullMass(Matrix::<2, 2>::new(1.0, 2.0, 2.0, 1.0)).factor().is_none());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FullMass<const N: usize>(pub Matrix<N, N>);
 

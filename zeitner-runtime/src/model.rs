@@ -10,6 +10,15 @@ use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// How often each model function was called.
+///
+/// ```
+/// use zeitner_runtime::Evaluations;
+///
+/// let mut counted = Evaluations::default();
+/// assert_eq!((counted.forces, counted.mass_factorizations), (0, 0));
+/// counted.forces += 6; // the counts are plain fields
+/// assert_ne!(counted, Evaluations::default());
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]

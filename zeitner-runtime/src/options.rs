@@ -6,6 +6,21 @@ use crate::scalar::Float;
 
 /// The one-step method that integrates `M q'' = F - Gᵀλ(t)` with the multipliers prescribed over
 /// the step.
+///
+/// ```
+/// use zeitner_runtime::{InnerMethod, InvalidOption, MultiplierModel, Options, StepControl, StepError};
+///
+/// // `Automatic` starts with Verner's 9(8) at the default rtol 1e-8, with DOP853 at looser ones.
+/// let auto = InnerMethod::Automatic;
+/// let first = |rtol| auto.first(MultiplierModel::Automatic, StepControl::adaptive(rtol));
+/// assert_eq!(first(1e-8), InnerMethod::Verner98);
+/// assert_eq!(first(1e-4), InnerMethod::Dop853);
+/// // RK4 has no error estimate: fixed steps only.
+/// let rk4 = Options { method: InnerMethod::Rk4 { substeps: 2 }, ..Options::default() };
+/// let refused = StepError::InvalidOption(InvalidOption::AdaptiveNeedsErrorEstimate);
+/// assert_eq!(rk4.validate(), Err(refused));
+/// assert!(Options { step: StepControl::Fixed { step: 1e-3 }, ..rk4 }.validate().is_ok());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -186,6 +201,16 @@ impl InnerMethod {
 }
 
 /// How the change of the step-end state under a change of the multipliers is obtained.
+///
+/// ```
+/// use zeitner_runtime::{Options, Sensitivity};
+///
+/// // Exact by default (feature `exact-sensitivity`); the paper's estimate in `Options::paper`.
+/// assert_eq!(Options::default().sensitivity, Sensitivity::Exact);
+/// assert_eq!(Options::paper(1e-3).sensitivity, Sensitivity::Paper);
+/// let cheap = Options { sensitivity: Sensitivity::Paper, ..Options::default() };
+/// assert!(cheap.validate().is_ok());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -202,6 +227,16 @@ pub enum Sensitivity {
 }
 
 /// What happens to the velocities at the step end.
+///
+/// ```
+/// use zeitner_runtime::{Options, VelocityProjection};
+///
+/// assert_eq!(Options::default().velocity_projection, VelocityProjection::Output);
+/// assert_eq!(Options::paper(1e-3).velocity_projection, VelocityProjection::Off);
+/// // As RATTLE: go on from the projected velocities.
+/// let rattle = Options { velocity_projection: VelocityProjection::State, ..Options::default() };
+/// assert!(rattle.validate().is_ok());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -217,6 +252,24 @@ pub enum VelocityProjection {
 }
 
 /// How the multipliers vary over a step.
+///
+/// ```
+/// use zeitner_runtime::{InnerMethod, InvalidOption, MultiplierModel, Options, StepError};
+///
+/// // `Automatic` resolved for a scene with 2 rows, both position-level.
+/// let auto = MultiplierModel::Automatic;
+/// assert_eq!(auto.resolve(InnerMethod::DormandPrince54, 2, 2), MultiplierModel::Quadratic);
+/// assert_eq!(auto.resolve(InnerMethod::Rk4 { substeps: 1 }, 2, 2), MultiplierModel::Constant);
+/// assert_eq!(auto.resolve(InnerMethod::Dop853, 2, 2), MultiplierModel::EveryStage);
+/// // DOP853 refuses held multipliers.
+/// let held = Options {
+///     method: InnerMethod::Dop853,
+///     multipliers: MultiplierModel::Constant,
+///     ..Options::default()
+/// };
+/// let refused = StepError::InvalidOption(InvalidOption::MultipliersForMethod);
+/// assert_eq!(held.validate(), Err(refused));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -282,6 +335,23 @@ impl MultiplierModel {
 }
 
 /// How the step size is chosen. Times in the model's time unit.
+///
+/// ```
+/// use zeitner_runtime::{InvalidOption, Options, StepControl, StepError};
+///
+/// let fixed = Options { step: StepControl::Fixed { step: 1e-3 }, ..Options::default() };
+/// assert!(fixed.validate().is_ok());
+/// // Bounds out of order: `min_step` above `initial_step`.
+/// let step = StepControl::Adaptive {
+///     initial_step: 1e-4,
+///     min_step: 1e-3,
+///     max_step: 0.1,
+///     rtol: 1e-6,
+///     atol: 1e-8,
+/// };
+/// let refused = StepError::InvalidOption(InvalidOption::StepSize);
+/// assert_eq!(Options { step, ..Options::default() }.validate(), Err(refused));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum StepControl {
@@ -370,6 +440,15 @@ impl StepControl {
 }
 
 /// Whether a start that violates the constraints is moved onto them.
+///
+/// ```
+/// use zeitner_runtime::{Options, StartPolicy};
+///
+/// assert_eq!(Options::default().start, StartPolicy::Project);
+/// // Refuse a start off the constraints instead of moving it.
+/// let strict = Options { start: StartPolicy::Refuse, ..Options::default() };
+/// assert!(strict.validate().is_ok());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -383,6 +462,19 @@ pub enum StartPolicy {
 }
 
 /// Everything that steers the integration.
+///
+/// ```
+/// use zeitner_runtime::{InnerMethod, Options, StepControl, VelocityProjection};
+///
+/// // The defaults, changed where the run needs it.
+/// let options = Options {
+///     step: StepControl::adaptive(1e-6),
+///     velocity_projection: VelocityProjection::State,
+///     ..Options::default()
+/// };
+/// assert!(options.validate().is_ok());
+/// assert_eq!(options.method, InnerMethod::Automatic);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Options {
@@ -421,6 +513,17 @@ pub struct Options {
 
 /// How zero crossings of event functions and gaps are located, and when an impact ends in
 /// contact.
+///
+/// ```
+/// use zeitner_runtime::{EventSettings, InvalidOption, Options, StepError};
+///
+/// let events = EventSettings::default();
+/// assert_eq!((events.time_tolerance, events.rest_velocity), (1e-12, 1e-3));
+/// // Event times are located to a millisecond at least: a coarser tolerance is refused.
+/// let coarse = EventSettings { time_tolerance: 0.01, ..events };
+/// let options = Options { events: coarse, ..Options::default() };
+/// assert_eq!(options.validate(), Err(StepError::InvalidOption(InvalidOption::Events)));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EventSettings {
@@ -443,6 +546,19 @@ impl Default for EventSettings {
 }
 
 impl Default for Options {
+    /// Every field's documented default; it passes [`Options::validate`].
+    ///
+    /// ```
+    /// use zeitner_runtime::{Options, StartPolicy, StepControl};
+    ///
+    /// let options = Options::default();
+    /// assert_eq!(options.step, StepControl::adaptive(1e-8));
+    /// assert_eq!(options.constraint_tolerance, 1e-10);
+    /// assert_eq!(options.max_newton_iterations, 12);
+    /// assert_eq!(options.start, StartPolicy::Project);
+    /// assert!(options.extrapolate_multipliers && options.accept_linearised_update);
+    /// assert!(options.validate().is_ok());
+    /// ```
     fn default() -> Self {
         Options {
             method: InnerMethod::Automatic,
@@ -476,6 +592,18 @@ pub const MAX_SUBSTEPS_PER_STEP: u32 = 20_000;
 impl Options {
     /// The paper's method as published: RK4 inner step with fixed `step`, the paper's sensitivity
     /// estimate, positions enforced, raw velocities and multipliers.
+    ///
+    /// ```
+    /// use zeitner_runtime::{InnerMethod, MultiplierModel, Options, StepControl, VelocityProjection};
+    ///
+    /// let paper = Options::paper(1e-3);
+    /// assert_eq!(paper.method, InnerMethod::Rk4 { substeps: 1 });
+    /// assert_eq!(paper.multipliers, MultiplierModel::Constant);
+    /// assert_eq!(paper.step, StepControl::Fixed { step: 1e-3 });
+    /// assert_eq!(paper.velocity_projection, VelocityProjection::Off);
+    /// assert!(!paper.extrapolate_multipliers);
+    /// assert!(paper.validate().is_ok());
+    /// ```
     pub fn paper(step: Float) -> Self {
         Options {
             method: InnerMethod::Rk4 { substeps: 1 },
@@ -498,6 +626,19 @@ impl Options {
     }
 
     /// Refuses options that cannot work, before anything is computed.
+    ///
+    /// ```
+    /// use zeitner_runtime::{InvalidOption, Options, StepError};
+    ///
+    /// assert!(Options::default().validate().is_ok());
+    /// let negative = Options { constraint_tolerance: -1e-6, ..Options::default() };
+    /// let refused = StepError::InvalidOption(InvalidOption::ConstraintTolerance);
+    /// assert_eq!(negative.validate(), Err(refused));
+    /// // At most 1000 Newton integrations per step.
+    /// let endless = Options { max_newton_iterations: 5000, ..Options::default() };
+    /// let refused = StepError::InvalidOption(InvalidOption::IterationLimit);
+    /// assert_eq!(endless.validate(), Err(refused));
+    /// ```
     pub fn validate(&self) -> Result<(), StepError> {
         let refuse = |option| Err(StepError::InvalidOption(option));
         let positive = |x: Float| x.is_finite() && x > 0.0;
@@ -577,6 +718,17 @@ impl Options {
 }
 
 /// The step-size controller's constants: plain data with documented defaults.
+///
+/// ```
+/// use zeitner_runtime::{ControllerSettings, InvalidOption, Options, StepError};
+///
+/// let controller = ControllerSettings::default();
+/// assert_eq!((controller.safety, controller.min_factor, controller.max_factor), (0.9, 0.2, 5.0));
+/// // A smallest factor above 1 would never let a step shrink: refused.
+/// let growing = ControllerSettings { min_factor: 1.5, ..controller };
+/// let options = Options { controller: growing, ..Options::default() };
+/// assert_eq!(options.validate(), Err(StepError::InvalidOption(InvalidOption::Controller)));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControllerSettings {

@@ -7,6 +7,19 @@ use crate::scalar::Float;
 use crate::system::{Matrix, Vector};
 
 /// A consistent point of the trajectory: state, acceleration and multipliers.
+///
+/// ```
+/// use zeitner_runtime::{Point, Vector};
+///
+/// // A pendulum of unit mass and length, `g = (x² + y² - 1)/2`, hanging at rest: `λ` holds
+/// // the weight.
+/// let point = Point::<2, 1> {
+///     t: 0.0, q: Vector::<2>::new(0.0, -1.0), v: Vector::zeros(), a: Vector::zeros(),
+///     lambda: Vector::<1>::new(9.81),
+/// };
+/// let (weight, g_transposed) = (Vector::<2>::new(0.0, -9.81), point.q);
+/// assert_eq!(weight - g_transposed * point.lambda[0], point.a); // M a = F - Gᵀλ
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Point<const N: usize, const Z: usize> {
@@ -18,6 +31,23 @@ pub struct Point<const N: usize, const Z: usize> {
 }
 
 /// What one accepted step produced.
+///
+/// ```
+/// use zeitner_runtime::{Float, Point, StepReport, Vector};
+///
+/// // A step of 1 ms of a pendulum (unit mass and length) hanging at rest.
+/// let rest = |t: Float| Point::<2, 1> {
+///     t, q: Vector::<2>::new(0.0, -1.0), v: Vector::zeros(), a: Vector::zeros(),
+///     lambda: Vector::<1>::new(9.81),
+/// };
+/// let report: StepReport<2, 1> = StepReport {
+///     start: rest(0.0), end: rest(1e-3), step_multipliers: Vector::<1>::new(9.81),
+///     constraint_force: Vector::<2>::new(0.0, 9.81), // -Gᵀλ with G = (0, -1)
+///     residual: Vector::zeros(), rate_residual: Vector::zeros(), newton_iterations: 1,
+/// };
+/// assert_eq!(report.end.t - report.start.t, 1e-3);
+/// assert_eq!(report.constraint_force + Vector::<2>::new(0.0, -9.81), Vector::<2>::zeros());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StepReport<const N: usize, const Z: usize> {
@@ -42,6 +72,21 @@ pub struct StepReport<const N: usize, const Z: usize> {
 
 /// The derivatives of a reported point by the scene's `P` parameters, a column each
 /// ([`crate::SensitivitySimulator`]).
+///
+/// ```
+/// use zeitner_runtime::{Matrix, Sensitivities, Vector};
+///
+/// // `∂q/∂ℓ` of a pendulum's bob by the rod's length: the unit vector along the rod.
+/// let by_length = Sensitivities::<2, 1, 1> {
+///     t: 1.0,
+///     q: Matrix::<2, 1>::new(0.6, -0.8),
+///     v: Matrix::zeros(),
+///     lambda: Matrix::zeros(),
+/// };
+/// // To first order, a rod 1 cm longer moves the bob by 1 cm.
+/// let moved = by_length.q * Vector::<1>::new(0.01);
+/// assert!((moved.norm() - 0.01).abs() < 1e-15);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Sensitivities<const N: usize, const Z: usize, const P: usize> {
@@ -60,6 +105,24 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// ends and its derivative for `q'` (local errors `O(τ⁶)` and `O(τ⁵)`), linear in `q''` and
     /// `λ`. For multipliers as accurate as the positions, use `Simulator::sample`. Outside the
     /// step it extrapolates.
+    ///
+    /// ```
+    /// use zeitner_runtime::{Float, Point, StepReport, Vector};
+    ///
+    /// // A step from t = 0 to 0.5 of a coordinate accelerated uniformly, `q = t²`.
+    /// let point = |t: Float| Point::<1, 1> {
+    ///     t, q: Vector::from([t * t]), v: Vector::from([2.0 * t]), a: Vector::from([2.0]),
+    ///     lambda: Vector::zeros(),
+    /// };
+    /// let report = StepReport {
+    ///     start: point(0.0), end: point(0.5), step_multipliers: Vector::zeros(),
+    ///     constraint_force: Vector::zeros(), residual: Vector::zeros(),
+    ///     rate_residual: Vector::zeros(), newton_iterations: 1,
+    /// };
+    /// assert_eq!(report.interpolate(0.5), report.end);
+    /// let middle = report.interpolate(0.25); // exact for a quadratic
+    /// assert!((middle.q[0] - 0.0625).abs() < 1e-15 && (middle.v[0] - 0.5).abs() < 1e-15);
+    /// ```
     pub fn interpolate(&self, t: Float) -> Point<N, Z> {
         interpolate(&self.start, &self.end, t)
     }
@@ -112,6 +175,22 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
 }
 
 /// Which way an event function crossed zero.
+///
+/// ```
+/// use zeitner_runtime::{Direction, StopReason};
+///
+/// // A ball's height as event function 0: it lands where the height falls through zero.
+/// let reasons = [
+///     StopReason::Event { index: 0, direction: Direction::Falling },
+///     StopReason::Event { index: 0, direction: Direction::Rising },
+///     StopReason::StepTaken,
+/// ];
+/// let landings = reasons
+///     .iter()
+///     .filter(|&&r| matches!(r, StopReason::Event { index: 0, direction: Direction::Falling }))
+///     .count();
+/// assert_eq!(landings, 1);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Direction {
@@ -120,6 +199,21 @@ pub enum Direction {
 }
 
 /// Why `Simulator::step` or `Simulator::advance_to` returned.
+///
+/// ```
+/// use zeitner_runtime::{GapSet, StopReason};
+///
+/// let mut gaps = GapSet::EMPTY;
+/// gaps.insert(1);
+/// let reason = StopReason::GapsClosing { gaps };
+/// // Non-exhaustive: match the reasons to act on, and go on after the others.
+/// let action = match reason {
+///     StopReason::Event { .. } => "act on the event",
+///     StopReason::GapsClosing { gaps } if gaps.contains(1) => "gap 1 closes next step",
+///     _ => "go on",
+/// };
+/// assert_eq!(action, "gap 1 closes next step");
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]

@@ -11,9 +11,27 @@
 //! have Newton iterate on rounding noise.
 
 /// The scalar of this build.
+///
+/// ```
+/// use zeitner_runtime::{Float, Vector};
+///
+/// // Without the feature `f32`, every number is an `f64`; models write `Float` to build in both.
+/// let length: Float = 0.5;
+/// assert_eq!(core::mem::size_of_val(&length), 8);
+/// assert_eq!(Vector::<2>::new(length, 0.0).norm(), length);
+/// ```
 #[cfg(not(feature = "f32"))]
 pub type Float = f64;
 /// The scalar of this build.
+///
+/// ```
+/// use zeitner_runtime::{Float, Vector};
+///
+/// // With the feature `f32`, every number is an `f32`; models write `Float` to build in both.
+/// let length: Float = 0.5;
+/// assert_eq!(core::mem::size_of_val(&length), 4);
+/// assert_eq!(Vector::<2>::new(length, 0.0).norm(), length);
+/// ```
 #[cfg(feature = "f32")]
 pub type Float = f32;
 
@@ -23,6 +41,17 @@ pub(crate) type Lm = libm::Libm<Float>;
 
 /// `in_f64` in an `f64` build, `in_f32` in an `f32` one: a value of the numeric policy, both
 /// written where it is defined.
+///
+/// ```
+/// use zeitner_runtime::scalar::{per_scalar, DEFAULT_RTOL};
+/// use zeitner_runtime::Float;
+///
+/// // The default relative tolerance, written once for each scalar.
+/// assert_eq!(per_scalar(1e-8, 1e-5), DEFAULT_RTOL);
+/// // A `const fn`: usable in constants. This build (without `f32`) takes the `f64` value.
+/// const FLOOR: Float = per_scalar(1e-12, 1e-6);
+/// assert_eq!(FLOOR, 1e-12);
+/// ```
 pub const fn per_scalar(in_f64: f64, in_f32: f32) -> Float {
     #[cfg(not(feature = "f32"))]
     {

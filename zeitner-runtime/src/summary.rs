@@ -5,6 +5,19 @@
 /// Where a model's Jacobians are nonzero: the `(row, column)` of each value its `_nonzeros`
 /// functions write, in that order. `#[constrained_system]` emits it from the derivatives it
 /// computes, so that the sparse storage learns every pattern without evaluating anything.
+///
+/// ```
+/// use zeitner_runtime::Sparsity;
+///
+/// // A pendulum in Cartesian coordinates, `g = (x² + y² - ℓ²)/2`, under gravity alone.
+/// let pendulum = Sparsity {
+///     constraint_jacobian: &[(0, 0), (0, 1)],
+///     force_jacobians: [&[], &[]],
+///     constraint_force_jacobians: [&[(0, 0), (1, 1)], &[]], // λ·I by q, nothing by q'
+/// };
+/// assert_eq!(pendulum.constraint_jacobian.len(), 2);
+/// assert!(pendulum.force_jacobians.iter().all(|pattern| pattern.is_empty()));
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct Sparsity {
     /// `G`.
@@ -16,6 +29,17 @@ pub struct Sparsity {
 }
 
 /// How the mass matrix is stored and whether it changes.
+///
+/// ```
+/// use zeitner_runtime::{MassKind, SceneSummary};
+///
+/// // A double pendulum in joint angles: a full mass that changes with the angles.
+/// let summary = SceneSummary {
+///     coordinates: 2, position_constraints: 0, velocity_constraints: 0,
+///     mass: MassKind::Full, time_dependent: false, functions: &[],
+/// };
+/// assert!(summary.to_string().contains("mass Full, autonomous"));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MassKind {
     ConstantDiagonal,
@@ -25,6 +49,14 @@ pub enum MassKind {
 }
 
 /// Operation counts of one generated function.
+///
+/// ```
+/// use zeitner_runtime::OpCounts;
+///
+/// let ops = OpCounts { adds: 4, muls: 6, divs: 1, transcendental: 2, ..OpCounts::default() };
+/// assert_eq!(ops.total(), 13);
+/// assert_eq!(OpCounts::default().total(), 0);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OpCounts {
     /// Additions, subtractions, negations.
@@ -45,6 +77,15 @@ impl OpCounts {
 }
 
 /// One output array of a generated function and the entries it actually computes.
+///
+/// ```
+/// use zeitner_runtime::BlockSummary;
+///
+/// // `G` of a pendulum in Cartesian coordinates (`x`, `y`): one row, both entries computed.
+/// let g = BlockSummary { name: "g", rows: 1, cols: 2, nonzeros: &[(0, 0), (0, 1)] };
+/// assert_eq!(g.nonzeros.len(), g.rows * g.cols); // dense
+/// assert!(g.nonzeros.iter().all(|&(row, col)| row < g.rows && col < g.cols));
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct BlockSummary {
     pub name: &'static str,
@@ -55,6 +96,16 @@ pub struct BlockSummary {
 }
 
 /// One generated function: its outputs and what it costs.
+///
+/// ```
+/// use zeitner_runtime::{FunctionSummary, OpCounts};
+///
+/// // Sharing `sin φ` and `cos φ` saves their second evaluation and the products built on them.
+/// let shared = OpCounts { adds: 3, muls: 4, transcendental: 2, ..OpCounts::default() };
+/// let unshared = OpCounts { adds: 3, muls: 8, transcendental: 4, ..OpCounts::default() };
+/// let force = FunctionSummary { name: "applied_force", blocks: &[], ops: shared, ops_unshared: unshared };
+/// assert_eq!(force.ops_unshared.total() - force.ops.total(), 6);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct FunctionSummary {
     pub name: &'static str,
@@ -66,6 +117,24 @@ pub struct FunctionSummary {
 }
 
 /// What a scene's generated code carries.
+///
+/// ```
+/// use zeitner_runtime::{BlockSummary, FunctionSummary, MassKind, OpCounts, SceneSummary};
+///
+/// const OPS: OpCounts = OpCounts { adds: 0, muls: 0, divs: 0, transcendental: 0, opaque_calls: 0 };
+/// const G: BlockSummary = BlockSummary { name: "g", rows: 1, cols: 2, nonzeros: &[(0, 0), (0, 1)] };
+/// const JACOBIAN: FunctionSummary =
+///     FunctionSummary { name: "constraint_jacobian", blocks: &[G], ops: OPS, ops_unshared: OPS };
+/// const PENDULUM: SceneSummary = SceneSummary {
+///     coordinates: 2, position_constraints: 1, velocity_constraints: 0,
+///     mass: MassKind::ConstantDiagonal, time_dependent: false, functions: &[JACOBIAN],
+/// };
+/// assert_eq!(PENDULUM.function("constraint_jacobian").unwrap().blocks[0].nonzeros.len(), 2);
+/// assert!(PENDULUM.function("mass_matrix").is_none());
+/// let shown = PENDULUM.to_string(); // a line for the scene, one for the columns, one per function
+/// assert!(shown.starts_with("2 coordinates, 1 position and 0 velocity constraints"));
+/// assert_eq!(shown.lines().count(), 3);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct SceneSummary {
     pub coordinates: usize,

@@ -43,6 +43,16 @@ use crate::polynomial::StepPolynomial;
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 
 /// Counts over the whole run.
+///
+/// ```
+/// use zeitner_runtime::Statistics;
+///
+/// // Every count starts at zero; none has turned implicit yet.
+/// let fresh = Statistics::default();
+/// assert_eq!((fresh.steps, fresh.rejected_steps, fresh.newton_iterations), (0, 0, 0));
+/// assert_eq!(fresh.turned_implicit_after, None);
+/// assert_eq!(fresh.evaluations.forces, 0); // the model's calls, counted too
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
