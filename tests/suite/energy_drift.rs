@@ -78,7 +78,7 @@ fn twenty_seconds_of_a_double_pendulum_keep_their_energy_at_tight_tolerances() {
 }
 
 /// The long run: `cargo test --release --test suite energy_drift:: -- --ignored --nocapture`.
-/// Constant multipliers (as the README's table), constant with `constraint_tolerance: 1e-14`,
+/// Constant multipliers (as the guide's table in `docs/guide/methods.md`), constant with `constraint_tolerance: 1e-14`,
 /// and the defaults (`Automatic`: quadratic with Dormand–Prince).
 #[test]
 #[ignore = "a measurement of 1000 s runs, not a check"]

@@ -1,5 +1,6 @@
 //! One accepted step, per scene and method: the micro-benchmark beneath the work-precision
-//! report, for changes to the step itself (`cargo bench -p zeitner-bench --bench step`).
+//! report, for changes to the step itself
+//! (`cargo bench -p zeitner-bench --features criterion --bench step`).
 //! Each sample starts from a simulator that has already taken a few steps, so that the step
 //! measured is a typical one (its size chosen, its predictors warm); building it is outside
 //! the timing.

@@ -39,8 +39,8 @@ pub fn constrained_system(attr: TokenStream, item: TokenStream) -> TokenStream {
         .map(|configuration| {
             let mut own = Errors::new();
             let tokens = match generate(&item_impl, &configuration.members, &outlines, &mut own) {
-                Ok(tokens) if own.is_empty() => tokens,
-                Ok(_) | Err(None) => {
+                Ok(tokens) => tokens,
+                Err(None) => {
                     return own.into_compile_errors_under(configuration.condition.as_ref())
                 }
                 // Beside the errors, an impl of the trait whose sizes are known, so that the
@@ -224,6 +224,10 @@ fn analyse(
     }
     let scene =
         symbolic::build(&model, sizes, &lowered, &mut graph, &mut vars, errors).ok_or(known)?;
+    // The parameters are checked while their derivatives are taken.
+    if !errors.is_empty() {
+        return Err(known);
+    }
     Ok((scene, vars, calls))
 }
 

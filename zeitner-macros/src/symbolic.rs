@@ -22,7 +22,6 @@ pub struct Block {
     pub entries: Vec<(usize, usize, Id, Span)>,
 }
 
-/// One generated trait method.
 /// What the macro generates: each a method of `ConstrainedSystem` or of `ParametrisedSystem`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Output {
@@ -87,6 +86,7 @@ impl Output {
     }
 }
 
+/// One generated trait method: its blocks and their straight-line program.
 pub struct Generated {
     pub output: Output,
     pub blocks: Vec<Block>,

@@ -218,7 +218,9 @@ pub enum Direction {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum StopReason {
-    /// A step was taken; the stop time, if any, is still ahead.
+    /// A step was taken; the stop time, if any, is still ahead. Also a step shortened to end
+    /// at a zero crossing that then lay a little beyond its end (the next step goes on from
+    /// nearer; [`crate::Statistics::steps_aimed_at_crossings`] counts them).
     StepTaken,
     /// A step was taken and landed exactly on the stop time, which is now cleared.
     StopTimeReached,

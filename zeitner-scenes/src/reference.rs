@@ -151,8 +151,8 @@ pub fn wall_pendulum_released_horizontally(p: &WallPendulum, t: Float) -> State<
 
 /// The ball dropped at rest from `height` onto its floor, in closed form: it lands after
 /// `t₁ = √(2 h / g)`; the `k`-th flight after it leaves at `u_k = eᵏ g t₁` and lasts `2 u_k / g`.
-/// In flight the gap carries no force. Valid until the ball comes to rest, at
-/// `t₁ (1 + e) / (1 - e)`.
+/// In flight the gap carries no force. For `e < 1` the flights sum to a finite time,
+/// `t₁ (1 + e) / (1 - e)`, after which the ball rests on the floor, which carries its weight.
 pub fn ball_dropped(ball: &Ball, height: Float, t: Float) -> State<1, 1> {
     let g = ball.g;
     let first = (2.0 * height / g).sqrt();
@@ -163,8 +163,17 @@ pub fn ball_dropped(ball: &Ball, height: Float, t: Float) -> State<1, 1> {
             lambda: [0.0],
         };
     }
+    if ball.e < 1.0 && t >= first * (1.0 + ball.e) / (1.0 - ball.e) {
+        // `M q'' = F - Gᵀλ` at rest with `G = 1`: `λ = -m g`, the floor's force `m g` upwards.
+        return State {
+            q: [0.0],
+            v: [0.0],
+            lambda: [-ball.m * g],
+        };
+    }
     let (mut leaves, mut speed) = (first, ball.e * g * first);
-    while t > leaves + 2.0 * speed / g {
+    // Before the rest time every flight ends before `t` runs out; the speed stays positive.
+    while speed > 0.0 && t > leaves + 2.0 * speed / g {
         leaves += 2.0 * speed / g;
         speed *= ball.e;
     }
@@ -324,5 +333,15 @@ mod tests {
             speed *= ball.e;
             landing += 2.0 * speed / ball.g;
         }
+        // At and after the rest time it lies on the floor, which carries its weight; a ball
+        // that does not bounce rests from its first landing.
+        let rest = (2.0 * height / ball.g).sqrt() * (1.0 + ball.e) / (1.0 - ball.e);
+        let resting = ball_dropped(&ball, height, rest + 1.0);
+        assert_eq!(
+            (resting.q, resting.v, resting.lambda),
+            ([0.0], [0.0], [-ball.g])
+        );
+        let dead = Ball { e: 0.0, ..ball };
+        assert_eq!(ball_dropped(&dead, height, 1.0).v, [0.0]);
     }
 }

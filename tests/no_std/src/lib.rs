@@ -2,11 +2,10 @@
 //! `thumbv7em-none-eabihf` in CI; `size.sh` measures its code size.
 #![no_std]
 
-
-use zeitner_scenes::steam_generator::SteamGenerator;
 #[cfg(feature = "exact")]
 use zeitner::Sensitivity;
-use zeitner::{Start, Float, Options, Simulator, Vector};
+use zeitner::{Float, Options, Simulator, Start, Vector};
+use zeitner_scenes::steam_generator::SteamGenerator;
 
 /// Integrates the steam generator for `steps` steps of 1 ms with RK4 and returns the final
 /// horizontal displacement, or NaN on a failed step. The feature `exact` picks the exact
@@ -15,10 +14,21 @@ use zeitner::{Start, Float, Options, Simulator, Vector};
 pub extern "C" fn zeitner_steam_generator(steps: u32) -> Float {
     let scene = SteamGenerator::paper();
     #[cfg(feature = "exact")]
-    let options = Options { sensitivity: Sensitivity::Exact, ..Options::paper(1e-3) };
+    let options = Options {
+        sensitivity: Sensitivity::Exact,
+        ..Options::paper(1e-3)
+    };
     #[cfg(not(feature = "exact"))]
     let options = Options::paper(1e-3);
-    let Ok(mut sim) = Simulator::new(&scene, Start { q: Vector::zeros(), v: Vector::zeros(), t: 0.0 }, options) else {
+    let Ok(mut sim) = Simulator::new(
+        &scene,
+        Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        },
+        options,
+    ) else {
         return Float::NAN;
     };
     match sim.advance_to(steps as Float * 1e-3, |_| {}) {

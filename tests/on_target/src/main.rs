@@ -7,12 +7,11 @@
 #![no_std]
 #![no_main]
 
-
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
-use zeitner_scenes::steam_generator::{firmware_options, SteamGenerator};
 use zeitner::math::Real as _;
-use zeitner::{Start, ConstrainedSystem, Float, Simulator, Vector};
+use zeitner::{ConstrainedSystem, Float, Simulator, Start, Vector};
+use zeitner_scenes::steam_generator::{firmware_options, SteamGenerator};
 
 /// Steps to take, from `ZEITNER_TARGET_STEPS` at build time (2 000: two seconds).
 const STEPS: u32 = match option_env!("ZEITNER_TARGET_STEPS") {
@@ -81,7 +80,15 @@ fn main() -> ! {
     let mut stepping_stack = 0;
     let mut run = || -> Result<_, zeitner::StepError> {
         let options = firmware_options();
-        let mut sim = Simulator::new(&scene, Start { q: Vector::zeros(), v: Vector::zeros(), t: 0.0 }, options)?;
+        let mut sim = Simulator::new(
+            &scene,
+            Start {
+                q: Vector::zeros(),
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )?;
         for tick in 1..=STEPS {
             sim.step()?;
             if tick == 99 {

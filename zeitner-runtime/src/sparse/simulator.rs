@@ -716,7 +716,7 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         options.method,
         InnerMethod::Rk4 { .. } | InnerMethod::DormandPrince54 | InnerMethod::Automatic
     ) {
-        return refuse("an implicit inner method or DOP853");
+        return refuse("an implicit inner method, DOP853 or Verner 9(8)");
     }
     // Constant multipliers over adaptive steps leave velocity-level rows off by far more than
     // the tolerance (`Simulator` refuses them too); `Automatic` would choose quadratic ones.
