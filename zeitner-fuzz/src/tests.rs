@@ -23,6 +23,15 @@ const CASE_LIMIT: Duration = Duration::from_secs(5);
 /// guards the fix like every other seed.
 const KNOWN_RUNTIME_BUGS: &[(u64, FailureClass, &str)] = &[];
 
+/// A panic's message (`panic!` with a literal or a formatted one), or nothing.
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_default()
+}
+
 /// One case in its own thread: its failure, if any, or `None` for a hang.
 fn run(seed: u64) -> Option<Option<(FailureClass, String)>> {
     let (sender, receiver) = mpsc::channel();
@@ -33,14 +42,7 @@ fn run(seed: u64) -> Option<Option<(FailureClass, String)>> {
         }));
         let failure = match result {
             Ok(outcome) => outcome.failure.map(|f| (f.class, f.detail)),
-            Err(payload) => {
-                let message = payload
-                    .downcast_ref::<&str>()
-                    .map(|s| s.to_string())
-                    .or_else(|| payload.downcast_ref::<String>().cloned())
-                    .unwrap_or_default();
-                Some((FailureClass::Panic, message))
-            }
+            Err(payload) => Some((FailureClass::Panic, panic_message(payload.as_ref()))),
         };
         let _ = sender.send(failure);
     });
@@ -104,13 +106,8 @@ const PENDULUM: Pendulum = Pendulum {
 fn within_time(body: impl FnOnce() + Send + 'static) -> Result<(), String> {
     let (sender, receiver) = mpsc::channel();
     std::thread::spawn(move || {
-        let result = panic::catch_unwind(AssertUnwindSafe(body)).map_err(|payload| {
-            payload
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
-                .unwrap_or_default()
-        });
+        let result = panic::catch_unwind(AssertUnwindSafe(body))
+            .map_err(|payload| panic_message(payload.as_ref()));
         let _ = sender.send(result);
     });
     receiver

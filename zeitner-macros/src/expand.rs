@@ -142,10 +142,26 @@ fn stub_impl(self_ty: &syn::Type, sizes: &check::Sizes) -> TokenStream {
         Literal::usize_unsuffixed(sizes.r),
         Literal::usize_unsuffixed(sizes.k),
     );
-    let vector = |len: &Literal| quote!(#rt::Vector<#len>);
-    let (vec_n, vec_z) = (vector(&n), vector(&z));
-    let state = quote!(_: &#vec_n, _: &#vec_n, _: #rt::Float);
-    let unavailable = quote!(::core::unreachable!("a model with errors is never built"));
+    // The trait's required methods, with the signatures the real impl gives them.
+    let required = [
+        Output::MassMatrix,
+        Output::AppliedForce,
+        Output::ConstraintResidual,
+        Output::ConstraintJacobian,
+        Output::ConstraintRate,
+        Output::ConstraintAccelerationBias,
+        Output::ForceJacobians,
+        Output::ConstraintForceJacobians,
+    ];
+    let methods = required.map(|output| {
+        let method = format_ident!("{}", output.method());
+        let (arguments, returns) = signature(output, &n, &z, &rt);
+        quote! {
+            fn #method(&self, #arguments) -> #returns {
+                ::core::unreachable!("a model with errors is never built")
+            }
+        }
+    });
     quote! {
         #[allow(unused_variables, unreachable_code, clippy::all)]
         impl #rt::ConstrainedSystem<#n, #z> for #self_ty {
@@ -161,22 +177,7 @@ fn stub_impl(self_ty: &syn::Type, sizes: &check::Sizes) -> TokenStream {
             };
             type Mass = #rt::DiagonalMass<#n>;
             type Storage = #rt::Dense;
-            fn mass_matrix(&self, _: &#vec_n, _: #rt::Float) -> Self::Mass { #unavailable }
-            fn applied_force(&self, #state) -> #vec_n { #unavailable }
-            fn constraint_residual(&self, #state) -> #vec_z { #unavailable }
-            fn constraint_jacobian(&self, #state) -> #rt::Matrix<#z, #n> { #unavailable }
-            fn constraint_rate(&self, #state) -> #vec_z { #unavailable }
-            fn constraint_acceleration_bias(&self, #state) -> #vec_z { #unavailable }
-            fn force_jacobians(&self, #state) -> (#rt::Matrix<#n, #n>, #rt::Matrix<#n, #n>) {
-                #unavailable
-            }
-            fn constraint_force_jacobians(
-                &self,
-                #state,
-                _: &#vec_z,
-            ) -> (#rt::Matrix<#n, #n>, #rt::Matrix<#n, #n>) {
-                #unavailable
-            }
+            #(#methods)*
         }
     }
 }

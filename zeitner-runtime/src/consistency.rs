@@ -21,7 +21,7 @@ const VELOCITY_SWEEPS: u32 = 20;
 /// policy ([`StartPolicy`]) makes them so, and [`StartReport`] says how far they moved.
 ///
 /// ```
-/// use zeitner_runtime::{consistency::Start, Vector};
+/// use zeitner_runtime::{Start, Vector};
 ///
 /// // At rest, at t = 0.
 /// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
