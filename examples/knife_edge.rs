@@ -6,13 +6,12 @@
 
 use zeitner_scenes as scenes;
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
 use scenes::knife_edge::KnifeEdge;
 use zeitner::{MultiplierModel, Options, Simulator, Start, StepControl, Vector};
-use zeitner_figures::{write_panels, Panel};
+use zeitner_figures::{write_csv, write_panels, Panel};
 
 #[derive(Parser)]
 struct Args {
@@ -60,8 +59,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         },
         options,
     )?;
-    let header = "t,x,y,theta,vx,vy,omega,lambda,g,x_exact,y_exact,lambda_exact";
-    let mut rows = vec![header.to_string()];
+    let header = [
+        "t",
+        "x",
+        "y",
+        "theta",
+        "vx",
+        "vy",
+        "omega",
+        "lambda",
+        "g",
+        "x_exact",
+        "y_exact",
+        "lambda_exact",
+    ];
+    let mut rows: Vec<[f64; 12]> = Vec::new();
     let (mut path, mut path_exact, mut force, mut force_exact, mut residual) =
         (vec![], vec![], vec![], vec![], vec![]);
     let mut next = 0u32;
@@ -80,16 +92,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             };
             let reference = exact(t);
             let g = -point.q[2].sin() * point.v[0] + point.q[2].cos() * point.v[1];
-            let mut row = format!("{t:.6}");
-            for value in point.q.iter().chain(&point.v).chain(&point.lambda) {
-                let _ = write!(row, ",{value:.12e}");
-            }
-            let _ = write!(
-                row,
-                ",{g:.3e},{:.12e},{:.12e},{:.12e}",
-                reference.q[0], reference.q[1], reference.lambda
-            );
-            rows.push(row);
+            rows.push([
+                t,
+                point.q[0],
+                point.q[1],
+                point.q[2],
+                point.v[0],
+                point.v[1],
+                point.v[2],
+                point.lambda[0],
+                g,
+                reference.q[0],
+                reference.q[1],
+                reference.lambda,
+            ]);
             path.push((point.q[0], point.q[1]));
             path_exact.push((reference.q[0], reference.q[1]));
             force.push((t, point.lambda[0]));
@@ -103,7 +119,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     std::fs::create_dir_all(&args.output_dir)?;
     let csv = args.output_dir.join("knife_edge.csv");
-    std::fs::write(&csv, rows.join("\n") + "\n")?;
+    write_csv(&csv, &header, &rows)?;
     write_panels(
         &args.output_dir.join("knife_edge"),
         &[

@@ -6,7 +6,6 @@
 
 use zeitner_scenes as scenes;
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -16,7 +15,7 @@ use zeitner::{
     ConstrainedSystem, InnerMethod, MultiplierModel, Options, Sensitivity, Simulator, Start,
     StepControl, StopReason, Vector, VelocityProjection,
 };
-use zeitner_figures::{write_panels, Panel};
+use zeitner_figures::{write_csv, write_panels, Panel};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum Method {
@@ -82,7 +81,9 @@ struct Args {
     output_dir: PathBuf,
 }
 
-const HEADER: &str = "t,q1,q2,q3,v1,v2,v3,lambda1,lambda2,f1,f2,f3,g1,g2";
+const HEADER: [&str; 14] = [
+    "t", "q1", "q2", "q3", "v1", "v2", "v3", "lambda1", "lambda2", "f1", "f2", "f3", "g1", "g2",
+];
 
 fn options(args: &Args) -> Result<Options, String> {
     let method = match args.method {
@@ -148,17 +149,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         },
         options,
     )?;
-    let mut rows: Vec<String> = Vec::new();
+    let mut rows: Vec<[f64; 14]> = Vec::new();
     let mut newton = Vec::new();
     let mut step_ends: Vec<(f64, f64, f64)> = Vec::new();
     let mut max_sampled = [0.0f64; 2];
     let (mut max_g1, mut max_g2) = (0.0f64, 0.0f64);
     let mut next_output = 0usize;
     let output_time = |k: usize| k as f64 * args.output_interval;
-    let record = |point: &zeitner::Point<3, 2>, g: [f64; 2], rows: &mut Vec<String>| {
+    let record = |point: &zeitner::Point<3, 2>, g: [f64; 2], rows: &mut Vec<[f64; 14]>| {
         let force = scene_force(&scene, point);
-        let mut row = String::new();
-        let values = [
+        rows.push([
             point.t,
             point.q[0],
             point.q[1],
@@ -173,11 +173,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             force[2],
             g[0],
             g[1],
-        ];
-        for (i, value) in values.iter().enumerate() {
-            let _ = write!(row, "{}{value:.12e}", if i > 0 { "," } else { "" });
-        }
-        rows.push(row);
+        ]);
     };
     let first = sim.last().end;
     record(
@@ -226,13 +222,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     std::fs::create_dir_all(&args.output_dir)?;
     let csv_path = args.output_dir.join("steam_generator.csv");
-    std::fs::write(&csv_path, format!("{HEADER}\n{}\n", rows.join("\n")))?;
-    let table: Vec<Vec<f64>> = rows
-        .iter()
-        .map(|r| r.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
+    write_csv(&csv_path, &HEADER, &rows)?;
     let column = |c: usize, scale: f64| -> Vec<(f64, f64)> {
-        table.iter().map(|r| (r[0], r[c] * scale)).collect()
+        rows.iter().map(|r| (r[0], r[c] * scale)).collect()
     };
     write_panels(
         &args.output_dir.join("steam_generator"),

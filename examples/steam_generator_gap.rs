@@ -7,13 +7,12 @@
 
 use zeitner_scenes as scenes;
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Parser;
 use scenes::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
 use zeitner::{Options, Simulator, Start, StepControl, StopReason, Vector};
-use zeitner_figures::{write_panels, Panel};
+use zeitner_figures::{write_csv, write_panels, Panel};
 
 /// Simulates the steam generator with a clearance at its strut and writes its figures.
 #[derive(Parser, Debug)]
@@ -39,8 +38,21 @@ struct Args {
     output_dir: PathBuf,
 }
 
-const HEADER: &str =
-    "t,q1,q2,q3,v1,v2,v3,column_lambda,strut_force,travel,gapfree_column_lambda,gapfree_strut_force,gapfree_travel";
+const HEADER: [&str; 13] = [
+    "t",
+    "q1",
+    "q2",
+    "q3",
+    "v1",
+    "v2",
+    "v3",
+    "column_lambda",
+    "strut_force",
+    "travel",
+    "gapfree_column_lambda",
+    "gapfree_strut_force",
+    "gapfree_travel",
+];
 
 /// One output row: the strut's force on q1 (`-G₁ᵀλ` of its rows) and its travel `q1 - h3 q3`.
 struct Sample {
@@ -141,17 +153,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
 
     std::fs::create_dir_all(&args.output_dir)?;
-    let mut csv = format!("{HEADER}\n");
-    for (a, b) in gap.iter().zip(&gapfree) {
-        let values = [
+    let csv_path = args.output_dir.join("steam_generator_gap.csv");
+    let rows = gap.iter().zip(&gapfree).map(|(a, b)| {
+        [
             a.t, a.q[0], a.q[1], a.q[2], a.v[0], a.v[1], a.v[2], a.column, a.strut, a.travel,
             b.column, b.strut, b.travel,
-        ];
-        let row: Vec<String> = values.iter().map(|x| format!("{x:.12e}")).collect();
-        let _ = writeln!(csv, "{}", row.join(","));
-    }
-    let csv_path = args.output_dir.join("steam_generator_gap.csv");
-    std::fs::write(&csv_path, csv)?;
+        ]
+    });
+    write_csv(&csv_path, &HEADER, rows)?;
     let series = |samples: &[Sample], f: fn(&Sample) -> f64| -> Vec<(f64, f64)> {
         samples.iter().map(|s| (s.t, f(s))).collect()
     };

@@ -12,7 +12,6 @@
 
 use zeitner_scenes as scenes;
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
@@ -21,7 +20,7 @@ use scenes::structure::Structure100;
 use zeitner::{
     InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, StopReason, Vector,
 };
-use zeitner_figures::{write_panels, Panel};
+use zeitner_figures::{write_csv, write_panels, Panel};
 
 /// Simulates the column on its supports and writes its figures.
 #[derive(Parser, Debug)]
@@ -57,8 +56,16 @@ enum Method {
     DormandPrince,
 }
 
-const HEADER: &str =
-    "t,pin_horizontal,pin_vertical,column,strut,strut_travel,top_travel,modal_strut_travel";
+const HEADER: [&str; 8] = [
+    "t",
+    "pin_horizontal",
+    "pin_vertical",
+    "column",
+    "strut",
+    "strut_travel",
+    "top_travel",
+    "modal_strut_travel",
+];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args = Args::parse();
@@ -137,13 +144,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let stats = sim.statistics();
 
     std::fs::create_dir_all(&args.output_dir)?;
-    let mut csv = format!("{HEADER}\n");
-    for row in &rows {
-        let cells: Vec<String> = row.iter().map(|x| format!("{x:.12e}")).collect();
-        let _ = writeln!(csv, "{}", cells.join(","));
-    }
     let csv_path = args.output_dir.join("structure.csv");
-    std::fs::write(&csv_path, csv)?;
+    write_csv(&csv_path, &HEADER, &rows)?;
     let series = |column: usize, scale: f64| -> Vec<(f64, f64)> {
         rows.iter()
             .filter(|r| r[column].is_finite())

@@ -29,10 +29,50 @@ pub enum Source {
 /// Zeitner's time to the first result of one scene: `(rebuild seconds, run seconds)`, wall
 /// time; `Err` says what failed.
 pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
+    let dir = work.join(scene.scene);
+    let main_path = write_crate(scene, &dir)?;
+    let target = work.join("target");
+    let build = || {
+        let output = Command::new(env!("CARGO"))
+            .args(["build", "--release", "--quiet", "--manifest-path"])
+            .arg(dir.join("Cargo.toml"))
+            .env("CARGO_TARGET_DIR", &target)
+            .output()
+            .map_err(|e| format!("cargo: {e}"))?;
+        if output.status.success() {
+            Ok(())
+        } else {
+            Err(String::from_utf8_lossy(&output.stderr).into_owned())
+        }
+    };
+    // The runtime and its dependencies once, untimed; then the scene's crate alone.
+    build()?;
+    let source = std::fs::read(&main_path).map_err(|e| e.to_string())?;
+    std::fs::write(&main_path, source).map_err(|e| e.to_string())?;
+    let clock = Instant::now();
+    build()?;
+    let compile = clock.elapsed().as_secs_f64();
+    let binary: PathBuf = target
+        .join("release")
+        .join(format!("first-result-{}", scene.scene.replace('_', "-")));
+    let clock = Instant::now();
+    let run = Command::new(&binary)
+        .output()
+        .map_err(|e| format!("{}: {e}", binary.display()))?;
+    let seconds = clock.elapsed().as_secs_f64();
+    if !run.status.success() {
+        return Err(String::from_utf8_lossy(&run.stderr).into_owned());
+    }
+    Ok((compile, seconds))
+}
+
+/// A user's crate for the scene in `dir`, as a user would write it: the model in the crate
+/// itself (so that the timed rebuild expands and compiles it), Zeitner as a path dependency.
+/// Returns the path of its `main.rs`.
+fn write_crate(scene: &SceneCrate, dir: &Path) -> Result<PathBuf, String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("the bench lives in the workspace");
-    let dir = work.join(scene.scene);
     std::fs::create_dir_all(dir.join("src")).map_err(|e| e.to_string())?;
     let manifest = format!(
         "[package]\nname = \"first-result-{}\"\nversion = \"0.0.0\"\nedition = \"2021\"\n\n\
@@ -76,39 +116,7 @@ pub fn zeitner(scene: &SceneCrate, work: &Path) -> Result<(f64, f64), String> {
     );
     let main_path = dir.join("src/main.rs");
     std::fs::write(&main_path, main).map_err(|e| e.to_string())?;
-    let target = work.join("target");
-    let build = || {
-        let output = Command::new(env!("CARGO"))
-            .args(["build", "--release", "--quiet", "--manifest-path"])
-            .arg(dir.join("Cargo.toml"))
-            .env("CARGO_TARGET_DIR", &target)
-            .output()
-            .map_err(|e| format!("cargo: {e}"))?;
-        if output.status.success() {
-            Ok(())
-        } else {
-            Err(String::from_utf8_lossy(&output.stderr).into_owned())
-        }
-    };
-    // The runtime and its dependencies once, untimed; then the scene's crate alone.
-    build()?;
-    let source = std::fs::read(&main_path).map_err(|e| e.to_string())?;
-    std::fs::write(&main_path, source).map_err(|e| e.to_string())?;
-    let clock = Instant::now();
-    build()?;
-    let compile = clock.elapsed().as_secs_f64();
-    let binary: PathBuf = target
-        .join("release")
-        .join(format!("first-result-{}", scene.scene.replace('_', "-")));
-    let clock = Instant::now();
-    let run = Command::new(&binary)
-        .output()
-        .map_err(|e| format!("{}: {e}", binary.display()))?;
-    let seconds = clock.elapsed().as_secs_f64();
-    if !run.status.success() {
-        return Err(String::from_utf8_lossy(&run.stderr).into_owned());
-    }
-    Ok((compile, seconds))
+    Ok(main_path)
 }
 
 /// The Markdown table of the first results: Zeitner's rebuild and run of each scene, and the

@@ -104,7 +104,7 @@ fn stability_report(args: StabilityArgs) -> Result<(), Box<dyn std::error::Error
     if let Some(parent) = args.csv.parent() {
         std::fs::create_dir_all(parent)?;
     }
-    std::fs::write(&args.csv, stability::csv(&cases))?;
+    stability::write_csv(&args.csv, &cases)?;
     let report = stability::markdown(&cases, args.long_steps);
     std::fs::write(&args.report, format!("{}\n{impacts}", report.trim_end()))?;
     let stable = cases.iter().filter(|c| c.outcome.stable()).count();

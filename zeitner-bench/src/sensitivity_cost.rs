@@ -97,29 +97,31 @@ fn adaptive(rtol: f64) -> StepControl {
     }
 }
 
+/// The methods measured: a name, the inner method and the multiplier model.
+const METHODS: [(&str, InnerMethod, MultiplierModel); 4] = [
+    (
+        "default (Verner 9(8), multipliers at every stage)",
+        InnerMethod::Automatic,
+        MultiplierModel::Automatic,
+    ),
+    (
+        "DOP853, multipliers at every stage",
+        InnerMethod::Dop853,
+        MultiplierModel::EveryStage,
+    ),
+    (
+        "Dormand–Prince, quadratic multipliers",
+        InnerMethod::DormandPrince54,
+        MultiplierModel::Quadratic,
+    ),
+    (
+        "Dormand–Prince, constant multipliers",
+        InnerMethod::DormandPrince54,
+        MultiplierModel::Constant,
+    ),
+];
+
 pub fn report(args: CostArgs) -> Result<(), Box<dyn std::error::Error>> {
-    let methods = [
-        (
-            "default (Verner 9(8), multipliers at every stage)",
-            InnerMethod::Automatic,
-            MultiplierModel::Automatic,
-        ),
-        (
-            "DOP853, multipliers at every stage",
-            InnerMethod::Dop853,
-            MultiplierModel::EveryStage,
-        ),
-        (
-            "Dormand–Prince, quadratic multipliers",
-            InnerMethod::DormandPrince54,
-            MultiplierModel::Quadratic,
-        ),
-        (
-            "Dormand–Prince, constant multipliers",
-            InnerMethod::DormandPrince54,
-            MultiplierModel::Constant,
-        ),
-    ];
     let mut text = String::from(
         "| scene | parameters | method | steps | plain run | with sensitivities | ratio | bound 1 + 0.5 n |\n|---|---|---|---|---|---|---|---|\n",
     );
@@ -139,7 +141,7 @@ pub fn report(args: CostArgs) -> Result<(), Box<dyn std::error::Error>> {
         println!("{line}");
         let _ = writeln!(text, "{line}");
     };
-    for &(name, method, multipliers) in &methods {
+    for &(name, method, multipliers) in &METHODS {
         let velocity_rows = multipliers == MultiplierModel::Constant;
         let options = Options {
             method,

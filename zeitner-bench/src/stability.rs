@@ -135,6 +135,12 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
         rtol: 1e-6,
         atol: 1e-9,
     };
+    let fixed = StepControl::Fixed { step: h };
+    let with = |method, step| Options {
+        method,
+        step,
+        ..base
+    };
     vec![
         (
             "rk4-paperQ",
@@ -144,86 +150,25 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
                 ..Options::paper(h)
             },
         ),
-        (
-            "rk4-exactQ",
-            Options {
-                method: InnerMethod::Rk4 { substeps: 1 },
-                step: StepControl::Fixed { step: h },
-                ..base
-            },
-        ),
+        ("rk4-exactQ", with(InnerMethod::Rk4 { substeps: 1 }, fixed)),
         (
             "dopri5-adaptive",
-            Options {
-                method: InnerMethod::DormandPrince54,
-                step: adaptive,
-                ..base
-            },
+            with(InnerMethod::DormandPrince54, adaptive),
         ),
-        (
-            "dop853-every-stage",
-            Options {
-                method: InnerMethod::Dop853,
-                step: adaptive,
-                ..base
-            },
-        ),
+        ("dop853-every-stage", with(InnerMethod::Dop853, adaptive)),
         (
             "verner98-every-stage",
-            Options {
-                method: InnerMethod::Verner98,
-                step: adaptive,
-                ..base
-            },
+            with(InnerMethod::Verner98, adaptive),
         ),
         // The default method and multipliers: DOP853 until stiff, then ESDIRK 5(4).
-        (
-            "automatic-adaptive",
-            Options {
-                method: InnerMethod::Automatic,
-                step: adaptive,
-                ..base
-            },
-        ),
-        (
-            "sdirk2-exactQ",
-            Options {
-                method: InnerMethod::Sdirk2,
-                step: StepControl::Fixed { step: h },
-                ..base
-            },
-        ),
-        (
-            "esdirk32-adaptive",
-            Options {
-                method: InnerMethod::Esdirk32,
-                step: adaptive,
-                ..base
-            },
-        ),
-        (
-            "esdirk43-adaptive",
-            Options {
-                method: InnerMethod::Esdirk43,
-                step: adaptive,
-                ..base
-            },
-        ),
-        (
-            "esdirk54-adaptive",
-            Options {
-                method: InnerMethod::Esdirk54,
-                step: adaptive,
-                ..base
-            },
-        ),
+        ("automatic-adaptive", with(InnerMethod::Automatic, adaptive)),
+        ("sdirk2-exactQ", with(InnerMethod::Sdirk2, fixed)),
+        ("esdirk32-adaptive", with(InnerMethod::Esdirk32, adaptive)),
+        ("esdirk43-adaptive", with(InnerMethod::Esdirk43, adaptive)),
+        ("esdirk54-adaptive", with(InnerMethod::Esdirk54, adaptive)),
         (
             "gen-alpha-0.5",
-            Options {
-                method: InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
-                step: StepControl::Fixed { step: h },
-                ..base
-            },
+            with(InnerMethod::GeneralizedAlpha { rho_inf: 0.5 }, fixed),
         ),
     ]
 }
@@ -711,33 +656,49 @@ fn optional(x: Option<f64>) -> String {
     x.map_or("".to_string(), |x| format!("{x:.1e}"))
 }
 
-pub const CSV_HEADER: &str =
-    "scene,variant,method,step,stable,failure,steps,max_g,max_w,energy_gain,energy_loss,lambda_error,newton_mean,newton_max";
+/// One case as a row of the CSV; the columns in the fields' order.
+#[derive(serde::Serialize)]
+struct Record<'a> {
+    scene: &'a str,
+    variant: &'a str,
+    method: &'a str,
+    step: f64,
+    stable: bool,
+    failure: Option<&'a str>,
+    steps: u64,
+    max_g: f64,
+    max_w: f64,
+    energy_gain: Option<f64>,
+    energy_loss: Option<f64>,
+    lambda_error: Option<f64>,
+    newton_mean: f64,
+    newton_max: u32,
+}
 
-pub fn csv(cases: &[Case]) -> String {
-    let mut out = format!("{CSV_HEADER}\n");
+/// Every case as a row of a CSV file at `path`.
+pub fn write_csv(path: &std::path::Path, cases: &[Case]) -> Result<(), Box<dyn std::error::Error>> {
+    let mut writer = csv::Writer::from_path(path)?;
     for c in cases {
         let o = &c.outcome;
-        let _ = writeln!(
-            out,
-            "{},{},{},{:e},{},{},{},{:e},{:e},{},{},{},{:.2},{}",
-            c.scene,
-            c.variant.replace(',', ";"),
-            c.method,
-            c.step,
-            o.stable(),
-            o.failure.clone().unwrap_or_default(),
-            o.steps,
-            o.max_g,
-            o.max_w,
-            optional(o.energy_gain),
-            optional(o.energy_loss),
-            optional(o.lambda_error),
-            o.newton_mean,
-            o.newton_max
-        );
+        writer.serialize(Record {
+            scene: c.scene,
+            variant: &c.variant,
+            method: c.method,
+            step: c.step,
+            stable: o.stable(),
+            failure: o.failure.as_deref(),
+            steps: o.steps,
+            max_g: o.max_g,
+            max_w: o.max_w,
+            energy_gain: o.energy_gain,
+            energy_loss: o.energy_loss,
+            lambda_error: o.lambda_error,
+            newton_mean: o.newton_mean,
+            newton_max: o.newton_max,
+        })?;
     }
-    out
+    writer.flush()?;
+    Ok(())
 }
 
 /// The Markdown report: one summary table, then every case.
@@ -807,13 +768,24 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          typed error, named here, and the simulator keeps its last accepted state. Methods: \
          `rk4-paperQ` (the paper as published), `rk4-exactQ`, `dopri5-adaptive` (rtol 1e-6, the step \
          below is the initial one), `dop853-every-stage` (DOP853 with the multipliers solved at \
-         every stage, rtol 1e-6), `automatic-adaptive` (the default method and multipliers: DOP853          with the multipliers at every stage until Hairer's stiffness test finds its steps bound by          stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
+         every stage, rtol 1e-6), `automatic-adaptive` (the default method and multipliers: DOP853 \
+         with the multipliers at every stage until Hairer's stiffness test finds its steps bound by \
+         stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
          (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers), \
          `esdirk43-adaptive` (Kennedy & Carpenter's ESDIRK 4(3), the same otherwise), \
          `esdirk54-adaptive` (their ESDIRK 5(4)7L[2]SA2, the same otherwise), \
          `gen-alpha-0.5` (generalised-α with ρ∞ = 0.5, fixed steps, constant multipliers); \
          the exact Q and projected outputs unless named.\n"
     );
+    out.push_str(&summary_table(cases));
+    out.push_str(&which_method_where(cases));
+    out.push_str(&every_run_table(cases));
+    out
+}
+
+/// One row per scene, variant and step; one column per method: stable, or the failure.
+fn summary_table(cases: &[Case]) -> String {
+    let mut out = String::new();
     let _ = writeln!(out, "## Summary\n");
     let _ = writeln!(out, "| scene | variant | {} |", METHODS.join(" | "));
     let _ = writeln!(out, "|---|---|{}", "---|".repeat(METHODS.len()));
@@ -852,7 +824,12 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
             cells.join(" | ")
         );
     }
-    out.push_str(&which_method_where(cases));
+    out
+}
+
+/// Every run with its figures.
+fn every_run_table(cases: &[Case]) -> String {
+    let mut out = String::new();
     let _ = writeln!(out, "\n## Every run\n");
     let _ = writeln!(
         out,

@@ -1,11 +1,27 @@
-//! The figures of the examples and the benchmark: line charts and heat maps as SVG and PNG,
-//! stacked in panels, with a font shipped in a crate so that a fresh machine needs no system
-//! fonts.
+//! The figures and tables of the examples and the benchmark: line charts and heat maps as SVG
+//! and PNG, stacked in panels, with a font shipped in a crate so that a fresh machine needs no
+//! system fonts; tables of numbers as CSV.
 
 use std::path::Path;
 
 use plotters::prelude::*;
 use plotters::style::{register_font, FontStyle};
+
+/// Writes a table of numbers as CSV: the header, then one record per row, each value in the
+/// shortest form that reads back to the same `f64` (`1.5e-7`, `2.5e0`).
+pub fn write_csv<Row: AsRef<[f64]>>(
+    path: &Path,
+    header: &[&str],
+    rows: impl IntoIterator<Item = Row>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut writer = csv::Writer::from_path(path)?;
+    writer.write_record(header)?;
+    for row in rows {
+        writer.write_record(row.as_ref().iter().map(|value| format!("{value:e}")))?;
+    }
+    writer.flush()?;
+    Ok(())
+}
 
 /// One panel: a title, axis labels with units, and named series of `(x, y)` points.
 pub struct Panel<'a> {

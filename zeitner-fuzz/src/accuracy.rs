@@ -34,34 +34,59 @@ use zeitner_scenes::stiff::DoublePendulum;
 /// A result is a silent wrong answer when its error exceeds this multiple of `rtol`.
 pub const THRESHOLD: Float = 1000.0;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// A scene with its drawn parameters and start.
+#[derive(Clone, Debug)]
 pub enum AccuracyScene {
-    Pendulum,
-    SteamGenerator,
-    DoublePendulum,
+    /// Released horizontally.
+    Pendulum(Pendulum),
+    /// The paper's, with its load `p0` and strut damping `d` drawn; from rest.
+    SteamGenerator(SteamGenerator),
+    /// Started at the angles `(θ1, θ2)` from the downward vertical, turning at `(ω1, ω2)`.
+    DoublePendulum {
+        model: DoublePendulum,
+        angles: [Float; 2],
+        rates: [Float; 2],
+    },
+    /// The published one, from its published start.
     Andrews,
-    /// With an event function, run through its crossings as a user would.
-    SliderCrank,
-    /// A gap with impacts and persistent contact, in closed form.
-    Ball,
+    /// With an event function, run through its crossings as a user would; from rest at the
+    /// crank angle in degrees.
+    SliderCrank {
+        model: SliderCrankOnAxis,
+        crank_angle_degrees: Float,
+    },
+    /// A gap with impacts and persistent contact, in closed form; dropped from rest.
+    Ball { model: Ball, height: Float },
 }
 
 impl AccuracyScene {
+    /// The scene's name, without its parameters.
+    pub fn name(&self) -> &'static str {
+        match self {
+            AccuracyScene::Pendulum(_) => "Pendulum",
+            AccuracyScene::SteamGenerator(_) => "SteamGenerator",
+            AccuracyScene::DoublePendulum { .. } => "DoublePendulum",
+            AccuracyScene::Andrews => "Andrews",
+            AccuracyScene::SliderCrank { .. } => "SliderCrank",
+            AccuracyScene::Ball { .. } => "Ball",
+        }
+    }
+
     /// Whether its mass is constant and diagonal, which the sparse storage needs.
-    fn constant_diagonal_mass(self) -> bool {
+    fn constant_diagonal_mass(&self) -> bool {
         let kind = match self {
-            AccuracyScene::Pendulum => <Pendulum as ConstrainedSystem<2, 1>>::SUMMARY.mass,
-            AccuracyScene::SteamGenerator => {
+            AccuracyScene::Pendulum(_) => <Pendulum as ConstrainedSystem<2, 1>>::SUMMARY.mass,
+            AccuracyScene::SteamGenerator(_) => {
                 <SteamGenerator as ConstrainedSystem<3, 2>>::SUMMARY.mass
             }
-            AccuracyScene::DoublePendulum => {
+            AccuracyScene::DoublePendulum { .. } => {
                 <DoublePendulum as ConstrainedSystem<4, 2>>::SUMMARY.mass
             }
             AccuracyScene::Andrews => <Andrews as ConstrainedSystem<7, 6>>::SUMMARY.mass,
-            AccuracyScene::SliderCrank => {
+            AccuracyScene::SliderCrank { .. } => {
                 <SliderCrankOnAxis as ConstrainedSystem<4, 3>>::SUMMARY.mass
             }
-            AccuracyScene::Ball => <Ball as ConstrainedSystem<1, 1>>::SUMMARY.mass,
+            AccuracyScene::Ball { .. } => <Ball as ConstrainedSystem<1, 1>>::SUMMARY.mass,
         };
         kind == MassKind::ConstantDiagonal
     }
@@ -90,9 +115,6 @@ pub struct Disturbances {
 pub struct AccuracyCase {
     pub seed: u64,
     pub scene: AccuracyScene,
-    /// Scene parameters (pendulum: m, L, g; steam generator: p0, d; double pendulum: m1, m2,
-    /// l1, l2, g, θ1, θ2, ω1, ω2; Andrews: none).
-    pub parameters: Vec<Float>,
     pub t_end: Float,
     pub options: Options,
     pub disturbances: Disturbances,
@@ -116,8 +138,8 @@ impl fmt::Display for AccuracyCase {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(
             f,
-            "seed {}: {:?}, parameters {:?}, t_end = {}",
-            self.seed, self.scene, self.parameters, self.t_end
+            "seed {}: {:?}, t_end = {}",
+            self.seed, self.scene, self.t_end
         )?;
         writeln!(f, "  options: {:?}", self.options)?;
         write!(f, "  disturbances: {:?}", self.disturbances)
@@ -158,60 +180,74 @@ fn sensible_options(rng: &mut Rng) -> Options {
 pub fn generate(seed: u64) -> AccuracyCase {
     let mut rng = rng(seed);
     let options = sensible_options(&mut rng);
-    let (scene, parameters, t_end) = match rng.random_range(0..14) {
+    // Each scene's draws in the order they always had, so that a seed keeps its case.
+    let (scene, t_end) = match rng.random_range(0..14) {
         0..=2 => (
-            AccuracyScene::Pendulum,
-            vec![
-                rng.random_range(0.1..10.0),
-                rng.random_range(0.3..3.0),
-                rng.random_range(1.0..20.0),
-            ],
+            AccuracyScene::Pendulum(Pendulum {
+                m: rng.random_range(0.1..10.0),
+                length: rng.random_range(0.3..3.0),
+                g: rng.random_range(1.0..20.0),
+            }),
             rng.random_range(0.2..3.0),
         ),
         3..=5 => (
-            AccuracyScene::SteamGenerator,
-            vec![rng.random_range(0.5e6..2e6), rng.random_range(1e6..4e6)],
+            AccuracyScene::SteamGenerator(SteamGenerator {
+                p0: rng.random_range(0.5e6..2e6),
+                d: rng.random_range(1e6..4e6),
+                ..SteamGenerator::paper()
+            }),
             // Whole multiples of the reference's 1e-5 s.
             (rng.random_range(0.02..2.0) * 1e5 as Float).round() * 1e-5,
         ),
         6..=8 => (
-            AccuracyScene::DoublePendulum,
-            vec![
-                rng.random_range(0.5..3.0),
-                rng.random_range(0.5..3.0),
-                rng.random_range(0.5..1.5),
-                rng.random_range(0.3..1.0),
-                9.81,
-                rng.random_range(-1.5..1.5),
-                rng.random_range(-1.5..1.5),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            ],
+            AccuracyScene::DoublePendulum {
+                model: DoublePendulum {
+                    m1: rng.random_range(0.5..3.0),
+                    m2: rng.random_range(0.5..3.0),
+                    l1: rng.random_range(0.5..1.5),
+                    l2: rng.random_range(0.3..1.0),
+                    g: 9.81,
+                },
+                angles: [rng.random_range(-1.5..1.5), rng.random_range(-1.5..1.5)],
+                rates: [rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)],
+            },
             (rng.random_range(0.1..1.0) * 1e5 as Float).round() * 1e-5,
         ),
-        9 => (AccuracyScene::Andrews, Vec::new(), 0.03),
-        10..=11 => (
-            AccuracyScene::SliderCrank,
-            vec![
+        9 => (AccuracyScene::Andrews, 0.03),
+        10..=11 => {
+            let (m, ms, r) = (
                 rng.random_range(0.5..2.0),
                 rng.random_range(0.2..2.0),
                 rng.random_range(0.05..0.2),
-                rng.random_range(1.5..4.0),
-                rng.random_range(-80.0..80.0),
-            ],
-            rng.random_range(0.3..2.0),
-        ),
+            );
+            let model = SliderCrankOnAxis {
+                m,
+                ms,
+                r,
+                l: r * rng.random_range(1.5..4.0),
+                g: 9.81,
+            };
+            (
+                AccuracyScene::SliderCrank {
+                    model,
+                    crank_angle_degrees: rng.random_range(-80.0..80.0),
+                },
+                rng.random_range(0.3..2.0),
+            )
+        }
         _ => (
-            AccuracyScene::Ball,
-            vec![
-                rng.random_range(0.1..10.0),
-                rng.random_range(0.3..0.9),
-                rng.random_range(0.05..2.0),
-            ],
+            AccuracyScene::Ball {
+                model: Ball {
+                    m: rng.random_range(0.1..10.0),
+                    g: 9.81,
+                    e: rng.random_range(0.3..0.9),
+                },
+                height: rng.random_range(0.05..2.0),
+            },
             rng.random_range(0.1..3.0),
         ),
     };
-    let mut disturbances = disturbances(&mut rng, scene, t_end, &options);
+    let mut disturbances = disturbances(&mut rng, &scene, t_end, &options);
     disturbances.sparse_storage = !disturbances.sparse
         && scene.constant_diagonal_mass()
         && crate::cases::sparse_storage(seed);
@@ -226,7 +262,6 @@ pub fn generate(seed: u64) -> AccuracyCase {
     AccuracyCase {
         seed,
         scene,
-        parameters,
         t_end,
         options,
         disturbances,
@@ -238,7 +273,7 @@ pub fn generate(seed: u64) -> AccuracyCase {
 /// the scenes it runs (position rows, diagonal mass, no events or gaps).
 fn disturbances(
     rng: &mut Rng,
-    scene: AccuracyScene,
+    scene: &AccuracyScene,
     t_end: Float,
     options: &Options,
 ) -> Disturbances {
@@ -255,7 +290,7 @@ fn disturbances(
     stops.dedup();
     let sparse_scene = matches!(
         scene,
-        AccuracyScene::Pendulum | AccuracyScene::DoublePendulum
+        AccuracyScene::Pendulum(_) | AccuracyScene::DoublePendulum { .. }
     );
     let sparse = sparse_scene && rng.random_bool(0.2);
     if sparse {
@@ -543,9 +578,15 @@ fn integrate_sparse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 }
 
 /// The double pendulum's angle equations (θ from the downward vertical, point masses), RK4 at
-/// 1e-5 s, and the Cartesian state, acceleration and multipliers at `t_end`.
-pub fn double_pendulum_reference(p: &[Float], t_end: Float) -> State<4, 2> {
-    let (m1, m2, l1, l2, g) = (p[0], p[1], p[2], p[3], p[4]);
+/// 1e-5 s from the angles and rates, and the Cartesian state, acceleration and multipliers at
+/// `t_end`.
+pub fn double_pendulum_reference(
+    model: &DoublePendulum,
+    angles: [Float; 2],
+    rates: [Float; 2],
+    t_end: Float,
+) -> State<4, 2> {
+    let DoublePendulum { m1, m2, l1, l2, g } = *model;
     let rhs = |_: Float, y: &[Float; 4]| -> [Float; 4] {
         let (t1, t2, w1, w2) = (y[0], y[1], y[2], y[3]);
         let delta = t1 - t2;
@@ -563,7 +604,8 @@ pub fn double_pendulum_reference(p: &[Float], t_end: Float) -> State<4, 2> {
         [w1, w2, a1, a2]
     };
     let steps = (t_end / 1e-5).round().max(1.0) as usize;
-    let y = reference::rk4(rhs, 0.0, [p[5], p[6], p[7], p[8]], t_end, steps);
+    let start = [angles[0], angles[1], rates[0], rates[1]];
+    let y = reference::rk4(rhs, 0.0, start, t_end, steps);
     let [t1, t2, w1, w2] = y;
     let [_, _, a1, a2] = rhs(t_end, &y);
     let (s1, c1) = t1.sin_cos();
@@ -593,10 +635,13 @@ pub fn double_pendulum_reference(p: &[Float], t_end: Float) -> State<4, 2> {
     }
 }
 
-/// The Cartesian start of the double pendulum for `p`.
-fn double_pendulum_start(p: &[Float]) -> (Vector<4>, Vector<4>) {
-    let (l1, l2) = (p[2], p[3]);
-    let (t1, t2, w1, w2) = (p[5], p[6], p[7], p[8]);
+/// The double pendulum's Cartesian start at the angles and rates.
+fn double_pendulum_start(
+    model: &DoublePendulum,
+    [t1, t2]: [Float; 2],
+    [w1, w2]: [Float; 2],
+) -> (Vector<4>, Vector<4>) {
+    let (l1, l2) = (model.l1, model.l2);
     let (s1, c1) = t1.sin_cos();
     let (s2, c2) = t2.sin_cos();
     let q = [l1 * s1, -l1 * c1, l1 * s1 + l2 * s2, -l1 * c1 - l2 * c2];
@@ -642,56 +687,42 @@ fn ball_reference(
 
 pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
     let rtol = case.tolerances();
-    let p = &case.parameters;
     let exact = 1e-13;
     let end = [case.t_end];
-    let outcome = match case.scene {
-        AccuracyScene::Pendulum => {
-            let scene = Pendulum {
-                m: p[0],
-                length: p[1],
-                g: p[2],
-            };
-            let reference = reference::pendulum_released_horizontally(&scene, case.t_end);
-            let start = (Vector::<2>::new(p[1], 0.0), Vector::zeros());
+    let outcome = match &case.scene {
+        AccuracyScene::Pendulum(scene) => {
+            let reference = reference::pendulum_released_horizontally(scene, case.t_end);
+            let start = (Vector::<2>::new(scene.length, 0.0), Vector::zeros());
             let energy = |q: &Vector<2>, v: &Vector<2>| {
                 0.5 * scene.m * v.norm_squared() + scene.m * scene.g * q[1]
             };
             let kept: Energy<'_, 2> = Some((&energy, scene.m * scene.g * scene.length));
-            integrate(&scene, start, case, (&end, kept))
+            integrate(scene, start, case, (&end, kept))
                 .map(|run| compare(&run, (&reference, None), rtol, [exact; 3]))
         }
-        AccuracyScene::SteamGenerator => {
-            let scene = SteamGenerator {
-                p0: p[0],
-                d: p[1],
-                ..SteamGenerator::paper()
-            };
-            let reference = reference::steam_generator(&scene, case.t_end);
+        AccuracyScene::SteamGenerator(scene) => {
+            let reference = reference::steam_generator(scene, case.t_end);
             // Stop at the load's kink, as a user would.
             let stops: Vec<Float> = [scene.rise, case.t_end]
                 .into_iter()
                 .filter(|&t| t <= case.t_end)
                 .collect();
             let start = (Vector::zeros(), Vector::zeros());
-            integrate(&scene, start, case, (&stops, None))
+            integrate(scene, start, case, (&stops, None))
                 .map(|run| compare(&run, (&reference, None), rtol, [exact; 3]))
         }
-        AccuracyScene::DoublePendulum => {
-            let scene = DoublePendulum {
-                m1: p[0],
-                m2: p[1],
-                l1: p[2],
-                l2: p[3],
-                g: p[4],
-            };
-            let reference = double_pendulum_reference(p, case.t_end);
-            let start = double_pendulum_start(p);
+        &AccuracyScene::DoublePendulum {
+            model: ref scene,
+            angles,
+            rates,
+        } => {
+            let reference = double_pendulum_reference(scene, angles, rates, case.t_end);
+            let start = double_pendulum_start(scene, angles, rates);
             let energy = |q: &Vector<4>, v: &Vector<4>| scene.energy(q.as_slice(), v.as_slice());
             let kinetic = scene.energy(&[0.0; 4], start.1.as_slice());
-            let scale = (p[0] + p[1]) * p[4] * (p[2] + p[3]) + kinetic;
+            let scale = (scene.m1 + scene.m2) * scene.g * (scene.l1 + scene.l2) + kinetic;
             let kept: Energy<'_, 4> = Some((&energy, scale));
-            integrate(&scene, start, case, (&end, kept))
+            integrate(scene, start, case, (&end, kept))
                 .map(|run| compare(&run, (&reference, None), rtol, [1e-12; 3]))
         }
         AccuracyScene::Andrews => {
@@ -701,35 +732,29 @@ pub fn run(case: &AccuracyCase) -> AccuracyOutcome {
             integrate(&scene, start, case, (&end, None))
                 .map(|run| compare(&run, (&reference, None), rtol, [1e-9, 1e-7, 1e-5]))
         }
-        AccuracyScene::SliderCrank => {
-            let scene = SliderCrankOnAxis {
-                m: p[0],
-                ms: p[1],
-                r: p[2],
-                l: p[2] * p[3],
-                g: 9.81,
-            };
-            let phi0 = p[4].to_radians();
+        &AccuracyScene::SliderCrank {
+            model: ref scene,
+            crank_angle_degrees,
+        } => {
+            let phi0 = crank_angle_degrees.to_radians();
             // RK4 at 1e-5 s in the crank angle: errors near 1e-13 of the scales.
-            let (crossings, reference) = slider_crank::reduced(&scene, phi0, case.t_end, 1e-5);
+            let (crossings, reference) = slider_crank::reduced(scene, phi0, case.t_end, 1e-5);
             let start = scene.at_rest(phi0);
             let energy = |q: &Vector<4>, v: &Vector<4>| scene.energy(q, v);
             let kept: Energy<'_, 4> = Some((&energy, scene.m * scene.g * scene.r));
-            integrate(&scene, start, case, (&end, kept))
+            integrate(scene, start, case, (&end, kept))
                 .map(|run| compare(&run, (&reference, Some(&crossings)), rtol, [1e-11; 3]))
         }
-        AccuracyScene::Ball => {
-            let scene = Ball {
-                m: p[0],
-                g: 9.81,
-                e: p[1],
-            };
+        &AccuracyScene::Ball {
+            model: ref scene,
+            height,
+        } => {
             let rest = case.options.events.rest_velocity;
-            let reference = ball_reference((p[0], 9.81, p[1], p[2]), rest, case.t_end);
-            let start = (Vector::<1>::new(p[2]), Vector::zeros());
+            let reference = ball_reference((scene.m, scene.g, scene.e, height), rest, case.t_end);
+            let start = (Vector::<1>::new(height), Vector::zeros());
             // Each impact is located within the events' time tolerance: the state errs by
             // about the speed times it, per impact.
-            integrate(&scene, start, case, (&end, None))
+            integrate(scene, start, case, (&end, None))
                 .map(|run| compare(&run, (&reference, None), rtol, [1e-9; 3]))
         }
     };

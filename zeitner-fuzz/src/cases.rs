@@ -112,19 +112,14 @@ impl SceneKind {
     }
 
     /// The restitution of the contact scenes (every gap of a scene has the same).
-    pub fn restitution(self, p: &[Float]) -> Option<Float> {
-        match self {
-            SceneKind::Ball => Some(p[2]),
-            SceneKind::WallPendulum => Some(p[3]),
-            SceneKind::FallingBar => Some(p[4]),
-            _ => None,
-        }
+    pub fn restitution(self, p: &Parameters) -> Option<Float> {
+        self.has_contacts().then(|| p["e"])
     }
 
     /// The size of the gap functions' terms besides `|q|` (the bar's half length).
-    pub fn gap_scale(self, p: &[Float]) -> Float {
+    pub fn gap_scale(self, p: &Parameters) -> Float {
         match self {
-            SceneKind::FallingBar => p[2].abs().max(1.0),
+            SceneKind::FallingBar => p["a"].abs().max(1.0),
             _ => 1.0,
         }
     }
@@ -149,115 +144,9 @@ impl SceneKind {
         SceneKind::FallingBar,
     ];
 
-    /// `(N, Z)`.
-    pub fn dimensions(self) -> (usize, usize) {
-        match self {
-            SceneKind::Pendulum | SceneKind::CoupledMassPendulum | SceneKind::CuspBead => (2, 1),
-            SceneKind::SteamGenerator | SceneKind::SliderCrank => (3, 2),
-            SceneKind::Andrews => (7, 6),
-            SceneKind::Chain2 | SceneKind::DoublePendulum => (4, 2),
-            SceneKind::Chain4 => (8, 4),
-            SceneKind::SpringPendulum => (4, 1),
-            SceneKind::RedundantFourBar => (4, 4),
-            SceneKind::TwoLinkArm => (2, 1),
-            SceneKind::Sleigh => (4, 2),
-            SceneKind::FollowerPendulum => (3, 2),
-            SceneKind::Ball => (1, 1),
-            SceneKind::WallPendulum => (2, 2),
-            SceneKind::FallingBar => (3, 3),
-        }
-    }
-
-    /// The parameters the case varies, with their nominal values.
-    pub fn parameters(self) -> &'static [(&'static str, Float)] {
-        match self {
-            SceneKind::Pendulum => &[("m", 1.0), ("length", 1.0), ("g", 9.81)],
-            SceneKind::SteamGenerator => &[
-                ("m", 4.0e5),
-                ("j", 1.5e7),
-                ("g", 9.81),
-                ("h1", 4.0),
-                ("h2", 6.0),
-                ("h3", 8.0),
-                ("d", 2.0e6),
-                ("p0", 1.0e6),
-                ("rise", 0.01),
-                ("off", Float::INFINITY),
-            ],
-            SceneKind::Andrews => &[
-                ("m1", 0.04325),
-                ("m2", 0.00365),
-                ("i1", 2.194e-6),
-                ("c0", 4530.0),
-                ("l0", 0.07785),
-                ("mom", 0.033),
-                ("rr", 0.007),
-                ("d", 0.028),
-            ],
-            SceneKind::Chain2 | SceneKind::Chain4 => &[("m", 1.0), ("l", 1.0), ("g", 9.81)],
-            SceneKind::SpringPendulum => &[
-                ("m1", 1.0),
-                ("m2", 1.0),
-                ("l", 1.0),
-                ("l0", 0.5),
-                ("k", 1.0e3),
-                ("c", 0.0),
-                ("g", 9.81),
-            ],
-            SceneKind::DoublePendulum => &[
-                ("m1", 1.0),
-                ("m2", 3.0),
-                ("l1", 1.0),
-                ("l2", 0.5),
-                ("g", 9.81),
-            ],
-            SceneKind::SliderCrank => &[("m", 1.0), ("ms", 1.0), ("r", 1.0), ("l", 1.0)],
-            SceneKind::RedundantFourBar => &[
-                ("m", 1.0),
-                ("r1", 1.0),
-                ("r2", 2.0),
-                ("r3", 1.5),
-                ("d", 2.0),
-                ("g", 9.81),
-            ],
-            SceneKind::CoupledMassPendulum => {
-                &[("m11", 2.0), ("m12", 0.5), ("m22", 1.0), ("g", 9.81)]
-            }
-            SceneKind::CuspBead => &[("m", 1.0), ("g", 9.81)],
-            SceneKind::TwoLinkArm => &[
-                ("m1", 1.0),
-                ("m2", 0.5),
-                ("l1", 1.0),
-                ("l2", 0.8),
-                ("d", 1.2),
-                ("c", 0.0),
-                ("g", 9.81),
-            ],
-            SceneKind::Sleigh => &[
-                ("m", 2.0),
-                ("j", 0.3),
-                ("slope", 0.3),
-                ("push", 1.0),
-                ("torque", 0.5),
-                ("c", 0.1),
-                ("g", 9.81),
-            ],
-            SceneKind::FollowerPendulum => &[("m", 1.0), ("mz", 0.5), ("l", 1.0), ("g", 9.81)],
-            SceneKind::Ball => &[("m", 1.0), ("g", 9.81), ("e", 0.8)],
-            SceneKind::WallPendulum => &[
-                ("m", 1.0),
-                ("length", 1.0),
-                ("g", 9.81),
-                ("e", 0.8),
-                ("height", -0.5),
-            ],
-            SceneKind::FallingBar => &[("m", 1.0), ("j", 0.1), ("a", 0.5), ("g", 9.81), ("e", 0.5)],
-        }
-    }
-
     /// A consistent start for the given parameters (the scene's own, where it has one), with a
     /// random configuration along its free directions where that is easy to write down.
-    fn nominal_state(self, p: &[Float], rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
+    fn nominal_state(self, p: &Parameters, rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
         let angle: Float = rng.random_range(-3.0..3.0);
         let rate: Float = if rng.random_bool(0.5) {
             0.0
@@ -267,7 +156,7 @@ impl SceneKind {
         let (sin, cos) = angle.sin_cos();
         match self {
             SceneKind::Pendulum => {
-                let l = p[1];
+                let l = p["length"];
                 (
                     vec![l * sin, -l * cos],
                     vec![l * cos * rate, l * sin * rate],
@@ -276,11 +165,11 @@ impl SceneKind {
             SceneKind::SteamGenerator => (vec![0.0; 3], vec![0.0; 3]),
             SceneKind::Andrews => (Andrews::Q0.to_vec(), vec![0.0; 7]),
             SceneKind::Chain2 => {
-                let l = p[1];
+                let l = p["l"];
                 (vec![l, 0.0, 2.0 * l, 0.0], vec![0.0; 4])
             }
             SceneKind::Chain4 => {
-                let l = p[1];
+                let l = p["l"];
                 let q = (0..8)
                     .map(|k| {
                         if k % 2 == 0 {
@@ -293,19 +182,19 @@ impl SceneKind {
                 (q, vec![0.0; 8])
             }
             SceneKind::SpringPendulum => {
-                let (l, l0) = (p[2], p[3]);
+                let (l, l0) = (p["l"], p["l0"]);
                 (
                     vec![l * sin, -l * cos, l * sin, -l * cos - l0],
                     vec![0.0; 4],
                 )
             }
             SceneKind::DoublePendulum => {
-                let (l1, l2) = (p[2], p[3]);
+                let (l1, l2) = (p["l1"], p["l2"]);
                 (vec![l1, 0.0, l1 + l2, 0.0], vec![0.0; 4])
             }
             SceneKind::SliderCrank => {
                 // l = r: the slider sits at 2 r cos φ.
-                let r = p[2];
+                let r = p["r"];
                 (
                     vec![r * cos, r * sin, 2.0 * r * cos],
                     vec![-r * sin * rate, r * cos * rate, -2.0 * r * sin * rate],
@@ -316,9 +205,9 @@ impl SceneKind {
             SceneKind::CuspBead => (vec![1.0, 1.0], vec![0.0; 2]),
             SceneKind::TwoLinkArm => {
                 let arm = TwoLinkArm {
-                    l1: p[2],
-                    l2: p[3],
-                    d: p[4],
+                    l1: p["l1"],
+                    l2: p["l2"],
+                    d: p["d"],
                     ..TwoLinkArm::nominal()
                 };
                 (
@@ -328,14 +217,14 @@ impl SceneKind {
             }
             SceneKind::Sleigh => {
                 let sleigh = Sleigh {
-                    slope: p[2],
+                    slope: p["slope"],
                     ..Sleigh::nominal()
                 };
                 let (q, v) = sleigh.start(angle, rate, 0.5);
                 (q.to_vec(), v.to_vec())
             }
             SceneKind::FollowerPendulum => {
-                let l = p[2];
+                let l = p["l"];
                 let vx = l * cos * rate;
                 (vec![l * sin, -l * cos, 0.0], vec![vx, l * sin * rate, vx])
             }
@@ -343,6 +232,62 @@ impl SceneKind {
                 contact_state(self, p, rng)
             }
         }
+    }
+}
+
+/// A case's parameters: the fields of its scene's model, read and written by name (the names
+/// of [`SceneKind::parameters`]), drawn together by position.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Parameters {
+    scene: SceneKind,
+    values: Vec<Float>,
+}
+
+impl Parameters {
+    /// The scene's nominal values.
+    pub fn nominal(scene: SceneKind) -> Self {
+        Parameters {
+            scene,
+            values: scene.parameters().iter().map(|&(_, x)| x).collect(),
+        }
+    }
+
+    /// The values, in the order of [`SceneKind::parameters`].
+    pub fn values(&self) -> &[Float] {
+        &self.values
+    }
+
+    fn position(&self, name: &str) -> usize {
+        self.scene
+            .parameters()
+            .iter()
+            .position(|&(known, _)| known == name)
+            .unwrap_or_else(|| panic!("{:?} has no parameter {name}", self.scene))
+    }
+}
+
+impl std::ops::Index<&str> for Parameters {
+    type Output = Float;
+
+    fn index(&self, name: &str) -> &Float {
+        &self.values[self.position(name)]
+    }
+}
+
+impl std::ops::IndexMut<&str> for Parameters {
+    fn index_mut(&mut self, name: &str) -> &mut Float {
+        let k = self.position(name);
+        &mut self.values[k]
+    }
+}
+
+impl fmt::Display for Parameters {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (k, ((name, _), value)) in self.scene.parameters().iter().zip(&self.values).enumerate()
+        {
+            write!(f, "{}{name} = {value:e}", if k > 0 { ", " } else { "" })?;
+        }
+        Ok(())
     }
 }
 
@@ -379,12 +324,12 @@ fn gap_speed(rng: &mut Rng) -> Float {
 
 /// A start of a contact scene on its bilateral rows, with its gaps above, touching or below
 /// zero and approaching, resting or separating.
-fn contact_state(scene: SceneKind, p: &[Float], rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
+fn contact_state(scene: SceneKind, p: &Parameters, rng: &mut Rng) -> (Vec<Float>, Vec<Float>) {
     match scene {
         SceneKind::Ball => (vec![gap_offset(rng)], vec![gap_speed(rng)]),
         SceneKind::WallPendulum => {
             // The bob at angle φ from the downward vertical, x = L sin φ ≥ 0 for φ in [0, π].
-            let l = p[1];
+            let l = p["length"];
             let phi = match rng.random_range(0..8) {
                 0 | 1 => rng.random_range(0.0..zeitner::scalar::consts::PI),
                 2 | 3 => 0.0,
@@ -404,7 +349,7 @@ fn contact_state(scene: SceneKind, p: &[Float], rng: &mut Rng) -> (Vec<Float>, V
             (vec![x, -l * cos], vec![l * cos * w, l * sin * w])
         }
         SceneKind::FallingBar => {
-            let a = p[2];
+            let a = p["a"];
             let theta = match rng.random_range(0..8) {
                 0..=2 => 0.0,
                 3 | 4 => rng.random_range(-0.3..0.3),
@@ -444,19 +389,16 @@ fn restitution(rng: &mut Rng) -> Float {
 }
 
 /// The contact scenes' own hostile parameters: restitution, and the event's height.
-fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut [Float]) {
-    let e = match scene {
-        SceneKind::Ball => 2,
-        SceneKind::WallPendulum => 3,
-        SceneKind::FallingBar => 4,
-        _ => return,
-    };
+fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut Parameters) {
+    if !scene.has_contacts() {
+        return;
+    }
     if rng.random_bool(0.6) {
-        p[e] = restitution(rng);
+        p["e"] = restitution(rng);
     }
     if scene == SceneKind::WallPendulum && rng.random_bool(0.5) {
-        let l = p[1];
-        p[4] = match rng.random_range(0..6) {
+        let l = p["length"];
+        p["height"] = match rng.random_range(0..6) {
             0 | 1 => l * rng.random_range(-1.2..0.2),
             2 => 0.0,
             3 => -l,
@@ -542,7 +484,7 @@ pub enum Call {
 pub struct Case {
     pub seed: u64,
     pub scene: SceneKind,
-    pub parameters: Vec<Float>,
+    pub parameters: Parameters,
     pub q0: Vec<Float>,
     pub v0: Vec<Float>,
     pub t0: Float,
@@ -558,12 +500,7 @@ impl fmt::Display for Case {
     /// A readable repro: the scene and its parameters by name, the start, the options, the calls.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "seed {}: scene {:?}", self.seed, self.scene)?;
-        let names = self.scene.parameters().iter().map(|(name, _)| name);
-        let params: Vec<String> = names
-            .zip(&self.parameters)
-            .map(|(name, value)| format!("{name} = {value:e}"))
-            .collect();
-        writeln!(f, "  parameters: {}", params.join(", "))?;
+        writeln!(f, "  parameters: {}", self.parameters)?;
         writeln!(f, "  q0 = {:?}", self.q0)?;
         writeln!(f, "  v0 = {:?}, t0 = {:e}", self.v0, self.t0)?;
         writeln!(f, "  options: {:?}", self.options)?;
@@ -661,9 +598,9 @@ fn hostile(rng: &mut Rng) -> Float {
 }
 
 /// Parameters: near nominal, one or two scaled far, or some hostile.
-fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<Float> {
-    let nominal: Vec<Float> = scene.parameters().iter().map(|&(_, x)| x).collect();
-    match rng.random_range(0..10) {
+fn parameters(rng: &mut Rng, scene: SceneKind) -> Parameters {
+    let nominal = Parameters::nominal(scene).values;
+    let values = match rng.random_range(0..10) {
         0..=3 => nominal,
         4..=5 => nominal
             .iter()
@@ -690,7 +627,8 @@ fn parameters(rng: &mut Rng, scene: SceneKind) -> Vec<Float> {
                 }
             })
             .collect(),
-    }
+    };
+    Parameters { scene, values }
 }
 
 fn noise(rng: &mut Rng, n: usize, scale: Float) -> Vec<Float> {
@@ -700,7 +638,7 @@ fn noise(rng: &mut Rng, n: usize, scale: Float) -> Vec<Float> {
 }
 
 /// A start: consistent, perturbed off the constraints, random, or with hostile components.
-fn start(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> (Vec<Float>, Vec<Float>, Float) {
+fn start(rng: &mut Rng, scene: SceneKind, p: &Parameters) -> (Vec<Float>, Vec<Float>, Float) {
     let (n, _) = scene.dimensions();
     let (mut q, mut v) = scene.nominal_state(p, rng);
     match rng.random_range(0..20) {
@@ -1057,7 +995,7 @@ fn multipliers(rng: &mut Rng, z: usize) -> Vec<Float> {
 
 /// A call of the contact scenes: step until an impact (and sample on its zero-length report),
 /// re-initialise into contact, advance across impacts sampling every step.
-fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> Call {
+fn contact_call(rng: &mut Rng, scene: SceneKind, p: &Parameters) -> Call {
     match rng.random_range(0..4) {
         0 | 1 => Call::StepUntilImpact {
             max_steps: rng.random_range(1..=400),
@@ -1094,7 +1032,7 @@ fn contact_call(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> Call {
     }
 }
 
-fn call(rng: &mut Rng, scene: SceneKind, p: &[Float]) -> Call {
+fn call(rng: &mut Rng, scene: SceneKind, p: &Parameters) -> Call {
     let (n, z) = scene.dimensions();
     if scene.has_contacts() && rng.random_bool(0.35) {
         return contact_call(rng, scene, p);
@@ -2742,178 +2680,114 @@ struct Seen<const N: usize, const Z: usize> {
     impact_report: Option<StepReport<N, Z>>,
 }
 
-/// Runs `case`: builds its scene from the parameters and executes the calls with the checks.
-pub fn run(case: &Case, budget: &Budget, trace: &mut dyn FnMut(String)) -> Outcome {
-    let p = &case.parameters;
-    match case.scene {
-        SceneKind::Pendulum => {
-            let s = Pendulum {
-                m: p[0],
-                length: p[1],
-                g: p[2],
-            };
-            execute::<_, 2, 1>(&s, case, budget, trace)
+/// Each scene once: its kind, its model and `(N, Z)`, and the fields the case varies with their
+/// nominal values (the rest from the model's base value after `..`). From it,
+/// [`SceneKind::dimensions`], [`SceneKind::parameters`] and [`run`].
+macro_rules! scene_table {
+    ($(
+        $kind:ident => $model:ident [$n:literal, $z:literal]
+            { $($field:ident: $nominal:expr),* $(,)? } $(.. $base:expr)?;
+    )*) => {
+        impl SceneKind {
+            /// `(N, Z)`.
+            pub fn dimensions(self) -> (usize, usize) {
+                match self {
+                    $(SceneKind::$kind => ($n, $z),)*
+                }
+            }
+
+            /// The parameters the case varies, with their nominal values.
+            pub fn parameters(self) -> &'static [(&'static str, Float)] {
+                match self {
+                    $(SceneKind::$kind => &[$((stringify!($field), $nominal)),*],)*
+                }
+            }
         }
-        SceneKind::SteamGenerator => {
-            let s = SteamGenerator {
-                m: p[0],
-                j: p[1],
-                g: p[2],
-                h1: p[3],
-                h2: p[4],
-                h3: p[5],
-                d: p[6],
-                p0: p[7],
-                rise: p[8],
-                off: p[9],
-            };
-            execute::<_, 3, 2>(&s, case, budget, trace)
+
+        /// Runs `case`: builds its scene from the parameters and executes the calls with the
+        /// checks.
+        pub fn run(case: &Case, budget: &Budget, trace: &mut dyn FnMut(String)) -> Outcome {
+            let p = &case.parameters;
+            match case.scene {
+                $(SceneKind::$kind => {
+                    let scene = $model {
+                        $($field: p[stringify!($field)],)*
+                        $(..$base)?
+                    };
+                    execute::<_, $n, $z>(&scene, case, budget, trace)
+                })*
+            }
         }
-        SceneKind::Andrews => {
-            let s = Andrews {
-                m1: p[0],
-                m2: p[1],
-                i1: p[2],
-                c0: p[3],
-                l0: p[4],
-                mom: p[5],
-                rr: p[6],
-                d: p[7],
-                ..Andrews::published()
-            };
-            execute::<_, 7, 6>(&s, case, budget, trace)
-        }
-        SceneKind::Chain2 => {
-            let s = Chain2 {
-                m: p[0],
-                l: p[1],
-                g: p[2],
-            };
-            execute::<_, 4, 2>(&s, case, budget, trace)
-        }
-        SceneKind::Chain4 => {
-            let s = Chain4 {
-                m: p[0],
-                l: p[1],
-                g: p[2],
-            };
-            execute::<_, 8, 4>(&s, case, budget, trace)
-        }
-        SceneKind::SpringPendulum => {
-            let s = SpringPendulum {
-                m1: p[0],
-                m2: p[1],
-                l: p[2],
-                l0: p[3],
-                k: p[4],
-                c: p[5],
-                g: p[6],
-            };
-            execute::<_, 4, 1>(&s, case, budget, trace)
-        }
-        SceneKind::DoublePendulum => {
-            let s = DoublePendulum {
-                m1: p[0],
-                m2: p[1],
-                l1: p[2],
-                l2: p[3],
-                g: p[4],
-            };
-            execute::<_, 4, 2>(&s, case, budget, trace)
-        }
-        SceneKind::SliderCrank => {
-            let s = SliderCrank {
-                m: p[0],
-                ms: p[1],
-                r: p[2],
-                l: p[3],
-            };
-            execute::<_, 3, 2>(&s, case, budget, trace)
-        }
-        SceneKind::RedundantFourBar => {
-            let s = RedundantFourBar {
-                m: p[0],
-                r1: p[1],
-                r2: p[2],
-                r3: p[3],
-                d: p[4],
-                g: p[5],
-            };
-            execute::<_, 4, 4>(&s, case, budget, trace)
-        }
-        SceneKind::CoupledMassPendulum => {
-            let s = CoupledMassPendulum {
-                m11: p[0],
-                m12: p[1],
-                m22: p[2],
-                g: p[3],
-            };
-            execute::<_, 2, 1>(&s, case, budget, trace)
-        }
-        SceneKind::CuspBead => {
-            let s = CuspBead { m: p[0], g: p[1] };
-            execute::<_, 2, 1>(&s, case, budget, trace)
-        }
-        SceneKind::TwoLinkArm => {
-            let s = TwoLinkArm {
-                m1: p[0],
-                m2: p[1],
-                l1: p[2],
-                l2: p[3],
-                d: p[4],
-                c: p[5],
-                g: p[6],
-            };
-            execute::<_, 2, 1>(&s, case, budget, trace)
-        }
-        SceneKind::Sleigh => {
-            let s = Sleigh {
-                m: p[0],
-                j: p[1],
-                slope: p[2],
-                push: p[3],
-                torque: p[4],
-                c: p[5],
-                g: p[6],
-            };
-            execute::<_, 4, 2>(&s, case, budget, trace)
-        }
-        SceneKind::FollowerPendulum => {
-            let s = FollowerPendulum {
-                m: p[0],
-                mz: p[1],
-                l: p[2],
-                g: p[3],
-            };
-            execute::<_, 3, 2>(&s, case, budget, trace)
-        }
-        SceneKind::Ball => {
-            let s = Ball {
-                m: p[0],
-                g: p[1],
-                e: p[2],
-            };
-            execute::<_, 1, 1>(&s, case, budget, trace)
-        }
-        SceneKind::WallPendulum => {
-            let s = WallPendulum {
-                m: p[0],
-                length: p[1],
-                g: p[2],
-                e: p[3],
-                height: p[4],
-            };
-            execute::<_, 2, 2>(&s, case, budget, trace)
-        }
-        SceneKind::FallingBar => {
-            let s = FallingBar {
-                m: p[0],
-                j: p[1],
-                a: p[2],
-                g: p[3],
-                e: p[4],
-            };
-            execute::<_, 3, 3>(&s, case, budget, trace)
-        }
-    }
+    };
+}
+
+scene_table! {
+    Pendulum => Pendulum [2, 1] { m: 1.0, length: 1.0, g: 9.81 };
+    SteamGenerator => SteamGenerator [3, 2] {
+        m: 4.0e5,
+        j: 1.5e7,
+        g: 9.81,
+        h1: 4.0,
+        h2: 6.0,
+        h3: 8.0,
+        d: 2.0e6,
+        p0: 1.0e6,
+        rise: 0.01,
+        off: Float::INFINITY,
+    };
+    Andrews => Andrews [7, 6] {
+        m1: 0.04325,
+        m2: 0.00365,
+        i1: 2.194e-6,
+        c0: 4530.0,
+        l0: 0.07785,
+        mom: 0.033,
+        rr: 0.007,
+        d: 0.028,
+    } ..Andrews::published();
+    Chain2 => Chain2 [4, 2] { m: 1.0, l: 1.0, g: 9.81 };
+    Chain4 => Chain4 [8, 4] { m: 1.0, l: 1.0, g: 9.81 };
+    SpringPendulum => SpringPendulum [4, 1] {
+        m1: 1.0,
+        m2: 1.0,
+        l: 1.0,
+        l0: 0.5,
+        k: 1.0e3,
+        c: 0.0,
+        g: 9.81,
+    };
+    DoublePendulum => DoublePendulum [4, 2] { m1: 1.0, m2: 3.0, l1: 1.0, l2: 0.5, g: 9.81 };
+    SliderCrank => SliderCrank [3, 2] { m: 1.0, ms: 1.0, r: 1.0, l: 1.0 };
+    RedundantFourBar => RedundantFourBar [4, 4] {
+        m: 1.0,
+        r1: 1.0,
+        r2: 2.0,
+        r3: 1.5,
+        d: 2.0,
+        g: 9.81,
+    };
+    CoupledMassPendulum => CoupledMassPendulum [2, 1] { m11: 2.0, m12: 0.5, m22: 1.0, g: 9.81 };
+    CuspBead => CuspBead [2, 1] { m: 1.0, g: 9.81 };
+    TwoLinkArm => TwoLinkArm [2, 1] {
+        m1: 1.0,
+        m2: 0.5,
+        l1: 1.0,
+        l2: 0.8,
+        d: 1.2,
+        c: 0.0,
+        g: 9.81,
+    };
+    Sleigh => Sleigh [4, 2] {
+        m: 2.0,
+        j: 0.3,
+        slope: 0.3,
+        push: 1.0,
+        torque: 0.5,
+        c: 0.1,
+        g: 9.81,
+    };
+    FollowerPendulum => FollowerPendulum [3, 2] { m: 1.0, mz: 0.5, l: 1.0, g: 9.81 };
+    Ball => Ball [1, 1] { m: 1.0, g: 9.81, e: 0.8 };
+    WallPendulum => WallPendulum [2, 2] { m: 1.0, length: 1.0, g: 9.81, e: 0.8, height: -0.5 };
+    FallingBar => FallingBar [3, 3] { m: 1.0, j: 0.1, a: 0.5, g: 9.81, e: 0.5 };
 }

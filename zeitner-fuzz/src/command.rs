@@ -169,7 +169,7 @@ fn accuracy_verdict(seed: u64) -> String {
     } else {
         ""
     };
-    let head = format!("{:?}{storage} {:e}", case.scene, case.rtol());
+    let head = format!("{}{storage} {:e}", case.scene.name(), case.rtol());
     match result {
         Ok(outcome @ AccuracyOutcome::Ok { .. }) => {
             // `wrong` is empty unless a ratio is over the threshold (or NaN).

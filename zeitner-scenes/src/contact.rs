@@ -4,6 +4,7 @@
 use zeitner::{constrained_system, Float};
 
 /// A ball above a floor, `y ≥ 0`, bouncing with restitution `e`.
+#[derive(Clone, Debug)]
 pub struct Ball {
     pub m: Float,
     pub g: Float,

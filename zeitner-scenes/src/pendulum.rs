@@ -2,6 +2,7 @@
 
 use zeitner::{constrained_system, Float};
 
+#[derive(Clone, Debug)]
 pub struct Pendulum {
     pub m: Float,
     pub length: Float,

@@ -7,6 +7,7 @@
 use super::reference::State;
 use zeitner::{constrained_system, Float, Vector};
 
+#[derive(Clone, Debug)]
 pub struct SliderCrankOnAxis {
     /// The crank pin's mass and the slider's (kg).
     pub m: Float,

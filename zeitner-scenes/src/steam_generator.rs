@@ -3,6 +3,7 @@
 
 use zeitner::{constrained_system, Float, MultiplierModel, Options};
 
+#[derive(Clone, Debug)]
 pub struct SteamGenerator {
     /// Mass, kg.
     pub m: Float,

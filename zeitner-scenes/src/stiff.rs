@@ -44,6 +44,7 @@ impl SpringPendulum {
 }
 
 /// A double pendulum in Cartesian coordinates: rods `l1`, `l2`, masses `m1`, `m2`.
+#[derive(Clone, Debug)]
 pub struct DoublePendulum {
     pub m1: Float,
     pub m2: Float,

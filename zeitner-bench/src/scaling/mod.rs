@@ -456,7 +456,7 @@ pub fn report(args: ScalingArgs) -> Result<(), Box<dyn std::error::Error>> {
         std::fs::create_dir_all(&figures)?;
         write_figure(&figures.join("scaling"), &rows, &floor)?;
     }
-    std::fs::write(args.output_dir.join("scaling.csv"), csv(&rows, &floor))?;
+    write_csv(&args.output_dir.join("scaling.csv"), &rows, &floor)?;
     std::fs::write(&args.report, markdown(&rows, &floor))?;
     println!(
         "wrote {} and {}",
@@ -503,37 +503,51 @@ fn exp(x: Option<f64>) -> String {
     x.map(|e| format!("{e:.1e}")).unwrap_or_else(|| "–".into())
 }
 
-fn csv(rows: &[Row], floor: &Floor) -> String {
-    let mut out = String::from(
-        "scene,family,coordinates,constraints,method,seconds_per_step,sweeps_per_step,error_q,stack_kib\n",
-    );
+/// One scene and path, or one point of the O(n) floor, as a row of `scaling.csv`.
+#[derive(serde::Serialize)]
+struct Record<'a> {
+    scene: &'a str,
+    family: &'a str,
+    coordinates: usize,
+    constraints: usize,
+    method: &'a str,
+    seconds_per_step: Option<f64>,
+    sweeps_per_step: Option<f64>,
+    error_q: Option<f64>,
+    stack_kib: Option<usize>,
+}
+
+fn write_csv(path: &Path, rows: &[Row], floor: &Floor) -> Result<(), Box<dyn std::error::Error>> {
+    let mut writer = csv::Writer::from_path(path)?;
     for r in rows {
-        let (time, sweeps, error) = match &r.per_step {
-            Ok(m) => (
-                format!("{:e}", m.per_step),
-                format!("{:.2}", m.sweeps),
-                m.error.map(|e| format!("{e:e}")).unwrap_or_default(),
-            ),
-            Err(_) => Default::default(),
-        };
-        let stack = r.stack_kib.map(|k| k.to_string()).unwrap_or_default();
-        let (scene, family, n, z, path) =
-            (&r.scene, r.family, r.coordinates, r.constraints, r.path);
-        let _ = writeln!(
-            out,
-            "{scene},{family},{n},{z},{path},{time},{sweeps},{error},{stack}"
-        );
+        let measured = r.per_step.as_ref().ok();
+        writer.serialize(Record {
+            scene: &r.scene,
+            family: r.family,
+            coordinates: r.coordinates,
+            constraints: r.constraints,
+            method: r.path,
+            seconds_per_step: measured.map(|m| m.per_step),
+            sweeps_per_step: measured.map(|m| m.sweeps),
+            error_q: measured.and_then(|m| m.error),
+            stack_kib: r.stack_kib,
+        })?;
     }
     for &(n, seconds, error) in floor {
-        let error = error.map(|e| format!("{e:e}")).unwrap_or_default();
-        let _ = writeln!(
-            out,
-            "floor-chain-{},chain,{n},{},index1-rk4-tridiagonal,{seconds:e},,{error},",
-            n / 2,
-            n / 2
-        );
+        writer.serialize(Record {
+            scene: &format!("floor-chain-{}", n / 2),
+            family: "chain",
+            coordinates: n,
+            constraints: n / 2,
+            method: "index1-rk4-tridiagonal",
+            seconds_per_step: Some(seconds),
+            sweeps_per_step: None,
+            error_q: error,
+            stack_kib: None,
+        })?;
     }
-    out
+    writer.flush()?;
+    Ok(())
 }
 
 /// The least-squares slope of `ln(time)` against `ln(coordinates)` over `points`.

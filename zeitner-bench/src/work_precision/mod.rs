@@ -18,7 +18,7 @@ use zeitner::{MultiplierModel, Options, StepControl};
 use crate::figure;
 use crate::first_result;
 use methods::methods;
-use scene::{csv_line, Row, Scene, HEADER};
+use scene::{Row, Scene};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -185,12 +185,11 @@ fn write_scene(
     output_dir: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let scene_rows: Vec<&Row> = rows.iter().filter(|r| r.scene == scene.name).collect();
-    let mut csv = format!("{HEADER}\n");
+    let mut csv = csv::Writer::from_path(output_dir.join(format!("{}.csv", scene.name)))?;
     for row in &scene_rows {
-        csv.push_str(&csv_line(row));
-        csv.push('\n');
+        csv.serialize(row)?;
     }
-    std::fs::write(output_dir.join(format!("{}.csv", scene.name)), csv)?;
+    csv.flush()?;
     let mut names: Vec<&str> = scene_rows.iter().map(|r| r.method.as_str()).collect();
     names.dedup();
     let series = names

@@ -7,8 +7,8 @@ use zeitner::{ConstrainedSystem, Options, Simulator, Start, StopReason, Vector};
 
 use super::methods::Method;
 
-/// One measured configuration: a CSV row.
-#[derive(Clone, Debug)]
+/// One measured configuration: a CSV row, its columns in the fields' order.
+#[derive(Clone, Debug, serde::Serialize)]
 pub struct Row {
     pub scene: &'static str,
     pub method: String,
@@ -22,8 +22,10 @@ pub struct Row {
     pub cpu_seconds: f64,
     /// Heap allocations during the integration; unknown for peers.
     pub allocations: Option<u64>,
+    #[serde(skip)]
     pub failure: Option<String>,
     /// The end state, flattened (q, then q', then λ), until [`Scene::score`] measures it.
+    #[serde(skip)]
     pub end: Vec<f64>,
 }
 
@@ -32,25 +34,6 @@ impl Row {
     pub fn error(&self) -> f64 {
         self.error_q.max(self.error_v).max(self.error_lambda)
     }
-}
-
-pub const HEADER: &str = "scene,method,setting,error_q,error_v,error_lambda,max_g,steps,newton_iterations,cpu_seconds,allocations";
-
-pub fn csv_line(row: &Row) -> String {
-    format!(
-        "{},{},{},{:e},{:e},{:e},{:e},{},{},{:e},{}",
-        row.scene,
-        row.method,
-        row.setting,
-        row.error_q,
-        row.error_v,
-        row.error_lambda,
-        row.max_g,
-        row.steps,
-        row.newton_iterations,
-        row.cpu_seconds,
-        row.allocations.map_or(String::new(), |a| a.to_string())
-    )
 }
 
 /// Component-wise relative errors, the largest; components whose reference is below 1e-6 of the

@@ -350,36 +350,6 @@ pub fn chain_scaling(
     repeats: usize,
     output_dir: &std::path::Path,
 ) -> Result<String, Box<dyn std::error::Error>> {
-    use scenes::chain::{Chain16, Chain2, Chain4, Chain8};
-
-    fn time_per_step<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-        scene: &S,
-        options: Options,
-        repeats: usize,
-    ) -> Result<(f64, u64), String> {
-        let q0 = Vector::<N>::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 });
-        let mut times = Vec::new();
-        let mut steps = 0;
-        for _ in 0..=repeats.max(1) {
-            let mut sim = Simulator::new(
-                scene,
-                Start {
-                    q: q0,
-                    v: Vector::zeros(),
-                    t: 0.0,
-                },
-                options,
-            )
-            .map_err(|e| e.to_string())?;
-            let before = cpu_seconds();
-            sim.advance_to(1.0, |_| {}).map_err(|e| e.to_string())?;
-            times.push(cpu_seconds() - before);
-            steps = sim.statistics().steps;
-        }
-        // The first run is the warm-up.
-        Ok((median(times.split_off(1)) / steps as f64, steps))
-    }
-
     let methods = [
         (
             "zeitner-constant-lambda-rk4-exactQ",
@@ -398,7 +368,14 @@ pub fn chain_scaling(
             },
         ),
     ];
-    let mut csv = String::from("coordinates,constraints,method,steps,seconds_per_step\n");
+    let mut csv = csv::Writer::from_path(output_dir.join("chain_scaling.csv"))?;
+    csv.write_record([
+        "coordinates",
+        "constraints",
+        "method",
+        "steps",
+        "seconds_per_step",
+    ])?;
     let mut series = Vec::new();
     let mut table = String::from(
         "## Scaling: chains of pendulums\n\n![time per step against coordinates](figures/work_precision_chain_scaling.png)\n\n\
@@ -408,80 +385,30 @@ pub fn chain_scaling(
          | coordinates | constraints | method | time per step |\n|---|---|---|---|\n",
     );
     for (name, options) in methods {
-        let results = [
-            (
-                4,
-                time_per_step(
-                    &Chain2 {
-                        m: 1.0,
-                        l: 1.0,
-                        g: 9.81,
-                    },
-                    options,
-                    repeats,
-                ),
-            ),
-            (
-                8,
-                time_per_step(
-                    &Chain4 {
-                        m: 1.0,
-                        l: 1.0,
-                        g: 9.81,
-                    },
-                    options,
-                    repeats,
-                ),
-            ),
-            (
-                16,
-                time_per_step(
-                    &Chain8 {
-                        m: 1.0,
-                        l: 1.0,
-                        g: 9.81,
-                    },
-                    options,
-                    repeats,
-                ),
-            ),
-            (
-                32,
-                time_per_step(
-                    &Chain16 {
-                        m: 1.0,
-                        l: 1.0,
-                        g: 9.81,
-                    },
-                    options,
-                    repeats,
-                ),
-            ),
-        ];
         let mut points = Vec::new();
-        for (coordinates, result) in results {
+        for (coordinates, result) in chains_time_per_step(options, repeats) {
+            let constraints = coordinates / 2;
             match result {
                 Ok((per_step, steps)) => {
-                    csv.push_str(&format!(
-                        "{coordinates},{},{name},{steps},{per_step:e}\n",
-                        coordinates / 2
-                    ));
-                    table.push_str(&format!(
-                        "| {coordinates} | {} | `{name}` | {:.2} µs |\n",
-                        coordinates / 2,
-                        per_step * 1e6
-                    ));
+                    csv.serialize((coordinates, constraints, name, steps, per_step))?;
+                    let micros = per_step * 1e6;
+                    let _ = writeln!(
+                        table,
+                        "| {coordinates} | {constraints} | `{name}` | {micros:.2} µs |"
+                    );
                     points.push((coordinates as f64, per_step));
                 }
-                Err(error) => table.push_str(&format!(
-                    "| {coordinates} | {} | `{name}` | failed: {error} |\n",
-                    coordinates / 2
-                )),
+                Err(error) => {
+                    let _ = writeln!(
+                        table,
+                        "| {coordinates} | {constraints} | `{name}` | failed: {error} |"
+                    );
+                }
             }
         }
         series.push((name, points));
     }
-    std::fs::write(output_dir.join("chain_scaling.csv"), csv)?;
+    csv.flush()?;
     figure::write_log_log(
         &output_dir.join("chain_scaling"),
         &figure::Panel {
@@ -493,4 +420,50 @@ pub fn chain_scaling(
     )?;
     table.push('\n');
     Ok(table)
+}
+
+/// CPU seconds per step and steps, or what failed.
+type PerStep = Result<(f64, u64), String>;
+
+/// The chains of 2, 4, 8 and 16 pendulums under `options`: `(coordinates, time per step and
+/// steps)`.
+fn chains_time_per_step(options: Options, repeats: usize) -> [(usize, PerStep); 4] {
+    use scenes::chain::{Chain16, Chain2, Chain4, Chain8};
+    let (m, l, g) = (1.0, 1.0, 9.81);
+    [
+        (4, time_per_step(&Chain2 { m, l, g }, options, repeats)),
+        (8, time_per_step(&Chain4 { m, l, g }, options, repeats)),
+        (16, time_per_step(&Chain8 { m, l, g }, options, repeats)),
+        (32, time_per_step(&Chain16 { m, l, g }, options, repeats)),
+    ]
+}
+
+/// CPU time per step of 1 s of a chain from the horizontal, median over `repeats` after a
+/// warm-up, and the steps.
+fn time_per_step<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    options: Options,
+    repeats: usize,
+) -> PerStep {
+    let q0 = Vector::<N>::from_fn(|i, _| if i % 2 == 0 { (i / 2 + 1) as f64 } else { 0.0 });
+    let mut times = Vec::new();
+    let mut steps = 0;
+    for _ in 0..=repeats.max(1) {
+        let mut sim = Simulator::new(
+            scene,
+            Start {
+                q: q0,
+                v: Vector::zeros(),
+                t: 0.0,
+            },
+            options,
+        )
+        .map_err(|e| e.to_string())?;
+        let before = cpu_seconds();
+        sim.advance_to(1.0, |_| {}).map_err(|e| e.to_string())?;
+        times.push(cpu_seconds() - before);
+        steps = sim.statistics().steps;
+    }
+    // The first run is the warm-up.
+    Ok((median(times.split_off(1)) / steps as f64, steps))
 }
