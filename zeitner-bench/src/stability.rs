@@ -160,7 +160,8 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
             "verner98-every-stage",
             with(InnerMethod::Verner98, adaptive),
         ),
-        // The default method and multipliers: DOP853 until stiff, then ESDIRK 5(4).
+        // The default method and multipliers: at rtol 1e-6 Verner's 9(8) pair until stiff, then
+        // ESDIRK 5(4).
         ("automatic-adaptive", with(InnerMethod::Automatic, adaptive)),
         ("sdirk2-exactQ", with(InnerMethod::Sdirk2, fixed)),
         ("esdirk32-adaptive", with(InnerMethod::Esdirk32, adaptive)),
@@ -768,9 +769,11 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          typed error, named here, and the simulator keeps its last accepted state. Methods: \
          `rk4-paperQ` (the paper as published), `rk4-exactQ`, `dopri5-adaptive` (rtol 1e-6, the step \
          below is the initial one), `dop853-every-stage` (DOP853 with the multipliers solved at \
-         every stage, rtol 1e-6), `automatic-adaptive` (the default method and multipliers: DOP853 \
-         with the multipliers at every stage until Hairer's stiffness test finds its steps bound by \
-         stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
+         every stage, rtol 1e-6), `verner98-every-stage` (Verner's 9(8) pair, the same otherwise), \
+         `automatic-adaptive` (the default method and multipliers: at rtol 1e-6 Verner's 9(8) pair, \
+         above it DOP853, with the multipliers at every stage until Hairer's stiffness test finds \
+         its steps bound by stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), \
+         `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \
          (Kværnø's ESDIRK 3(2), L-stable, rtol 1e-6, with the automatic, here quadratic, multipliers), \
          `esdirk43-adaptive` (Kennedy & Carpenter's ESDIRK 4(3), the same otherwise), \
          `esdirk54-adaptive` (their ESDIRK 5(4)7L[2]SA2, the same otherwise), \

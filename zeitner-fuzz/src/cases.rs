@@ -252,11 +252,6 @@ impl Parameters {
         }
     }
 
-    /// The values, in the order of [`SceneKind::parameters`].
-    pub fn values(&self) -> &[Float] {
-        &self.values
-    }
-
     fn position(&self, name: &str) -> usize {
         self.scene
             .parameters()

@@ -16,6 +16,33 @@ pub use crate::summary::{
 ///
 /// Every method is a pure function of its arguments. `#[constrained_system]` implements it with
 /// exact symbolic derivatives; a hand-written implementation must keep the same meaning.
+///
+/// # Example
+///
+/// The functions the macro generated for a pendulum, called directly:
+///
+/// ```
+/// use zeitner::{constrained_system, ConstrainedSystem, Vector};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 2.0, g: 9.81 };
+/// let (q, v) = (Vector::<2>::new(2.0, 0.0), Vector::<2>::new(0.0, 1.0));
+/// assert_eq!(<Pendulum as ConstrainedSystem<2, 1>>::POSITION_CONSTRAINTS, 1);
+/// assert_eq!(pendulum.constraint_residual(&q, &v, 0.0)[0], 0.0);
+/// // G = ∂g/∂q = [2x, 2y]; the rate ġ = G q' = 0 here.
+/// let jacobian = pendulum.constraint_jacobian(&q, &v, 0.0);
+/// assert_eq!((jacobian[(0, 0)], jacobian[(0, 1)]), (4.0, 0.0));
+/// assert_eq!(pendulum.constraint_rate(&q, &v, 0.0)[0], 0.0);
+/// assert_eq!(pendulum.applied_force(&q, &v, 0.0)[1], -9.81);
+/// ```
 pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     /// How many of the `Z` constraints are position-level; they come first.
     const POSITION_CONSTRAINTS: usize;
@@ -147,6 +174,30 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
 /// A model with parameters — fields named in its `parameters` function — and the derivatives by
 /// them that forward sensitivities need. `#[constrained_system]` implements it for a model that
 /// has `parameters`; one without carries none of this.
+///
+/// # Example
+///
+/// ```
+/// use zeitner::{ParametrisedSystem, Vector};
+/// # use zeitner::constrained_system;
+/// # pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+/// #[constrained_system]
+/// impl Pendulum {
+/// #   fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+/// #   fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+/// #   fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+///     // mass, force and constraints as for `ConstrainedSystem`, and:
+///     fn parameters(&self) -> [f64; 2] { [self.l, self.g] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 2.0, g: 9.81 };
+/// assert_eq!(<Pendulum as ParametrisedSystem<2, 1, 2>>::PARAMETER_NAMES, ["l", "g"]);
+/// assert_eq!(pendulum.parameter_values(), Vector::<2>::new(2.0, 9.81));
+/// // The constraint x² + y² - l² by the length: -2l.
+/// let (q, v) = (Vector::<2>::new(2.0, 0.0), Vector::zeros());
+/// let (dg, _) = pendulum.parameter_constraints(&q, &v, 0.0);
+/// assert_eq!(dg[(0, 0)], -4.0);
+/// ```
 pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
     ConstrainedSystem<N, Z>
 {

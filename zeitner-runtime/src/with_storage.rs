@@ -12,6 +12,35 @@ use crate::system::{
 /// model, evaluated through the same functions. For example, to compare the storages, or to run
 /// a mid-sized scene on the sparse one:
 /// `Simulator::new(&WithStorage::<_, Sparse>::new(&scene), start, options)`.
+///
+/// # Example
+///
+/// The same pendulum on the dense storage the macro chose for it and on the sparse one:
+///
+/// ```
+/// use zeitner::storage::Sparse;
+/// use zeitner::{constrained_system, Options, Simulator, Start, Vector, WithStorage};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+/// let sparse = WithStorage::<_, Sparse>::new(&pendulum);
+/// let mut on_sparse = Simulator::new(&sparse, start, Options::default())?;
+/// let mut on_dense = Simulator::new(&pendulum, start, Options::default())?;
+/// on_sparse.advance_to(0.5, |_| {})?;
+/// on_dense.advance_to(0.5, |_| {})?;
+/// let difference = on_sparse.last().end.q - on_dense.last().end.q;
+/// assert!(difference.amax() < 1e-9);
+/// # Ok::<(), zeitner::StepError>(())
+/// ```
 pub struct WithStorage<'a, S, D> {
     pub scene: &'a S,
     storage: PhantomData<D>,

@@ -77,6 +77,32 @@ pub struct Statistics {
 
 /// A constrained system being integrated. Holds the last accepted state; a failed step leaves
 /// it untouched.
+///
+/// # Example
+///
+/// A pendulum stepped to one second, each step's constraint residual within the tolerance
+/// (the examples use the facade crate `zeitner`, which re-exports this one with the macro):
+///
+/// ```
+/// use zeitner::{constrained_system, Options, Simulator, Start, StopReason, Vector};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+/// let mut sim = Simulator::new(&pendulum, start, Options::default())?;
+/// let reason = sim.advance_to(1.0, |step| assert!(step.residual[0].abs() <= 1e-10))?;
+/// assert_eq!((reason, sim.time()), (StopReason::StopTimeReached, 1.0));
+/// assert!((sim.last().end.q.norm() - 1.0).abs() < 1e-10);
+/// # Ok::<(), zeitner::StepError>(())
+/// ```
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
     method: AnyMethod<N, Z, S::Storage>,

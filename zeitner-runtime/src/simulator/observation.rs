@@ -15,6 +15,41 @@ use crate::system::ConstrainedSystem;
 /// What the observer of [`Simulator::advance_to`] gets after every accepted step: the step's
 /// report (through `Deref`, so `step.end.q` reads as on a [`StepReport`]), dense output with
 /// recomputed multipliers, and a way to stop the run.
+///
+/// # Example
+///
+/// Sampling every 0.1 s on the way, and stopping when the bob first passes below the pivot:
+///
+/// ```
+/// use zeitner::{constrained_system, Options, Simulator, Start, Vector};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+/// let mut sim = Simulator::new(&pendulum, start, Options::default())?;
+/// let mut samples = Vec::new();
+/// let mut next = 0.1;
+/// sim.advance_to(10.0, |step| {
+///     while next <= step.end.t {
+///         samples.push(step.sample(next).expect("inside the step"));
+///         next += 0.1;
+///     }
+///     if step.end.q[0] < 0.0 {
+///         step.stop();
+///     }
+/// })?;
+/// assert!(sim.last().end.q[0] < 0.0 && sim.time() < 10.0);
+/// assert!(samples.iter().all(|p| (p.q.norm() - 1.0).abs() < 1e-9));
+/// # Ok::<(), zeitner::StepError>(())
+/// ```
 pub struct Observation<'a, 's, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     pub(crate) simulator: &'a mut Simulator<'s, S, N, Z>,
     pub(crate) reason: StopReason,

@@ -33,6 +33,34 @@ use crate::system::{Matrix, ParametrisedSystem, Vector};
 /// ([`InvalidOption::SensitivitiesAcrossContacts`]), and the raw output of
 /// `VelocityProjection::Off` ([`InvalidOption::SensitivitiesOfRawOutput`]). Each step costs about one more
 /// integration with the stages' Jacobians.
+///
+/// # Example
+///
+/// The pendulum's state at one second, and its derivatives by the rod's length and by `g`
+/// (the parameters the model names):
+///
+/// ```
+/// use zeitner::{constrained_system, Options, SensitivitySimulator, Start, Vector};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+///     fn parameters(&self) -> [f64; 2] { [self.l, self.g] }
+/// }
+///
+/// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+/// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+/// let mut sim = SensitivitySimulator::<_, 2, 1, 2>::new(&pendulum, start, Options::default())?;
+/// sim.advance_to(1.0)?;
+/// let (end, s) = (sim.simulator().last().end, sim.sensitivities());
+/// // The motion runs in the time t √(g/l): ∂q/∂g = t q' / (2g).
+/// assert!((s.q.column(1) - (end.t / (2.0 * 9.81)) * end.v).amax() < 1e-6);
+/// # Ok::<(), zeitner::StepError>(())
+/// ```
 pub struct SensitivitySimulator<
     's,
     S: ParametrisedSystem<N, Z, P>,
