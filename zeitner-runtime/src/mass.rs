@@ -74,7 +74,14 @@ pub struct DiagonalMass<const N: usize>(pub Vector<N>);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FullMass<const N: usize>(pub Matrix<N, N>);
 
-/// The reciprocal diagonal.
+/// The reciprocal diagonal: [`DiagonalMass`]'s factor.
+///
+/// ```
+/// use zeitner_runtime::{DiagonalMass, MassFactor, MassMatrix, Vector};
+///
+/// let factor = DiagonalMass(Vector::<2>::new(2.0, 4.0)).factor().expect("positive");
+/// assert_eq!(factor.solve(&Vector::<2>::new(1.0, 1.0)), Vector::<2>::new(0.5, 0.25));
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct DiagonalFactor<const N: usize>(Vector<N>);
 

@@ -4,6 +4,14 @@
 //! in every model function; helper methods of your own can `use zeitner::math::Real as _;`.
 
 /// Elementary functions on `f64` and `f32`, named as the inherent methods.
+///
+/// ```
+/// use zeitner_runtime::math::Real;
+///
+/// // Called through the trait, as a `no_std` build's model functions are.
+/// assert_eq!(Real::sqrt(9.0f64), 3.0);
+/// assert_eq!(Real::hypot(3.0f32, 4.0), 5.0);
+/// ```
 pub trait Real: Sized {
     fn sqrt(self) -> Self;
     fn sin(self) -> Self;

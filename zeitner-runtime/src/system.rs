@@ -254,6 +254,34 @@ pub trait ParametrisedSystem<const N: usize, const Z: usize, const P: usize>:
 }
 
 /// An event function's derivatives at a point ([`ParametrisedSystem::event_gradient`]).
+///
+/// # Example
+///
+/// A ball's height above a mark at `h`, by the height `y`, the time and the parameter `h`:
+///
+/// ```
+/// use zeitner::{constrained_system, ParametrisedSystem, Vector};
+///
+/// pub struct Ball { pub m: f64, pub g: f64, pub h: f64 }
+///
+/// #[constrained_system]
+/// impl Ball {
+///     fn mass(&self) -> [f64; 1] { [self.m] }
+///     fn force(&self) -> [f64; 1] { [-self.m * self.g] }
+///     fn gaps(&self, [y]: [f64; 1]) -> [f64; 1] { [y] }
+///     fn restitution(&self) -> [f64; 1] { [1.0] }
+///     fn events(&self, [y]: [f64; 1]) -> [f64; 1] { [y - self.h] }
+///     fn parameters(&self) -> [f64; 1] { [self.h] }
+/// }
+///
+/// let ball = Ball { m: 1.0, g: 9.81, h: 0.5 };
+/// let (q, v) = (Vector::<1>::new(2.0), Vector::<1>::new(-1.0));
+/// let gradient = ball.event_gradient(0, &q, &v, 0.0);
+/// assert_eq!((gradient.q[0], gradient.v[0], gradient.t), (1.0, 0.0, 0.0));
+/// assert_eq!(gradient.theta[(0, 0)], -1.0);
+/// // No such event function: nothing known.
+/// assert!(ball.event_gradient(1, &q, &v, 0.0).t.is_nan());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EventGradient<const N: usize, const P: usize> {
     pub q: Vector<N>,

@@ -9,7 +9,7 @@ use crate::scalar::Float;
 
 /// Fixed-size dense matrices on the stack: no heap, `no_std` without `alloc`. Its N×N
 /// matrices cost `8 N²` bytes each and their factorisation `N³`: for up to a few dozen
-/// coordinates.
+/// coordinates. In [`Storage`]'s example.
 #[derive(Clone, Copy, Debug)]
 pub struct Dense;
 
@@ -55,7 +55,8 @@ impl<const N: usize> Square<N> for Matrix<N, N> {
     }
 }
 
-/// `∂a/∂q`, `∂a/∂q'` as dense matrices.
+/// `∂a/∂q`, `∂a/∂q'` as dense matrices: [`Dense`]'s [`Derivatives`], in
+/// [`Storage`]'s example.
 pub struct DenseDerivatives<const N: usize> {
     dq: Matrix<N, N>,
     dv: Matrix<N, N>,
@@ -124,7 +125,8 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
     }
 }
 
-/// A dense iteration matrix's LU factor and the `∂a/∂q` it was formed from.
+/// A dense iteration matrix's LU factor and the `∂a/∂q` it was formed from: [`Dense`]'s
+/// [`Iteration`], in [`Storage`]'s example.
 pub struct DenseIteration<const N: usize> {
     factor: IterationFactor<N>,
     dq: Matrix<N, N>,

@@ -31,6 +31,45 @@ use crate::summary::{MassKind, Sparsity};
 
 /// The storage of a scene with `N` coordinates: how its N×N derivatives are kept, evaluated,
 /// multiplied and factorised.
+///
+/// # Example
+///
+/// What a step does with a storage, by hand: `∂a/∂q` of a pendulum held by `λ = 1` (the rod's
+/// force `Gᵀλ = 2λ (x, y)` turns with the bob: `∂a/∂q = -2λ/m I`), and an implicit method's
+/// iteration matrix `I - ¼ ∂a/∂q` formed from it and solved. The other types of this module
+/// appear here: [`Dense`], [`JacobianSource`] (every model is one), [`Derivatives`],
+/// [`AccelerationAt`], [`Square`], [`Iteration`] and [`Combination`].
+///
+/// ```
+/// use zeitner::storage::{AccelerationAt, Combination, Dense, Derivatives, Iteration, Square, Storage};
+/// use zeitner::{constrained_system, ConstrainedSystem, MassFactor, MassMatrix, Vector};
+///
+/// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+///
+/// #[constrained_system]
+/// impl Pendulum {
+///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+/// }
+///
+/// let pendulum = Pendulum { m: 2.0, l: 1.0, g: 9.81 };
+/// let (q, v, t, lambda) = (Vector::<2>::new(1.0, 0.0), Vector::<2>::zeros(), 0.0, Vector::<1>::new(1.0));
+/// let factor = pendulum.mass_matrix(&q, t).factor().expect("positive masses");
+/// let g = pendulum.constraint_jacobian(&q, &v, t);
+/// let a = factor.solve(&(pendulum.applied_force(&q, &v, t) - g.transpose() * lambda));
+///
+/// let mut derivatives = <Dense as Storage<2>>::derivatives::<Pendulum, 1>()?;
+/// derivatives.evaluate(&pendulum, (&q, &v, t), &lambda, AccelerationAt { a: &a, factor: &factor })?;
+/// let x = Vector::<2>::new(1.0, 3.0);
+/// assert_eq!(derivatives.dq().times(&x), -x);
+///
+/// let mut iteration = <Dense as Storage<2>>::iteration::<Pendulum, 1>();
+/// let combination = Combination { identity: 1.0, dv: 0.0, dq: 0.25 };
+/// assert!(iteration.refresh(combination, derivatives.dq(), derivatives.dv()));
+/// assert!((iteration.solve(&x) - x / 1.25).amax() < 1e-15);
+/// # Ok::<(), zeitner::StepError>(())
+/// ```
 pub trait Storage<const N: usize>: Sized + 'static {
     /// One N×N derivative.
     type Square: Square<N>;
@@ -51,19 +90,20 @@ pub trait Storage<const N: usize>: Sized + 'static {
     fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Self::Rows<T, L>;
 }
 
-/// An N×N matrix as a storage keeps it.
+/// An N×N matrix as a storage keeps it. Used in [`Storage`]'s example.
 pub trait Square<const N: usize> {
     /// `self · x`.
     fn times<const C: usize>(&self, x: &Matrix<N, C>) -> Matrix<N, C>;
 }
 
-/// What a point's `a = M⁻¹(F - Gᵀλ)` is known from, for its derivatives.
+/// What a point's `a = M⁻¹(F - Gᵀλ)` is known from, for its derivatives. Used in
+/// [`Storage`]'s example.
 pub struct AccelerationAt<'a, F, const N: usize> {
     pub a: &'a Vector<N>,
     pub factor: &'a F,
 }
 
-/// `∂a/∂q` and `∂a/∂q'`, evaluated in place.
+/// `∂a/∂q` and `∂a/∂q'`, evaluated in place. Used in [`Storage`]'s example.
 pub trait Derivatives<const N: usize, Q> {
     /// Evaluates both at `(q, v, t)` for the multipliers `lambda` (open gaps' rows masked).
     /// A non-finite result is the typed error naming the model function that produced it.
@@ -87,7 +127,8 @@ pub trait Derivatives<const N: usize, Q> {
     ) -> Result<Vector<N>, StepError>;
 }
 
-/// The coefficients of an iteration matrix `c₀ I - c₁ ∂a/∂q' - c₂ ∂a/∂q`.
+/// The coefficients of an iteration matrix `c₀ I - c₁ ∂a/∂q' - c₂ ∂a/∂q`. Used in [`Storage`]'s
+/// example.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Combination {
     pub identity: Float,
@@ -95,7 +136,8 @@ pub struct Combination {
     pub dq: Float,
 }
 
-/// An implicit method's iteration matrix and its factor, formed in place.
+/// An implicit method's iteration matrix and its factor, formed in place. Used in
+/// [`Storage`]'s example.
 pub trait Iteration<const N: usize, Q> {
     /// Forms `c₀ I - c₁ dv - c₂ dq` and factorises it, keeping `dq`; `false` where it is
     /// singular (then nothing may be solved with it until a later `refresh` succeeds).
@@ -107,7 +149,8 @@ pub trait Iteration<const N: usize, Q> {
 }
 
 /// What a storage reads from a scene: its Jacobians, dense or by their nonzeros, and what is
-/// known of them before anything is evaluated. Every [`crate::ConstrainedSystem`] is one.
+/// known of them before anything is evaluated. Every [`crate::ConstrainedSystem`] is one (in
+/// [`Storage`]'s example, the pendulum).
 pub trait JacobianSource<const N: usize, const Z: usize> {
     /// [`crate::ConstrainedSystem::MASS_IS_CONSTANT`].
     const MASS_IS_CONSTANT: bool;

@@ -23,7 +23,8 @@ use crate::summary::MassKind;
 
 /// The N×N derivatives by their structural nonzeros, on the heap: memory and work grow with
 /// the nonzeros, not with N². Needs a constant diagonal mass (refused otherwise with
-/// [`InvalidOption::NotForSparseSimulator`]).
+/// [`InvalidOption::NotForSparseSimulator`]). A scene runs on it through
+/// [`WithStorage`](crate::WithStorage), as in that type's example.
 #[derive(Clone, Copy, Debug)]
 pub struct Sparse;
 
@@ -110,7 +111,8 @@ impl Pattern {
     }
 }
 
-/// An N×N matrix by its pattern's values.
+/// An N×N matrix by its pattern's values: [`Sparse`]'s [`Square`], used as [`Dense`](super::Dense)'s
+/// matrices are in [`Storage`]'s example.
 #[derive(Clone, Debug)]
 pub struct SparseSquare {
     pattern: Pattern,
@@ -171,7 +173,8 @@ fn derivative_patterns<S: JacobianSource<N, Z>, const N: usize, const Z: usize>(
     [Pattern::of(N, fq.into_iter().chain(rq), false), dv]
 }
 
-/// `∂a/∂q`, `∂a/∂q'` and the generated values they are assembled from.
+/// `∂a/∂q`, `∂a/∂q'` and the generated values they are assembled from: [`Sparse`]'s
+/// [`Derivatives`], used as [`Dense`](super::Dense)'s are in [`Storage`]'s example.
 pub struct SparseDerivatives {
     dq: SparseSquare,
     dv: SparseSquare,
@@ -302,7 +305,8 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
 }
 
 /// `c₀ I - c₁ ∂a/∂q' - c₂ ∂a/∂q` by its pattern (the union of theirs and the diagonal) and its
-/// sparse LU factor.
+/// sparse LU factor: [`Sparse`]'s [`Iteration`], used as [`Dense`](super::Dense)'s is in
+/// [`Storage`]'s example.
 pub struct SparseIteration {
     n: usize,
     pattern: Pattern,
