@@ -9,7 +9,8 @@ use clap::{Args, Subcommand};
 use crate::study::{Case, Results, RunSettings, Shard, Study, StudyError};
 use crate::table::CaseTable;
 
-/// Where the cases come from (one of them; a grid of 21 points per parameter by default).
+/// Where the cases come from (one of them; a grid of 21 points per parameter by default). In
+/// [`StudyCommand`]'s example.
 #[derive(Args, Clone, Debug, Default)]
 #[group(multiple = false)]
 pub struct CaseSource {
@@ -24,6 +25,7 @@ pub struct CaseSource {
     pub cases: Option<PathBuf>,
 }
 
+/// How to plan a study: its cases and batches. In [`StudyCommand`]'s example.
 #[derive(Args, Clone, Debug)]
 pub struct PlanArgs {
     #[command(flatten)]
@@ -37,6 +39,8 @@ pub struct PlanArgs {
     pub batch: Option<usize>,
 }
 
+/// How to run a study's batches: the shard, the threads, the progress bar. In
+/// [`StudyCommand`]'s example.
 #[derive(Args, Clone, Debug)]
 pub struct RunArgs {
     /// Shard `i/n` (from 0): the batches whose number is `i` modulo `n`.
@@ -50,6 +54,8 @@ pub struct RunArgs {
     pub quiet: bool,
 }
 
+/// One stage of a study, run alone (on a cluster, each by its own job). In [`StudyCommand`]'s
+/// example.
 #[derive(Subcommand, Clone, Debug)]
 pub enum Stage {
     /// Writes the case table and the manifest (or keeps the folder's, if it is this study's).
@@ -61,6 +67,31 @@ pub enum Stage {
 }
 
 /// The study's command line: a stage, or (none given) plan, run and gather in one process.
+///
+/// # Example
+///
+/// Flattened into a binary's own command line, as `examples/support_study.rs` does; the other
+/// types of this module appear here: [`CaseSource`], [`PlanArgs`], [`RunArgs`] and [`Stage`].
+///
+/// ```
+/// use clap::Parser;
+/// use zeitner_study::cli::{Stage, StudyCommand};
+/// use zeitner_study::Shard;
+///
+/// #[derive(Parser)]
+/// struct Cli {
+///     #[command(flatten)]
+///     study: StudyCommand,
+/// }
+///
+/// let all = Cli::try_parse_from(["study", "--folder", "out", "--grid", "41,21", "--shard", "1/2"])?;
+/// assert_eq!(all.study.plan.source.grid, Some(vec![41, 21]));
+/// assert_eq!(all.study.run.shard, Shard::new(1, 2)?);
+/// assert!(all.study.stage.is_none());
+/// let run = Cli::try_parse_from(["study", "run", "--threads", "2"])?;
+/// assert!(matches!(run.study.stage, Some(Stage::Run(ref args)) if args.threads == Some(2)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Args, Clone, Debug)]
 pub struct StudyCommand {
     /// The study's folder (resumed where it holds this study).

@@ -16,7 +16,7 @@ use parquet::schema::parser::parse_message_type;
 
 use crate::space::{Space, CASE_COLUMN, ERROR_COLUMN};
 
-/// One case's row of a results table.
+/// One case's row of a results table. In [`Study`](crate::Study)'s example.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CaseResult {
     pub id: u64,

@@ -3,6 +3,13 @@
 use core::fmt;
 
 /// One parameter of a study: the name of its column in a case table and its closed range.
+///
+/// ```
+/// use zeitner_study::Parameter;
+///
+/// let stiffness = Parameter::new("k", 1e5, 1e7);
+/// assert!(stiffness.contains(1e7) && !stiffness.contains(2e7));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Parameter {
     pub name: String,
@@ -26,6 +33,17 @@ impl Parameter {
 
 /// The parameters of a study and the names of its outputs, checked once: names are distinct,
 /// plain (letters, digits, `_`) and none is a column the results keep for themselves.
+///
+/// ```
+/// use zeitner_study::{Parameter, Space, SpaceError};
+///
+/// let space = Space::new(vec![Parameter::new("k", 1e5, 1e7)], &["peak_force"])?;
+/// assert_eq!((space.index("k"), space.outputs()), (Some(0), &["peak_force".to_string()][..]));
+/// // The results keep a column `case` of their own.
+/// let taken = Space::new(vec![Parameter::new("case", 0.0, 1.0)], &["y"]);
+/// assert_eq!(taken, Err(SpaceError::BadName("case".into())));
+/// # Ok::<(), SpaceError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Space {
     parameters: Vec<Parameter>,
@@ -36,7 +54,7 @@ pub struct Space {
 pub const CASE_COLUMN: &str = "case";
 pub const ERROR_COLUMN: &str = "error";
 
-/// A study's declaration that cannot run.
+/// A study's declaration that cannot run; [`Space`]'s example shows one.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SpaceError {
     /// A name used twice among the parameters and outputs.

@@ -22,7 +22,8 @@ use crate::parts::{self, CaseResult};
 use crate::space::{Parameter, Space, SpaceError};
 use crate::table::{CaseTable, TableError};
 
-/// One case as the study function sees it: its id and its parameters' values.
+/// One case as the study function sees it: its id and its parameters' values. In [`Study`]'s
+/// example.
 pub struct Case<'a> {
     pub id: u64,
     values: &'a [f64],
@@ -47,6 +48,44 @@ impl Case<'_> {
 
 /// A study with `K` outputs: `run_case` maps a case to them, or to an error that is recorded as
 /// the case's result (a panic too) — a failed case never stops the study.
+///
+/// # Example
+///
+/// Planned, run and gathered in a folder: `x² + y` over a grid of 3 × 2 cases, and a case
+/// that fails. The other types of the crate appear here: [`Parameter`], [`CaseTable`],
+/// [`Case`], [`RunSettings`], [`Shard`], [`RunReport`], [`Results`] and [`CaseResult`].
+///
+/// ```
+/// use zeitner_study::{Case, CaseTable, Parameter, RunSettings, Shard, Study};
+///
+/// let study = Study::new(
+///     "square",
+///     "x² + y, failing where x = 2",
+///     vec![Parameter::new("x", 0.0, 2.0), Parameter::new("y", -1.0, 1.0)],
+///     ["value"],
+///     |case: &Case| {
+///         let (x, y) = (case.get("x"), case.get("y"));
+///         if x == 2.0 { Err(format!("x = {x}")) } else { Ok([x * x + y]) }
+///     },
+/// )?;
+/// let table = CaseTable::grid(study.space(), &[3, 2])?;
+/// let folder = std::env::temp_dir().join(format!("zeitner-study-doc-{}", std::process::id()));
+/// study.plan(&folder, &table, "grid 3×2", None)?;
+/// let settings = RunSettings { shard: Shard::ALL, threads: Some(1), progress: false };
+/// let report = study.run(&folder, settings)?;
+/// assert_eq!((report.cases_run, report.cases_failed), (6, 2));
+/// let results = study.gather(&folder)?;
+/// assert_eq!((results.cases.len(), results.failed()), (6, 2));
+/// for case in &results.cases {
+///     let (x, y) = (case.parameters[0], case.parameters[1]);
+///     match &case.outcome {
+///         Ok(value) => assert_eq!(value[0], x * x + y),
+///         Err(error) => assert_eq!(error, "x = 2"),
+///     }
+/// }
+/// std::fs::remove_dir_all(&folder)?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub struct Study<F, const K: usize> {
     name: String,
     description: String,
@@ -55,6 +94,14 @@ pub struct Study<F, const K: usize> {
 }
 
 /// What stops a study (a failed case does not).
+///
+/// ```
+/// use zeitner_study::{Parameter, SpaceError, Study, StudyError};
+///
+/// let twice = vec![Parameter::new("x", 0.0, 1.0), Parameter::new("x", 0.0, 1.0)];
+/// let study = Study::new("s", "", twice, ["y"], |_: &zeitner_study::Case| Ok::<_, String>([0.0]));
+/// assert!(matches!(study, Err(StudyError::Space(SpaceError::Duplicate(name))) if name == "x"));
+/// ```
 #[derive(Debug)]
 pub enum StudyError {
     Space(SpaceError),
@@ -151,6 +198,14 @@ fn io(path: &Path) -> impl Fn(std::io::Error) -> StudyError + '_ {
 }
 
 /// Shard `index` of `count`: the batches `b` with `b % count == index`.
+///
+/// ```
+/// use zeitner_study::{Shard, StudyError};
+///
+/// assert_eq!(Shard::new(1, 4)?, Shard { index: 1, count: 4 });
+/// assert!(matches!(Shard::new(4, 4), Err(StudyError::BadShard { index: 4, count: 4 })));
+/// # Ok::<(), StudyError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Shard {
     pub index: usize,
@@ -168,7 +223,8 @@ impl Shard {
     }
 }
 
-/// How a run goes: on how many threads (all cores if `None`), with a progress bar or not.
+/// How a run goes: on how many threads (all cores if `None`), with a progress bar or not. In
+/// [`Study`]'s example.
 #[derive(Clone, Copy, Debug)]
 pub struct RunSettings {
     pub shard: Shard,
@@ -186,7 +242,7 @@ impl Default for RunSettings {
     }
 }
 
-/// What one run of a shard did.
+/// What one run of a shard did. In [`Study`]'s example.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RunReport {
     /// Batches of the shard found finished by an earlier run, and left as they were.
@@ -197,7 +253,7 @@ pub struct RunReport {
     pub seconds: f64,
 }
 
-/// The gathered results with their column names.
+/// The gathered results with their column names. In [`Study`]'s example.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Results {
     pub parameters: Vec<String>,

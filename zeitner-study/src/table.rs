@@ -7,6 +7,23 @@ use std::path::Path;
 use crate::space::{Space, CASE_COLUMN};
 
 /// Cases in rows: `values[row * width + column]` in the order of the space's parameters.
+///
+/// ```
+/// use zeitner_study::{CaseTable, Parameter, Space, TableError};
+///
+/// let space = Space::new(
+///     vec![Parameter::new("k", 1.0, 3.0), Parameter::new("gap", 0.0, 0.01)],
+///     &["peak_force"],
+/// )?;
+/// let grid = CaseTable::grid(&space, &[3, 2])?;
+/// assert_eq!((grid.len(), grid.row(1), grid.row(5)), (6, &[1.0, 0.01][..], &[3.0, 0.01][..]));
+/// let sample = CaseTable::sobol(&space, 16, 7)?;
+/// assert!((0..sample.len()).all(|r| space.parameters()[0].contains(sample.row(r)[0])));
+/// // A case outside its parameter's range is refused, naming the row and the column.
+/// let outside = CaseTable::from_rows(&space, vec![0], &[vec![4.0, 0.0]]);
+/// assert!(matches!(outside, Err(TableError::OutOfRange { row: 1, ref column, .. }) if column == "k"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CaseTable {
     names: Vec<String>,
@@ -14,7 +31,7 @@ pub struct CaseTable {
     values: Vec<f64>,
 }
 
-/// A case table that cannot run, with the place to mend. Rows count from 1, the first row of
+/// A case table that cannot run, with the place to mend ([`CaseTable`]'s example shows one). Rows count from 1, the first row of
 /// values (line 2 of a CSV file).
 #[derive(Clone, Debug, PartialEq)]
 pub enum TableError {
