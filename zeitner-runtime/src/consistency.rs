@@ -91,7 +91,7 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
     tolerance: Float,
     policy: StartPolicy,
 ) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
-    if !q0.iter().chain(v0.iter()).all(|x| x.is_finite()) {
+    if !(all_finite(q0.as_slice()) & all_finite(v0.as_slice())) {
         return Err(StepError::non_finite_state(t0));
     }
     if policy == StartPolicy::Refuse {
@@ -170,7 +170,7 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
             dependent_rows: rows,
         })?;
         q -= directions.m_inv_gt * mu;
-        if !all_finite(&q) {
+        if !all_finite(q.as_slice()) {
             return Err(inconsistent);
         }
     }
@@ -207,7 +207,7 @@ fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             break directions;
         }
     };
-    if !all_finite(&v) {
+    if !all_finite(v.as_slice()) {
         return Err(StepError::non_finite_state(t));
     }
     Ok((v, directions))
@@ -252,6 +252,21 @@ pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const
     Ok(consistent_point_and_gram(model, t, q, v)?.0)
 }
 
+/// The accelerations and multipliers of [`consistent_point`] at an explicit method's stage,
+/// written into the stage loop: a small scene's point, returned through memory and read back at
+/// once, stalled the loop on the store.
+#[inline(always)]
+pub(crate) fn stage_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    t: Float,
+    q: Vector<N>,
+    v: Vector<N>,
+) -> Result<(Vector<N>, Vector<Z>), StepError> {
+    let directions = directions_at(model, t, &q, &v)?;
+    let (point, _) = point_with(model, (t, q, v), directions)?;
+    Ok((point.a, point.lambda))
+}
+
 /// [`consistent_point`], with `G` and `G M⁻¹ Gᵀ` at the point.
 pub(crate) fn consistent_point_and_gram<
     S: ConstrainedSystem<N, Z>,
@@ -293,21 +308,21 @@ pub(crate) fn consistent_point_and_directions<
 }
 
 /// The constraints' directions at a state, which must be finite.
-#[inline]
+#[inline(always)]
 fn directions_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     t: Float,
     q: &Vector<N>,
     v: &Vector<N>,
 ) -> Result<ConstraintDirections<FactorOf<S, N, Z>, N, Z>, StepError> {
-    if !all_finite(q.iter().chain(v.iter())) {
+    if !(all_finite(q.as_slice()) & all_finite(v.as_slice())) {
         return Err(StepError::non_finite_state(t));
     }
     model.directions(q, v, t)
 }
 
 /// The consistent point at a finite state whose directions are known.
-#[inline]
+#[inline(always)]
 fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (t, q, v): (Float, Vector<N>, Vector<N>),
@@ -325,7 +340,7 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
     })?;
     let a = m_inv_f - directions.m_inv_gt * lambda;
-    if !all_finite(a.iter().chain(lambda.iter())) {
+    if !(all_finite(a.as_slice()) & all_finite(lambda.as_slice())) {
         return Err(StepError::non_finite_state(t));
     }
     let point = Point { t, q, v, a, lambda };
@@ -425,7 +440,7 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     // The step's multipliers too: a row that no force reads (a closed contact's, masked) can
     // carry an overflowed prediction through Newton untouched (f32 fuzz, a ball under
     // g = f32::MAX: λ = -3.4e38 extrapolated to -∞).
-    if !all_finite(constraint_force.iter().chain(step_multipliers.iter())) {
+    if !(all_finite(constraint_force.as_slice()) & all_finite(step_multipliers.as_slice())) {
         return Err(StepError::non_finite_state(end.t));
     }
     Ok(StepReport {

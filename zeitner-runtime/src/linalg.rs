@@ -6,12 +6,11 @@ use crate::scalar::Float;
 
 /// Whether every value is finite. Checked without an early exit: the model's outputs are
 /// checked on every evaluation and are nearly always finite, so one branch at the end is
-/// cheaper than one per entry.
+/// cheaper than one per entry. Over a slice, not a matrix's or a chain's iterator: those were
+/// not inlined, and took 17 % of a small scene's step.
 #[inline(always)]
-pub fn all_finite<'a>(values: impl IntoIterator<Item = &'a Float>) -> bool {
-    values
-        .into_iter()
-        .fold(true, |finite, x| finite & x.is_finite())
+pub fn all_finite(values: &[Float]) -> bool {
+    values.iter().fold(true, |finite, x| finite & x.is_finite())
 }
 
 /// Pivots below this fraction of the largest diagonal entry count as lost rank (a condition
@@ -61,7 +60,7 @@ pub fn solve_spd<const Z: usize, const C: usize>(
     position_rows: usize,
 ) -> Result<Matrix<Z, C>, RowSet> {
     match ldl_solve(a, b) {
-        Some(x) if all_finite(&x) => Ok(x),
+        Some(x) if all_finite(x.as_slice()) => Ok(x),
         _ => Err(dependent_rows(a, position_rows)),
     }
 }
@@ -245,7 +244,7 @@ pub(crate) fn finite<const R: usize, const C: usize>(
     t: Float,
     function: ModelFunction,
 ) -> Result<Matrix<R, C>, StepError> {
-    if all_finite(&value) {
+    if all_finite(value.as_slice()) {
         Ok(value)
     } else {
         Err(StepError::NonFinite { t, function })
@@ -298,7 +297,7 @@ pub fn solve_blocks<const Z: usize, const K: usize>(
             b[p] -= update;
         }
     }
-    b.iter().all(all_finite).then_some(b)
+    b.iter().all(|x| all_finite(x.as_slice())).then_some(b)
 }
 
 #[cfg(test)]

@@ -412,7 +412,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         }
         let jacobian = self.mask(unmasked);
         let a = factor.solve(&(force - jacobian.tr_mul(lambda)));
-        if !all_finite(&a) {
+        if !all_finite(a.as_slice()) {
             finite(force, t, ModelFunction::AppliedForce)?;
             finite(unmasked, t, ModelFunction::ConstraintJacobian)?;
             return Err(StepError::NonFinite {

@@ -500,7 +500,7 @@ fn failed<const N: usize, const Z: usize, const K: usize>(
 }
 
 fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
-    all_finite(q.iter().chain(v.iter()))
+    all_finite(q.as_slice()) & all_finite(v.as_slice())
 }
 
 fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(

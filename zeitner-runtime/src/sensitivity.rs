@@ -135,7 +135,7 @@ where
         moved += (fv - rv) * x.v;
     }
     let da = factor.solve(&moved);
-    if all_finite(&da) {
+    if all_finite(da.as_slice()) {
         return Ok(da);
     }
     finite(rq, t, ModelFunction::ConstraintForceJacobians)?;
@@ -341,7 +341,7 @@ where
             let kept = recorded.and_then(|r| {
                 let lambda = r.multipliers[i];
                 let (qi, vi) = stage_state(tableau, i, hs, (&q, &v), (&r.slopes.0, &r.slopes.1));
-                all_finite(&lambda).then_some((qi, vi, r.slopes.1[i], lambda))
+                all_finite(lambda.as_slice()).then_some((qi, vi, r.slopes.1[i], lambda))
             });
             let (qi, vi, a, lambda, directions, gram) = match kept {
                 Some((qi, vi, a, lambda)) => {

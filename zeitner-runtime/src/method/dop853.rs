@@ -5,7 +5,7 @@
 #![allow(clippy::excessive_precision)]
 
 use super::continuous::{self, weighted, Extension};
-use super::explicit::{row, ProbeStates, StiffnessProbe, Tableau};
+use super::explicit::{patterned, row, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -36,7 +36,7 @@ const E3: [Float; 12] = {
 };
 
 /// The pair's twelve stages.
-pub(crate) const DOP853: Tableau<12> = Tableau {
+pub(crate) const DOP853: Tableau<12> = patterned(Tableau {
     a: [
         [0.0; 12],
         row(&[(0, 5.26001519587677318785587544488e-2)]),
@@ -110,6 +110,7 @@ pub(crate) const DOP853: Tableau<12> = Tableau {
             (10, 6.43392746015763530355970484046e-1),
         ]),
     ],
+    nonzeros: Nonzeros::NONE,
     b: B,
     c: [
         0.0,
@@ -146,7 +147,7 @@ pub(crate) const DOP853: Tableau<12> = Tableau {
         states: ProbeStates::LastStageAndEnd,
         boundary: 6.1,
     }),
-};
+});
 
 /// Slopes of the continuous extension: the step's twelve stages, the end point's (the next
 /// step's first stage) and three extra stages.

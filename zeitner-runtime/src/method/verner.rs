@@ -9,7 +9,7 @@
 #![allow(clippy::excessive_precision)]
 
 use super::continuous::{self, weighted, Extension};
-use super::explicit::{row, ProbeStates, StiffnessProbe, Tableau};
+use super::explicit::{patterned, row, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -383,8 +383,9 @@ const fn leading<const L: usize>(a: &[[Float; STAGES]; STAGES]) -> [[Float; L]; 
 /// -4.47 (from the tableau; a test checks it), and the probe reads below `h|λ|` there. On the
 /// pendulum on a stiff spring support at rtol 1e-9 a boundary of 4.47 turned implicit only
 /// after 1 964 steps; 4.0 turns after 16, as DOP853 does; on Andrews' squeezer neither turns.
-pub(crate) const VERNER98: Tableau<16> = Tableau {
+pub(crate) const VERNER98: Tableau<16> = patterned(Tableau {
     a: leading(&A),
+    nonzeros: Nonzeros::NONE,
     b: B,
     c: {
         let mut c = [0.0; 16];
@@ -411,7 +412,7 @@ pub(crate) const VERNER98: Tableau<16> = Tableau {
         states: ProbeStates::Stages(14, 15),
         boundary: 4.0,
     }),
-};
+});
 
 /// Verner's interpolant of order 8: `(q, q')(s) = (q₀, q₀') + h Σᵢ bᵢ(s) kᵢ` over the pair's
 /// slopes and five more, the first of them the step end's (the projected end point's, where

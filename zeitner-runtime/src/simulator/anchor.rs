@@ -42,7 +42,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.predictor.reset();
         self.state_gram = None;
         self.pending.singular = false;
-        Method::<N, Z, S::Storage>::restart(&mut self.method, || Ok(point.a));
+        Method::<N, Z, S::Storage>::restart(&mut *self.method, || Ok(point.a));
         if forget == Forget::Steps {
             self.t_carry = 0.0;
             self.controller = Controller::new();

@@ -193,7 +193,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         let outcome = multipliers::solve(
             &mut self.model,
-            &mut self.method,
+            &mut *self.method,
             &start,
             h,
             t_end,
@@ -310,12 +310,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The order of the inner method's embedded solution, if it has one.
     pub(super) fn embedded_order(&self) -> Option<u32> {
-        Method::<N, Z, S::Storage>::embedded_order(&self.method)
+        Method::<N, Z, S::Storage>::embedded_order(&*self.method)
     }
 
     /// `k` for the controller: one more than the lower order of the error estimate.
     pub(super) fn error_order(&self) -> u32 {
-        let method = &self.method;
+        let method = &*self.method;
         let order = Method::<N, Z, S::Storage>::order(method);
         Method::<N, Z, S::Storage>::embedded_order(method)
             .unwrap_or(order)
@@ -364,7 +364,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         } else {
             (h_used + self.t_carry) - (t_end - self.time())
         };
-        Method::<N, Z, S::Storage>::accepted(&mut self.method, &step.v);
+        Method::<N, Z, S::Storage>::accepted(&mut *self.method, &step.v);
         self.q = step.q;
         self.v = match self.options.velocity_projection {
             VelocityProjection::State => step.point.v,

@@ -8,6 +8,7 @@ use super::Simulator;
 use crate::consistency::project_positions;
 use crate::control::newton_tolerance;
 use crate::error::{InvalidOption, StepError};
+use crate::linalg::all_finite;
 use crate::method::Method;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
@@ -26,7 +27,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
         let first = (here.t == t && here.q == self.q && here.v == self.v).then_some(here.a);
         let start = (t, &self.q, &self.v);
         let integrated = Method::<N, Z, S::Storage>::integrate_every_stage(
-            &mut self.method,
+            &mut *self.method,
             &mut self.model,
             start,
             h,
@@ -41,7 +42,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             Ok(Attempt::Rejected { factor, cause })
         };
         let mut end = match integrated {
-            Ok(end) if end.q.iter().chain(end.v.iter()).all(|x| x.is_finite()) => end,
+            Ok(end) if all_finite(end.q.as_slice()) & all_finite(end.v.as_slice()) => end,
             Ok(_) => return reject(StepError::non_finite_state(t_end)),
             Err(cause) if retried(&cause) => return reject(cause),
             Err(error) => return Err(error),
@@ -78,7 +79,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
                 // their line from the step's start to its end.
                 step.v = step.point.v;
                 // DOP853's estimate compares its last stage with the end point's slope.
-                let method = &self.method;
+                let method = &*self.method;
                 let at_end = Method::<N, Z, S::Storage>::stiffness_against_end(method, &step.point);
                 step.stiffness = step.stiffness.or(at_end);
                 let slope = step.point.lambda - lambda_start;

@@ -40,7 +40,12 @@ use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
 use crate::output::Point;
 use crate::output::{StepReport, StopReason};
 use crate::polynomial::StepPolynomial;
+use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
+
+/// `T` held as scene `S`'s storage holds a run's workspace.
+type Held<S, T, const N: usize, const Z: usize> =
+    <<S as ConstrainedSystem<N, Z>>::Storage as Storage<N>>::Held<T>;
 
 /// Counts over the whole run.
 ///
@@ -105,7 +110,7 @@ pub struct Statistics {
 /// ```
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
-    method: AnyMethod<N, Z, S::Storage>,
+    method: Held<S, AnyMethod<N, Z, S::Storage>, N, Z>,
     /// The method that steps now: the options' one, `Automatic` resolved.
     active: InnerMethod,
     /// Whether the steps are bound by stability, for `Automatic`'s change of method.
@@ -199,7 +204,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
-            method: AnyMethod::new::<S>(options.method, options.multipliers, options.step),
+            method: S::Storage::hold(AnyMethod::new::<S>(
+                options.method,
+                options.multipliers,
+                options.step,
+            )),
             active: options.method.first(options.multipliers, options.step),
             stiffness: StiffnessTest::default(),
             options,
@@ -254,14 +263,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // Hermite interpolant between the step's consistent ends.
         let ends = (&self.last.start, &self.last.end);
         let model = &mut self.model;
-        let (q, v) = match Method::<N, Z, S::Storage>::dense_state(&mut self.method, model, ends, t)
-        {
-            Some(state) => state?,
-            None => {
-                let point = self.last.interpolate(t);
-                (point.q, point.v)
-            }
-        };
+        let (q, v) =
+            match Method::<N, Z, S::Storage>::dense_state(&mut *self.method, model, ends, t) {
+                Some(state) => state?,
+                None => {
+                    let point = self.last.interpolate(t);
+                    (point.q, point.v)
+                }
+            };
         crate::consistency::consistent_point(&mut self.model, t, q, v)
     }
 
@@ -279,7 +288,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         Statistics {
             evaluations: self.model.evaluations,
             iteration_matrix_factorizations: Method::<N, Z, S::Storage>::factorizations(
-                &self.method,
+                &*self.method,
             ),
             ..self.statistics
         }

@@ -8,6 +8,7 @@ use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
 use crate::options::{InnerMethod, Options, StepControl};
 use crate::scalar::Float;
+use crate::storage::Storage;
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -31,7 +32,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             || (self.active != first && !self.active.is_implicit());
         let previous_method = new_method.then(|| {
             let method = AnyMethod::new::<S>(options.method, options.multipliers, options.step);
-            core::mem::replace(&mut self.method, method)
+            core::mem::replace(&mut self.method, S::Storage::hold(method))
         });
         let previous_active = self.active;
         if new_method {
@@ -64,7 +65,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
         };
         if let Some(method) = previous_method {
-            let factorizations = Method::<N, Z, S::Storage>::factorizations(&method);
+            let factorizations = Method::<N, Z, S::Storage>::factorizations(&*method);
             self.statistics.iteration_matrix_factorizations += factorizations;
             self.stiffness = StiffnessTest::default();
         }
@@ -160,8 +161,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return;
         };
         let method = AnyMethod::new::<S>(next, self.options.multipliers, self.options.step);
-        let previous = core::mem::replace(&mut self.method, method);
-        let factorizations = Method::<N, Z, S::Storage>::factorizations(&previous);
+        let previous = core::mem::replace(&mut self.method, S::Storage::hold(method));
+        let factorizations = Method::<N, Z, S::Storage>::factorizations(&*previous);
         self.statistics.iteration_matrix_factorizations += factorizations;
         self.active = next;
         self.statistics.turned_implicit_after = Some(self.statistics.steps);
@@ -175,7 +176,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn restart_method(&mut self) {
         let (q, v, t, lambda) = (self.q, self.v, self.time(), self.lambda);
         let model = &mut self.model;
-        Method::<N, Z, S::Storage>::restart(&mut self.method, || {
+        Method::<N, Z, S::Storage>::restart(&mut *self.method, || {
             Ok(model.acceleration(&q, &v, t, &lambda)?.a)
         });
     }

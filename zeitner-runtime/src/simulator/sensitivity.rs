@@ -359,7 +359,7 @@ where
         // Each branch: the step's end as integrated, before any projection, and its tangent.
         let ((q_raw, v_raw), mut state) = match multipliers {
             MultiplierModel::EveryStage => {
-                let taken = (&mut sim.model, &sim.method);
+                let taken = (&mut sim.model, &*sim.method);
                 let (raw, x) = stages.every_stage(taken, start, h, &self.state)?;
                 (raw, x)
             }

@@ -18,6 +18,7 @@ impl<const N: usize> Storage<N> for Dense {
     type Derivatives = DenseDerivatives<N>;
     type Iteration = DenseIteration<N>;
     type Rows<T: Copy + 'static, const L: usize> = [T; L];
+    type Held<T: 'static> = InPlace<T>;
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>(
     ) -> Result<DenseDerivatives<N>, StepError> {
@@ -36,6 +37,26 @@ impl<const N: usize> Storage<N> for Dense {
 
     fn rows<T: Copy + 'static, const L: usize>(fill: T) -> [T; L] {
         [fill; L]
+    }
+
+    fn hold<T: 'static>(value: T) -> InPlace<T> {
+        InPlace(value)
+    }
+}
+
+/// A value kept where its owner is: [`Dense`]'s [`Storage::Held`].
+pub struct InPlace<T>(T);
+
+impl<T> core::ops::Deref for InPlace<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.0
+    }
+}
+
+impl<T> core::ops::DerefMut for InPlace<T> {
+    fn deref_mut(&mut self) -> &mut T {
+        &mut self.0
     }
 }
 
@@ -85,7 +106,9 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
         if S::DYNAMICS_DEPEND_ON_VELOCITY {
             self.dv = at.factor.solve(&(force_dv - reaction_dv));
         }
-        if !(all_finite(&self.dq) && (!S::DYNAMICS_DEPEND_ON_VELOCITY || all_finite(&self.dv))) {
+        if !(all_finite(self.dq.as_slice())
+            && (!S::DYNAMICS_DEPEND_ON_VELOCITY || all_finite(self.dv.as_slice())))
+        {
             let reaction = ModelFunction::ConstraintForceJacobians;
             finite(reaction_dq, t, reaction)?;
             finite(reaction_dv, t, reaction)?;

@@ -20,7 +20,7 @@ pub mod dense;
 #[cfg(feature = "alloc")]
 pub mod sparse;
 
-pub use dense::Dense;
+pub use dense::{Dense, InPlace};
 #[cfg(feature = "alloc")]
 pub use sparse::Sparse;
 
@@ -81,6 +81,9 @@ pub trait Storage<const N: usize>: Sized + 'static {
     /// in place where the scene is small, on the heap (allocated when the method is built)
     /// where a thousand coordinates would put megabytes on a thread's stack.
     type Rows<T: Copy + 'static, const L: usize>: AsRef<[T]> + AsMut<[T]>;
+    /// One value a simulator keeps for its whole run, its method's workspace: in place where
+    /// the scene is small, on the heap where its stage vectors would fill a thread's stack.
+    type Held<T: 'static>: core::ops::Deref<Target = T> + core::ops::DerefMut;
 
     /// The derivatives' workspace for `S`, or the refusal naming what this storage cannot hold.
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<Self::Derivatives, StepError>;
@@ -88,6 +91,8 @@ pub trait Storage<const N: usize>: Sized + 'static {
     fn iteration<S: JacobianSource<N, Z>, const Z: usize>() -> Self::Iteration;
     /// `L` rows, each `fill`.
     fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Self::Rows<T, L>;
+    /// `value`, held as this storage holds a run's workspace.
+    fn hold<T: 'static>(value: T) -> Self::Held<T>;
 }
 
 /// An N×N matrix as a storage keeps it. Used in [`Storage`]'s example.

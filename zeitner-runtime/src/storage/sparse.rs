@@ -33,6 +33,7 @@ impl<const N: usize> Storage<N> for Sparse {
     type Derivatives = SparseDerivatives;
     type Iteration = SparseIteration;
     type Rows<T: Copy + 'static, const L: usize> = Box<[T]>;
+    type Held<T: 'static> = Box<T>;
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<SparseDerivatives, StepError>
     {
@@ -51,6 +52,10 @@ impl<const N: usize> Storage<N> for Sparse {
 
     fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Box<[T]> {
         vec![fill; L].into_boxed_slice()
+    }
+
+    fn hold<T: 'static>(value: T) -> Box<T> {
+        Box::new(value)
     }
 }
 
