@@ -253,8 +253,8 @@ pub(crate) fn consistent_point<S: ConstrainedSystem<N, Z>, const N: usize, const
 }
 
 /// The accelerations and multipliers of [`consistent_point`] at an explicit method's stage,
-/// written into the stage loop: a small scene's point, returned through memory and read back at
-/// once, stalled the loop on the store.
+/// written into the stage loop (a small scene's point, returned through memory and read back at
+/// once, stalled the loop on the store), with only the results checked unless one fails.
 #[inline(always)]
 pub(crate) fn stage_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -262,6 +262,9 @@ pub(crate) fn stage_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, con
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Vector<N>, Vector<Z>), StepError> {
+    if let Some(found) = model.index1_unchecked(&q, &v, t)? {
+        return Ok(found);
+    }
     let directions = directions_at(model, t, &q, &v)?;
     let (point, _) = point_with(model, (t, q, v), directions)?;
     Ok((point.a, point.lambda))

@@ -68,7 +68,7 @@ pub fn solve_spd<const Z: usize, const C: usize>(
 /// `a x = b` by `L D Lᵀ` without pivoting; `None` where a pivot is not positive or falls below
 /// [`RELATIVE_PIVOT`] of the largest.
 #[inline]
-fn ldl_solve<const Z: usize, const C: usize>(
+pub(crate) fn ldl_solve<const Z: usize, const C: usize>(
     a: &Matrix<Z, Z>,
     b: &Matrix<Z, C>,
 ) -> Option<Matrix<Z, C>> {

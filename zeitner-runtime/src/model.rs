@@ -3,7 +3,7 @@
 
 use crate::error::{ModelFunction, StepError};
 use crate::gaps::GapSet;
-use crate::linalg::{all_finite, finite};
+use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
 use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
@@ -385,6 +385,42 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             m_inv_gt,
             open: self.open,
         })
+    }
+
+    /// `(a, λ)` of the acceleration-level system `G M⁻¹Gᵀ λ = G M⁻¹F + b`, `a = M⁻¹(F - Gᵀλ)`,
+    /// with only the results checked, in the operations and order of
+    /// [`crate::consistency::consistent_point`] (the same roundings). `F`, `G`, `b` each enter
+    /// `a` or `λ`, so finite results vouch for them; `None` where a result is not finite or
+    /// `G M⁻¹Gᵀ` not positive definite, and the caller evaluates again with every check, to
+    /// name what failed. Where gaps can mask rows of `G`, `G` is checked before the mask.
+    #[inline(always)]
+    pub fn index1_unchecked(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> Result<Option<(Vector<N>, Vector<Z>)>, StepError> {
+        let factor = self.mass_factor(q, t)?;
+        self.evaluations.constraint_jacobians += 1;
+        self.evaluations.forces += 1;
+        self.evaluations.acceleration_biases += 1;
+        let unmasked = self.system.constraint_jacobian(q, v, t);
+        if S::UNILATERAL_CONSTRAINTS > 0 && !all_finite(unmasked.as_slice()) {
+            return Ok(None);
+        }
+        let jacobian = self.mask(unmasked);
+        let m_inv_gt = factor.solve(&jacobian.transpose());
+        let force = self.system.applied_force(q, v, t);
+        let m_inv_f = factor.solve(&force);
+        let bias = self.mask(self.system.constraint_acceleration_bias(q, v, t));
+        let rhs = jacobian * m_inv_f + bias;
+        let mut gram = jacobian * m_inv_gt;
+        self.open.regularise(&mut gram);
+        let Some(lambda) = ldl_solve(&gram, &rhs) else {
+            return Ok(None);
+        };
+        let a = m_inv_f - m_inv_gt * lambda;
+        Ok((all_finite(a.as_slice()) & all_finite(lambda.as_slice())).then_some((a, lambda)))
     }
 
     /// `a = M⁻¹(F - Gᵀλ)` with `λ` fixed.
