@@ -262,8 +262,11 @@ pub(crate) fn stage_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, con
     q: Vector<N>,
     v: Vector<N>,
 ) -> Result<(Vector<N>, Vector<Z>), StepError> {
-    if let Some(found) = model.index1_unchecked(&q, &v, t)? {
-        return Ok(found);
+    // The model is never evaluated at a state that is not finite (the checked path names it).
+    if all_finite(q.as_slice()) & all_finite(v.as_slice()) {
+        if let Some(found) = model.index1_unchecked(&q, &v, t)? {
+            return Ok(found);
+        }
     }
     let directions = directions_at(model, t, &q, &v)?;
     let (point, _) = point_with(model, (t, q, v), directions)?;

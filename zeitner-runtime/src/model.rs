@@ -388,7 +388,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// `(a, λ)` of the acceleration-level system `G M⁻¹Gᵀ λ = G M⁻¹F + b`, `a = M⁻¹(F - Gᵀλ)`,
-    /// with only the results checked, in the operations and order of
+    /// at a finite state, with only the results checked, in the operations and order of
     /// [`crate::consistency::consistent_point`] (the same roundings). `F`, `G`, `b` each enter
     /// `a` or `λ`, so finite results vouch for them; `None` where a result is not finite or
     /// `G M⁻¹Gᵀ` not positive definite, and the caller evaluates again with every check, to
