@@ -392,7 +392,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// [`crate::consistency::consistent_point`] (the same roundings). `F`, `G`, `b` each enter
     /// `a` or `λ`, so finite results vouch for them; `None` where a result is not finite or
     /// `G M⁻¹Gᵀ` not positive definite, and the caller evaluates again with every check, to
-    /// name what failed. Where gaps can mask rows of `G`, `G` is checked before the mask.
+    /// name what failed. Where gaps can mask rows, `G` and `b` are checked before the mask.
     #[inline(always)]
     pub fn index1_unchecked(
         &mut self,
@@ -412,7 +412,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let m_inv_gt = factor.solve(&jacobian.transpose());
         let force = self.system.applied_force(q, v, t);
         let m_inv_f = factor.solve(&force);
-        let bias = self.mask(self.system.constraint_acceleration_bias(q, v, t));
+        let unmasked_bias = self.system.constraint_acceleration_bias(q, v, t);
+        if S::UNILATERAL_CONSTRAINTS > 0 && !all_finite(unmasked_bias.as_slice()) {
+            return Ok(None);
+        }
+        let bias = self.mask(unmasked_bias);
         let rhs = jacobian * m_inv_f + bias;
         let mut gram = jacobian * m_inv_gt;
         self.open.regularise(&mut gram);
