@@ -3,7 +3,7 @@
 //! when the state is re-initialised.
 
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{all_finite, keep_leading_rows, max_abs, solve_spd};
+use crate::linalg::{all_finite, finite_state, keep_leading_rows, max_abs, solve_spd};
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model};
 use crate::options::StartPolicy;
@@ -91,7 +91,7 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
     tolerance: Float,
     policy: StartPolicy,
 ) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
-    if !(all_finite(q0.as_slice()) & all_finite(v0.as_slice())) {
+    if !finite_state(&q0, &v0) {
         return Err(StepError::non_finite_state(t0));
     }
     if policy == StartPolicy::Refuse {
@@ -263,7 +263,7 @@ pub(crate) fn stage_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, con
     v: Vector<N>,
 ) -> Result<(Vector<N>, Vector<Z>), StepError> {
     // The model is never evaluated at a state that is not finite (the checked path names it).
-    if all_finite(q.as_slice()) & all_finite(v.as_slice()) {
+    if finite_state(&q, &v) {
         if let Some(found) = model.index1_unchecked(&q, &v, t)? {
             return Ok(found);
         }
@@ -321,7 +321,7 @@ fn directions_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     q: &Vector<N>,
     v: &Vector<N>,
 ) -> Result<ConstraintDirections<FactorOf<S, N, Z>, N, Z>, StepError> {
-    if !(all_finite(q.as_slice()) & all_finite(v.as_slice())) {
+    if !finite_state(q, v) {
         return Err(StepError::non_finite_state(t));
     }
     model.directions(q, v, t)

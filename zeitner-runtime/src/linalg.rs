@@ -13,6 +13,12 @@ pub fn all_finite(values: &[Float]) -> bool {
     values.iter().fold(true, |finite, x| finite & x.is_finite())
 }
 
+/// Whether a state `(q, q')` is finite.
+#[inline(always)]
+pub fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
+    all_finite(q.as_slice()) & all_finite(v.as_slice())
+}
+
 /// Pivots below this fraction of the largest diagonal entry count as lost rank (a condition
 /// number of about 1e12 for the symmetric systems `G M⁻¹ Gᵀ`).
 const RELATIVE_PIVOT: Float = crate::scalar::floors::RELATIVE_PIVOT;

@@ -4,7 +4,7 @@
 
 use crate::control::error_norm;
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{all_finite, dependent_rows, max_abs, solve_blocks};
+use crate::linalg::{dependent_rows, finite_state, max_abs, solve_blocks};
 use crate::mass::MassFactor;
 use crate::method::{Method, Start, StepEnd};
 use crate::model::Model;
@@ -497,10 +497,6 @@ fn failed<const N: usize, const Z: usize, const K: usize>(
         cause,
         integrations,
     }
-}
-
-fn finite_state<const N: usize>(q: &Vector<N>, v: &Vector<N>) -> bool {
-    all_finite(q.as_slice()) & all_finite(v.as_slice())
 }
 
 fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(

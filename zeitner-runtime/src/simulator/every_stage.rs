@@ -8,7 +8,7 @@ use super::Simulator;
 use crate::consistency::project_positions;
 use crate::control::newton_tolerance;
 use crate::error::{InvalidOption, StepError};
-use crate::linalg::all_finite;
+use crate::linalg::finite_state;
 use crate::method::Method;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
@@ -42,7 +42,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             Ok(Attempt::Rejected { factor, cause })
         };
         let mut end = match integrated {
-            Ok(end) if all_finite(end.q.as_slice()) & all_finite(end.v.as_slice()) => end,
+            Ok(end) if finite_state(&end.q, &end.v) => end,
             Ok(_) => return reject(StepError::non_finite_state(t_end)),
             Err(cause) if retried(&cause) => return reject(cause),
             Err(error) => return Err(error),

@@ -16,8 +16,8 @@ use crate::control::{
     Progress, LARGEST_STEP,
 };
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
-use crate::linalg::finite;
 use crate::linalg::max_abs;
+use crate::linalg::{finite, finite_state};
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
 use crate::model::Evaluations;
 use crate::multipliers::{carried_share, Predictor};
@@ -155,7 +155,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
     /// The consistent start: positions and velocities projected in the mass metric, the
     /// multipliers of the acceleration-level system.
     fn start(&mut self, q0: Vector<N>, v0: Vector<N>, t: Float) -> Result<(), StepError> {
-        if !q0.iter().chain(v0.iter()).all(|x| x.is_finite()) {
+        if !finite_state(&q0, &v0) {
             return Err(StepError::non_finite_state(t));
         }
         let tolerance = self.options.constraint_tolerance;
