@@ -134,7 +134,10 @@ fn refuse_inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     Ok(())
 }
 
-/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric.
+/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric. Not
+/// inlined, nor [`project_velocities`]: the start's frame, live across the consistent point's
+/// evaluation, would hold their N×Z temporaries too.
+#[inline(never)]
 pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     mut q: Vector<N>,
@@ -216,6 +219,7 @@ fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// The start's velocities on the velocity-level constraint: Newton until `|w|` is a thousandth
 /// of the tolerance, and refused as `InconsistentStart` if it ends above the tolerance — down to
 /// what rounding of `G q'` allows, as the positions are refused in [`project_positions`].
+#[inline(never)]
 pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     q: &Vector<N>,

@@ -6,7 +6,7 @@ use crate::control::error_norm;
 use crate::error::{Row, RowSet, StepError};
 use crate::linalg::{dependent_rows, finite_state, max_abs, solve_blocks};
 use crate::mass::MassFactor;
-use crate::method::{Method, Start, StepEnd};
+use crate::method::{EndSensitivity, Method, Start, StepEnd};
 use crate::model::Model;
 use crate::options::StepControl;
 use crate::polynomial::{Multipliers, StepPolynomial};
@@ -169,7 +169,7 @@ const LINEARISATION_SHARE: Float = 0.1;
 /// How the Newton on one step ended, short of an error that no smaller step can cure.
 pub(crate) enum NewtonOutcome<const N: usize, const Z: usize, const K: usize> {
     Converged {
-        end: StepEnd<N, Z, K>,
+        end: StepEnd<N>,
         multipliers: Multipliers<Z, K>,
         /// Integrations of the step, the first one included.
         integrations: u32,
@@ -274,12 +274,13 @@ const LINEAR_CORRECTIONS: u32 = 2;
 /// Newton on the coefficients of `multipliers` until the end conditions hold at `start.t + h`.
 /// Each correction aims the conditions at `targets` (zero, but on a step much shorter than
 /// planned most of the way back to where they started, see [`short_step_targets`]); the step
-/// is done once they hold within the tolerances.
+/// is done once they hold within the tolerances. `sensitivity` is the workspace of the step
+/// end's sensitivity to the coefficients (the exact one, or the paper's estimate).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    method: &mut M,
-    start: &Start<N, Z, K>,
+    (method, sensitivity): (&mut M, &mut EndSensitivity<N, Z>),
+    start: &Start<N>,
     h: Float,
     t_end: Float,
     (mut multipliers, targets): (Multipliers<Z, K>, &[Vector<Z>; K]),
@@ -289,15 +290,14 @@ where
     S: ConstrainedSystem<N, Z>,
     M: Method<N, Z, S::Storage>,
 {
-    let paper = if settings.exact {
-        None
-    } else {
-        Some(paper_sensitivity(model, start, h, &multipliers)?)
-    };
+    if !settings.exact {
+        paper_sensitivity(model, start, h, &multipliers, sensitivity)?;
+    }
     let mut worst = (Float::INFINITY, 0);
     let mut progress = NewtonProgress::default();
     for iteration in 1..=settings.max_iterations {
-        let end = match method.integrate(model, start, h, &multipliers, settings.exact) {
+        let exact = settings.exact.then_some(&mut *sensitivity);
+        let mut end = match method.integrate(model, start, h, &multipliers, exact) {
             Ok(end) if finite_state(&end.q, &end.v) => end,
             Ok(_) => return Ok(failed(StepError::non_finite_state(t_end), iteration)),
             Err(cause @ (StepError::NonFinite { .. } | StepError::StageDidNotConverge { .. })) => {
@@ -315,19 +315,17 @@ where
             let cause = not_converged::<S, N, Z>(start.t, h, iteration, worst);
             return Ok(failed(cause, iteration));
         }
-        // Borrowed, not copied: 4K N×Z blocks, megabytes at a thousand coordinates.
-        let sensitivities = match &paper {
-            Some((dq_dc, dv_dc)) => (dq_dc, dv_dc),
-            None => (&end.dq_dc, &end.dv_dc),
-        };
         let linear = LinearStep {
             end: &end,
-            sensitivities,
+            sensitivity: &*sensitivity,
         };
         let span = (start, t_end);
         let aim = (conditions, targets);
         match linear.correct(model, settings, span, &mut multipliers, aim)? {
-            Correction::Accepted(updated) => return Ok(converged(updated, multipliers, iteration)),
+            Correction::Accepted { q, v } => {
+                (end.q, end.v) = (q, v);
+                return Ok(converged(end, multipliers, iteration));
+            }
             Correction::Singular => return singular(model, start, h, iteration, worst),
             Correction::IntegrateAgain => {}
         }
@@ -371,33 +369,41 @@ impl NewtonProgress {
 
 /// One integration's end and its sensitivity to the coefficients: the step map linearised,
 /// `x(c) ≈ x(c₀) + Q (c - c₀)`.
-struct LinearStep<'a, const N: usize, const Z: usize, const K: usize> {
-    end: &'a StepEnd<N, Z, K>,
-    sensitivities: SensitivitiesRef<'a, N, Z, K>,
+struct LinearStep<'a, const N: usize, const Z: usize> {
+    end: &'a StepEnd<N>,
+    sensitivity: &'a EndSensitivity<N, Z>,
 }
 
 /// What Newton through the linearised step map came to.
-enum Correction<const N: usize, const Z: usize, const K: usize> {
-    /// The linearly corrected end meets the end conditions and may stand for the integration.
-    Accepted(StepEnd<N, Z, K>),
+enum Correction<const N: usize> {
+    /// The linearly corrected end state meets the end conditions and may stand for the
+    /// integration's.
+    Accepted {
+        q: Vector<N>,
+        v: Vector<N>,
+    },
     /// The coefficients are corrected; the step is to be integrated with them.
     IntegrateAgain,
     Singular,
 }
 
-impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
+impl<const N: usize, const Z: usize> LinearStep<'_, N, Z> {
     /// Corrects `multipliers` by Newton on the end conditions through the linearised step map:
     /// at most [`LINEAR_CORRECTIONS`] times with the exact sensitivity and linearised updates
     /// accepted, once otherwise.
-    fn correct<S: ConstrainedSystem<N, Z>>(
+    // Not inlined, nor `paper_sensitivity`: the Newton's frame, live across every
+    // integration, would hold their N×Z temporaries (hundreds of kilobytes at a thousand
+    // coordinates) beside the method's.
+    #[inline(never)]
+    fn correct<S: ConstrainedSystem<N, Z>, const K: usize>(
         &self,
         model: &mut Model<'_, S, N, Z>,
         settings: &NewtonSettings,
-        (start, t_end): (&Start<N, Z, K>, Float),
+        (start, t_end): (&Start<N>, Float),
         multipliers: &mut Multipliers<Z, K>,
         (mut conditions, targets): (Conditions<Z, K>, &[Vector<Z>; K]),
-    ) -> Result<Correction<N, Z, K>, StepError> {
-        let (dq_dc, dv_dc) = self.sensitivities;
+    ) -> Result<Correction<N>, StepError> {
+        let EndSensitivity { dq_dc, dv_dc } = self.sensitivity;
         let linear_updates = settings.exact && settings.accept_linearised;
         let corrections = if linear_updates {
             LINEAR_CORRECTIONS
@@ -408,7 +414,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
         let mut total = [Vector::<Z>::zeros(); K];
         for _ in 0..corrections {
             let at = (&q, &v, t_end);
-            let (blocks, dg_dq) = linearise(model, at, (dq_dc, dv_dc), multipliers)?;
+            let (blocks, dg_dq) = linearise(model, at, self.sensitivity, multipliers)?;
             let miss = core::array::from_fn(|k| targets[k] - conditions.values[k]);
             let Some(delta) = solve_blocks(&blocks, &miss) else {
                 return Ok(Correction::Singular);
@@ -434,8 +440,7 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
             }
             conditions = Conditions::<Z, K>::at(model, (&q, &v, t_end), &multipliers.at(1.0))?;
             if conditions.hold(settings, t_end - start.t, targets) {
-                let updated = StepEnd { q, v, ..*self.end };
-                return Ok(Correction::Accepted(updated));
+                return Ok(Correction::Accepted { q, v });
             }
         }
         Ok(Correction::IntegrateAgain)
@@ -450,10 +455,10 @@ impl<const N: usize, const Z: usize, const K: usize> LinearStep<'_, N, Z, K> {
 /// unchecked, a double pendulum's energy drifted more at tighter tolerances. Adaptive steps:
 /// at most a tenth of the error tolerance; fixed steps: it may move the constraints (by up to
 /// the largest row norm of `∂g/∂q`, per unit of position) by `ε` at most.
-fn linearisation_is_negligible<S, const N: usize, const Z: usize, const K: usize>(
+fn linearisation_is_negligible<S, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     settings: &NewtonSettings,
-    (start, q, v, t_end): (&Start<N, Z, K>, &Vector<N>, &Vector<N>, Float),
+    (start, q, v, t_end): (&Start<N>, &Vector<N>, &Vector<N>, Float),
     (dq, dp, dg_dq): (Vector<N>, Vector<Z>, &Matrix<Z, N>),
 ) -> Result<bool, StepError>
 where
@@ -478,7 +483,7 @@ where
 }
 
 fn converged<const N: usize, const Z: usize, const K: usize>(
-    end: StepEnd<N, Z, K>,
+    end: StepEnd<N>,
     multipliers: Multipliers<Z, K>,
     integrations: u32,
 ) -> NewtonOutcome<N, Z, K> {
@@ -525,7 +530,7 @@ fn not_converged<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// `StepSizeTooSmall`'s diagnosis of vanishing gradients.
 fn singular<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    start: &Start<N, Z, K>,
+    start: &Start<N>,
     h: Float,
     iteration: u32,
     worst: (Float, usize),
@@ -545,28 +550,27 @@ where
     Ok(failed(cause, iteration))
 }
 
-type Sensitivities<const N: usize, const Z: usize, const K: usize> =
-    ([Matrix<N, Z>; K], [Matrix<N, Z>; K]);
-type SensitivitiesRef<'a, const N: usize, const Z: usize, const K: usize> =
-    (&'a [Matrix<N, Z>; K], &'a [Matrix<N, Z>; K]);
-
-/// The paper's estimate (eq. 7), generalised to a coefficient of `s^m`: with `B = -M⁻¹Gᵀ` frozen
-/// at the step start, `∂q/∂c = τ²/((m+1)(m+2)) B` and `∂q'/∂c = τ/(m+1) B` (for `m = 0` the
-/// paper's `τ²/2` and `τ`).
+/// The paper's estimate (eq. 7), generalised to a coefficient of `s^m`, written into
+/// `sensitivity`: with `B = -M⁻¹Gᵀ` frozen at the step start, `∂q/∂c = τ²/((m+1)(m+2)) B` and
+/// `∂q'/∂c = τ/(m+1) B` (for `m = 0` the paper's `τ²/2` and `τ`).
+#[inline(never)]
 fn paper_sensitivity<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
-    start: &Start<N, Z, K>,
+    start: &Start<N>,
     h: Float,
     multipliers: &Multipliers<Z, K>,
-) -> Result<Sensitivities<N, Z, K>, StepError>
+    sensitivity: &mut EndSensitivity<N, Z>,
+) -> Result<(), StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
     let b = -model.directions(&start.q, &start.v, start.t)?.m_inv_gt;
     let power = |k: usize| (multipliers.first_power + k as i32) as Float;
-    let dq = core::array::from_fn(|k| (h * h / ((power(k) + 1.0) * (power(k) + 2.0))) * b);
-    let dv = core::array::from_fn(|k| (h / (power(k) + 1.0)) * b);
-    Ok((dq, dv))
+    for k in 0..K {
+        sensitivity.dq_dc[k] = (h * h / ((power(k) + 1.0) * (power(k) + 2.0))) * b;
+        sensitivity.dv_dc[k] = (h / (power(k) + 1.0)) * b;
+    }
+    Ok(())
 }
 
 /// The Newton matrix: the end conditions' derivatives by the coefficients, block `(l, k)` for
@@ -579,7 +583,7 @@ where
 fn linearise<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t_end): (&Vector<N>, &Vector<N>, Float),
-    (dq_dc, dv_dc): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
+    EndSensitivity { dq_dc, dv_dc }: &EndSensitivity<N, Z>,
     multipliers: &Multipliers<Z, K>,
 ) -> Result<([[Matrix<Z, Z>; K]; K], Matrix<Z, N>), StepError>
 where
@@ -727,7 +731,7 @@ mod tests {
                 crate::options::MultiplierModel::Constant,
                 StepControl::Fixed { step: 0.01 },
             );
-        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let start = Start { q, v, t: 0.0 };
         let guess = Multipliers {
             base: Vector::zeros(),
             coefficients: [Vector::from([0.0])],
@@ -744,7 +748,9 @@ mod tests {
         };
         let h = 0.02;
         let aim = (guess, &[Vector::zeros()]);
-        match solve(&mut model, &mut method, &start, h, h, aim, &settings).unwrap() {
+        let mut sensitivity = EndSensitivity::zeros();
+        let workspace = (&mut method, &mut sensitivity);
+        match solve(&mut model, workspace, &start, h, h, aim, &settings).unwrap() {
             NewtonOutcome::Converged {
                 end, integrations, ..
             } => (model.residual(&end.q, &end.v, h).unwrap()[0], integrations),

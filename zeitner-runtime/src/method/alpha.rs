@@ -15,7 +15,7 @@
 //! converges fast, as the DIRK engine keeps its own.
 
 use super::dirk::{serves_step, SLOW_STAGE, STAGE_ITERATIONS};
-use super::{Method, Start, StepEnd};
+use super::{EndSensitivity, Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
@@ -163,12 +163,14 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
     fn integrate<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        start: &Start<N, Z, K>,
+        start: &Start<N>,
         h: Float,
         multipliers: &Multipliers<Z, K>,
-        sensitivity: bool,
-    ) -> Result<StepEnd<N, Z, K>, StepError> {
-        let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
+        mut sensitivity: Option<&mut EndSensitivity<N, Z>>,
+    ) -> Result<StepEnd<N>, StepError> {
+        if !cfg!(feature = "exact-sensitivity") {
+            sensitivity = None;
+        }
         self.candidate = None;
         let p = self.parameters;
         let lambda_start = multipliers.at(0.0);
@@ -189,24 +191,16 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
             step: h,
         };
         let abar = self.solve(model, &known, abar0, h)?.ok_or(stall)?;
-        let mut end = StepEnd {
+        let end = StepEnd {
             q: known.q + known.hhb * abar,
             v: known.v + known.hg * abar,
-            dq_dc: start.dq_dc,
-            dv_dc: start.dv_dc,
             error: None,
             error_low: None,
             stiffness: None,
         };
-        if sensitivity {
-            let da0 = start_sensitivity(model, start, multipliers, (&lambda_start, &at_start))?;
-            // `ā₀` is a value of the steps before unless it is `a₀` itself.
-            let dabar0 = if self.committed.is_some() {
-                [Matrix::zeros(); K]
-            } else {
-                da0
-            };
-            self.end_sensitivity(model, &mut end, (start, h), multipliers, (&da0, &dabar0))
+        if let Some(end_sensitivity) = sensitivity {
+            let ends = (&at_start, &end, end_sensitivity);
+            self.end_sensitivity(model, ends, (start.t + h, h), multipliers)
                 .ok_or(stall)??;
         }
         self.candidate = Some(Candidate {
@@ -287,11 +281,12 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         None
     }
 
-    /// `∂(q₁, v₁)/∂c_k` from the derivative of the converged equation for `ā₁`, with a fresh
-    /// Jacobian and factorisation at the step end (which then serves as the next iteration
-    /// matrix). `da0`, `dabar0`: the sensitivities of `a₀` and `ā₀`. `None` when the matrix is
-    /// singular.
+    /// `∂(q₁, v₁)/∂c_k` from the derivative of the converged equation for `ā₁` (the start's
+    /// is zero), with a fresh Jacobian and factorisation at the step end `t` (which then serves
+    /// as the next iteration matrix). `None` when the matrix is singular.
+    // Not inlined: the step's frame, live across the solve, would hold its N×Z temporaries.
     #[allow(clippy::type_complexity)]
+    #[inline(never)]
     fn end_sensitivity<
         Sys: ConstrainedSystem<N, Z, Storage = D>,
         const Z: usize,
@@ -299,13 +294,26 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     >(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        end: &mut StepEnd<N, Z, K>,
-        (start, h): (&Start<N, Z, K>, Float),
+        (at_start, end, sensitivity): StepEnds<'_, FactorOf<Sys, N, Z>, N, Z>,
+        (t, h): (Float, Float),
         multipliers: &Multipliers<Z, K>,
-        (da0, dabar0): (&[Matrix<N, Z>; K], &[Matrix<N, Z>; K]),
     ) -> Option<Result<(), StepError>> {
         let p = self.parameters;
-        let (t, lambda) = (start.t + h, multipliers.at(1.0));
+        // `∂a₀/∂c_k` of the start's acceleration `a₀ = a(q₀, v₀, t₀, λ(t₀))`, through `λ(t₀)`
+        // where the multipliers' value there depends on the coefficients (constant ones), with
+        // `∂a/∂λ = -M⁻¹Gᵀ` from what the acceleration has already; the start state itself does
+        // not depend on them.
+        let weight = |k: usize| multipliers.weight(k, 0.0);
+        let da0_dp = (0..K)
+            .any(|k| weight(k) != 0.0)
+            .then(|| -at_start.factor.solve(&at_start.jacobian.transpose()));
+        let da0 = |k: usize| match &da0_dp {
+            Some(dp) => weight(k) * dp,
+            None => Matrix::<N, Z>::zeros(),
+        };
+        // `ā₀` is a value of the steps before unless it is `a₀` itself.
+        let committed = self.committed.is_some();
+        let lambda = multipliers.at(1.0);
         let at = match model.acceleration(&end.q, &end.v, t, &lambda) {
             Ok(at) => at,
             Err(error) => return Some(Err(error)),
@@ -319,47 +327,24 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         }
         let (hg, hhb) = (h * p.gamma, h * h * p.beta);
         for k in 0..K {
-            let (dq0, dv0) = (start.dq_dc[k], start.dv_dc[k]);
-            let dq_known = dq0 + h * dv0 + (h * h * (0.5 - p.beta)) * dabar0[k];
-            let dv_known = dv0 + (h * (1.0 - p.gamma)) * dabar0[k];
+            let da0 = da0(k);
+            let dabar0 = if committed { Matrix::zeros() } else { da0 };
+            let dq_known = (h * h * (0.5 - p.beta)) * dabar0;
+            let dv_known = (h * (1.0 - p.gamma)) * dabar0;
             let w = multipliers.weight(k, 1.0);
             let forced = jac.dq.times(&dq_known) + jac.dv.times(&dv_known) + w * jac.dp;
-            let rhs = (1.0 - p.alpha_f) * forced + p.alpha_f * da0[k] - p.alpha_m * dabar0[k];
+            let rhs = (1.0 - p.alpha_f) * forced + p.alpha_f * da0 - p.alpha_m * dabar0;
             let dabar = self.iteration.solve(&rhs);
-            end.dq_dc[k] = dq_known + hhb * dabar;
-            end.dv_dc[k] = dv_known + hg * dabar;
+            sensitivity.dq_dc[k] = dq_known + hhb * dabar;
+            sensitivity.dv_dc[k] = dv_known + hg * dabar;
         }
         Some(Ok(()))
     }
 }
 
-/// `∂a₀/∂c_k` of the start's acceleration `a₀ = a(q₀, v₀, t₀, λ(t₀))`: through `λ(t₀)` when
-/// the multipliers' value there depends on the coefficients (constant ones), and through the
-/// start's own sensitivity when it has one.
-#[allow(clippy::type_complexity)]
-fn start_sensitivity<
-    Sys: ConstrainedSystem<N, Z>,
-    const N: usize,
-    const Z: usize,
-    const K: usize,
->(
-    model: &mut Model<'_, Sys, N, Z>,
-    start: &Start<N, Z, K>,
-    multipliers: &Multipliers<Z, K>,
-    (lambda, at): (&Vector<Z>, &Acceleration<FactorOf<Sys, N, Z>, N, Z>),
-) -> Result<[Matrix<N, Z>; K], StepError> {
-    let depends = |m: &[Matrix<N, Z>; K]| m.iter().any(|m| m.iter().any(|&x| x != 0.0));
-    let weight = |k: usize| multipliers.weight(k, 0.0);
-    if depends(&start.dq_dc) || depends(&start.dv_dc) {
-        let jac = model.acceleration_jacobians(&start.q, &start.v, start.t, lambda, at)?;
-        return Ok(core::array::from_fn(|k| {
-            jac.dq.times(&start.dq_dc[k]) + jac.dv.times(&start.dv_dc[k]) + weight(k) * jac.dp
-        }));
-    }
-    if (0..K).all(|k| weight(k) == 0.0) {
-        return Ok([Matrix::zeros(); K]);
-    }
-    // `∂a/∂λ = -M⁻¹Gᵀ` from what the acceleration has already: no Jacobian needed.
-    let dp: Matrix<N, Z> = -at.factor.solve(&at.jacobian.transpose());
-    Ok(core::array::from_fn(|k| weight(k) * dp))
-}
+/// The start's acceleration, the end and the workspace of the end's sensitivity.
+type StepEnds<'a, F, const N: usize, const Z: usize> = (
+    &'a Acceleration<F, N, Z>,
+    &'a StepEnd<N>,
+    &'a mut EndSensitivity<N, Z>,
+);

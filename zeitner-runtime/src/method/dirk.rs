@@ -11,7 +11,7 @@ use crate::scalar::floors::{STAGE_CONVERGED, STAGE_STALLED};
 use crate::scalar::{Float, Lm};
 use core::marker::PhantomData;
 
-use super::{Blocks, Method, Start, StepEnd, MAX_COEFFICIENTS};
+use super::{Blocks, EndSensitivity, Method, Start, StepEnd, MAX_COEFFICIENTS};
 use crate::error::StepError;
 use crate::model::{Acceleration, FactorOf, Model, SquareOf};
 use crate::options::StepControl;
@@ -303,13 +303,17 @@ pub(crate) struct Dirk<T, const S: usize, const N: usize, const Z: usize, D: Sto
     factorizations: u64,
     /// Each stage's sensitivities, written and read within one step.
     sensitivities: D::Rows<StageSensitivity<N, Z>, S>,
+    /// The stages' states and accelerations, written and read within one step: kept here, on
+    /// the heap with the sparse storage, where a thousand coordinates would put a few hundred
+    /// kilobytes on the stack.
+    stages: Stages<S, N, D>,
 }
 
 /// The stages' positions, velocities and accelerations.
-struct Stages<const S: usize, const N: usize> {
-    q: [Vector<N>; S],
-    v: [Vector<N>; S],
-    a: [Vector<N>; S],
+struct Stages<const S: usize, const N: usize, D: Storage<N>> {
+    q: D::Rows<Vector<N>, S>,
+    v: D::Rows<Vector<N>, S>,
+    a: D::Rows<Vector<N>, S>,
 }
 
 /// The sensitivities of one stage's position, velocity and acceleration to the multipliers'
@@ -339,6 +343,11 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
                 dv: zero,
                 da: zero,
             }),
+            stages: Stages {
+                q: D::rows(Vector::zeros()),
+                v: D::rows(Vector::zeros()),
+                a: D::rows(Vector::zeros()),
+            },
         }
     }
 
@@ -387,18 +396,18 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     fn integrate<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        start: &Start<N, Z, K>,
+        start: &Start<N>,
         h: Float,
         multipliers: &Multipliers<Z, K>,
-        sensitivity: bool,
-    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        mut sensitivity: Option<&mut EndSensitivity<N, Z>>,
+    ) -> Result<StepEnd<N>, StepError> {
         const { assert!(K <= MAX_COEFFICIENTS) };
-        let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
-        let mut stages = Stages {
-            q: [start.q; S],
-            v: [start.v; S],
-            a: [Vector::zeros(); S],
-        };
+        if !cfg!(feature = "exact-sensitivity") {
+            sensitivity = None;
+        }
+        self.stages.q.as_mut().fill(start.q);
+        self.stages.v.as_mut().fill(start.v);
+        self.stages.a.as_mut().fill(Vector::zeros());
         let stall = || StepError::StageDidNotConverge {
             t: start.t,
             step: h,
@@ -410,17 +419,24 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
                 // The explicit first stage is the step start.
                 model.acceleration(&start.q, &start.v, t, &lambda)?
             } else {
-                self.implicit_stage(model, start, &mut stages, i, h, &lambda)?
+                self.implicit_stage(model, start, i, h, &lambda)?
                     .ok_or_else(stall)?
             };
-            stages.a[i] = acceleration.a;
-            if sensitivity {
+            self.stages.a.as_mut()[i] = acceleration.a;
+            if sensitivity.is_some() {
                 let lambdas = (multipliers, &lambda);
-                self.stage_sensitivity(model, (start, &stages), (i, t, h), lambdas, &acceleration)
+                self.stage_sensitivity(model, (i, t, h), lambdas, &acceleration)
                     .ok_or_else(stall)??;
             }
         }
-        Ok(self.end(&stages, h, start, sensitivity))
+        if let Some(end_sensitivity) = sensitivity {
+            let last = &self.sensitivities.as_ref()[S - 1];
+            for k in 0..K {
+                end_sensitivity.dq_dc[k] = last.dq[k];
+                end_sensitivity.dv_dc[k] = last.dv[k];
+            }
+        }
+        Ok(self.end(h))
     }
 }
 
@@ -431,20 +447,20 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
     #[inline]
-    fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
+    fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        start: &Start<N, Z, K>,
-        stages: &mut Stages<S, N>,
+        start: &Start<N>,
         i: usize,
         h: Float,
         lambda: &Vector<Z>,
     ) -> Result<Option<Acceleration<FactorOf<Sys, N, Z>, N, Z>>, StepError> {
         let (a, hg) = (&Self::TABLEAU.a, h * Self::TABLEAU.gamma);
         let (mut q_known, mut v_known) = (start.q, start.v);
+        let (stage_v, stage_a) = (self.stages.v.as_ref(), self.stages.a.as_ref());
         for j in 0..i {
-            q_known += (h * a[i][j]) * stages.v[j];
-            v_known += (h * a[i][j]) * stages.a[j];
+            q_known += (h * a[i][j]) * stage_v[j];
+            v_known += (h * a[i][j]) * stage_a[j];
         }
         let t = start.t + Self::TABLEAU.c(i) * h;
         // Guess: the stage's known part continued by the last stage's acceleration (off by
@@ -453,7 +469,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         let guess = if i == 0 {
             start.v + hg * model.acceleration(&start.q, &start.v, t, lambda)?.a
         } else {
-            v_known + hg * stages.a[i - 1]
+            v_known + hg * stage_a[i - 1]
         };
         // The kept matrix gets a few sweeps; a fresh one (formed at the guess) all of them, once.
         let mut kept = self.kept(h);
@@ -478,7 +494,8 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
                 (limit, self.tolerances),
             ) {
                 let (v, acceleration) = v?;
-                (stages.q[i], stages.v[i]) = (q_known + hg * v, v);
+                self.stages.q.as_mut()[i] = q_known + hg * v;
+                self.stages.v.as_mut()[i] = v;
                 return Ok(Some(acceleration));
             }
             if fresh {
@@ -488,21 +505,23 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     }
 
     /// The sensitivity of stage `i` to the multipliers' coefficients, from the derivative of
-    /// its converged equation `v = v_known + hγ a(q_known + hγ v, v)`: a fresh factorisation
-    /// there, which then serves as the next iteration matrix. `None` when it is singular.
+    /// its converged equation `v = v_known + hγ a(q_known + hγ v, v)` (the start's is zero): a
+    /// fresh factorisation there, which then serves as the next iteration matrix. `None` when
+    /// it is singular.
+    // Not inlined: the step's frame, live across the implicit stages' solves, would hold its
+    // N×Z temporaries too.
     #[allow(clippy::type_complexity)]
-    #[inline]
+    #[inline(never)]
     fn stage_sensitivity<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        (start, stages): (&Start<N, Z, K>, &Stages<S, N>),
         (i, t, h): (usize, Float, Float),
         (multipliers, lambda): (&Multipliers<Z, K>, &Vector<Z>),
         acceleration: &Acceleration<FactorOf<Sys, N, Z>, N, Z>,
     ) -> Option<Result<(), StepError>> {
         let (a, hg) = (&Self::TABLEAU.a, h * Self::TABLEAU.gamma);
         let c = Self::TABLEAU.c(i);
-        let (q, v) = (stages.q[i], stages.v[i]);
+        let (q, v) = (self.stages.q.as_ref()[i], self.stages.v.as_ref()[i]);
         let jac = match model.acceleration_jacobians(&q, &v, t, lambda, acceleration) {
             Ok(jac) => jac,
             Err(error) => return Some(Err(error)),
@@ -513,7 +532,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
         }
         let rows = self.sensitivities.as_mut();
         for k in 0..K {
-            let (mut dq, mut dv) = (start.dq_dc[k], start.dv_dc[k]);
+            let (mut dq, mut dv) = (Matrix::<N, Z>::zeros(), Matrix::<N, Z>::zeros());
             for j in 0..i {
                 dq += (h * a[i][j]) * rows[j].dv[k];
                 dv += (h * a[i][j]) * rows[j].da[k];
@@ -536,21 +555,16 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     /// Radau IIA (*Solving ODEs II*, IV.8): the embedded solution is not L-stable, so the raw
     /// difference keeps a stiff component's size however short the step, and the controller
     /// would shrink the step without end; filtered, it decays like the method's own solution.
-    /// Its sensitivities are the last stage's, or without `sensitivity` the start's.
-    fn end<const K: usize>(
-        &self,
-        stages: &Stages<S, N>,
-        h: Float,
-        start: &Start<N, Z, K>,
-        sensitivity: bool,
-    ) -> StepEnd<N, Z, K> {
+    fn end(&self, h: Float) -> StepEnd<N> {
+        let stages = &self.stages;
+        let (stage_q, stage_v, stage_a) = (stages.q.as_ref(), stages.v.as_ref(), stages.a.as_ref());
         let last = S - 1;
         let error = Self::TABLEAU.embedded.map(|embedded| {
             let (mut eq, mut ev) = (Vector::<N>::zeros(), Vector::<N>::zeros());
             for j in 0..S {
                 let e = h * (Self::TABLEAU.a[last][j] - embedded[j]);
-                eq += e * stages.v[j];
-                ev += e * stages.a[j];
+                eq += e * stage_v[j];
+                ev += e * stage_a[j];
             }
             if self.formed_for.is_none() {
                 return (eq, ev);
@@ -562,20 +576,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
                 .solve(&(ev + hg * self.iteration.formed_dq_times(&eq)));
             (eq + hg * y, y)
         });
-        let (dq_dc, dv_dc) = if sensitivity {
-            let row = &self.sensitivities.as_ref()[last];
-            (
-                core::array::from_fn(|k| row.dq[k]),
-                core::array::from_fn(|k| row.dv[k]),
-            )
-        } else {
-            (start.dq_dc, start.dv_dc)
-        };
         StepEnd {
-            q: stages.q[last],
-            v: stages.v[last],
-            dq_dc,
-            dv_dc,
+            q: stage_q[last],
+            v: stage_v[last],
             error,
             error_low: None,
             stiffness: None,

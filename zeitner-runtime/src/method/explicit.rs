@@ -1,6 +1,6 @@
 //! Explicit Runge–Kutta methods as data: a tableau and one stage engine for all of them.
 
-use super::{Blocks, Method, Start, StepEnd, MAX_COEFFICIENTS};
+use super::{Blocks, EndSensitivity, Method, Start, StepEnd, MAX_COEFFICIENTS};
 use crate::consistency::stage_acceleration;
 use crate::error::StepError;
 use crate::model::Model;
@@ -256,11 +256,18 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
     fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: &Start<N, Z, K>,
+        start: &Start<N>,
         h: Float,
         multipliers: &Multipliers<Z, K>,
-        sensitivity: bool,
-    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        mut sensitivity: Option<&mut EndSensitivity<N, Z>>,
+    ) -> Result<StepEnd<N>, StepError> {
+        // Without the feature the sensitivity code is compiled out, not just skipped.
+        if !cfg!(feature = "exact-sensitivity") {
+            sensitivity = None;
+        }
+        if let Some(sensitivity) = sensitivity.as_deref_mut() {
+            sensitivity.clear();
+        }
         let share = 1.0 / self.substeps as Float;
         let hs = h * share;
         let workspace = self.sensitivities.as_mut();
@@ -271,15 +278,13 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
             hs,
             multipliers,
             (0.0, share),
-            (sensitivity, self.estimates_stiffness),
+            (sensitivity.as_deref_mut(), self.estimates_stiffness),
         )?;
         for k in 1..self.substeps {
             let at = Start {
                 t: start.t + k as Float * hs,
                 q: end.q,
                 v: end.v,
-                dq_dc: end.dq_dc,
-                dv_dc: end.dv_dc,
             };
             let s0 = k as Float * share;
             end = stages(
@@ -289,7 +294,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
                 hs,
                 multipliers,
                 (s0, share),
-                (sensitivity, self.estimates_stiffness),
+                (sensitivity.as_deref_mut(), self.estimates_stiffness),
             )?;
         }
         Ok(end)
@@ -301,7 +306,7 @@ impl<const N: usize, const Z: usize, const ST: usize, D: Storage<N>> Method<N, Z
         start: (Float, &Vector<N>, &Vector<N>),
         h: Float,
         first: Option<&Vector<N>>,
-    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+    ) -> Option<Result<StepEnd<N>, StepError>> {
         let mut slopes = ([Vector::zeros(); ST], [Vector::zeros(); ST]);
         Some(self.integrate_every_stage_into(model, start, h, first, &mut slopes))
     }
@@ -332,7 +337,7 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
         h: Float,
         first: Option<&Vector<N>>,
         slopes: &mut ([Vector<N>; ST], [Vector<N>; ST]),
-    ) -> Result<StepEnd<N, Z, 0>, StepError>
+    ) -> Result<StepEnd<N>, StepError>
     where
         S: ConstrainedSystem<N, Z>,
     {
@@ -360,68 +365,63 @@ impl<const ST: usize, const N: usize, const Z: usize, D: Storage<N>> Explicit<ST
 }
 
 /// One explicit Runge–Kutta step, propagating the sensitivity through every stage when
-/// `sensitivity` is set (the derivative of the discrete step map, so that Newton converges
-/// quadratically) in the stages' rows `dk`, which only this step reads. `s0` is where the
-/// (sub)step starts in the step's `s`, `span` its share; with `stiffness`, the step estimates
-/// `h|λ|` from the tableau's stiffness stages.
+/// `sensitivity` is given (the derivative of the discrete step map, so that Newton converges
+/// quadratically) in the stages' rows `dk`, which only this step reads; `sensitivity` holds
+/// the (sub)step start's and is left with its end's. `s0` is where the (sub)step starts in the
+/// step's `s`, `span` its share; with `stiffness`, the step estimates `h|λ|` from the tableau's
+/// stiffness stages.
 fn stages<S, const N: usize, const Z: usize, const ST: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     (tableau, dk): (&Tableau<ST>, &mut [SlopeSensitivity<N, Z>]),
-    start: &Start<N, Z, K>,
+    start: &Start<N>,
     h: Float,
     multipliers: &Multipliers<Z, K>,
     (s0, span): (Float, Float),
-    (sensitivity, stiffness): (bool, bool),
-) -> Result<StepEnd<N, Z, K>, StepError>
+    (sensitivity, stiffness): (Option<&mut EndSensitivity<N, Z>>, bool),
+) -> Result<StepEnd<N>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
     const { assert!(K <= MAX_COEFFICIENTS) };
-    // Without the feature the sensitivity code is compiled out, not just skipped.
-    let sensitivity = cfg!(feature = "exact-sensitivity") && sensitivity;
     let mut kq = [Vector::<N>::zeros(); ST];
     let mut kv = [Vector::<N>::zeros(); ST];
     for i in 0..ST {
         let (q, v) = stage_state(tableau, i, h, (&start.q, &start.v), (&kq, &kv));
-        let (mut dq, mut dv) = (start.dq_dc, start.dv_dc);
-        // Only stages written in this step are read: those whose slope enters.
-        for j in (0..i).filter(|&j| sensitivity && tableau.a[i][j] != 0.0) {
-            let w = h * tableau.a[i][j];
-            for k in 0..K {
-                dq[k] += w * dk[j].dq[k];
-                dv[k] += w * dk[j].dv[k];
-            }
-        }
         let t = start.t + tableau.c[i] * h;
         let s = s0 + tableau.c[i] * span;
         let lambda = multipliers.at(s);
         let acceleration = model.acceleration(&q, &v, t, &lambda)?;
         kq[i] = v;
         kv[i] = acceleration.a;
-        if sensitivity && tableau.slope_enters_solution(i) {
+        if let Some(from) = sensitivity
+            .as_deref()
+            .filter(|_| tableau.slope_enters_solution(i))
+        {
             let jac = model.acceleration_jacobians(&q, &v, t, &lambda, &acceleration)?;
             for k in 0..K {
-                dk[i].dq[k] = dv[k];
-                dk[i].dv[k] = jac.dq.times(&dq[k]) + multipliers.weight(k, s) * jac.dp;
+                let (mut dq, mut dv) = (from.dq_dc[k], from.dv_dc[k]);
+                // Only stages written in this step are read: those whose slope enters.
+                for &j in tableau.nonzeros.row(i) {
+                    let w = h * tableau.a[i][usize::from(j)];
+                    dq += w * dk[usize::from(j)].dq[k];
+                    dv += w * dk[usize::from(j)].dv[k];
+                }
+                dk[i].dq[k] = dv;
+                dk[i].dv[k] = jac.dq.times(&dq) + multipliers.weight(k, s) * jac.dp;
                 if S::DYNAMICS_DEPEND_ON_VELOCITY {
-                    dk[i].dv[k] += jac.dv.times(&dv[k]);
+                    dk[i].dv[k] += jac.dv.times(&dv);
                 }
             }
         }
     }
-    let start_sensitivity = (start.dq_dc, start.dv_dc);
-    let mut end = solution(
-        tableau,
-        h,
-        (&start.q, &start.v),
-        start_sensitivity,
-        (&kq, &kv),
-    );
-    for i in (0..ST).filter(|&i| sensitivity && tableau.b[i] != 0.0) {
-        let w = h * tableau.b[i];
-        for k in 0..K {
-            end.dq_dc[k] += w * dk[i].dq[k];
-            end.dv_dc[k] += w * dk[i].dv[k];
+    let mut end = solution(tableau, h, (&start.q, &start.v), (&kq, &kv));
+    if let Some(end_sensitivity) = sensitivity {
+        for i in (0..ST).filter(|&i| tableau.b[i] != 0.0) {
+            let w = h * tableau.b[i];
+            for k in 0..K {
+                end_sensitivity.dq_dc[k] += w * dk[i].dq[k];
+                end_sensitivity.dv_dc[k] += w * dk[i].dv[k];
+            }
         }
     }
     // Only the automatic method's switch to an implicit one reads it.
@@ -450,16 +450,14 @@ pub(crate) fn stage_state<const N: usize, const ST: usize, const C: usize>(
     (q, v)
 }
 
-/// The step end from the stages' slopes `(q', q'')`, with the embedded estimates; its
-/// sensitivities are the start's, to which the caller adds the stages' own.
+/// The step end from the stages' slopes `(q', q'')`, with the embedded estimates.
 #[inline(always)]
-fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
+fn solution<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     h: Float,
     (q0, v0): (&Vector<N>, &Vector<N>),
-    (dq_dc, dv_dc): ([Matrix<N, Z>; K], [Matrix<N, Z>; K]),
     (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
-) -> StepEnd<N, Z, K> {
+) -> StepEnd<N> {
     let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[Float; ST]| {
         for i in 0..ST {
             q += (h * w[i]) * kq[i];
@@ -472,8 +470,6 @@ fn solution<const N: usize, const Z: usize, const ST: usize, const K: usize>(
     StepEnd {
         q,
         v,
-        dq_dc,
-        dv_dc,
         error: tableau.e.as_ref().map(|e| combine(zero, e)),
         error_low: tableau.e_low.as_ref().map(|e| combine(zero, e)),
         stiffness: None,
@@ -493,7 +489,7 @@ fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
         &mut ([Vector<N>; ST], [Vector<N>; ST]),
         &mut [Vector<Z>; ST],
     ),
-) -> Result<StepEnd<N, Z, 0>, StepError>
+) -> Result<StepEnd<N>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
 {
@@ -505,7 +501,7 @@ where
             None => stage_acceleration(model, t0 + tableau.c[i] * h, q, v)?,
         };
     }
-    let mut end = solution(tableau, h, (q0, v0), ([], []), (&*kq, &*kv));
+    let mut end = solution(tableau, h, (q0, v0), (&*kq, &*kv));
     if stiffness && cfg!(feature = "implicit") {
         end.stiffness = stiffness_estimate(tableau, (q0, v0), h, (&*kq, &*kv));
     }

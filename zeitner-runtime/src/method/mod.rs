@@ -43,35 +43,40 @@ pub(crate) const MAX_COEFFICIENTS: usize = 2;
 /// [`Storage::Rows`] from step to step.
 pub(crate) type Blocks<const N: usize, const Z: usize> = [Matrix<N, Z>; MAX_COEFFICIENTS];
 
-/// The start of a (sub)step: the state and its sensitivity to the `K` multiplier coefficients.
-pub(crate) struct Start<const N: usize, const Z: usize, const K: usize> {
-    pub t: Float,
-    pub q: Vector<N>,
-    pub v: Vector<N>,
-    pub dq_dc: [Matrix<N, Z>; K],
-    pub dv_dc: [Matrix<N, Z>; K],
+/// The start of a step: a state the run accepted, which nothing of the coming step's
+/// multipliers moves.
+pub(crate) use crate::consistency::Start;
+
+/// `∂q(t+τ)/∂c_k` and `∂q'(t+τ)/∂c_k` of a step end, of which a step with `K` coefficients
+/// uses the first `K`. Kept apart from [`StepEnd`], in the simulator's held workspace: at a
+/// thousand coordinates its blocks are a hundred kilobytes, and frames that moved step ends
+/// by value held several copies on the stack.
+pub(crate) struct EndSensitivity<const N: usize, const Z: usize> {
+    pub dq_dc: Blocks<N, Z>,
+    pub dv_dc: Blocks<N, Z>,
 }
 
-impl<const N: usize, const Z: usize, const K: usize> Start<N, Z, K> {
-    /// A step start, where nothing depends on the coming step's multipliers yet.
-    pub fn at(t: Float, q: Vector<N>, v: Vector<N>) -> Self {
-        Start {
-            t,
-            q,
-            v,
-            dq_dc: [Matrix::zeros(); K],
-            dv_dc: [Matrix::zeros(); K],
+impl<const N: usize, const Z: usize> EndSensitivity<N, Z> {
+    pub fn zeros() -> Self {
+        EndSensitivity {
+            dq_dc: [Matrix::zeros(); MAX_COEFFICIENTS],
+            dv_dc: [Matrix::zeros(); MAX_COEFFICIENTS],
+        }
+    }
+
+    /// Sets every block to zero in place (a step start's: nothing depends on the coming
+    /// step's multipliers yet).
+    pub fn clear(&mut self) {
+        for block in self.dq_dc.iter_mut().chain(self.dv_dc.iter_mut()) {
+            block.fill(0.0);
         }
     }
 }
 
-/// The step end, its sensitivity to the multipliers' coefficients and the local error estimate.
-pub(crate) struct StepEnd<const N: usize, const Z: usize, const K: usize> {
+/// The step end and the local error estimate (its sensitivity is an [`EndSensitivity`]).
+pub(crate) struct StepEnd<const N: usize> {
     pub q: Vector<N>,
     pub v: Vector<N>,
-    /// `∂q(t+τ)/∂c_k`, `∂q'(t+τ)/∂c_k`: zero unless requested.
-    pub dq_dc: [Matrix<N, Z>; K],
-    pub dv_dc: [Matrix<N, Z>; K],
     /// Embedded error estimate of `q` and `q'`, for methods that have one.
     pub error: Option<(Vector<N>, Vector<N>)>,
     /// A lower-order estimate that tempers `error` (DOP853's third-order one), if any.
@@ -88,18 +93,19 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
     fn order(&self) -> u32;
     /// The order of the embedded solution the error estimate compares with, if there is one.
     fn embedded_order(&self) -> Option<u32>;
-    /// Integrates one step of size `h` from `start`; with `sensitivity`, also `∂(q, q')/∂c`.
+    /// Integrates one step of size `h` from `start`; with `sensitivity`, also writes
+    /// `∂(q, q')/∂c` of its end there (else leaves it as it is).
     /// A method with memory reads the value it committed last (a fixed value: it does not
     /// depend on this step's coefficients) and keeps what this step would commit as a
     /// candidate, which the next integration replaces.
     fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: &Start<N, Z, K>,
+        start: &Start<N>,
         h: Float,
         multipliers: &Multipliers<Z, K>,
-        sensitivity: bool,
-    ) -> Result<StepEnd<N, Z, K>, StepError>;
+        sensitivity: Option<&mut EndSensitivity<N, Z>>,
+    ) -> Result<StepEnd<N>, StepError>;
     /// Integrates one step of size `h` from `(t, q, q')` with the multipliers solved at every
     /// stage from the acceleration-level system ([`crate::MultiplierModel::EveryStage`]);
     /// `first` is the acceleration at the start where it is known. `None` for a method that
@@ -110,7 +116,7 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         start: (Float, &Vector<N>, &Vector<N>),
         h: Float,
         first: Option<&Vector<N>>,
-    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+    ) -> Option<Result<StepEnd<N>, StepError>> {
         let _ = (model, start, h, first);
         None
     }
@@ -158,12 +164,19 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
 pub(crate) enum AnyMethod<const N: usize, const Z: usize, D: Storage<N>> {
     Explicit4(explicit::Explicit<4, N, Z, D>),
     Explicit7(explicit::Explicit<7, N, Z, D>),
-    /// DOP853, with the last step kept for its continuous extension.
+    /// DOP853, with the last step kept for its continuous extension (on the heap with the
+    /// sparse storage: its slopes are two dozen N-vectors).
     #[cfg(feature = "high-order")]
-    Explicit12(explicit::Explicit<12, N, Z, D>, dop853::Continuous<N>),
+    Explicit12(
+        explicit::Explicit<12, N, Z, D>,
+        D::Held<dop853::Continuous<N>>,
+    ),
     /// Verner's 9(8) pair, with the last step kept for its interpolant.
     #[cfg(feature = "high-order")]
-    Explicit16(explicit::Explicit<16, N, Z, D>, verner::Continuous<N>),
+    Explicit16(
+        explicit::Explicit<16, N, Z, D>,
+        D::Held<verner::Continuous<N>>,
+    ),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, Z, D>),
     #[cfg(feature = "implicit")]
@@ -196,12 +209,12 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
             #[cfg(feature = "high-order")]
             InnerMethod::Dop853 => AnyMethod::Explicit12(
                 explicit::Explicit::new(&dop853::DOP853, 1, automatic),
-                dop853::Continuous::new(),
+                D::hold(dop853::Continuous::new()),
             ),
             #[cfg(feature = "high-order")]
             InnerMethod::Verner98 => AnyMethod::Explicit16(
                 explicit::Explicit::new(&verner::VERNER98, 1, automatic),
-                verner::Continuous::new(),
+                D::hold(verner::Continuous::new()),
             ),
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S>(step)),
@@ -290,11 +303,11 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
     fn integrate<S: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, S, N, Z>,
-        start: &Start<N, Z, K>,
+        start: &Start<N>,
         h: Float,
         multipliers: &Multipliers<Z, K>,
-        sensitivity: bool,
-    ) -> Result<StepEnd<N, Z, K>, StepError> {
+        sensitivity: Option<&mut EndSensitivity<N, Z>>,
+    ) -> Result<StepEnd<N>, StepError> {
         match self {
             AnyMethod::Explicit4(m) => m.integrate(model, start, h, multipliers, sensitivity),
             AnyMethod::Explicit7(m) => m.integrate(model, start, h, multipliers, sensitivity),
@@ -321,18 +334,28 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         start: (Float, &Vector<N>, &Vector<N>),
         h: Float,
         first: Option<&Vector<N>>,
-    ) -> Option<Result<StepEnd<N, Z, 0>, StepError>> {
+    ) -> Option<Result<StepEnd<N>, StepError>> {
         match self {
             AnyMethod::Explicit4(m) => m.integrate_every_stage(model, start, h, first),
             AnyMethod::Explicit7(m) => m.integrate_every_stage(model, start, h, first),
             #[cfg(feature = "high-order")]
-            AnyMethod::Explicit12(m, continuous) => {
-                Some(kept_for_dense_output(m, continuous, model, start, h, first))
-            }
+            AnyMethod::Explicit12(m, continuous) => Some(kept_for_dense_output(
+                m,
+                &mut **continuous,
+                model,
+                start,
+                h,
+                first,
+            )),
             #[cfg(feature = "high-order")]
-            AnyMethod::Explicit16(m, continuous) => {
-                Some(kept_for_dense_output(m, continuous, model, start, h, first))
-            }
+            AnyMethod::Explicit16(m, continuous) => Some(kept_for_dense_output(
+                m,
+                &mut **continuous,
+                model,
+                start,
+                h,
+                first,
+            )),
             #[cfg(feature = "implicit")]
             _ => None,
         }
@@ -410,7 +433,7 @@ fn kept_for_dense_output<S, E, const N: usize, const Z: usize, const ST: usize, 
     start: (Float, &Vector<N>, &Vector<N>),
     h: Float,
     first: Option<&Vector<N>>,
-) -> Result<StepEnd<N, Z, 0>, StepError>
+) -> Result<StepEnd<N>, StepError>
 where
     S: ConstrainedSystem<N, Z, Storage = D>,
     E: continuous::Extension<N, ST>,
@@ -450,7 +473,7 @@ mod tests {
         let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
-        let start = Start::<2, 1, K>::at(0.0, q, v);
+        let start = Start { q, v, t: 0.0 };
         let h = 0.05;
         let mut stepper = AnyMethod::<2, 1, Dense>::new::<SpringPendulum>(
             method,
@@ -460,30 +483,31 @@ mod tests {
         if let Some(memory) = memory {
             Method::<2, 1, Dense>::restart(&mut stepper, || Ok(memory));
         }
-        let end = stepper
-            .integrate(&mut model, &start, h, &multipliers, true)
+        let mut exact = EndSensitivity::zeros();
+        stepper
+            .integrate(&mut model, &start, h, &multipliers, Some(&mut exact))
             .unwrap();
         let delta = 1e-5;
         for k in 0..K {
             let mut shifted = |sign: Float| {
                 let mut m = multipliers;
                 m.coefficients[k][0] += sign * delta;
-                stepper.integrate(&mut model, &start, h, &m, false).unwrap()
+                stepper.integrate(&mut model, &start, h, &m, None).unwrap()
             };
             let (plus, minus) = (shifted(1.0), shifted(-1.0));
             let dq = (plus.q - minus.q) / (2.0 * delta);
             let dv = (plus.v - minus.v) / (2.0 * delta);
-            let scale = end.dv_dc[k].amax();
+            let scale = exact.dv_dc[k].amax();
             assert!(scale > 0.0);
             assert!(
-                (dq - end.dq_dc[k].column(0)).amax() < 1e-7 * scale,
+                (dq - exact.dq_dc[k].column(0)).amax() < 1e-7 * scale,
                 "{method:?}, coefficient {k}: ∂q/∂c {} vs finite differences {dq}",
-                end.dq_dc[k]
+                exact.dq_dc[k]
             );
             assert!(
-                (dv - end.dv_dc[k].column(0)).amax() < 1e-7 * scale,
+                (dv - exact.dv_dc[k].column(0)).amax() < 1e-7 * scale,
                 "{method:?}, coefficient {k}: ∂q'/∂c {} vs finite differences {dv}",
-                end.dv_dc[k]
+                exact.dv_dc[k]
             );
         }
     }
@@ -505,7 +529,7 @@ mod tests {
             Vector::<2>::new(1.0, 0.0),
         );
         model.prepare(&q, 0.0).unwrap();
-        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let start = Start { q, v, t: 0.0 };
         let lambda = Vector::<1>::new(system.m * system.g / (2.0 * system.length));
         let multipliers = Multipliers {
             base: Vector::zeros(),
@@ -523,7 +547,7 @@ mod tests {
                 StepControl::Fixed { step: h },
             );
             let end = stepper
-                .integrate(&mut model, &start, h, &multipliers, false)
+                .integrate(&mut model, &start, h, &multipliers, None)
                 .unwrap();
             let boundary = explicit::DOPRI5.stiffness.as_ref().unwrap().boundary;
             match end.stiffness {
@@ -626,7 +650,7 @@ mod tests {
         let mut model = Model::new(&PENDULUM).unwrap();
         let (q, v) = swinging();
         model.prepare(&q, 0.0).unwrap();
-        let start = Start::<2, 1, 1>::at(0.0, q, v);
+        let start = Start { q, v, t: 0.0 };
         let multipliers = Multipliers {
             base: Vector::zeros(),
             coefficients: [Vector::from([-6.0])],
@@ -644,7 +668,7 @@ mod tests {
         Method::<2, 1, Dense>::restart(&mut stepper, || Ok(a0));
         let mut step = |stepper: &mut AnyMethod<2, 1, Dense>, h: Float| {
             stepper
-                .integrate(&mut model, &start, h, &multipliers, false)
+                .integrate(&mut model, &start, h, &multipliers, None)
                 .unwrap()
         };
         let first = step(&mut stepper, 0.05);

@@ -35,12 +35,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) {
         let point = last.end;
         (self.q, self.v, self.lambda) = (point.q, point.v, point.lambda);
-        (self.last, self.watch) = (last, watch);
+        (self.record.last, self.watch) = (last, watch);
         if let Some(report) = start {
-            self.start_report = report;
+            self.record.start_report = report;
         }
         self.predictor.reset();
-        self.state_gram = None;
+        self.record.state_gram = None;
         self.pending.singular = false;
         Method::<N, Z, S::Storage>::restart(&mut *self.method, || Ok(point.a));
         if forget == Forget::Steps {
@@ -55,7 +55,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     #[cold]
     pub(super) fn restart_predictors(&mut self) {
         self.predictor.reset();
-        self.state_gram = None;
+        self.record.state_gram = None;
         self.restart_method();
     }
 }

@@ -139,18 +139,20 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The constant multipliers Newton starts from: with position-level rows only, those that
     /// make the linearised constraint hold at the step end; else extrapolated from the last two
-    /// steps (or, without extrapolation, the last step's, as in the paper).
+    /// steps (or, without extrapolation, the last step's, as in the paper). Not inlined, as
+    /// [`Simulator::conclude`].
+    #[inline(never)]
     pub(super) fn constant_guess(
         &mut self,
         h: Float,
         planned: Float,
     ) -> Result<Vector<Z>, StepError> {
         let extrapolate = self.options.extrapolate_multipliers;
-        if let Some((at, consistent_v)) = self.state_gram.filter(|_| extrapolate) {
+        if let Some((at, consistent_v)) = self.record.state_gram.filter(|_| extrapolate) {
             // Position rows: `g` does not depend on the velocities (the report's serves), and
             // `w` is linear in them, zero at the consistent ones.
             let w = at.jacobian * (self.v - consistent_v);
-            let residuals = (&self.last.residual, &w);
+            let residuals = (&self.record.last.residual, &w);
             // A first guess only: a plain Cholesky solve, without the rank diagnosis of
             // `solve_spd`.
             let solve = |b: &Vector<Z>| nalgebra::Cholesky::new(at.gram).map(|c| c.solve(b));
@@ -173,7 +175,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         t_end: Float,
         guess: Multipliers<Z, K>,
     ) -> Result<Attempt<N, Z>, StepError> {
-        let start = Start::<N, Z, K>::at(self.time(), self.q, self.v);
+        let start = Start {
+            q: self.q,
+            v: self.v,
+            t: self.time(),
+        };
         let state = (&self.q, &self.v, self.time());
         let targets = multipliers::short_step_targets(&mut self.model, state, (h, planned))?;
         let settings = NewtonSettings {
@@ -193,7 +199,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         let outcome = multipliers::solve(
             &mut self.model,
-            &mut *self.method,
+            (&mut *self.method, &mut *self.end_sensitivity),
             &start,
             h,
             t_end,
@@ -209,7 +215,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 self.statistics.newton_iterations += u64::from(integrations);
                 let constant = multipliers.first_power == 0 && K == 1;
                 let concluded =
-                    self.conclude(end, &multipliers, constant, integrations, (h, t_end));
+                    self.conclude(&end, &multipliers, constant, integrations, (h, t_end));
                 match concluded? {
                     Attempt::Accepted(step) => Ok(Attempt::Accepted(Accepted { planned, ..step })),
                     rejected => Ok(rejected),
@@ -227,9 +233,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// A step whose constraints hold: its consistent end point and error test.
+    // Not inlined: a step's frame would hold the end point's temporaries beside the Newton's
+    // call, a hundred kilobytes at a thousand coordinates.
+    #[inline(never)]
     pub(super) fn conclude<const K: usize>(
         &mut self,
-        end: StepEnd<N, Z, K>,
+        end: &StepEnd<N>,
         multipliers: &Multipliers<Z, K>,
         constant: bool,
         integrations: u32,
@@ -240,7 +249,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
             // `G` at the step start is the last end point's, where no gap can have opened since.
-            let known = self.state_gram.filter(|_| S::UNILATERAL_CONSTRAINTS == 0);
+            let known = self
+                .record
+                .state_gram
+                .filter(|_| S::UNILATERAL_CONSTRAINTS == 0);
             let g1 = match known {
                 Some((at, _)) => at.jacobian,
                 None => self.model.jacobian(&self.q, &self.v, self.time())?,
@@ -323,6 +335,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             + 1
     }
 
+    #[inline(never)]
     pub(super) fn accept(
         &mut self,
         step: Accepted<N, Z>,
@@ -353,7 +366,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let known = (!raw || S::POSITION_CONSTRAINTS == Z).then_some(&step.gram.jacobian);
         let report = end_report(
             &mut self.model,
-            self.last.end,
+            self.record.last.end,
             reported,
             step_multipliers,
             step.integrations,
@@ -374,8 +387,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .record(step.multipliers, &self.lambda, &step.point.lambda);
         self.lambda = step.point.lambda;
         let position_rows_only = S::POSITION_CONSTRAINTS == Z;
-        self.state_gram = position_rows_only.then_some((step.gram, step.point.v));
-        self.last = report;
+        self.record.state_gram = position_rows_only.then_some((step.gram, step.point.v));
+        self.record.last = report;
         self.planned_step = self.next_step(h_used, h_planned, &step, landing);
         self.progress.record(h_used, t_end);
         self.statistics.steps += 1;

@@ -14,7 +14,8 @@ use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// The watched functions at a candidate step's end, and their earliest crossing of interest
-    /// within the step.
+    /// within the step. Not inlined, as [`Simulator::conclude`].
+    #[inline(never)]
     pub(super) fn crossing(
         &mut self,
         step: &Accepted<N, Z>,
@@ -29,7 +30,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         let values = events::values(&mut self.model, &end, &self.watch)?;
         let tolerance = self.time_tolerance();
-        let start = self.last.end;
+        let start = self.record.last.end;
         let ends = (&start, &end);
         let crossing = events::earliest(&mut self.model, ends, &self.watch, &values, tolerance)?;
         Ok((Some(values), crossing))
@@ -63,8 +64,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (wide && middle > now && middle < t_end).then_some(middle)
     }
 
-    /// What a step that was just accepted stopped for.
-    #[inline]
+    /// What a step that was just accepted stopped for. Not inlined, as
+    /// [`Simulator::conclude`].
+    #[inline(never)]
     pub(super) fn after_step(
         &mut self,
         values: Option<&Values>,
@@ -145,7 +147,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if open.is_empty() {
             return Ok(closing);
         }
-        let end = self.last.end;
+        let end = self.record.last.end;
         let rates = self.model.gap_rates(&end.q, &end.v, end.t)?;
         let window = 2.0 * self.time_tolerance();
         for k in open.iter() {
@@ -161,7 +163,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn open_contacts(&mut self, gaps: GapSet) -> Result<(), StepError> {
         let open = self.model.open_gaps();
         self.model.set_open_gaps(open.union(gaps));
-        let last = &self.last;
+        let last = &self.record.last;
         let (start, end) = (last.start, last.end);
         let step = (last.step_multipliers, last.newton_iterations);
         let tolerance = self.options.constraint_tolerance;
@@ -171,7 +173,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         });
         let (report, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
         let point = report.end;
-        (self.last, self.watch) = (report, watch);
+        (self.record.last, self.watch) = (report, watch);
         self.lambda = point.lambda;
         self.restart_predictors();
         Ok(())
@@ -189,7 +191,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         Some(StopReason::Event { index, direction })
     }
 
-    /// What the last step end left to report: events, then an impact.
+    /// What the last step end left to report: events, then an impact. Not inlined, as
+    /// [`Simulator::conclude`].
+    #[inline(never)]
     pub(super) fn pending_stop(&mut self) -> Result<Option<StopReason>, StepError> {
         if let Some(reason) = self.next_event() {
             return Ok(Some(reason));
@@ -211,8 +215,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The impact of `gaps` at the current state: the velocity jump, the contacts that stay
     /// closed, and a consistent state after it, reported as a step of zero length.
+    #[inline(never)]
     pub(super) fn impact(&mut self, gaps: GapSet) -> Result<(), StepError> {
-        let before = self.last.end;
+        let before = self.record.last.end;
         let open = self.model.open_gaps();
         let rest = self.options.events.rest_velocity;
         let tolerance = self.options.constraint_tolerance;
@@ -224,16 +229,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         )
         .and_then(|impact| {
             let state = (before.q, impact.velocity_after, before.t);
-            let (mut last, report, _) = start_point(&mut self.model, state, &self.options)?;
-            contact::open_pulling(&mut self.model, &mut last.end)?;
-            let last = end_report(&mut self.model, before, last.end, last.end.lambda, 0, None)?;
+            let (mut point, report) = start_point(&mut self.model, state, &self.options)?;
+            contact::open_pulling(&mut self.model, &mut point)?;
+            let last = end_report(&mut self.model, before, point, point.lambda, 0, None)?;
             let watch = watch_at(&mut self.model, &last.end, tolerance)?;
             Ok((impact, last, report, watch))
         });
         let (impact, last, report, watch) =
             resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
         self.anchor((last, watch, Some(report)), Forget::Steps);
-        self.last_impact = Some(impact);
+        self.record.last_impact = Some(impact);
         Ok(())
     }
 }

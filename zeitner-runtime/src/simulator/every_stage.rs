@@ -16,6 +16,7 @@ use crate::system::{ConstrainedSystem, Vector};
 
 impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S, N, Z> {
     /// One try of a step of size `h` ending at `t_end`.
+    #[inline(never)]
     pub(super) fn attempt_every_stage(
         &mut self,
         h: Float,
@@ -23,7 +24,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
     ) -> Result<Attempt<N, Z>, StepError> {
         let t = self.time();
         // The last consistent point is the first stage's, unless the state moved since.
-        let here = &self.last.end;
+        let here = &self.record.last.end;
         let first = (here.t == t && here.q == self.q && here.v == self.v).then_some(here.a);
         let start = (t, &self.q, &self.v);
         let integrated = Method::<N, Z, S::Storage>::integrate_every_stage(
@@ -67,7 +68,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             first_power: 0,
         };
         let lambda_start = self.lambda;
-        Ok(match self.conclude(end, &held, false, 1, (h, t_end))? {
+        Ok(match self.conclude(&end, &held, false, 1, (h, t_end))? {
             Attempt::Accepted(mut step) => {
                 step.positions_projected = step.q != integrated_q;
                 // Nothing fails where a gradient vanishes (a cusp): the index-1 stages would

@@ -18,7 +18,7 @@ mod reconfigure;
 mod sensitivity;
 mod start;
 
-use start::{start_point, suits_the_rows, watch_at};
+use start::{report_at, start_point, suits_the_rows, watch_at};
 
 pub use observation::Observation;
 pub use sensitivity::SensitivitySimulator;
@@ -32,7 +32,7 @@ use crate::control::{bounds, Controller, Progress, StiffnessTest, LARGEST_STEP};
 use crate::error::{InvalidOption, StepError};
 use crate::events::Watch;
 use crate::gaps::GapSet;
-use crate::method::{AnyMethod, Method};
+use crate::method::{AnyMethod, EndSensitivity, Method};
 use crate::model::{Evaluations, Model};
 use crate::multipliers::Predictor;
 use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
@@ -111,6 +111,8 @@ pub struct Statistics {
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
     method: Held<S, AnyMethod<N, Z, S::Storage>, N, Z>,
+    /// The workspace of the Newton's step-end sensitivity to the multipliers' coefficients.
+    end_sensitivity: Held<S, EndSensitivity<N, Z>, N, Z>,
     /// The method that steps now: the options' one, `Automatic` resolved.
     active: InnerMethod,
     /// Whether the steps are bound by stability, for `Automatic`'s change of method.
@@ -125,9 +127,6 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     t_carry: Float,
     /// The consistent multipliers at the current time, the anchor of varying multipliers.
     lambda: Vector<Z>,
-    /// `G` and `G M⁻¹Gᵀ` at the current state and the consistent velocities there, from the
-    /// last step's end point (the multiplier prediction's linearisation); none after a start.
-    state_gram: Option<(Gram<N, Z>, Vector<N>)>,
     /// The norms of the rows of `G` at the start, the scale for recognising a vanishing gradient.
     jacobian_row_scale: Vector<Z>,
     stop_time: Option<Float>,
@@ -135,20 +134,32 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     planned_step: Float,
     /// Whether the accepted steps still advance the time.
     progress: Progress,
-    last: StepReport<N, Z>,
-    start_report: StartReport<N, Z>,
+    /// What the run reports and knows of the current state.
+    record: Held<S, Record<N, Z>, N, Z>,
     statistics: Statistics,
     /// The event functions' sides and the open gaps' levels at the current state.
     watch: Watch,
     /// What the next [`Simulator::step`] reports before it integrates.
     pending: Pending,
-    last_impact: Option<Impact<N, Z>>,
     /// Times the user asked steps to land on, besides the model's time events.
     time_events: &'s [Float],
     /// The first time event ahead, the model's or the user's (found again once reached).
     next_time_event: Option<Float>,
     /// The last accepted step as its sensitivities need it.
     last_step: LastStep<Z>,
+}
+
+/// The reports of the current state, the start's and the last impact's, and what the next
+/// step's multiplier prediction reuses: kept as the storage keeps a run's workspace, on the
+/// heap with the sparse storage, where at a thousand coordinates they are a hundred kilobytes
+/// that every frame holding the simulator would carry.
+struct Record<const N: usize, const Z: usize> {
+    last: StepReport<N, Z>,
+    start_report: StartReport<N, Z>,
+    last_impact: Option<Impact<N, Z>>,
+    /// `G` and `G M⁻¹Gᵀ` at the current state and the consistent velocities there, from the
+    /// last step's end point (the multiplier prediction's linearisation); none after a start.
+    state_gram: Option<(Gram<N, Z>, Vector<N>)>,
 }
 
 /// What the last accepted step was taken with, for [`SensitivitySimulator`] to take it again.
@@ -198,9 +209,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             return Err(StepError::InvalidOption(InvalidOption::Restitution));
         }
         let mut model = Model::new(system)?;
-        let (last, start_report, start_jacobian) =
-            start_point(&mut model, (start.q, start.v, start.t), &options)?;
-        let point = last.end;
+        let (point, start_report) = start_point(&mut model, (start.q, start.v, start.t), &options)?;
+        let start_jacobian = model.jacobian(&point.q, &point.v, point.t)?;
+        let last = report_at(&mut model, point, Some(&start_jacobian))?;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
@@ -209,6 +220,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 options.multipliers,
                 options.step,
             )),
+            end_sensitivity: S::Storage::hold(EndSensitivity::zeros()),
             active: options.method.first(options.multipliers, options.step),
             stiffness: StiffnessTest::default(),
             options,
@@ -218,17 +230,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             v: point.v,
             t_carry: 0.0,
             lambda: point.lambda,
-            state_gram: None,
             jacobian_row_scale: Vector::from_fn(|j, _| start_jacobian.row(j).norm()),
             stop_time: None,
             planned_step: first_step(options.step),
             progress: Progress::default(),
-            last,
-            start_report,
+            record: S::Storage::hold(Record {
+                last,
+                start_report,
+                last_impact: None,
+                state_gram: None,
+            }),
             statistics: Statistics::default(),
             watch,
             pending: Pending::default(),
-            last_impact: None,
             time_events: &[],
             next_time_event: None,
             last_step: LastStep {
@@ -247,7 +261,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// How the start (or the last re-initialised state) was made consistent.
     pub fn start_report(&self) -> &StartReport<N, Z> {
-        &self.start_report
+        &self.record.start_report
     }
 
     /// Dense output within the last step with the multipliers and accelerations recomputed
@@ -255,19 +269,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// accurate as the positions and velocities. `t` must lie within the last step.
     #[cfg(feature = "dense-output")]
     pub fn sample(&mut self, t: Float) -> Result<Point<N, Z>, StepError> {
-        let (start, end) = (self.last.start.t, self.last.end.t);
+        let (start, end) = (self.record.last.start.t, self.record.last.end.t);
         if !(t >= start && t <= end) {
             return Err(StepError::InvalidOption(InvalidOption::SampleTime));
         }
         // The method's own continuous extension where it has one (DOP853's), else the quintic
         // Hermite interpolant between the step's consistent ends.
-        let ends = (&self.last.start, &self.last.end);
+        let ends = (&self.record.last.start, &self.record.last.end);
         let model = &mut self.model;
         let (q, v) =
             match Method::<N, Z, S::Storage>::dense_state(&mut *self.method, model, ends, t) {
                 Some(state) => state?,
                 None => {
-                    let point = self.last.interpolate(t);
+                    let point = self.record.last.interpolate(t);
                     (point.q, point.v)
                 }
             };
@@ -276,12 +290,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The last accepted step (at the start: the consistent initial point).
     pub fn last(&self) -> &StepReport<N, Z> {
-        &self.last
+        &self.record.last
     }
 
     /// The current time: the end of the last accepted step.
     pub fn time(&self) -> Float {
-        self.last.end.t
+        self.record.last.end.t
     }
 
     pub fn statistics(&self) -> Statistics {
@@ -381,7 +395,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The last impact, if any (see [`StopReason::Impact`]).
     pub fn last_impact(&self) -> Option<&Impact<N, Z>> {
-        self.last_impact.as_ref()
+        self.record.last_impact.as_ref()
     }
 
     /// The gaps whose contact is closed now.

@@ -51,7 +51,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let same_levels = reproject || tolerance == previous_options.constraint_tolerance;
         let watch = changed.and_then(|()| match same_levels {
             true => Ok(self.watch),
-            false => watch_at(&mut self.model, &self.last.end, tolerance),
+            false => watch_at(&mut self.model, &self.record.last.end, tolerance),
         });
         let watch = match watch {
             Ok(watch) => watch,
@@ -86,7 +86,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// and the step-size controller stay; the predictors restart (the state moved). On an error
     /// nothing changed.
     pub(super) fn reproject(&mut self) -> Result<(), StepError> {
-        let end = self.last.end;
+        let end = self.record.last.end;
         let (tolerance, policy) = (self.options.constraint_tolerance, self.options.start);
         let model = &mut self.model;
         model.prepare(&end.q, end.t)?;
@@ -101,14 +101,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// Whether the current state meets `tolerance`: the closed rows' residuals, and no open gap
     /// below its level.
     pub(super) fn state_within(&mut self, tolerance: Float) -> Result<bool, StepError> {
-        if self.last.residual.amax() > tolerance {
+        if self.record.last.residual.amax() > tolerance {
             return Ok(false);
         }
         let open = self.model.open_gaps();
         if open.is_empty() {
             return Ok(true);
         }
-        let end = self.last.end;
+        let end = self.record.last.end;
         let gaps = self.model.gaps(&end.q, &end.v, end.t)?;
         let within = open.iter().all(|k| gaps[k] >= -tolerance);
         Ok(within)

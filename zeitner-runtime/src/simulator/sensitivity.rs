@@ -125,7 +125,7 @@ where
         q0: Matrix<N, P>,
         v0: Matrix<N, P>,
     ) -> Result<(), StepError> {
-        if self.simulator.statistics.steps > 0 || self.simulator.last_impact.is_some() {
+        if self.simulator.statistics.steps > 0 || self.simulator.record.last_impact.is_some() {
             return Err(StepError::InvalidOption(
                 InvalidOption::StartDerivativesAfterStart,
             ));
@@ -135,7 +135,7 @@ where
 
     /// The start's derivatives from those of `(q0, q0')`, `x`.
     fn start_from(&mut self, mut x: Tangent<N, P>) -> Result<(), StepError> {
-        let point = self.simulator.last.end;
+        let point = self.simulator.record.last.end;
         let model = &mut self.simulator.model;
         let at = (&point.q, &point.v, point.t);
         tangent::project_positions(model, at, &mut x)?;
@@ -211,7 +211,7 @@ where
         // Taken before the step: `Automatic` may change the method as it accepts it.
         let stages = Stages::of(&sim.method)?;
         let start = (sim.time(), sim.q, sim.v);
-        let before = sim.last.end;
+        let before = sim.record.last.end;
         let open_before = sim.model.open_gaps();
         let steps = sim.statistics.steps;
         let reason = self.simulator.step()?;
@@ -235,7 +235,7 @@ where
 
     /// `∂t/∂θ` of event function `index`'s crossing at the reported point.
     fn event_time_derivative(&self, index: usize) -> Option<Matrix<1, P>> {
-        let point = self.simulator.last.end;
+        let point = self.simulator.record.last.end;
         let gradient = self
             .simulator
             .model
@@ -252,7 +252,7 @@ where
     /// Carries the sensitivities through the impact just made at the point `before`.
     fn follow_impact(&mut self, before: &crate::output::Point<N, Z>) -> Result<(), StepError> {
         let sim = &mut self.simulator;
-        let Some(impact) = sim.last_impact else {
+        let Some(impact) = sim.record.last_impact else {
             return Ok(());
         };
         let Some(gap) = impact.gaps.iter().next() else {
@@ -271,7 +271,7 @@ where
         for k in bouncing.iter() {
             scale[first + k] = 1.0 + sim.model.system.restitution(k);
         }
-        let point = sim.last.end;
+        let point = sim.record.last.end;
         let at = (&before.q, &before.v, before.t);
         let motion = (&before.a, &impact.velocity_after, &point.a);
         let rate = impact.gap_rate_before[gap];
@@ -304,7 +304,7 @@ where
         reported: Tangent<N, P>,
     ) -> Result<(), StepError> {
         let sim = &mut self.simulator;
-        let point = sim.last.end;
+        let point = sim.record.last.end;
         let at = (&point.q, &point.v, point.t);
         let consistent =
             tangent::consistent_multipliers(&mut sim.model, at, &point.lambda, &reported)?;
@@ -352,7 +352,7 @@ where
         (t0, q0, v0): (Float, Vector<N>, Vector<N>),
     ) -> Result<(Tangent<N, P>, Tangent<N, P>), StepError> {
         let sim = &mut self.simulator;
-        let point = sim.last.end;
+        let point = sim.record.last.end;
         let (t1, h) = (point.t, point.t - t0);
         let record = sim.last_step;
         let start = (&q0, &v0, t0);

@@ -23,16 +23,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !lambda.iter().all(|x| x.is_finite()) {
             return Err(StepError::InvalidOption(InvalidOption::InitialMultipliers));
         }
-        let mut point = self.last.end;
+        let mut point = self.record.last.end;
         point.lambda = lambda;
         point.a = self
             .model
             .acceleration(&point.q, &point.v, point.t, &lambda)?
             .a;
-        self.last = end_report(&mut self.model, point, point, lambda, 0, None)?;
+        self.record.last = end_report(&mut self.model, point, point, lambda, 0, None)?;
         self.lambda = lambda;
-        self.start_report.multipliers = lambda;
-        self.start_report.multipliers_given = true;
+        self.record.start_report.multipliers = lambda;
+        self.record.start_report.multipliers_given = true;
         self.restart_method();
         Ok(())
     }
@@ -48,12 +48,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let open = self.model.open_gaps();
         let tolerance = self.options.constraint_tolerance;
         let started =
-            start_point(&mut self.model, (q, v, t), &self.options).and_then(|(last, report, _)| {
-                Ok((
-                    last,
-                    report,
-                    watch_at(&mut self.model, &last.end, tolerance)?,
-                ))
+            start_point(&mut self.model, (q, v, t), &self.options).and_then(|(point, report)| {
+                let last = report_at(&mut self.model, point, None)?;
+                Ok((last, report, watch_at(&mut self.model, &point, tolerance)?))
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
         self.anchor((last, watch, Some(report)), Forget::Steps);
@@ -83,15 +80,14 @@ pub(super) fn suits_the_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z
     Ok(())
 }
 
-/// The consistent start at `(q, v, t)` — for [`Simulator::new`] and
-/// [`Simulator::reinitialise`] alike — as a report, with how it was made consistent and `G`
-/// there. Gaps that touch and do not separate start closed, unless their force would pull.
-#[allow(clippy::type_complexity)]
+/// The consistent start at `(q, v, t)` — for [`Simulator::new`], [`Simulator::reinitialise`]
+/// and after an impact alike — with how it was made consistent. Gaps that touch and do not
+/// separate start closed, unless their force would pull.
 pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (Vector<N>, Vector<N>, Float),
     options: &Options,
-) -> Result<(StepReport<N, Z>, StartReport<N, Z>, Matrix<Z, N>), StepError> {
+) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
     if !t.is_finite() {
         return Err(StepError::InvalidOption(InvalidOption::EndTime));
     }
@@ -120,9 +116,16 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
             report.multipliers = point.lambda;
         }
     }
-    let jacobian = model.jacobian(&point.q, &point.v, t)?;
-    let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
-    Ok((last, report, jacobian))
+    Ok((point, report))
+}
+
+/// The report of a run standing at the consistent `point` (a start's, whose `G` may be known).
+pub(super) fn report_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: Point<N, Z>,
+    jacobian: Option<&Matrix<Z, N>>,
+) -> Result<StepReport<N, Z>, StepError> {
+    end_report(model, point, point, point.lambda, 0, jacobian)
 }
 
 /// The watch of events and gaps at a point.
