@@ -7,6 +7,7 @@ use crate::linalg::{all_finite, finite_state, keep_leading_rows, max_abs, solve_
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model};
 use crate::options::StartPolicy;
+use crate::outline::apart;
 use crate::output::{Point, StepReport};
 use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
@@ -97,8 +98,9 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
     if policy == StartPolicy::Refuse {
         refuse_inconsistent(model, &q0, &v0, t0, tolerance)?;
     }
-    let q = project_positions(model, q0, &v0, t0, tolerance)?;
-    let v = project_velocities(model, &q, v0, t0, tolerance)?;
+    // Apart from the frame live across the consistent point's evaluation, for a large scene.
+    let q = apart::<N, _>(|| project_positions(model, q0, &v0, t0, tolerance))?;
+    let v = apart::<N, _>(|| project_velocities(model, &q, v0, t0, tolerance))?;
     let point = consistent_point(model, t0, q, v)?;
     let report = StartReport {
         position_change: q - q0,
@@ -134,10 +136,7 @@ fn refuse_inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     Ok(())
 }
 
-/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric. Not
-/// inlined, nor [`project_velocities`]: the start's frame, live across the consistent point's
-/// evaluation, would hold their N×Z temporaries too.
-#[inline(never)]
+/// Gauss–Newton onto the position-level constraints, minimal change in the mass metric.
 pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     mut q: Vector<N>,
@@ -219,7 +218,6 @@ fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// The start's velocities on the velocity-level constraint: Newton until `|w|` is a thousandth
 /// of the tolerance, and refused as `InconsistentStart` if it ends above the tolerance — down to
 /// what rounding of `G q'` allows, as the positions are refused in [`project_positions`].
-#[inline(never)]
 pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     q: &Vector<N>,

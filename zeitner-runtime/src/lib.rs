@@ -55,6 +55,7 @@ mod method;
 mod model;
 mod multipliers;
 pub mod options;
+mod outline;
 pub mod output;
 mod polynomial;
 pub mod scalar;

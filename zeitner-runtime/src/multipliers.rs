@@ -9,6 +9,7 @@ use crate::mass::MassFactor;
 use crate::method::{EndSensitivity, Method, Start, StepEnd};
 use crate::model::Model;
 use crate::options::StepControl;
+use crate::outline::apart;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
 use crate::storage::Square;
@@ -290,8 +291,9 @@ where
     S: ConstrainedSystem<N, Z>,
     M: Method<N, Z, S::Storage>,
 {
+    // The side paths apart from the frame live across every integration, for a large scene.
     if !settings.exact {
-        paper_sensitivity(model, start, h, &multipliers, sensitivity)?;
+        apart::<N, _>(|| paper_sensitivity(model, start, h, &multipliers, sensitivity))?;
     }
     let mut worst = (Float::INFINITY, 0);
     let mut progress = NewtonProgress::default();
@@ -321,7 +323,8 @@ where
         };
         let span = (start, t_end);
         let aim = (conditions, targets);
-        match linear.correct(model, settings, span, &mut multipliers, aim)? {
+        let coefficients = &mut multipliers;
+        match apart::<N, _>(|| linear.correct(model, settings, span, coefficients, aim))? {
             Correction::Accepted { q, v } => {
                 (end.q, end.v) = (q, v);
                 return Ok(converged(end, multipliers, iteration));
@@ -391,10 +394,6 @@ impl<const N: usize, const Z: usize> LinearStep<'_, N, Z> {
     /// Corrects `multipliers` by Newton on the end conditions through the linearised step map:
     /// at most [`LINEAR_CORRECTIONS`] times with the exact sensitivity and linearised updates
     /// accepted, once otherwise.
-    // Not inlined, nor `paper_sensitivity`: the Newton's frame, live across every
-    // integration, would hold their N×Z temporaries (hundreds of kilobytes at a thousand
-    // coordinates) beside the method's.
-    #[inline(never)]
     fn correct<S: ConstrainedSystem<N, Z>, const K: usize>(
         &self,
         model: &mut Model<'_, S, N, Z>,
@@ -553,7 +552,6 @@ where
 /// The paper's estimate (eq. 7), generalised to a coefficient of `s^m`, written into
 /// `sensitivity`: with `B = -M⁻¹Gᵀ` frozen at the step start, `∂q/∂c = τ²/((m+1)(m+2)) B` and
 /// `∂q'/∂c = τ/(m+1) B` (for `m = 0` the paper's `τ²/2` and `τ`).
-#[inline(never)]
 fn paper_sensitivity<S, const N: usize, const Z: usize, const K: usize>(
     model: &mut Model<'_, S, N, Z>,
     start: &Start<N>,

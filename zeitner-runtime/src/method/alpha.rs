@@ -19,6 +19,7 @@ use super::{EndSensitivity, Method, Start, StepEnd};
 use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::{Acceleration, FactorOf, Model};
+use crate::outline::apart;
 use crate::polynomial::Multipliers;
 use crate::scalar::floors::{STAGE_CONVERGED, STAGE_STALLED};
 use crate::scalar::Float;
@@ -200,7 +201,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
         };
         if let Some(end_sensitivity) = sensitivity {
             let ends = (&at_start, &end, end_sensitivity);
-            self.end_sensitivity(model, ends, (start.t + h, h), multipliers)
+            // Apart from the frame live across the solve, for a large scene.
+            apart::<N, _>(|| self.end_sensitivity(model, ends, (start.t + h, h), multipliers))
                 .ok_or(stall)??;
         }
         self.candidate = Some(Candidate {
@@ -284,9 +286,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     /// `∂(q₁, v₁)/∂c_k` from the derivative of the converged equation for `ā₁` (the start's
     /// is zero), with a fresh Jacobian and factorisation at the step end `t` (which then serves
     /// as the next iteration matrix). `None` when the matrix is singular.
-    // Not inlined: the step's frame, live across the solve, would hold its N×Z temporaries.
     #[allow(clippy::type_complexity)]
-    #[inline(never)]
     fn end_sensitivity<
         Sys: ConstrainedSystem<N, Z, Storage = D>,
         const Z: usize,

@@ -15,6 +15,7 @@ use super::{Blocks, EndSensitivity, Method, Start, StepEnd, MAX_COEFFICIENTS};
 use crate::error::StepError;
 use crate::model::{Acceleration, FactorOf, Model, SquareOf};
 use crate::options::StepControl;
+use crate::outline::apart;
 use crate::polynomial::Multipliers;
 use crate::storage::{Combination, Iteration, Square, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
@@ -425,7 +426,9 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
             self.stages.a.as_mut()[i] = acceleration.a;
             if sensitivity.is_some() {
                 let lambdas = (multipliers, &lambda);
-                self.stage_sensitivity(model, (i, t, h), lambdas, &acceleration)
+                // Apart from the frame live across the stages' solves, for a large scene.
+                let at = (i, t, h);
+                apart::<N, _>(|| self.stage_sensitivity(model, at, lambdas, &acceleration))
                     .ok_or_else(stall)??;
             }
         }
@@ -446,7 +449,7 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     /// Solves implicit stage `i`; its `q`, `v` are stored, its acceleration returned. `None`
     /// when it does not converge even with a fresh iteration matrix.
     #[allow(clippy::type_complexity)]
-    #[inline]
+    #[inline(always)]
     fn implicit_stage<Sys: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
@@ -508,10 +511,8 @@ impl<T: Tableau<S>, const S: usize, const N: usize, const Z: usize, D: Storage<N
     /// its converged equation `v = v_known + hγ a(q_known + hγ v, v)` (the start's is zero): a
     /// fresh factorisation there, which then serves as the next iteration matrix. `None` when
     /// it is singular.
-    // Not inlined: the step's frame, live across the implicit stages' solves, would hold its
-    // N×Z temporaries too.
     #[allow(clippy::type_complexity)]
-    #[inline(never)]
+    #[inline]
     fn stage_sensitivity<Sys: ConstrainedSystem<N, Z, Storage = D>, const K: usize>(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,

@@ -11,6 +11,7 @@ use crate::error::{RowSet, StepError};
 use crate::method::{Method, Start, StepEnd};
 use crate::multipliers::{self, NewtonOutcome, NewtonSettings};
 use crate::options::{MultiplierModel, StepControl, VelocityProjection};
+use crate::outline::apart;
 use crate::output::Point;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
@@ -116,7 +117,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .resolve(method, S::POSITION_CONSTRAINTS, Z)
         {
             MultiplierModel::Automatic | MultiplierModel::Constant => {
-                let p = self.constant_guess(h, planned)?;
+                let p = apart::<N, _>(|| self.constant_guess(h, planned))?;
                 let multipliers = Multipliers {
                     base: Vector::zeros(),
                     coefficients: [p],
@@ -133,15 +134,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 };
                 self.attempt_with((h, planned), t_end, multipliers)
             }
-            MultiplierModel::EveryStage => self.attempt_every_stage(h, t_end),
+            MultiplierModel::EveryStage => apart::<N, _>(|| self.attempt_every_stage(h, t_end)),
         }
     }
 
     /// The constant multipliers Newton starts from: with position-level rows only, those that
     /// make the linearised constraint hold at the step end; else extrapolated from the last two
-    /// steps (or, without extrapolation, the last step's, as in the paper). Not inlined, as
-    /// [`Simulator::conclude`].
-    #[inline(never)]
+    /// steps (or, without extrapolation, the last step's, as in the paper).
     pub(super) fn constant_guess(
         &mut self,
         h: Float,
@@ -214,8 +213,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             } => {
                 self.statistics.newton_iterations += u64::from(integrations);
                 let constant = multipliers.first_power == 0 && K == 1;
-                let concluded =
-                    self.conclude(&end, &multipliers, constant, integrations, (h, t_end));
+                let span = (h, t_end);
+                let concluded = apart::<N, _>(|| {
+                    self.conclude(&end, &multipliers, constant, integrations, span)
+                });
                 match concluded? {
                     Attempt::Accepted(step) => Ok(Attempt::Accepted(Accepted { planned, ..step })),
                     rejected => Ok(rejected),
@@ -233,9 +234,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     }
 
     /// A step whose constraints hold: its consistent end point and error test.
-    // Not inlined: a step's frame would hold the end point's temporaries beside the Newton's
-    // call, a hundred kilobytes at a thousand coordinates.
-    #[inline(never)]
     pub(super) fn conclude<const K: usize>(
         &mut self,
         end: &StepEnd<N>,
@@ -335,7 +333,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             + 1
     }
 
-    #[inline(never)]
     pub(super) fn accept(
         &mut self,
         step: Accepted<N, Z>,

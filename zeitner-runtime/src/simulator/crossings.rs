@@ -3,19 +3,20 @@
 
 use super::attempt::Accepted;
 use super::{start_point, watch_at, Forget, Simulator};
-use crate::consistency::{consistent_point, end_report};
+use crate::consistency::{consistent_point, end_report, StartReport};
 use crate::contact;
+use crate::contact::Impact;
 use crate::error::StepError;
 use crate::events::{self, Crossing, Values};
 use crate::gaps::GapSet;
+use crate::outline::apart;
 use crate::output::{Direction, Point, StopReason};
 use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// The watched functions at a candidate step's end, and their earliest crossing of interest
-    /// within the step. Not inlined, as [`Simulator::conclude`].
-    #[inline(never)]
+    /// within the step.
     pub(super) fn crossing(
         &mut self,
         step: &Accepted<N, Z>,
@@ -64,9 +65,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (wide && middle > now && middle < t_end).then_some(middle)
     }
 
-    /// What a step that was just accepted stopped for. Not inlined, as
-    /// [`Simulator::conclude`].
-    #[inline(never)]
+    /// What a step that was just accepted stopped for.
+    #[inline]
     pub(super) fn after_step(
         &mut self,
         values: Option<&Values>,
@@ -191,9 +191,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         Some(StopReason::Event { index, direction })
     }
 
-    /// What the last step end left to report: events, then an impact. Not inlined, as
-    /// [`Simulator::conclude`].
-    #[inline(never)]
+    /// What the last step end left to report: events, then an impact.
     pub(super) fn pending_stop(&mut self) -> Result<Option<StopReason>, StepError> {
         if let Some(reason) = self.next_event() {
             return Ok(Some(reason));
@@ -208,37 +206,53 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if S::UNILATERAL_CONSTRAINTS == 0 || self.pending.impact.is_empty() {
             return Ok(None);
         }
-        self.impact(self.pending.impact)?;
+        let gaps = self.pending.impact;
+        apart::<N, _>(|| self.impact(gaps))?;
         self.pending.impact = GapSet::EMPTY;
         Ok(Some(StopReason::Impact))
     }
 
     /// The impact of `gaps` at the current state: the velocity jump, the contacts that stay
-    /// closed, and a consistent state after it, reported as a step of zero length.
-    #[inline(never)]
+    /// closed, and a consistent state after it, reported as a step of zero length. On an error
+    /// nothing changed.
     pub(super) fn impact(&mut self, gaps: GapSet) -> Result<(), StepError> {
-        let before = self.record.last.end;
         let open = self.model.open_gaps();
+        // Two parts, apart for a large scene: the first goes deep (a consistent start), the
+        // second holds the reports.
+        let resolved = apart::<N, _>(|| self.state_after_impact(gaps))
+            .and_then(|after| apart::<N, _>(|| self.anchor_after_impact(after)));
+        resolved.inspect_err(|_| self.model.set_open_gaps(open))
+    }
+
+    /// The impulse of `gaps` at the current state, and the consistent state after it with how
+    /// it was made consistent; the run itself is unchanged.
+    fn state_after_impact(&mut self, gaps: GapSet) -> Result<AfterImpact<N, Z>, StepError> {
+        let before = &self.record.last.end;
         let rest = self.options.events.rest_velocity;
+        let state = (&before.q, &before.v, before.t);
+        let impact = contact::impact(&mut self.model, state, gaps, rest)?;
+        let state = (before.q, impact.velocity_after, before.t);
+        let (mut point, report) = start_point(&mut self.model, state, &self.options)?;
+        contact::open_pulling(&mut self.model, &mut point)?;
+        Ok((impact, point, report))
+    }
+
+    /// Re-anchors the run after an impact at the state [`Simulator::state_after_impact`]
+    /// found, reported as a step of zero length.
+    fn anchor_after_impact(
+        &mut self,
+        (impact, point, report): AfterImpact<N, Z>,
+    ) -> Result<(), StepError> {
+        let before = self.record.last.end;
         let tolerance = self.options.constraint_tolerance;
-        let resolved = contact::impact(
-            &mut self.model,
-            (&before.q, &before.v, before.t),
-            gaps,
-            rest,
-        )
-        .and_then(|impact| {
-            let state = (before.q, impact.velocity_after, before.t);
-            let (mut point, report) = start_point(&mut self.model, state, &self.options)?;
-            contact::open_pulling(&mut self.model, &mut point)?;
-            let last = end_report(&mut self.model, before, point, point.lambda, 0, None)?;
-            let watch = watch_at(&mut self.model, &last.end, tolerance)?;
-            Ok((impact, last, report, watch))
-        });
-        let (impact, last, report, watch) =
-            resolved.inspect_err(|_| self.model.set_open_gaps(open))?;
+        let last = end_report(&mut self.model, before, point, point.lambda, 0, None)?;
+        let watch = watch_at(&mut self.model, &last.end, tolerance)?;
         self.anchor((last, watch, Some(report)), Forget::Steps);
         self.record.last_impact = Some(impact);
         Ok(())
     }
 }
+
+/// What an impact leads to: the impact, the consistent point after it, and how it was made
+/// consistent.
+type AfterImpact<const N: usize, const Z: usize> = (Impact<N, Z>, Point<N, Z>, StartReport<N, Z>);

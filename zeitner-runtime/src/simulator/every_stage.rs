@@ -10,13 +10,13 @@ use crate::control::newton_tolerance;
 use crate::error::{InvalidOption, StepError};
 use crate::linalg::finite_state;
 use crate::method::Method;
+use crate::outline::apart;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector};
 
 impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S, N, Z> {
     /// One try of a step of size `h` ending at `t_end`.
-    #[inline(never)]
     pub(super) fn attempt_every_stage(
         &mut self,
         h: Float,
@@ -68,7 +68,8 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
             first_power: 0,
         };
         let lambda_start = self.lambda;
-        Ok(match self.conclude(&end, &held, false, 1, (h, t_end))? {
+        let concluded = apart::<N, _>(|| self.conclude(&end, &held, false, 1, (h, t_end)));
+        Ok(match concluded? {
             Attempt::Accepted(mut step) => {
                 step.positions_projected = step.q != integrated_q;
                 // Nothing fails where a gradient vanishes (a cusp): the index-1 stages would

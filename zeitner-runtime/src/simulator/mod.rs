@@ -7,6 +7,7 @@
 //! one re-anchoring at a consistent point in `anchor`, and what an observer sees in
 //! `observation`.
 
+use crate::outline::apart;
 use crate::scalar::Float;
 
 mod anchor;
@@ -336,7 +337,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// function or a gap; says why it returned. Events found at the last step end and an
     /// impact due there are returned first, one per call, without a step.
     pub fn step(&mut self) -> Result<StopReason, StepError> {
-        if let Some(reason) = self.pending_stop()? {
+        // The step's side paths go apart from the frame live across the integration, for a
+        // large scene (`outline`).
+        if let Some(reason) = apart::<N, _>(|| self.pending_stop())? {
             return Ok(reason);
         }
         if self.stop_time == Some(self.time()) {
@@ -363,7 +366,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             retry = true;
             match self.attempt((h_try, reach), t_end)? {
                 Attempt::Accepted(step) => {
-                    let (values, crossing) = self.crossing(&step, t_end)?;
+                    let (values, crossing) = apart::<N, _>(|| self.crossing(&step, t_end))?;
                     // Where the dense output is too poor to aim by, halve the step instead.
                     let aim = match crossing {
                         Some(c) if relocations < AIMED_RELOCATIONS => self.aim(c, t_end),
@@ -379,8 +382,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                     }
                     let landed = landing && target.is_none_or(|aim| aim == t_end);
                     let aimed = landing && target == Some(t_end);
-                    self.accept(step, t_end, (h_try, planned.max(h)), landed)?;
-                    return self.after_step(values.as_ref(), t_end, (landing, time_event), aimed);
+                    let sizes = (h_try, planned.max(h));
+                    apart::<N, _>(|| self.accept(step, t_end, sizes, landed))?;
+                    let ends = (landing, time_event);
+                    return apart::<N, _>(|| self.after_step(values.as_ref(), t_end, ends, aimed));
                 }
                 Attempt::Rejected { factor, cause } => {
                     self.statistics.rejected_steps += 1;
