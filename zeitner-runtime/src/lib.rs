@@ -75,14 +75,15 @@ pub use contact::Impact;
 pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use gaps::GapSet;
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
-pub use model::Evaluations;
 pub use options::{
     ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
     StartPolicy, StepControl, VelocityProjection, VERNER_FROM_RTOL,
 };
-pub use output::{Direction, Point, Sensitivities, StepReport, StopReason};
+pub use output::{
+    Direction, Evaluations, Point, Sensitivities, Statistics, StepReport, StopReason,
+};
 pub use scalar::Float;
-pub use simulator::{Observation, SensitivitySimulator, Simulator, Statistics};
+pub use simulator::{Observation, SensitivitySimulator, Simulator};
 #[cfg(feature = "alloc")]
 pub use sparse::SparseSimulator;
 pub use system::{

@@ -5,47 +5,10 @@ use crate::error::{ModelFunction, StepError};
 use crate::gaps::GapSet;
 use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
+use crate::output::Evaluations;
 use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
-
-/// How often each model function was called.
-///
-/// ```
-/// use zeitner_runtime::Evaluations;
-///
-/// let mut counted = Evaluations::default();
-/// assert_eq!((counted.forces, counted.mass_factorizations), (0, 0));
-/// counted.forces += 6; // plain fields: a run's counts can be summed over runs
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[non_exhaustive]
-pub struct Evaluations {
-    /// `F(q, q', t)`.
-    pub forces: u64,
-    /// `g(q, q', t)`.
-    pub constraint_residuals: u64,
-    /// `G`.
-    pub constraint_jacobians: u64,
-    /// `∂g/∂q` of velocity-level rows.
-    pub constraint_position_partials: u64,
-    /// `w`, the velocity-level form of the constraints.
-    pub constraint_rates: u64,
-    /// `b` in `G q'' + b = 0`.
-    pub acceleration_biases: u64,
-    /// `∂F/∂q, ∂F/∂q'`.
-    pub force_jacobians: u64,
-    /// `∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q'` for one `λ` (the Newton on quadratic multipliers asks for one per
-    /// constraint row).
-    pub constraint_force_jacobians: u64,
-    /// `∂(M a)/∂q` of a configuration-dependent mass.
-    pub mass_jacobian_products: u64,
-    /// Factorisations of `M`.
-    pub mass_factorizations: u64,
-    /// Evaluations of the event functions (at step ends and while locating a crossing).
-    pub event_functions: u64,
-}
 
 pub(crate) type FactorOf<S, const N: usize, const Z: usize> =
     <<S as ConstrainedSystem<N, Z>>::Mass as MassMatrix<N>>::Factor;

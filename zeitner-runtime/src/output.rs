@@ -1,5 +1,5 @@
-//! What a run shows, as plain data: consistent points, step reports with dense output and why
-//! a step stopped. (What the observer of `Simulator::advance_to` sees lives beside the
+//! What a run shows, as plain data: consistent points, step reports with dense output, why
+//! a step stopped, and the run's counts. (What the observer of `Simulator::advance_to` sees lives beside the
 //! simulator it borrows; the reports are made in `consistency`.)
 
 use crate::gaps::GapSet;
@@ -277,4 +277,75 @@ mod tests {
             assert!((sampled.lambda - exact.lambda).amax() < 1e-15, "λ at {t}");
         }
     }
+}
+
+/// How often each model function was called.
+///
+/// ```
+/// use zeitner_runtime::Evaluations;
+///
+/// let mut counted = Evaluations::default();
+/// assert_eq!((counted.forces, counted.mass_factorizations), (0, 0));
+/// counted.forces += 6; // plain fields: a run's counts can be summed over runs
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub struct Evaluations {
+    /// `F(q, q', t)`.
+    pub forces: u64,
+    /// `g(q, q', t)`.
+    pub constraint_residuals: u64,
+    /// `G`.
+    pub constraint_jacobians: u64,
+    /// `∂g/∂q` of velocity-level rows.
+    pub constraint_position_partials: u64,
+    /// `w`, the velocity-level form of the constraints.
+    pub constraint_rates: u64,
+    /// `b` in `G q'' + b = 0`.
+    pub acceleration_biases: u64,
+    /// `∂F/∂q, ∂F/∂q'`.
+    pub force_jacobians: u64,
+    /// `∂(Gᵀλ)/∂q, ∂(Gᵀλ)/∂q'` for one `λ` (the Newton on quadratic multipliers asks for one per
+    /// constraint row).
+    pub constraint_force_jacobians: u64,
+    /// `∂(M a)/∂q` of a configuration-dependent mass.
+    pub mass_jacobian_products: u64,
+    /// Factorisations of `M`.
+    pub mass_factorizations: u64,
+    /// Evaluations of the event functions (at step ends and while locating a crossing).
+    pub event_functions: u64,
+}
+
+/// Counts over the whole run.
+///
+/// ```
+/// use zeitner_runtime::Statistics;
+///
+/// // Every count starts at zero; none has turned implicit yet.
+/// let fresh = Statistics::default();
+/// assert_eq!((fresh.steps, fresh.rejected_steps, fresh.newton_iterations), (0, 0, 0));
+/// assert_eq!(fresh.turned_implicit_after, None);
+/// assert_eq!(fresh.evaluations.forces, 0); // the model's calls, counted too
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub struct Statistics {
+    pub steps: u64,
+    pub rejected_steps: u64,
+    /// Integrations of a step with prescribed multipliers (Newton sweeps), over all attempts.
+    pub newton_iterations: u64,
+    /// The most integrations one accepted step needed.
+    pub max_newton_iterations: u32,
+    /// Factorisations of an implicit method's iteration matrix.
+    pub iteration_matrix_factorizations: u64,
+    /// Accepted steps shortened to end at a zero crossing located on the dense output that
+    /// then lay a little beyond their end (the next step goes on from nearer). They are
+    /// reported as [`StopReason::StepTaken`].
+    pub steps_aimed_at_crossings: u64,
+    /// The accepted steps after which [`crate::InnerMethod::Automatic`] found the run stiff and went
+    /// on with its implicit method; none while it has not.
+    pub turned_implicit_after: Option<u64>,
+    pub evaluations: Evaluations,
 }

@@ -1,7 +1,7 @@
 //! One step as a transaction: plan its size, predict the multipliers, let Newton hold the
 //! constraints at its end, test its error, and accept it or say how to retry.
 
-use super::{LastStep, Simulator};
+use super::Simulator;
 use crate::consistency::{end_point, end_report, tangential, Gram};
 use crate::control::{
     error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, tempered,
@@ -34,6 +34,15 @@ pub(super) struct Accepted<const N: usize, const Z: usize> {
     pub(super) singular_end: bool,
     /// What a step's sensitivities need to take it again: the size its residual correction was
     /// made for, and whether its end's positions were projected.
+    pub(super) planned: Float,
+    pub(super) positions_projected: bool,
+}
+
+/// What the last accepted step was taken with, for [`super::SensitivitySimulator`] to take it again.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct LastStep<const Z: usize> {
+    pub(super) multipliers: StepPolynomial<Z>,
+    /// The size the step's residual correction was made for.
     pub(super) planned: Float,
     pub(super) positions_projected: bool,
 }

@@ -14,6 +14,26 @@ use crate::output::{Direction, Point, StopReason};
 use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
+/// Events found at the last step end and not yet returned, and gaps to close by an impact.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Pending {
+    /// Event functions that crossed, by bit, and which of them rose.
+    pub(super) events: u32,
+    pub(super) rising: u32,
+    pub(super) impact: GapSet,
+    /// The last step ended where a constraint gradient had all but vanished (a cusp), which
+    /// the multipliers solved at every stage would step through: the next step names it.
+    pub(super) singular: bool,
+}
+
+/// How many times a step is integrated again to end nearer a crossing before it is taken as it
+/// is (the next step finds the crossing again, from much nearer): first aimed at the crossing
+/// located on the dense output, then by halving, which converges on the exact trajectory
+/// however poor the dense output.
+pub(super) const RELOCATIONS: u32 = 64;
+/// How many of those aim at the crossing located on the dense output; the rest halve the step.
+pub(super) const AIMED_RELOCATIONS: u32 = 8;
+
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// The watched functions at a candidate step's end, and their earliest crossing of interest
     /// within the step.

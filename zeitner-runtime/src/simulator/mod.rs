@@ -25,7 +25,8 @@ pub use observation::Observation;
 pub use sensitivity::SensitivitySimulator;
 
 use anchor::Forget;
-use attempt::Attempt;
+use attempt::{Attempt, LastStep};
+use crossings::{Pending, AIMED_RELOCATIONS, RELOCATIONS};
 
 use crate::consistency::{Gram, Start, StartReport};
 use crate::contact::Impact;
@@ -34,12 +35,12 @@ use crate::error::{InvalidOption, StepError};
 use crate::events::Watch;
 use crate::gaps::GapSet;
 use crate::method::{AnyMethod, EndSensitivity, Method};
-use crate::model::{Evaluations, Model};
+use crate::model::Model;
 use crate::multipliers::Predictor;
 use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
-use crate::output::{StepReport, StopReason};
+use crate::output::{Statistics, StepReport, StopReason};
 use crate::polynomial::StepPolynomial;
 use crate::storage::Storage;
 use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
@@ -47,39 +48,6 @@ use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
 /// `T` held as scene `S`'s storage holds a run's workspace.
 type Held<S, T, const N: usize, const Z: usize> =
     <<S as ConstrainedSystem<N, Z>>::Storage as Storage<N>>::Held<T>;
-
-/// Counts over the whole run.
-///
-/// ```
-/// use zeitner_runtime::Statistics;
-///
-/// // Every count starts at zero; none has turned implicit yet.
-/// let fresh = Statistics::default();
-/// assert_eq!((fresh.steps, fresh.rejected_steps, fresh.newton_iterations), (0, 0, 0));
-/// assert_eq!(fresh.turned_implicit_after, None);
-/// assert_eq!(fresh.evaluations.forces, 0); // the model's calls, counted too
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[non_exhaustive]
-pub struct Statistics {
-    pub steps: u64,
-    pub rejected_steps: u64,
-    /// Integrations of a step with prescribed multipliers (Newton sweeps), over all attempts.
-    pub newton_iterations: u64,
-    /// The most integrations one accepted step needed.
-    pub max_newton_iterations: u32,
-    /// Factorisations of an implicit method's iteration matrix.
-    pub iteration_matrix_factorizations: u64,
-    /// Accepted steps shortened to end at a zero crossing located on the dense output that
-    /// then lay a little beyond their end (the next step goes on from nearer). They are
-    /// reported as [`StopReason::StepTaken`].
-    pub steps_aimed_at_crossings: u64,
-    /// The accepted steps after which [`InnerMethod::Automatic`] found the run stiff and went
-    /// on with its implicit method; none while it has not.
-    pub turned_implicit_after: Option<u64>,
-    pub evaluations: Evaluations,
-}
 
 /// A constrained system being integrated. Holds the last accepted state; a failed step leaves
 /// it untouched.
@@ -162,35 +130,6 @@ struct Record<const N: usize, const Z: usize> {
     /// last step's end point (the multiplier prediction's linearisation); none after a start.
     state_gram: Option<(Gram<N, Z>, Vector<N>)>,
 }
-
-/// What the last accepted step was taken with, for [`SensitivitySimulator`] to take it again.
-#[derive(Clone, Copy, Debug)]
-struct LastStep<const Z: usize> {
-    multipliers: StepPolynomial<Z>,
-    /// The size the step's residual correction was made for.
-    planned: Float,
-    positions_projected: bool,
-}
-
-/// Events found at the last step end and not yet returned, and gaps to close by an impact.
-#[derive(Clone, Copy, Debug, Default)]
-struct Pending {
-    /// Event functions that crossed, by bit, and which of them rose.
-    events: u32,
-    rising: u32,
-    impact: GapSet,
-    /// The last step ended where a constraint gradient had all but vanished (a cusp), which
-    /// the multipliers solved at every stage would step through: the next step names it.
-    singular: bool,
-}
-
-/// How many times a step is integrated again to end nearer a crossing before it is taken as it
-/// is (the next step finds the crossing again, from much nearer): first aimed at the crossing
-/// located on the dense output, then by halving, which converges on the exact trajectory
-/// however poor the dense output.
-const RELOCATIONS: u32 = 64;
-/// How many of those aim at the crossing located on the dense output; the rest halve the step.
-const AIMED_RELOCATIONS: u32 = 8;
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// Starts at `start`. With the default [`crate::StartPolicy::Project`] the

@@ -8,7 +8,7 @@ use alloc::vec::Vec;
 use super::gram::{GramFactor, GramStructure};
 use crate::error::{ModelFunction, RowSet, StepError};
 use crate::mass::{MassFactor, MassMatrix};
-use crate::model::Evaluations;
+use crate::output::Evaluations;
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
 /// The structure shared by every configuration of a scene.

@@ -19,14 +19,15 @@ use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 use crate::linalg::max_abs;
 use crate::linalg::{finite, finite_state};
 use crate::method::explicit::{Tableau, DOPRI5, RK4};
-use crate::model::Evaluations;
 use crate::multipliers::{carried_share, Predictor};
 use crate::options::{
     InnerMethod, MultiplierModel, Options, StartPolicy, StepControl, VelocityProjection,
 };
+use crate::output::Evaluations;
+use crate::output::Statistics;
 use crate::output::{Point, StepReport, StopReason};
 use crate::polynomial::StepPolynomial;
-use crate::simulator::{already_there, first_step, Statistics};
+use crate::simulator::{already_there, first_step};
 use crate::system::{ConstrainedSystem, MassKind, Vector};
 
 /// Position projections at the start take at most this many Newton sweeps.
