@@ -256,13 +256,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
             // `G` at the step start is the last end point's, where no gap can have opened since.
-            let known = self
-                .record
-                .state_gram
-                .filter(|_| S::UNILATERAL_CONSTRAINTS == 0);
-            let g1 = match known {
-                Some((at, _)) => at.jacobian,
-                None => self.model.jacobian(&self.q, &self.v, self.time())?,
+            let g1 = match &self.record.state_gram {
+                Some((at, _)) if S::UNILATERAL_CONSTRAINTS == 0 => at.jacobian,
+                _ => self.model.jacobian(&self.q, &self.v, self.time())?,
             };
             let start = (&g1, &self.lambda, self.time());
             let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
