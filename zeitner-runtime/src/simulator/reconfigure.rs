@@ -1,8 +1,8 @@
 //! What a user changes mid-run: the options (re-projecting the state where they tighten the
 //! tolerance) and the time events.
 
-use super::{suits_the_rows, watch_at, Forget, Simulator};
-use crate::consistency::{consistent_start, end_report};
+use super::{report_at, suits_the_rows, watch_at, Forget, Simulator};
+use crate::consistency::consistent_start;
 use crate::control::{bounds, Progress, StiffnessTest};
 use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
@@ -92,7 +92,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         model.prepare(&end.q, end.t)?;
         let (point, report) = consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
         let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
-        let last = end_report(model, point, point, point.lambda, 0, Some(&jacobian))?;
+        let last = report_at(model, point, Some(&jacobian))?;
         let watch = watch_at(model, &last.end, tolerance)?;
         self.anchor((last, watch, Some(report)), Forget::History);
         Ok(())

@@ -29,7 +29,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .model
             .acceleration(&point.q, &point.v, point.t, &lambda)?
             .a;
-        self.record.last = end_report(&mut self.model, point, point, lambda, 0, None)?;
+        self.record.last = report_at(&mut self.model, point, None)?;
         self.lambda = lambda;
         self.record.start_report.multipliers = lambda;
         self.record.start_report.multipliers_given = true;
