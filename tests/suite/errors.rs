@@ -197,11 +197,12 @@ fn zero_and_negative_masses_are_not_positive_definite() {
     );
 }
 
-/// The pendulum with its rod stated twice.
-struct Redundant;
+/// The pendulum's rod stated twice, at two lengths: the rows depend on each other and cannot
+/// both hold.
+struct Inconsistent;
 
 #[constrained_system]
-impl Redundant {
+impl Inconsistent {
     fn mass(&self) -> [f64; 2] {
         [1.0, 1.0]
     }
@@ -209,14 +210,14 @@ impl Redundant {
         [0.0, -9.81]
     }
     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 2] {
-        [x * x + y * y - 1.0, 2.0 * (x * x + y * y - 1.0)]
+        [x * x + y * y - 1.0, 2.0 * (x * x + y * y) - 8.0]
     }
 }
 
 #[test]
-fn redundant_constraints_are_named() {
+fn inconsistent_redundant_constraints_are_named() {
     let (q, v) = released();
-    let error = Simulator::new(&Redundant, Start { q, v, t: 0.0 }, Options::default()).err();
+    let error = Simulator::new(&Inconsistent, Start { q, v, t: 0.0 }, Options::default()).err();
     let Some(StepError::RankDeficientConstraints { dependent_rows, .. }) = error else {
         panic!("expected rank deficiency, got {error:?}");
     };

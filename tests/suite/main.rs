@@ -15,6 +15,7 @@ mod high_order;
 mod impacts;
 mod nonholonomic;
 mod pendulum;
+mod redundant;
 mod runtime_api;
 mod sensitivities;
 mod short_steps;

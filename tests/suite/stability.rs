@@ -6,7 +6,7 @@ use crate::common;
 
 use common::pendulum::Pendulum;
 use common::steam_generator::SteamGenerator;
-use common::stiff::{DoublePendulum, RedundantFourBar, SliderCrank, SpringPendulum};
+use common::stiff::{DoublePendulum, SliderCrank, SpringPendulum};
 use zeitner::{
     ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
 };
@@ -189,38 +189,6 @@ fn the_slider_crank_passes_its_dead_centre() {
     assert!(
         max_g <= 1e-10 && gain <= 1e-2 * 0.5 * omega * omega,
         "|g| {max_g:e}, gain {gain:e}"
-    );
-}
-
-#[test]
-fn a_dependent_equation_is_named() {
-    let scene = RedundantFourBar {
-        m: 1.0,
-        r1: 1.0,
-        r2: 2.0,
-        r3: 1.5,
-        d: 2.0,
-        g: 9.81,
-    };
-    let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
-    let error = Simulator::new(
-        &scene,
-        Start {
-            q: start,
-            v: Vector::zeros(),
-            t: 0.0,
-        },
-        Options::default(),
-    )
-    .err();
-    let Some(StepError::RankDeficientConstraints { dependent_rows, .. }) = error else {
-        panic!("expected rank deficiency, got {error:?}");
-    };
-    assert_eq!(dependent_rows.len(), 1, "{dependent_rows}");
-    // The dependent set is {crank, rocker, their sum}: whichever row is named, it is one of those.
-    assert!(
-        !dependent_rows.contains(1),
-        "the coupler is independent: {dependent_rows}"
     );
 }
 

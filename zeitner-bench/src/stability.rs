@@ -751,8 +751,11 @@ fn which_method_where(cases: &[Case]) -> String {
          multipliers (order 5), or RK4 with fixed steps where the step is known; ESDIRK 5(4) works there too, at 1.2–2.8× Dormand–Prince's cost at equal error \
          (ESDIRK 4(3) at 1.6–5.0×; `docs/performance.md`), so a model that is stiff only in \
          parts of its run can stay with it.\n\
-         - **Singular configurations and redundant equations** stop every method with \
-         `RankDeficientConstraints`; redundant but consistent rows run with `SparseSimulator`.\n",
+         - **Redundant equations** run when they are consistent: the rows that depend on the \
+         others at the start are named in the start report, the others enforced, and every step \
+         end checks that the dependent rows still hold. Inconsistent ones, and singular \
+         configurations reached during a run, stop every method with \
+         `RankDeficientConstraints`.\n",
     );
     out
 }

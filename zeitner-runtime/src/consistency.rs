@@ -3,9 +3,9 @@
 //! when the state is re-initialised.
 
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{all_finite, finite_state, keep_leading_rows, max_abs, solve_spd};
+use crate::linalg::{all_finite, dependent, finite_state, keep_leading_rows, max_abs, solve_spd};
 use crate::mass::MassFactor;
-use crate::model::{ConstraintDirections, FactorOf, Model};
+use crate::model::{ConstraintDirections, FactorOf, Model, REDUNDANT_ROWS};
 use crate::options::StartPolicy;
 use crate::outline::apart;
 use crate::output::{Point, StepReport};
@@ -64,9 +64,12 @@ pub struct StartReport<const N: usize, const Z: usize> {
     pub multipliers: Vector<Z>,
     /// Whether the multipliers were given rather than computed.
     pub multipliers_given: bool,
-    /// Constraint rows that depend on the others at the start (redundant but consistent): the
-    /// sparse simulator runs them with minimum-norm multipliers; [`crate::Simulator`] refuses
-    /// them, so there it is always empty.
+    /// Constraint rows that depend on the others at the start (redundant but consistent).
+    /// [`crate::Simulator`] enforces the others and checks at every step end that these still
+    /// hold with them (refusing the run with
+    /// [`StepError::RankDeficientConstraints`] once one does not); their multipliers are zero,
+    /// the others carry the force (the basic solution: `Gᵀλ`, the force on the system, is the
+    /// same for every split). The sparse simulator runs them with minimum-norm multipliers.
     pub redundant_rows: RowSet,
 }
 
@@ -95,21 +98,81 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
     if !finite_state(&q0, &v0) {
         return Err(StepError::non_finite_state(t0));
     }
+    model.set_redundant_rows(0, Vector::zeros());
     if policy == StartPolicy::Refuse {
         refuse_inconsistent(model, &q0, &v0, t0, tolerance)?;
     }
     // Apart from the frame live across the consistent point's evaluation, for a large scene.
-    let q = apart::<N, _>(|| project_positions(model, q0, &v0, t0, tolerance))?;
+    let redundant_rows = match Z {
+        1 => RowSet::new(S::POSITION_CONSTRAINTS),
+        _ => apart::<N, _>(|| mask_redundant_rows(model, (&q0, &v0, t0)))?,
+    };
+    let held = model.tightened(tolerance);
+    let q = apart::<N, _>(|| project_positions(model, q0, &v0, t0, held))?;
     let v = apart::<N, _>(|| project_velocities(model, &q, v0, t0, tolerance))?;
+    model.redundant_rows_hold((&q, &v, t0), tolerance)?;
     let point = consistent_point(model, t0, q, v)?;
     let report = StartReport {
         position_change: q - q0,
         velocity_change: v - v0,
         multipliers: point.lambda,
         multipliers_given: false,
-        redundant_rows: RowSet::new(S::POSITION_CONSTRAINTS),
+        redundant_rows,
     };
     Ok((point, report))
+}
+
+/// Finds the rows of `G` (the closed gaps' included) that depend on the others at the start,
+/// by pivoted Cholesky on `G M⁻¹Gᵀ`, and masks them: the others are enforced, and these must
+/// follow ([`Model::redundant_rows_hold`], at the start and at every step end). A dependent gap
+/// row is refused: whether a gap is closed is decided by its own multiplier.
+fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+) -> Result<RowSet, StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    let gram = model.directions(q, v, t)?.gram();
+    let dependent = dependent(&gram);
+    let mut rows = RowSet::new(r);
+    let mut bits = 0u64;
+    let first_gap = r - S::UNILATERAL_CONSTRAINTS;
+    let mut refused = false;
+    for (row, _) in dependent.iter().enumerate().filter(|(_, &d)| d) {
+        rows.insert(row);
+        refused |= (first_gap..r).contains(&row) || row >= REDUNDANT_ROWS;
+        bits |= 1u64.checked_shl(row as u32).unwrap_or(0);
+    }
+    if refused {
+        return Err(StepError::RankDeficientConstraints {
+            t,
+            dependent_rows: rows,
+        });
+    }
+    if bits == 0 {
+        return Ok(rows);
+    }
+    // Each dependent row's combination `c` of the others: `A_B c = A_{B,d}`.
+    model.set_redundant_rows(bits, Vector::zeros());
+    let kept = model.masked_rows();
+    let mut rows_cleared = gram;
+    kept.clear(&mut rows_cleared);
+    let mut masked_gram = rows_cleared.transpose();
+    kept.clear(&mut masked_gram);
+    kept.regularise(&mut masked_gram);
+    let mut reach = Vector::<Z>::zeros();
+    for (row, _) in dependent.iter().enumerate().filter(|(_, &d)| d) {
+        let mut column: Vector<Z> = gram.column(row).into_owned();
+        kept.clear(&mut column);
+        let combination = solve_spd(&masked_gram, &column, r).map_err(|rows| {
+            StepError::RankDeficientConstraints {
+                t,
+                dependent_rows: rows,
+            }
+        })?;
+        reach[row] = 1.0 + combination.iter().map(|c| c.abs()).sum::<Float>();
+    }
+    model.set_redundant_rows(bits, reach);
+    Ok(rows)
 }
 
 fn refuse_inconsistent<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
@@ -382,6 +445,7 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     let sweeps = if r < Z { 3 } else { 1 };
     let velocity_rows_hold = |w: &Vector<Z>| w.iter().skip(r).all(|x| x.abs() <= tolerance);
     let (v, directions) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
+    model.redundant_rows_hold((&q, &v, t), tolerance)?;
     // `G` of position rows does not depend on the velocities: the last sweep's serves the
     // projected ones. `q` is finite (the step's end), `v` checked by the sweeps.
     let directions = if r == Z {
@@ -451,13 +515,14 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     if !(all_finite(constraint_force.as_slice()) & all_finite(step_multipliers.as_slice())) {
         return Err(StepError::non_finite_state(end.t));
     }
+    let (residual, rate_residual) = model.reported_residuals((&end.q, &end.v, end.t))?;
     Ok(StepReport {
         start,
         end,
         step_multipliers,
         constraint_force,
-        residual: model.residual(&end.q, &end.v, end.t)?,
-        rate_residual: model.rate(&end.q, &end.v, end.t)?,
+        residual,
+        rate_residual,
         newton_iterations,
     })
 }

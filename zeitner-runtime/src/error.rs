@@ -382,7 +382,11 @@ pub enum StepError {
         residual: Float,
         worst_row: Row,
     },
-    /// The constraint Jacobian lost rank: redundant constraints or a singular configuration.
+    /// The constraint Jacobian lost rank, and the dependent rows do not hold with the others:
+    /// redundant rows that are inconsistent (or that stop following the others, having been
+    /// dependent only at a singular start), dependent gap rows, or a singular configuration
+    /// reached during the run. Redundant but consistent rows are taken, see
+    /// [`crate::StartReport::redundant_rows`].
     RankDeficientConstraints { t: Float, dependent_rows: RowSet },
     /// The mass matrix is not symmetric positive definite (or is badly singular).
     MassNotPositiveDefinite { t: Float },
@@ -418,6 +422,44 @@ impl StepError {
     }
 }
 
+impl StepError {
+    /// What to change, after what happened: the second half of every message.
+    fn advice(&self) -> &'static str {
+        match self {
+            StepError::NewtonDidNotConverge { .. } => {
+                "use a smaller or adaptive step, more `max_newton_iterations`, or a larger \
+                 `constraint_tolerance`"
+            }
+            StepError::RankDeficientConstraints { .. } => {
+                "state each constraint once (redundant rows must be consistent, and gap rows \
+                 independent), or avoid the singular configuration"
+            }
+            StepError::MassNotPositiveDefinite { .. } => {
+                "check that every mass and inertia is positive"
+            }
+            StepError::NonFinite { .. } => {
+                "check the model's parameters and the state, or use a smaller step"
+            }
+            StepError::StageDidNotConverge { .. } => "use a smaller step",
+            StepError::StepSizeTooSmall { .. } => {
+                "loosen `rtol`/`atol`, choose an implicit method (`Esdirk54`) for forces too \
+                 stiff for an explicit one, or look for a singularity or discontinuity there"
+            }
+            StepError::TooManyAttempts { .. } => {
+                "shrink it faster after a rejection (smaller `newton_failure_factor` or \
+                 `min_factor`) or start from a smaller `initial_step`"
+            }
+            StepError::Stalled { .. } => {
+                "look for a singular configuration or a discontinuity there, loosen `rtol`/`atol` \
+                 or `constraint_tolerance`, raise `max_newton_iterations`, or use an implicit \
+                 method if the model is stiff"
+            }
+            StepError::InconsistentStart { .. } => "give a state on or nearer the constraints",
+            StepError::InvalidOption(_) => "",
+        }
+    }
+}
+
 impl fmt::Display for StepError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -430,49 +472,36 @@ impl fmt::Display for StepError {
             } => write!(
                 f,
                 "Newton on the multipliers did not converge at t = {t} with step {step:e}: after \
-                 {iterations} integrations {worst_row} is still violated by {residual:e}; use a \
-                 smaller or adaptive step, more `max_newton_iterations`, or a larger \
-                 `constraint_tolerance`"
+                 {iterations} integrations {worst_row} is still violated by {residual:e}"
             ),
             StepError::RankDeficientConstraints { t, dependent_rows } => write!(
                 f,
                 "the constraint Jacobian is rank-deficient at t = {t}: {dependent_rows} depend on \
-                 the others; remove redundant constraints (or run them with `SparseSimulator`, \
-                 which takes redundant but consistent rows), or avoid the singular configuration"
+                 the others but do not hold with them"
             ),
-            StepError::MassNotPositiveDefinite { t } => write!(
-                f,
-                "the mass matrix is not positive definite at t = {t}: check that every mass and \
-                 inertia is positive"
-            ),
-            StepError::NonFinite { t, function } => write!(
-                f,
-                "{function} became NaN or infinite at t = {t}: check the model's parameters and \
-                 the state, or use a smaller step"
-            ),
+            StepError::MassNotPositiveDefinite { t } => {
+                write!(f, "the mass matrix is not positive definite at t = {t}")
+            }
+            StepError::NonFinite { t, function } => {
+                write!(f, "{function} became NaN or infinite at t = {t}")
+            }
             StepError::StageDidNotConverge { t, step } => write!(
                 f,
-                "the implicit stage equations did not converge at t = {t} with step {step:e}: use \
-                 a smaller step"
+                "the implicit stage equations did not converge at t = {t} with step {step:e}"
             ),
             StepError::StepSizeTooSmall { t, step } => write!(
                 f,
                 "the step size fell to {step:e} at t = {t}, below `min_step` or below what moves \
-                 the time: loosen `rtol`/`atol`, choose an implicit method (`Esdirk54`) for forces \
-                 too stiff for an explicit one, or look for a singularity or discontinuity there"
+                 the time"
             ),
             StepError::TooManyAttempts { t, step, attempts } => write!(
                 f,
-                "a step from t = {t} was rejected {attempts} times (the last try was {step:e}): \
-                 shrink it faster after a rejection (smaller `newton_failure_factor` or \
-                 `min_factor`) or start from a smaller `initial_step`"
+                "a step from t = {t} was rejected {attempts} times (the last try was {step:e})"
             ),
             StepError::Stalled { t, step, steps } => write!(
                 f,
                 "the run stalled at t = {t}: the last {steps} accepted steps were all about \
-                 {step:e} or smaller and barely moved the time; look for a singular configuration \
-                 or a discontinuity there, loosen `rtol`/`atol` or `constraint_tolerance`, raise \
-                 `max_newton_iterations`, or use an implicit method if the model is stiff"
+                 {step:e} or smaller and barely moved the time"
             ),
             StepError::InconsistentStart {
                 worst_row,
@@ -480,11 +509,11 @@ impl fmt::Display for StepError {
             } => write!(
                 f,
                 "the initial state violates {worst_row} by {residual:e}: it could not be projected \
-                 onto the constraints (or `StartPolicy::Refuse` forbids it); give a state on or \
-                 nearer the constraints"
+                 onto the constraints (or `StartPolicy::Refuse` forbids it)"
             ),
-            StepError::InvalidOption(option) => write!(f, "invalid option: {option}"),
-        }
+            StepError::InvalidOption(option) => return write!(f, "invalid option: {option}"),
+        }?;
+        write!(f, "; {}", self.advice())
     }
 }
 

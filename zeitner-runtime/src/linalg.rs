@@ -26,10 +26,18 @@ const RELATIVE_PIVOT: Float = crate::scalar::floors::RELATIVE_PIVOT;
 /// Rows of the symmetric positive semidefinite `a` that depend on the others, found by
 /// Cholesky with diagonal pivoting: the rows left when the remaining pivots vanish.
 pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) -> RowSet {
+    let mut rows = RowSet::new(position_rows);
+    for (row, _) in dependent(a).iter().enumerate().filter(|(_, &d)| d) {
+        rows.insert(row);
+    }
+    rows
+}
+
+/// [`dependent_rows`], every one flagged.
+pub fn dependent<const Z: usize>(a: &Matrix<Z, Z>) -> [bool; Z] {
     let mut work = *a;
     let mut remaining = [true; Z];
     let scale = (0..Z).map(|i| work[(i, i)].abs()).fold(0.0, Float::max);
-    let mut rows = RowSet::new(position_rows);
     for _ in 0..Z {
         let pivot = (0..Z)
             .filter(|&i| remaining[i])
@@ -37,10 +45,7 @@ pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) ->
         let Some(p) = pivot else { break };
         let d = work[(p, p)];
         if !(d > RELATIVE_PIVOT * scale) || !d.is_finite() {
-            (0..Z)
-                .filter(|&i| remaining[i])
-                .for_each(|i| rows.insert(i));
-            break;
+            return remaining;
         }
         remaining[p] = false;
         for i in 0..Z {
@@ -51,7 +56,7 @@ pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) ->
             }
         }
     }
-    rows
+    remaining
 }
 
 /// Solves the symmetric positive definite `a x = b`, or names the dependent rows.

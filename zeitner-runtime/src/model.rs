@@ -1,7 +1,7 @@
 //! The evaluation layer: every call into the system goes through here, is counted, and is
 //! checked for non-finite values, so that a bad model becomes a typed error, not a NaN trajectory.
 
-use crate::error::{ModelFunction, StepError};
+use crate::error::{ModelFunction, RowSet, StepError};
 use crate::gaps::GapSet;
 use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
@@ -41,74 +41,191 @@ pub(crate) struct ConstraintDirections<F, const N: usize, const Z: usize> {
     pub factor: F,
     pub jacobian: Matrix<Z, N>,
     pub m_inv_gt: Matrix<N, Z>,
-    /// The rows of open gaps, which read as zero in `G`.
-    pub open: OpenRows,
+    /// The rows of open gaps and redundant rows, which read as zero in `G`.
+    pub masked: MaskedRows,
 }
 
 impl<F, const N: usize, const Z: usize> ConstraintDirections<F, N, Z> {
-    /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite; a unit diagonal in the rows of open gaps,
-    /// so that their multipliers solve to zero.
+    /// `G M⁻¹ Gᵀ`, symmetric positive semidefinite; a unit diagonal in the masked rows, so that
+    /// their multipliers solve to zero.
     #[inline(always)]
     pub fn gram(&self) -> Matrix<Z, Z> {
         let mut gram = self.jacobian * self.m_inv_gt;
-        self.open.regularise(&mut gram);
+        self.masked.regularise(&mut gram);
         gram
     }
 }
 
-/// The rows of the open gaps (unilateral constraints not in contact): they read as zero in
-/// `g`, `G`, `w`, `b` and in the multipliers, so that every solve and every Newton on the
-/// multipliers sees only the closed ones, without changing a size.
+/// Rows that read as zero in `g`, `G`, `w`, `b` and in the multipliers, so that every solve
+/// and every Newton on the multipliers sees only the others, without changing a size: the rows
+/// of the open gaps (unilateral constraints not in contact), and rows found at the start to
+/// depend on the others (redundant but consistent: they hold when the others do, which every
+/// step end checks, see [`Model::redundant_rows_hold`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct OpenRows {
-    /// The first gap row.
-    first: usize,
+pub(crate) struct MaskedRows {
+    /// Redundant rows, one bit each (only rows below [`REDUNDANT_ROWS`] can be).
+    redundant: u64,
     open: GapSet,
+    /// The first gap row (16 bytes in all: the directions that carry this are copied often).
+    first: u16,
+    /// Whether any row is masked: one test on the paths every evaluation takes.
+    any: bool,
 }
 
-impl OpenRows {
+/// Rows from this one on are never taken as redundant: a dependent row there is refused.
+pub(crate) const REDUNDANT_ROWS: usize = 64;
+
+impl MaskedRows {
+    fn new(first: usize, open: GapSet, redundant: u64) -> Self {
+        let any = !open.is_empty() || redundant != 0;
+        MaskedRows {
+            redundant,
+            open,
+            first: first as u16,
+            any,
+        }
+    }
+
+    #[inline(always)]
+    fn first(&self) -> usize {
+        usize::from(self.first)
+    }
+
+    /// The redundant rows, ascending.
+    fn redundant_rows(&self) -> impl Iterator<Item = usize> {
+        let mut redundant = self.redundant;
+        core::iter::from_fn(move || {
+            (redundant != 0).then(|| {
+                let row = redundant.trailing_zeros() as usize;
+                redundant &= redundant - 1;
+                row
+            })
+        })
+    }
+
     fn rows(&self) -> impl Iterator<Item = usize> + '_ {
-        self.open.iter().map(|k| self.first + k)
+        let gaps = self.open.iter().map(|k| self.first() + k);
+        gaps.chain(self.redundant_rows())
     }
 
-    fn is_empty(&self) -> bool {
-        self.open.is_empty()
+    #[inline(always)]
+    fn contains(&self, row: usize) -> bool {
+        (row >= self.first() && self.open.contains(row - self.first()))
+            || (row < REDUNDANT_ROWS && self.redundant >> row & 1 == 1)
     }
 
-    /// Zeroes the rows of open gaps.
+    /// Zeroes the masked rows.
     pub fn clear<const R: usize, const C: usize>(&self, m: &mut Matrix<R, C>) {
-        for j in self.rows() {
+        self.clear_open(m);
+        if self.redundant != 0 {
+            self.clear_redundant(m);
+        }
+    }
+
+    /// Zeroes the open gaps' rows.
+    #[inline(always)]
+    fn clear_open<const R: usize, const C: usize>(&self, m: &mut Matrix<R, C>) {
+        for k in self.open.iter() {
+            m.row_mut(self.first() + k).fill(0.0);
+        }
+    }
+
+    fn clear_redundant<const R: usize, const C: usize>(&self, m: &mut Matrix<R, C>) {
+        for j in self.redundant_rows() {
             m.row_mut(j).fill(0.0);
         }
     }
 
-    /// A diagonal entry in the rows of open gaps of a Z×Z matrix whose rows and columns there
-    /// are zero, of the size of the largest other diagonal entry (so that pivot tests relative
-    /// to it do not take these rows for dependent ones).
+    #[cold]
+    #[inline(never)]
+    fn without_redundant<const R: usize, const C: usize>(
+        &self,
+        mut m: Matrix<R, C>,
+    ) -> Matrix<R, C> {
+        self.clear_redundant(&mut m);
+        m
+    }
+
+    /// A diagonal entry in the masked rows of a Z×Z matrix whose rows and columns there are
+    /// zero, of the size of the largest other diagonal entry (so that pivot tests relative to
+    /// it do not take these rows for dependent ones).
+    #[inline(always)]
     pub fn regularise<const Z: usize>(&self, m: &mut Matrix<Z, Z>) {
-        if self.open.is_empty() {
+        if !self.any {
             return;
         }
-        let scale = (0..Z)
-            .filter(|&j| !(j >= self.first && self.open.contains(j - self.first)))
-            .map(|j| m[(j, j)].abs())
-            .fold(0.0, Float::max);
-        let scale = if scale > 0.0 && scale.is_finite() {
-            scale
-        } else {
-            1.0
-        };
+        if Z > 1 && self.redundant != 0 {
+            // By value: a reference to `m` here would keep it in memory on every path.
+            *m = self.with_rows_regularised(*m);
+            return;
+        }
+        self.regularise_open(m);
+    }
+
+    /// The open gaps' diagonal entries.
+    #[inline(always)]
+    fn regularise_open<const Z: usize>(&self, m: &mut Matrix<Z, Z>) {
+        let scale = self.unmasked_scale(m);
+        for k in self.open.iter() {
+            m[(self.first() + k, self.first() + k)] = scale;
+        }
+    }
+
+    /// [`MaskedRows::regularise`] where no row is redundant; `false`, nothing done, where one
+    /// is (for a fast path that leaves those scenes to the path that masks them: a call for
+    /// them here cost the scenes without any 4 % of their instructions, in register spills).
+    #[inline(always)]
+    pub fn regularise_unless_redundant<const Z: usize>(&self, m: &mut Matrix<Z, Z>) -> bool {
+        if !self.any {
+            return true;
+        }
+        if Z > 1 && self.redundant != 0 {
+            return false;
+        }
+        self.regularise_open(m);
+        true
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn with_rows_regularised<const Z: usize>(&self, mut m: Matrix<Z, Z>) -> Matrix<Z, Z> {
+        let scale = self.unmasked_scale(&m);
         for j in self.rows() {
             m[(j, j)] = scale;
         }
+        m
     }
+
+    /// The largest diagonal entry outside the masked rows (one where there is none).
+    #[inline(always)]
+    fn unmasked_scale<const Z: usize>(&self, m: &Matrix<Z, Z>) -> Float {
+        let scale = (0..Z)
+            .filter(|&j| !self.contains(j))
+            .map(|j| m[(j, j)].abs())
+            .fold(0.0, Float::max);
+        if scale > 0.0 && scale.is_finite() {
+            scale
+        } else {
+            1.0
+        }
+    }
+}
+
+/// Redundant rows and how far each may miss when the others hold to the tolerance.
+#[derive(Clone, Copy, Debug)]
+struct Redundancy<const Z: usize> {
+    /// `1 + Σ|c_i|` of the row's combination `G_d = Σ c_i G_i` of the others at the start; zero
+    /// in the other rows.
+    reach: Vector<Z>,
 }
 
 pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     pub system: &'s S,
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
-    open: OpenRows,
+    masked: MaskedRows,
+    /// Set where redundant rows are masked.
+    redundancy: Option<Redundancy<Z>>,
     /// `∂a/∂q`, `∂a/∂q'` where they were evaluated last, in the scene's storage.
     derivatives: DerivativesOf<S, N, Z>,
 }
@@ -120,33 +237,155 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             system,
             evaluations: Evaluations::default(),
             constant_factor: None,
-            open: OpenRows {
-                first: S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
-                open: GapSet::EMPTY,
-            },
+            masked: MaskedRows::new(
+                S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
+                GapSet::EMPTY,
+                0,
+            ),
+            redundancy: None,
             derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
         })
     }
 
     /// The gaps whose contact is open (not enforced).
     pub fn open_gaps(&self) -> GapSet {
-        self.open.open
+        self.masked.open
     }
 
     pub fn set_open_gaps(&mut self, open: GapSet) {
-        self.open.open = open;
+        self.masked = MaskedRows::new(self.masked.first(), open, self.masked.redundant);
     }
 
-    /// The rows of the open gaps.
-    pub fn open_rows(&self) -> OpenRows {
-        self.open
+    /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, each allowed to miss by
+    /// `reach` times the tolerance; no rows unmasks them.
+    pub fn set_redundant_rows(&mut self, rows: u64, reach: Vector<Z>) {
+        self.masked = MaskedRows::new(self.masked.first(), self.masked.open, rows);
+        self.redundancy = (rows != 0).then_some(Redundancy { reach });
     }
 
-    /// Zeroes the rows of open gaps; nothing for systems without gaps.
+    /// The tolerance the enforced rows are held to so that every row, the redundant ones
+    /// included, holds to `tolerance`: a redundant row misses by up to its reach times the
+    /// others' miss.
+    #[inline]
+    pub fn tightened(&self, tolerance: Float) -> Float {
+        match (self.has_redundant_rows(), &self.redundancy) {
+            (true, Some(Redundancy { reach })) => tolerance / reach.amax().max(1.0),
+            _ => tolerance,
+        }
+    }
+
+    /// `g` and `ġ` at a point as a report shows them: the redundant rows' own values (they are
+    /// enforced through the others), the open gaps' rows zero.
+    #[inline(always)]
+    pub fn reported_residuals(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    ) -> Result<(Vector<Z>, Vector<Z>), StepError> {
+        self.evaluations.constraint_residuals += 1;
+        self.evaluations.constraint_rates += 1;
+        let g = self.system.constraint_residual(q, v, t);
+        let g = finite(g, t, ModelFunction::ConstraintResidual)?;
+        let w = self.system.constraint_rate(q, v, t);
+        let w = finite(w, t, ModelFunction::ConstraintRate)?;
+        if S::UNILATERAL_CONSTRAINTS == 0 || self.masked.open.is_empty() {
+            return Ok((g, w));
+        }
+        let open = MaskedRows::new(self.masked.first(), self.masked.open, 0);
+        let (mut g, mut w) = (g, w);
+        open.clear(&mut g);
+        open.clear(&mut w);
+        Ok((g, w))
+    }
+
+    /// Whether the redundant rows still hold where the others hold to `tolerance`: each within
+    /// twice its reach (its share of the others' misses), positions and velocities alike. A row
+    /// that stops following the others (it was dependent only at a singular start) is refused,
+    /// named, rather than left unenforced.
+    #[inline(always)]
+    pub fn redundant_rows_hold(
+        &mut self,
+        point: (&Vector<N>, &Vector<N>, Float),
+        tolerance: Float,
+    ) -> Result<(), StepError> {
+        match self.has_redundant_rows() {
+            true => self.check_redundant_rows(point, tolerance),
+            false => Ok(()),
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn check_redundant_rows(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        tolerance: Float,
+    ) -> Result<(), StepError> {
+        let Some(Redundancy { reach }) = self.redundancy else {
+            return Ok(());
+        };
+        self.evaluations.constraint_residuals += 1;
+        self.evaluations.constraint_rates += 1;
+        let g = self.system.constraint_residual(q, v, t);
+        let g = finite(g, t, ModelFunction::ConstraintResidual)?;
+        let w = self.system.constraint_rate(q, v, t);
+        let w = finite(w, t, ModelFunction::ConstraintRate)?;
+        let r = S::POSITION_CONSTRAINTS;
+        let mut missed = RowSet::new(r);
+        for row in self.masked.redundant_rows() {
+            let limit = 2.0 * reach[row] * tolerance;
+            let position = if row < r { g[row].abs() } else { 0.0 };
+            if !(position <= limit && w[row].abs() <= limit) {
+                missed.insert(row);
+            }
+        }
+        if missed.is_empty() {
+            Ok(())
+        } else {
+            Err(StepError::RankDeficientConstraints {
+                t,
+                dependent_rows: missed,
+            })
+        }
+    }
+
+    /// The rows of the open gaps and the redundant rows.
+    pub fn masked_rows(&self) -> MaskedRows {
+        self.masked
+    }
+
+    /// Whether a model output must be checked before the mask hides its rows: where gaps can be
+    /// open. (A redundant row hidden is never read; its `g` and `ġ`, which every step end
+    /// evaluates unmasked, are checked there.)
+    #[inline(always)]
+    fn masks(&self) -> bool {
+        S::UNILATERAL_CONSTRAINTS > 0
+    }
+
+    #[inline(always)]
+    fn has_redundant_rows(&self) -> bool {
+        Z > 1 && self.masked.redundant != 0
+    }
+
+    /// Zeroes the open gaps' rows only: for the hot paths that leave the scenes with redundant
+    /// rows to a path of their own.
+    #[inline(always)]
+    fn mask_open<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
+        if S::UNILATERAL_CONSTRAINTS > 0 && !self.masked.open.is_empty() {
+            self.masked.clear_open(&mut m);
+        }
+        m
+    }
+
+    /// Zeroes the masked rows: open gaps' in line, as before there were redundant ones, and
+    /// the redundant ones apart, so that the scenes without any keep their code as it was.
     #[inline(always)]
     pub fn mask<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
-        if S::UNILATERAL_CONSTRAINTS > 0 && !self.open.is_empty() {
-            self.open.clear(&mut m);
+        if S::UNILATERAL_CONSTRAINTS > 0 {
+            self.masked.clear_open(&mut m);
+        }
+        if self.has_redundant_rows() {
+            // By value: a reference to `m` here would keep it in memory on every path.
+            return self.masked.without_redundant(m);
         }
         m
     }
@@ -183,7 +422,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             .enumerate()
             .take(S::UNILATERAL_CONSTRAINTS);
         for (k, value) in gaps {
-            *value = rows[self.open.first + k];
+            *value = rows[self.masked.first() + k];
         }
         values
     }
@@ -346,7 +585,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             factor,
             jacobian,
             m_inv_gt,
-            open: self.open,
+            masked: self.masked,
         })
     }
 
@@ -368,21 +607,24 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         self.evaluations.forces += 1;
         self.evaluations.acceleration_biases += 1;
         let unmasked = self.system.constraint_jacobian(q, v, t);
-        if S::UNILATERAL_CONSTRAINTS > 0 && !all_finite(unmasked.as_slice()) {
+        if self.masks() && !all_finite(unmasked.as_slice()) {
             return Ok(None);
         }
-        let jacobian = self.mask(unmasked);
+        let jacobian = self.mask_open(unmasked);
         let m_inv_gt = factor.solve(&jacobian.transpose());
         let force = self.system.applied_force(q, v, t);
         let m_inv_f = factor.solve(&force);
         let unmasked_bias = self.system.constraint_acceleration_bias(q, v, t);
-        if S::UNILATERAL_CONSTRAINTS > 0 && !all_finite(unmasked_bias.as_slice()) {
+        if self.masks() && !all_finite(unmasked_bias.as_slice()) {
             return Ok(None);
         }
-        let bias = self.mask(unmasked_bias);
+        let bias = self.mask_open(unmasked_bias);
         let rhs = jacobian * m_inv_f + bias;
         let mut gram = jacobian * m_inv_gt;
-        self.open.regularise(&mut gram);
+        // Redundant rows are not masked on this path: the checked one takes those scenes.
+        if !self.masked.regularise_unless_redundant(&mut gram) {
+            return Ok(None);
+        }
         let Some(lambda) = ldl_solve(&gram, &rhs) else {
             return Ok(None);
         };
@@ -405,15 +647,46 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         t: Float,
         lambda: &Vector<Z>,
     ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
+        if self.has_redundant_rows() {
+            return self.acceleration_with_redundant_rows(q, v, t, lambda);
+        }
+        self.accelerate::<false>(q, v, t, lambda)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn acceleration_with_redundant_rows(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+        lambda: &Vector<Z>,
+    ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
+        self.accelerate::<true>(q, v, t, lambda)
+    }
+
+    /// [`Model::acceleration`], with the redundant rows masked where `REDUNDANT` (the hot
+    /// paths written for the scenes without them, as they were before there were any).
+    #[inline(always)]
+    fn accelerate<const REDUNDANT: bool>(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+        lambda: &Vector<Z>,
+    ) -> Result<Acceleration<FactorOf<S, N, Z>, N, Z>, StepError> {
         let factor = self.mass_factor(q, t)?;
         self.evaluations.forces += 1;
         self.evaluations.constraint_jacobians += 1;
         let force = self.system.applied_force(q, v, t);
         let unmasked = self.system.constraint_jacobian(q, v, t);
-        if S::UNILATERAL_CONSTRAINTS > 0 {
+        if self.masks() {
             finite(unmasked, t, ModelFunction::ConstraintJacobian)?;
         }
-        let jacobian = self.mask(unmasked);
+        let jacobian = match REDUNDANT {
+            true => self.mask(unmasked),
+            false => self.mask_open(unmasked),
+        };
         let a = factor.solve(&(force - jacobian.tr_mul(lambda)));
         if !all_finite(a.as_slice()) {
             finite(force, t, ModelFunction::AppliedForce)?;

@@ -606,7 +606,7 @@ where
     if S::UNILATERAL_CONSTRAINTS > 0 {
         // Open gaps: their rows and columns are zero, their coefficients fixed, as in the Newton.
         for (l, row) in blocks.iter_mut().enumerate() {
-            model.open_rows().regularise(&mut row[l]);
+            model.masked_rows().regularise(&mut row[l]);
         }
     }
     let mut dc = [Matrix::<Z, P>::zeros(); K];

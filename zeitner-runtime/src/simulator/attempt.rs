@@ -193,13 +193,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let settings = NewtonSettings {
             steady_velocity_tolerance: self.embedded_order().is_some_and(|order| order < 3)
                 || self.active.is_stiff(),
-            tolerance: newton_tolerance(
+            tolerance: self.model.tightened(newton_tolerance(
                 &self.options,
                 (&self.q, &self.v),
                 &self.jacobian_row_scale,
                 S::POSITION_CONSTRAINTS,
-            ),
-            ceiling: self.options.constraint_tolerance,
+            )),
+            ceiling: self.model.tightened(self.options.constraint_tolerance),
             max_iterations: self.options.max_newton_iterations,
             exact: self.options.exact(),
             accept_linearised: self.options.accept_linearised_update,

@@ -50,12 +50,12 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
         };
         // As the Newton of the held multipliers would hold `g`: down to what the state's
         // rounding and the step's error scales allow.
-        let tolerance = newton_tolerance(
+        let tolerance = self.model.tightened(newton_tolerance(
             &self.options,
             (&self.q, &self.v),
             &self.jacobian_row_scale,
             S::POSITION_CONSTRAINTS,
-        );
+        ));
         let integrated_q = end.q;
         end.q = match project_positions(&mut self.model, end.q, &end.v, t_end, tolerance) {
             Ok(q) => q,
