@@ -253,3 +253,77 @@ fn ladder_hangs() {
         "pins carry {carried}, weight {weight}"
     );
 }
+
+#[test]
+fn the_redundant_four_bar_follows_the_plain_one_with_every_kind_of_method() {
+    use zeitner::{InnerMethod, MultiplierModel};
+    let start = Start {
+        q: Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let fixed = StepControl::Fixed { step: 1e-3 };
+    let adaptive = StepControl::adaptive(1e-8);
+    let with = |method, multipliers, step| Options {
+        method,
+        multipliers,
+        step,
+        constraint_tolerance: 1e-10,
+        ..Options::default()
+    };
+    let cases = [
+        (
+            "paper",
+            Options {
+                constraint_tolerance: 1e-10,
+                ..Options::paper(1e-3)
+            },
+        ),
+        (
+            "rk4, exact Q",
+            with(
+                InnerMethod::Rk4 { substeps: 1 },
+                MultiplierModel::Constant,
+                fixed,
+            ),
+        ),
+        (
+            "dopri5, quadratic",
+            with(
+                InnerMethod::DormandPrince54,
+                MultiplierModel::Quadratic,
+                adaptive,
+            ),
+        ),
+        (
+            "esdirk54, quadratic",
+            with(InnerMethod::Esdirk54, MultiplierModel::Quadratic, adaptive),
+        ),
+        (
+            "generalised-α",
+            with(
+                InnerMethod::GeneralizedAlpha { rho_inf: 0.5 },
+                MultiplierModel::Constant,
+                fixed,
+            ),
+        ),
+        (
+            "default",
+            with(InnerMethod::Automatic, MultiplierModel::Automatic, adaptive),
+        ),
+    ];
+    let plain = FourBar(FOUR_BAR);
+    for (name, options) in cases {
+        let mut redundant = Simulator::new(&FOUR_BAR, start, options).unwrap();
+        let mut reference = Simulator::new(&plain, start, options).unwrap();
+        let mut worst = 0.0_f64;
+        redundant
+            .advance_to(1.0, |report| worst = worst.max(report.residual.amax()))
+            .unwrap_or_else(|error| panic!("{name}: {error}"));
+        reference.advance_to(1.0, |_| {}).unwrap();
+        assert!(worst <= 1e-10, "{name}: |g| {worst:e}");
+        let (a, b) = (redundant.last().end, reference.last().end);
+        let error = (a.q - b.q).amax().max((a.v - b.v).amax());
+        assert!(error < 1e-6, "{name}: state differs by {error:e}");
+    }
+}

@@ -297,10 +297,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok((g, w))
     }
 
-    /// Whether the redundant rows still hold where the others hold to `tolerance`: each within
-    /// twice its reach (its share of the others' misses), positions and velocities alike. A row
-    /// that stops following the others (it was dependent only at a singular start) is refused,
-    /// named, rather than left unenforced.
+    /// Whether the redundant rows hold to `tolerance` as the others do (which [`Model::tightened`]
+    /// holds tighter for them), positions and velocities alike. A row that does not — it was
+    /// dependent only at a singular start, its gradient vanished there, or it contradicts the
+    /// others — is refused, named, rather than left unenforced.
     #[inline(always)]
     pub fn redundant_rows_hold(
         &mut self,
@@ -320,9 +320,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         (q, v, t): (&Vector<N>, &Vector<N>, Float),
         tolerance: Float,
     ) -> Result<(), StepError> {
-        let Some(Redundancy { reach }) = self.redundancy else {
-            return Ok(());
-        };
         self.evaluations.constraint_residuals += 1;
         self.evaluations.constraint_rates += 1;
         let g = self.system.constraint_residual(q, v, t);
@@ -332,9 +329,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let r = S::POSITION_CONSTRAINTS;
         let mut missed = RowSet::new(r);
         for row in self.masked.redundant_rows() {
-            let limit = 2.0 * reach[row] * tolerance;
             let position = if row < r { g[row].abs() } else { 0.0 };
-            if !(position <= limit && w[row].abs() <= limit) {
+            if !(position <= tolerance && w[row].abs() <= tolerance) {
                 missed.insert(row);
             }
         }

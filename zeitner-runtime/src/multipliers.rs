@@ -621,11 +621,10 @@ where
             }
         }
     }
-    if S::UNILATERAL_CONSTRAINTS > 0 {
-        // Open gaps: zero rows and columns; their coefficients stay as they are.
-        for (l, row) in blocks.iter_mut().enumerate() {
-            model.masked_rows().regularise(&mut row[l]);
-        }
+    // Masked rows (open gaps, redundant rows): zero rows and columns; their coefficients stay
+    // as they are.
+    for (l, row) in blocks.iter_mut().enumerate() {
+        model.masked_rows().regularise(&mut row[l]);
     }
     Ok((blocks, dg_dq))
 }

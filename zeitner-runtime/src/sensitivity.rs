@@ -603,11 +603,10 @@ where
             row[k] = rows[l];
         }
     }
-    if S::UNILATERAL_CONSTRAINTS > 0 {
-        // Open gaps: their rows and columns are zero, their coefficients fixed, as in the Newton.
-        for (l, row) in blocks.iter_mut().enumerate() {
-            model.masked_rows().regularise(&mut row[l]);
-        }
+    // Masked rows (open gaps, redundant rows): their rows and columns are zero, their
+    // coefficients fixed, as in the Newton.
+    for (l, row) in blocks.iter_mut().enumerate() {
+        model.masked_rows().regularise(&mut row[l]);
     }
     let mut dc = [Matrix::<Z, P>::zeros(); K];
     for p in 0..P {
