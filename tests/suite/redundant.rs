@@ -327,3 +327,34 @@ fn the_redundant_four_bar_follows_the_plain_one_with_every_kind_of_method() {
         assert!(error < 1e-6, "{name}: state differs by {error:e}");
     }
 }
+
+#[test]
+fn a_refused_reinitialise_keeps_the_redundant_rows_masked_and_the_run_as_it_was() {
+    use zeitner::StartPolicy;
+    let start = Start {
+        q: Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let options = adaptive(1e-10);
+    let mut refused = Simulator::new(&FOUR_BAR, start, options).unwrap();
+    let mut plain = Simulator::new(&FOUR_BAR, start, options).unwrap();
+    refused.advance_to(0.5, |_| {}).unwrap();
+    plain.advance_to(0.5, |_| {}).unwrap();
+    // Starts off the constraints are refused from here on, after the masks were set aside.
+    let refusing = Options {
+        start: StartPolicy::Refuse,
+        ..options
+    };
+    refused.set_options(refusing).unwrap();
+    plain.set_options(refusing).unwrap();
+    let off = Start {
+        q: Vector::<4>::new(0.3, 1.0, 1.0, 1.0),
+        v: Vector::zeros(),
+        t: 0.5,
+    };
+    assert!(refused.reinitialise(off).is_err());
+    refused.advance_to(1.0, |_| {}).unwrap();
+    plain.advance_to(1.0, |_| {}).unwrap();
+    assert_eq!(refused.last().end.q, plain.last().end.q);
+}

@@ -201,6 +201,13 @@ impl MaskedRows {
     }
 }
 
+/// What [`Model::saved_masks`] keeps.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Masks<const Z: usize> {
+    masked: MaskedRows,
+    redundancy: Option<Redundancy<Z>>,
+}
+
 /// Redundant rows and how far each may miss when the others hold to the tolerance.
 #[derive(Clone, Copy, Debug)]
 struct Redundancy<const Z: usize> {
@@ -244,6 +251,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     pub fn set_open_gaps(&mut self, open: GapSet) {
         self.masked = MaskedRows::new(self.masked.first(), open, self.masked.redundant);
+    }
+
+    /// The rows masked now (open gaps, redundant rows), to put back after a failed re-anchoring.
+    pub fn saved_masks(&self) -> Masks<Z> {
+        Masks {
+            masked: self.masked,
+            redundancy: self.redundancy,
+        }
+    }
+
+    pub fn restore_masks(&mut self, masks: Masks<Z>) {
+        (self.masked, self.redundancy) = (masks.masked, masks.redundancy);
     }
 
     /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, each allowed to miss by

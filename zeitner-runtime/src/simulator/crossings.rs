@@ -236,12 +236,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// closed, and a consistent state after it, reported as a step of zero length. On an error
     /// nothing changed.
     pub(super) fn impact(&mut self, gaps: GapSet) -> Result<(), StepError> {
-        let open = self.model.open_gaps();
+        let masks = self.model.saved_masks();
         // Two parts, apart for a large scene: the first goes deep (a consistent start), the
         // second holds the reports.
         let resolved = apart::<N, _>(|| self.state_after_impact(gaps))
             .and_then(|after| apart::<N, _>(|| self.anchor_after_impact(after)));
-        resolved.inspect_err(|_| self.model.set_open_gaps(open))
+        resolved.inspect_err(|_| self.model.restore_masks(masks))
     }
 
     /// The impulse of `gaps` at the current state, and the consistent state after it with how

@@ -88,12 +88,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn reproject(&mut self) -> Result<(), StepError> {
         let end = self.record.last.end;
         let (tolerance, policy) = (self.options.constraint_tolerance, self.options.start);
+        let masks = self.model.saved_masks();
         let model = &mut self.model;
-        model.prepare(&end.q, end.t)?;
-        let (point, report) = consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
-        let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
-        let last = report_at(model, point, Some(&jacobian))?;
-        let watch = watch_at(model, &last.end, tolerance)?;
+        let anchored = model.prepare(&end.q, end.t).and_then(|()| {
+            let (point, report) =
+                consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
+            let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
+            let last = report_at(model, point, Some(&jacobian))?;
+            Ok((last, watch_at(model, &last.end, tolerance)?, report))
+        });
+        let (last, watch, report) = anchored.inspect_err(|_| self.model.restore_masks(masks))?;
         self.anchor((last, watch, Some(report)), Forget::History);
         Ok(())
     }

@@ -45,14 +45,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         &mut self,
         Start { q, v, t }: Start<N>,
     ) -> Result<StartReport<N, Z>, StepError> {
-        let open = self.model.open_gaps();
+        let masks = self.model.saved_masks();
         let tolerance = self.options.constraint_tolerance;
         let started =
             start_point(&mut self.model, (q, v, t), &self.options).and_then(|(point, report)| {
                 let last = report_at(&mut self.model, point, None)?;
                 Ok((last, report, watch_at(&mut self.model, &point, tolerance)?))
             });
-        let (last, report, watch) = started.inspect_err(|_| self.model.set_open_gaps(open))?;
+        let (last, report, watch) = started.inspect_err(|_| self.model.restore_masks(masks))?;
         self.anchor((last, watch, Some(report)), Forget::Steps);
         self.pending = Pending::default();
         self.progress = Progress::default();
