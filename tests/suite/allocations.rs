@@ -168,15 +168,8 @@ fn the_default_method_turns_implicit_without_allocating() {
 
 #[test]
 fn the_sparse_simulator_allocates_only_when_built() {
-    let scene = common::stiff::RedundantFourBar {
-        m: 1.0,
-        r1: 1.0,
-        r2: 2.0,
-        r3: 1.5,
-        d: 2.0,
-        g: 9.81,
-    };
-    let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
+    let scene = common::four_bar::FOUR_BAR;
+    let start = common::four_bar::start_positions();
     for options in [
         Options {
             method: InnerMethod::Rk4 { substeps: 1 },

@@ -4,8 +4,8 @@
 
 use crate::common;
 
+use common::four_bar::{start_positions, FourBar, FOUR_BAR};
 use common::pendulum::Pendulum;
-use common::stiff::RedundantFourBar;
 use zeitner::storage::Sparse;
 use zeitner::{
     constrained_system, Options, Simulator, SparseSimulator, Start, StepControl, StepError, Vector,
@@ -72,41 +72,10 @@ fn a_rod_stated_twice_swings_as_the_pendulum() {
     );
 }
 
-const FOUR_BAR: RedundantFourBar = RedundantFourBar {
-    m: 1.0,
-    r1: 1.0,
-    r2: 2.0,
-    r3: 1.5,
-    d: 2.0,
-    g: 9.81,
-};
-
-/// The same four-bar without its dependent fourth equation.
-struct FourBar(RedundantFourBar);
-
-#[constrained_system]
-impl FourBar {
-    fn mass(&self) -> [f64; 4] {
-        [self.0.m, self.0.m, self.0.m, self.0.m]
-    }
-
-    fn force(&self) -> [f64; 4] {
-        [0.0, -self.0.m * self.0.g, 0.0, -self.0.m * self.0.g]
-    }
-
-    fn constraints(&self, [xa, ya, xb, yb]: [f64; 4]) -> [f64; 3] {
-        [
-            xa * xa + ya * ya - self.0.r1 * self.0.r1,
-            (xb - xa).powi(2) + (yb - ya).powi(2) - self.0.r2 * self.0.r2,
-            (xb - self.0.d).powi(2) + yb * yb - self.0.r3 * self.0.r3,
-        ]
-    }
-}
-
 #[test]
 fn a_redundant_four_bar_runs_on_both_storages_as_the_plain_one() {
     let start = Start {
-        q: Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8),
+        q: start_positions(),
         v: Vector::zeros(),
         t: 0.0,
     };
@@ -258,7 +227,7 @@ fn ladder_hangs() {
 fn the_redundant_four_bar_follows_the_plain_one_with_every_kind_of_method() {
     use zeitner::{InnerMethod, MultiplierModel};
     let start = Start {
-        q: Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8),
+        q: start_positions(),
         v: Vector::zeros(),
         t: 0.0,
     };
@@ -332,7 +301,7 @@ fn the_redundant_four_bar_follows_the_plain_one_with_every_kind_of_method() {
 fn a_refused_reinitialise_keeps_the_redundant_rows_masked_and_the_run_as_it_was() {
     use zeitner::StartPolicy;
     let start = Start {
-        q: Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8),
+        q: start_positions(),
         v: Vector::zeros(),
         t: 0.0,
     };

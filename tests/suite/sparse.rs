@@ -5,15 +5,15 @@ use crate::common;
 
 use common::andrews::Andrews;
 use common::chain::{Chain100, Chain16};
+use common::four_bar::{start_positions, FourBar, FOUR_BAR};
 use common::knife_edge::KnifeEdge;
 use common::ladder::PinnedLadder8;
 use common::pendulum::Pendulum;
 use common::reference::pendulum_released_horizontally;
 use common::steam_generator::SteamGenerator;
-use common::stiff::RedundantFourBar;
 use zeitner::{
-    constrained_system, ConstrainedSystem, InnerMethod, Matrix, Options, Simulator,
-    SparseSimulator, Start, StepControl, Vector,
+    ConstrainedSystem, InnerMethod, Matrix, Options, Simulator, SparseSimulator, Start,
+    StepControl, Vector,
 };
 
 fn adaptive(rtol: f64) -> Options {
@@ -197,40 +197,9 @@ fn generated_sparse_jacobians_match_the_dense_ones() {
     sparse_jacobian_matches_dense(&FOUR_BAR);
 }
 
-const FOUR_BAR: RedundantFourBar = RedundantFourBar {
-    m: 1.0,
-    r1: 1.0,
-    r2: 2.0,
-    r3: 1.5,
-    d: 2.0,
-    g: 9.81,
-};
-
-/// The same four-bar without its dependent fourth equation.
-struct FourBar(RedundantFourBar);
-
-#[constrained_system]
-impl FourBar {
-    fn mass(&self) -> [f64; 4] {
-        [self.0.m, self.0.m, self.0.m, self.0.m]
-    }
-
-    fn force(&self) -> [f64; 4] {
-        [0.0, -self.0.m * self.0.g, 0.0, -self.0.m * self.0.g]
-    }
-
-    fn constraints(&self, [xa, ya, xb, yb]: [f64; 4]) -> [f64; 3] {
-        [
-            xa * xa + ya * ya - self.0.r1 * self.0.r1,
-            (xb - xa).powi(2) + (yb - ya).powi(2) - self.0.r2 * self.0.r2,
-            (xb - self.0.d).powi(2) + yb * yb - self.0.r3 * self.0.r3,
-        ]
-    }
-}
-
 #[test]
 fn a_redundant_equation_runs_with_minimum_norm_multipliers() {
-    let start = Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8);
+    let start = start_positions();
     let options = adaptive(1e-10);
     let mut redundant = SparseSimulator::new(
         &FOUR_BAR,

@@ -98,7 +98,7 @@ pub(crate) fn consistent_start<S: ConstrainedSystem<N, Z>, const N: usize, const
     if !finite_state(&q0, &v0) {
         return Err(StepError::non_finite_state(t0));
     }
-    model.set_redundant_rows(0, Vector::zeros());
+    model.set_redundant_rows(0, 1.0);
     if policy == StartPolicy::Refuse {
         refuse_inconsistent(model, &q0, &v0, t0, tolerance)?;
     }
@@ -152,14 +152,15 @@ fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
         return Ok(rows);
     }
     // Each dependent row's combination `c` of the others: `A_B c = A_{B,d}`.
-    model.set_redundant_rows(bits, Vector::zeros());
+    model.set_redundant_rows(bits, 1.0);
     let kept = model.masked_rows();
     let mut rows_cleared = gram;
     kept.clear(&mut rows_cleared);
     let mut masked_gram = rows_cleared.transpose();
     kept.clear(&mut masked_gram);
     kept.regularise(&mut masked_gram);
-    let mut reach = Vector::<Z>::zeros();
+    // The largest `1 + Σ|c_i|`: how far a dependent row misses where the others miss by one.
+    let mut reach: Float = 1.0;
     for (row, _) in dependent.iter().enumerate().filter(|(_, &d)| d) {
         let mut column: Vector<Z> = gram.column(row).into_owned();
         kept.clear(&mut column);
@@ -169,9 +170,9 @@ fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
                 dependent_rows: rows,
             }
         })?;
-        reach[row] = 1.0 + combination.iter().map(|c| c.abs()).sum::<Float>();
+        reach = reach.max(1.0 + combination.iter().map(|c| c.abs()).sum::<Float>());
     }
-    model.set_redundant_rows(bits, reach);
+    model.set_redundant_rows(bits, 1.0 / reach);
     Ok(rows)
 }
 

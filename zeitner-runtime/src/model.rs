@@ -201,19 +201,12 @@ impl MaskedRows {
     }
 }
 
-/// What [`Model::saved_masks`] keeps.
+/// What [`Model::saved_masks`] keeps: the masked rows and the share of the tolerance the
+/// enforced rows are held to.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Masks<const Z: usize> {
+pub(crate) struct Masks {
     masked: MaskedRows,
-    redundancy: Option<Redundancy<Z>>,
-}
-
-/// Redundant rows and how far each may miss when the others hold to the tolerance.
-#[derive(Clone, Copy, Debug)]
-struct Redundancy<const Z: usize> {
-    /// `1 + Σ|c_i|` of the row's combination `G_d = Σ c_i G_i` of the others at the start; zero
-    /// in the other rows.
-    reach: Vector<Z>,
+    share: Float,
 }
 
 pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
@@ -221,8 +214,9 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
     masked: MaskedRows,
-    /// Set where redundant rows are masked.
-    redundancy: Option<Redundancy<Z>>,
+    /// Where rows are redundant, the share of the tolerance the others are held to:
+    /// `1 / max(1 + Σ|c_i|)` over their combinations `G_d = Σ c_i G_i` at the start.
+    redundant_share: Float,
     /// `∂a/∂q`, `∂a/∂q'` where they were evaluated last, in the scene's storage.
     derivatives: DerivativesOf<S, N, Z>,
 }
@@ -239,7 +233,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
                 GapSet::EMPTY,
                 0,
             ),
-            redundancy: None,
+            redundant_share: 1.0,
             derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
         })
     }
@@ -254,22 +248,22 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// The rows masked now (open gaps, redundant rows), to put back after a failed re-anchoring.
-    pub fn saved_masks(&self) -> Masks<Z> {
+    pub fn saved_masks(&self) -> Masks {
         Masks {
             masked: self.masked,
-            redundancy: self.redundancy,
+            share: self.redundant_share,
         }
     }
 
-    pub fn restore_masks(&mut self, masks: Masks<Z>) {
-        (self.masked, self.redundancy) = (masks.masked, masks.redundancy);
+    pub fn restore_masks(&mut self, masks: Masks) {
+        (self.masked, self.redundant_share) = (masks.masked, masks.share);
     }
 
-    /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, each allowed to miss by
-    /// `reach` times the tolerance; no rows unmasks them.
-    pub fn set_redundant_rows(&mut self, rows: u64, reach: Vector<Z>) {
+    /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, the others to be held to
+    /// `share` of the tolerance; no rows unmasks them.
+    pub fn set_redundant_rows(&mut self, rows: u64, share: Float) {
         self.masked = MaskedRows::new(self.masked.first(), self.masked.open, rows);
-        self.redundancy = (rows != 0).then_some(Redundancy { reach });
+        self.redundant_share = share;
     }
 
     /// The tolerance the enforced rows are held to so that every row, the redundant ones
@@ -277,9 +271,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// others' miss.
     #[inline]
     pub fn tightened(&self, tolerance: Float) -> Float {
-        match (self.has_redundant_rows(), &self.redundancy) {
-            (true, Some(Redundancy { reach })) => tolerance / reach.amax().max(1.0),
-            _ => tolerance,
+        match self.has_redundant_rows() {
+            true => tolerance * self.redundant_share,
+            false => tolerance,
         }
     }
 
@@ -290,20 +284,22 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         &mut self,
         (q, v, t): (&Vector<N>, &Vector<N>, Float),
     ) -> Result<(Vector<Z>, Vector<Z>), StepError> {
+        let (g, w) = self.unmasked_residuals((q, v, t))?;
+        Ok((self.mask_open(g), self.mask_open(w)))
+    }
+
+    /// `g` and `ġ` of every row, checked.
+    #[inline(always)]
+    fn unmasked_residuals(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    ) -> Result<(Vector<Z>, Vector<Z>), StepError> {
         self.evaluations.constraint_residuals += 1;
         self.evaluations.constraint_rates += 1;
         let g = self.system.constraint_residual(q, v, t);
         let g = finite(g, t, ModelFunction::ConstraintResidual)?;
         let w = self.system.constraint_rate(q, v, t);
-        let w = finite(w, t, ModelFunction::ConstraintRate)?;
-        if S::UNILATERAL_CONSTRAINTS == 0 || self.masked.open.is_empty() {
-            return Ok((g, w));
-        }
-        let open = MaskedRows::new(self.masked.first(), self.masked.open, 0);
-        let (mut g, mut w) = (g, w);
-        open.clear(&mut g);
-        open.clear(&mut w);
-        Ok((g, w))
+        Ok((g, finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
     /// Whether the redundant rows hold to `tolerance` as the others do (which [`Model::tightened`]
@@ -329,12 +325,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         (q, v, t): (&Vector<N>, &Vector<N>, Float),
         tolerance: Float,
     ) -> Result<(), StepError> {
-        self.evaluations.constraint_residuals += 1;
-        self.evaluations.constraint_rates += 1;
-        let g = self.system.constraint_residual(q, v, t);
-        let g = finite(g, t, ModelFunction::ConstraintResidual)?;
-        let w = self.system.constraint_rate(q, v, t);
-        let w = finite(w, t, ModelFunction::ConstraintRate)?;
+        let (g, w) = self.unmasked_residuals((q, v, t))?;
         let r = S::POSITION_CONSTRAINTS;
         let mut missed = RowSet::new(r);
         for row in self.masked.redundant_rows() {
@@ -384,13 +375,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// Zeroes the masked rows: open gaps' in line, as before there were redundant ones, and
     /// the redundant ones apart, so that the scenes without any keep their code as it was.
     #[inline(always)]
-    pub fn mask<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
-        if S::UNILATERAL_CONSTRAINTS > 0 && !self.masked.open.is_empty() {
-            self.masked.clear_open(&mut m);
-        }
+    pub fn mask<const C: usize>(&self, m: Matrix<Z, C>) -> Matrix<Z, C> {
+        let mut m = self.mask_open(m);
         if self.has_redundant_rows() {
-            // In line, not a call: a call taking `m` (by reference or by value) kept it in memory
-            // on every path, which cost the pendulum against the wall a fifth of its time.
+            // In line, over the rows, not through `clear_redundant`: a call taking `m` (by
+            // reference or by value), or that one's iterator in line, kept it in memory on every
+            // path, which cost the pendulum against the wall a fifth of its time.
             for j in 0..Z.min(REDUNDANT_ROWS) {
                 if self.masked.redundant >> j & 1 == 1 {
                     m.row_mut(j).fill(0.0);

@@ -72,3 +72,46 @@ pub fn steam_generator_errors(options: zeitner::Options) -> [f64; 3] {
     sim.advance_to(1.0, |_| {}).expect("it runs to 1 s");
     relative_errors(&sim.last().end, &reference::steam_generator(&scene, 1.0))
 }
+
+/// The four-bar with a dependent fourth equation the tests share, the same four-bar without
+/// it (their reference), and the start both are released from (projected onto the loop).
+pub mod four_bar {
+    use zeitner::{constrained_system, Vector};
+    use zeitner_scenes::stiff::RedundantFourBar;
+
+    pub const FOUR_BAR: RedundantFourBar = RedundantFourBar {
+        m: 1.0,
+        r1: 1.0,
+        r2: 2.0,
+        r3: 1.5,
+        d: 2.0,
+        g: 9.81,
+    };
+
+    /// The crank up, the rocker at 53° from the ground.
+    pub fn start_positions() -> Vector<4> {
+        Vector::<4>::new(0.0, 1.0, 2.0 - 1.5 * 0.6, 1.5 * 0.8)
+    }
+
+    /// The same four-bar without its dependent fourth equation.
+    pub struct FourBar(pub RedundantFourBar);
+
+    #[constrained_system]
+    impl FourBar {
+        fn mass(&self) -> [f64; 4] {
+            [self.0.m, self.0.m, self.0.m, self.0.m]
+        }
+
+        fn force(&self) -> [f64; 4] {
+            [0.0, -self.0.m * self.0.g, 0.0, -self.0.m * self.0.g]
+        }
+
+        fn constraints(&self, [xa, ya, xb, yb]: [f64; 4]) -> [f64; 3] {
+            [
+                xa * xa + ya * ya - self.0.r1 * self.0.r1,
+                (xb - xa).powi(2) + (yb - ya).powi(2) - self.0.r2 * self.0.r2,
+                (xb - self.0.d).powi(2) + yb * yb - self.0.r3 * self.0.r3,
+            ]
+        }
+    }
+}
