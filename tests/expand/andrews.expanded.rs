@@ -324,6 +324,94 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 7,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (2, 2),
+                            (3, 3),
+                            (3, 4),
+                            (4, 3),
+                            (4, 4),
+                            (5, 5),
+                            (5, 6),
+                            (6, 5),
+                            (6, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 7,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 6,
+                        cols: 7,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (2, 0),
+                            (2, 1),
+                            (2, 3),
+                            (2, 4),
+                            (3, 0),
+                            (3, 1),
+                            (3, 3),
+                            (3, 4),
+                            (4, 0),
+                            (4, 1),
+                            (4, 5),
+                            (4, 6),
+                            (5, 0),
+                            (5, 1),
+                            (5, 5),
+                            (5, 6),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 6,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 90u64,
+                    muls: 129u64,
+                    divs: 1u64,
+                    transcendental: 21u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 227u64,
+                    muls: 278u64,
+                    divs: 2u64,
+                    transcendental: 127u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -948,6 +1036,136 @@ impl ::zeitner::__private::ConstrainedSystem<7, 6> for Andrews {
         b[5] = s12 + v[5] * (s15 + v[6] * s8)
             + v[6] * (s15 + v[6] * (s8 - self.u * q[6].cos()));
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<7>,
+        v: &::zeitner::__private::Vector<7>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<7>,
+        ::zeitner::__private::Matrix<6, 7>,
+        ::zeitner::__private::Vector<6>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.e - self.ea;
+        let s1 = self.zf - self.fa;
+        let s2 = q[1].cos();
+        let s3 = self.da.powi(2);
+        let s4 = self.i2 + self.m2 * (s3 - s2 * (self.rr * self.da));
+        let s5 = self.m2 * self.da;
+        let s6 = s0.powi(2);
+        let s7 = q[3].sin();
+        let s8 = self.i4 + self.m4 * (s6 + s0 * self.zt * s7);
+        let s9 = s1.powi(2);
+        let s10 = q[5].sin();
+        let s11 = self.i6 + self.m6 * (s9 - s1 * self.u * s10);
+        let s12 = q[2].cos();
+        let s13 = q[2].sin();
+        let s14 = self.sd * s12 + self.sc * s13;
+        let s15 = self.sd * s13;
+        let s16 = s12 * self.sc;
+        let s17 = s14 + self.xb - self.xc;
+        let s18 = s15 - s16 + self.yb - self.yc;
+        let s19 = (s17.powi(2) + s18.powi(2)).sqrt();
+        let s20 = self.c0 * (s19 - self.l0) / s19;
+        let s21 = self.rr * s5;
+        let s22 = q[1].sin();
+        let s23 = s0 * (self.m4 * self.zt);
+        let s24 = q[3].cos();
+        let s25 = s1 * (self.m6 * self.u);
+        let s26 = q[5].cos();
+        let s27 = self.rr * q[0].cos();
+        let s28 = q[0] + q[1];
+        let s29 = self.d * s28.cos();
+        let s30 = s27 - s29;
+        let s31 = self.d * s28.sin();
+        let s32 = s13 * self.ss;
+        let s33 = s12 * self.ss;
+        let s34 = q[3] + q[4];
+        let s35 = self.e * s34.sin();
+        let s36 = self.zt * q[4].cos();
+        let s37 = self.e * s34.cos();
+        let s38 = q[5] + q[6];
+        let s39 = self.zf * s38.cos();
+        let s40 = self.u * q[6].sin();
+        let s41 = self.zf * s38.sin();
+        let s42 = s31 - self.rr * q[0].sin();
+        let s43 = -s29;
+        let s44 = self.zt * q[4].sin() - s37;
+        let s45 = -s35;
+        let s46 = s41 - self.u * q[6].cos();
+        let s47 = -s39;
+        let s48 = v[1] * s31;
+        let s49 = v[1] * s29;
+        let s50 = v[0] * (v[0] * (s29 - s27) + s49) + v[1] * (s49 + v[0] * s29);
+        let s51 = v[0] * (v[0] * s42 + s48) + v[1] * (s48 + v[0] * s31);
+        let s52 = v[3] * s37;
+        let s53 = v[3] * s35;
+        let s54 = v[5] * s41;
+        let s55 = v[5] * s39;
+        let mut m = ::zeitner::__private::Matrix::<7, 7>::zeros();
+        let mut f = ::zeitner::__private::Vector::<7>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<6, 7>::zeros();
+        let mut b = ::zeitner::__private::Vector::<6>::zeros();
+        m[(0, 0)] = self.ra * (self.m1 * self.ra)
+            + self.m2 * (self.rr.powi(2) - self.rr * (2.0 * self.da) * s2 + s3) + self.i1
+            + self.i2;
+        m[(0, 1)] = s4;
+        m[(1, 0)] = s4;
+        m[(1, 1)] = self.i2 + self.da * s5;
+        m[(2, 2)] = self.m3 * (self.sa.powi(2) + self.sb.powi(2)) + self.i3;
+        m[(3, 3)] = s0 * (self.m4 * s0) + self.i4;
+        m[(3, 4)] = s8;
+        m[(4, 3)] = s8;
+        m[(4, 4)] = self.i4
+            + self.m4 * (s6 + self.zt.powi(2) + s7 * (s0 * (2.0 * self.zt)))
+            + self.m5 * (self.ta.powi(2) + self.tb.powi(2)) + self.i5;
+        m[(5, 5)] = s1 * (self.m6 * s1) + self.i6;
+        m[(5, 6)] = s11;
+        m[(6, 5)] = s11;
+        m[(6, 6)] = self.i6
+            + self.m6 * (s9 - s10 * (s1 * (2.0 * self.u)) + self.u.powi(2))
+            + self.m7 * (self.ua.powi(2) + self.ub.powi(2)) + self.i7;
+        f[0] = self.mom - v[1] * s21 * (v[1] + 2.0 * v[0]) * s22;
+        f[1] = s22 * (v[0] * (v[0] * s21));
+        f[2] = -(s17 * s20 * (s16 - s15)) - s14 * (s18 * s20);
+        f[3] = v[4] * (v[4] * s23) * s24;
+        f[4] = -(s24 * (v[3] * s23 * (v[3] + 2.0 * v[4])));
+        f[5] = -(v[6] * (v[6] * s25) * s26);
+        f[6] = s26 * (v[5] * s25 * (v[5] + 2.0 * v[6]));
+        g[(0, 0)] = s42;
+        g[(0, 1)] = s31;
+        g[(0, 2)] = -s33;
+        g[(1, 0)] = s30;
+        g[(1, 1)] = s43;
+        g[(1, 2)] = -s32;
+        g[(2, 0)] = s42;
+        g[(2, 1)] = s31;
+        g[(2, 3)] = -s37;
+        g[(2, 4)] = s44;
+        g[(3, 0)] = s30;
+        g[(3, 1)] = s43;
+        g[(3, 3)] = s45;
+        g[(3, 4)] = s45 - s36;
+        g[(4, 0)] = s42;
+        g[(4, 1)] = s31;
+        g[(4, 5)] = s41;
+        g[(4, 6)] = s46;
+        g[(5, 0)] = s30;
+        g[(5, 1)] = s43;
+        g[(5, 5)] = s47;
+        g[(5, 6)] = s47 - s40;
+        b[0] = s50 + v[2] * (v[2] * s32);
+        b[1] = s51 - v[2] * (v[2] * s33);
+        b[2] = s50 + v[3] * (s53 + v[4] * s35) + v[4] * (s53 + v[4] * (s35 + s36));
+        b[3] = s51 + v[3] * (-s52 - v[4] * s37) + v[4] * (v[4] * s44 - s52);
+        b[4] = s50 + v[5] * (s55 + v[6] * s39) + v[6] * (s55 + v[6] * (s39 + s40));
+        b[5] = s51 + v[5] * (s54 + v[6] * s41) + v[6] * (s54 + v[6] * s46);
+        (::zeitner::__private::FullMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

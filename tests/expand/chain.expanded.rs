@@ -190,6 +190,49 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (1, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 13u64,
+                    muls: 19u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 16u64,
+                    muls: 24u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -369,6 +412,46 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for Chain2 {
         b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
             + v[2] * (2.0 * v[2] - s0) + v[3] * (2.0 * v[3] - s1);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<2, 4>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -(self.m * self.g);
+        let s1 = 2.0 * (q[2] - q[0]);
+        let s2 = 2.0 * (q[3] - q[1]);
+        let s3 = 2.0 * v[0];
+        let s4 = 2.0 * v[1];
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        f[1] = s0;
+        f[3] = s0;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s1;
+        g[(1, 1)] = -s2;
+        g[(1, 2)] = s1;
+        g[(1, 3)] = s2;
+        b[0] = v[0] * s3 + v[1] * s4;
+        b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
+            + v[2] * (2.0 * v[2] - s3) + v[3] * (2.0 * v[3] - s4);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -680,6 +763,73 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 8,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                            (7, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 8,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (3, 0), (5, 0), (7, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 8,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (1, 3),
+                            (2, 2),
+                            (2, 3),
+                            (2, 4),
+                            (2, 5),
+                            (3, 4),
+                            (3, 5),
+                            (3, 6),
+                            (3, 7),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 35u64,
+                    muls: 39u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 44u64,
+                    muls: 58u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -944,6 +1094,76 @@ impl ::zeitner::__private::ConstrainedSystem<8, 4> for Chain4 {
         b[3] = v[4] * (-2.0 * v[6] - s6) + v[5] * (-2.0 * v[7] - s7)
             + v[6] * (2.0 * v[6] - s8) + v[7] * (2.0 * v[7] - s9);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<8>,
+        v: &::zeitner::__private::Vector<8>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<8>,
+        ::zeitner::__private::Matrix<4, 8>,
+        ::zeitner::__private::Vector<4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -(self.m * self.g);
+        let s1 = 2.0 * (q[2] - q[0]);
+        let s2 = 2.0 * (q[3] - q[1]);
+        let s3 = 2.0 * (q[4] - q[2]);
+        let s4 = 2.0 * (q[5] - q[3]);
+        let s5 = 2.0 * (q[6] - q[4]);
+        let s6 = 2.0 * (q[7] - q[5]);
+        let s7 = 2.0 * v[0];
+        let s8 = 2.0 * v[1];
+        let s9 = -2.0 * v[2];
+        let s10 = -2.0 * v[3];
+        let s11 = 2.0 * v[2];
+        let s12 = 2.0 * v[3];
+        let s13 = -2.0 * v[4];
+        let s14 = -2.0 * v[5];
+        let s15 = 2.0 * v[4];
+        let s16 = 2.0 * v[5];
+        let mut m = ::zeitner::__private::Vector::<8>::zeros();
+        let mut f = ::zeitner::__private::Vector::<8>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<4, 8>::zeros();
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        m[4] = self.m;
+        m[5] = self.m;
+        m[6] = self.m;
+        m[7] = self.m;
+        f[1] = s0;
+        f[3] = s0;
+        f[5] = s0;
+        f[7] = s0;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s1;
+        g[(1, 1)] = -s2;
+        g[(1, 2)] = s1;
+        g[(1, 3)] = s2;
+        g[(2, 2)] = -s3;
+        g[(2, 3)] = -s4;
+        g[(2, 4)] = s3;
+        g[(2, 5)] = s4;
+        g[(3, 4)] = -s5;
+        g[(3, 5)] = -s6;
+        g[(3, 6)] = s5;
+        g[(3, 7)] = s6;
+        b[0] = v[0] * s7 + v[1] * s8;
+        b[1] = v[0] * (s9 - -2.0 * v[0]) + v[1] * (s10 - -2.0 * v[1]) + v[2] * (s11 - s7)
+            + v[3] * (s12 - s8);
+        b[2] = v[2] * (s13 - s9) + v[3] * (s14 - s10) + v[4] * (s15 - s11)
+            + v[5] * (s16 - s12);
+        b[3] = v[4] * (-2.0 * v[6] - s13) + v[5] * (-2.0 * v[7] - s14)
+            + v[6] * (2.0 * v[6] - s15) + v[7] * (2.0 * v[7] - s16);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -1367,6 +1587,115 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 16,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                            (7, 0),
+                            (8, 0),
+                            (9, 0),
+                            (10, 0),
+                            (11, 0),
+                            (12, 0),
+                            (13, 0),
+                            (14, 0),
+                            (15, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 16,
+                        cols: 1,
+                        nonzeros: &[
+                            (1, 0),
+                            (3, 0),
+                            (5, 0),
+                            (7, 0),
+                            (9, 0),
+                            (11, 0),
+                            (13, 0),
+                            (15, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 8,
+                        cols: 16,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (1, 3),
+                            (2, 2),
+                            (2, 3),
+                            (2, 4),
+                            (2, 5),
+                            (3, 4),
+                            (3, 5),
+                            (3, 6),
+                            (3, 7),
+                            (4, 6),
+                            (4, 7),
+                            (4, 8),
+                            (4, 9),
+                            (5, 8),
+                            (5, 9),
+                            (5, 10),
+                            (5, 11),
+                            (6, 10),
+                            (6, 11),
+                            (6, 12),
+                            (6, 13),
+                            (7, 12),
+                            (7, 13),
+                            (7, 14),
+                            (7, 15),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 8,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                            (7, 0),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 79u64,
+                    muls: 79u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 100u64,
+                    muls: 126u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1771,6 +2100,136 @@ impl ::zeitner::__private::ConstrainedSystem<16, 8> for Chain8 {
         b[7] = v[12] * (-2.0 * v[14] - s22) + v[13] * (-2.0 * v[15] - s23)
             + v[14] * (2.0 * v[14] - s24) + v[15] * (2.0 * v[15] - s25);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<16>,
+        v: &::zeitner::__private::Vector<16>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<16>,
+        ::zeitner::__private::Matrix<8, 16>,
+        ::zeitner::__private::Vector<8>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -(self.m * self.g);
+        let s1 = 2.0 * (q[2] - q[0]);
+        let s2 = 2.0 * (q[3] - q[1]);
+        let s3 = 2.0 * (q[4] - q[2]);
+        let s4 = 2.0 * (q[5] - q[3]);
+        let s5 = 2.0 * (q[6] - q[4]);
+        let s6 = 2.0 * (q[7] - q[5]);
+        let s7 = 2.0 * (q[8] - q[6]);
+        let s8 = 2.0 * (q[9] - q[7]);
+        let s9 = 2.0 * (q[10] - q[8]);
+        let s10 = 2.0 * (q[11] - q[9]);
+        let s11 = 2.0 * (q[12] - q[10]);
+        let s12 = 2.0 * (q[13] - q[11]);
+        let s13 = 2.0 * (q[14] - q[12]);
+        let s14 = 2.0 * (q[15] - q[13]);
+        let s15 = 2.0 * v[0];
+        let s16 = 2.0 * v[1];
+        let s17 = -2.0 * v[2];
+        let s18 = -2.0 * v[3];
+        let s19 = 2.0 * v[2];
+        let s20 = 2.0 * v[3];
+        let s21 = -2.0 * v[4];
+        let s22 = -2.0 * v[5];
+        let s23 = 2.0 * v[4];
+        let s24 = 2.0 * v[5];
+        let s25 = -2.0 * v[6];
+        let s26 = -2.0 * v[7];
+        let s27 = 2.0 * v[6];
+        let s28 = 2.0 * v[7];
+        let s29 = -2.0 * v[8];
+        let s30 = -2.0 * v[9];
+        let s31 = 2.0 * v[8];
+        let s32 = 2.0 * v[9];
+        let s33 = -2.0 * v[10];
+        let s34 = -2.0 * v[11];
+        let s35 = 2.0 * v[10];
+        let s36 = 2.0 * v[11];
+        let s37 = -2.0 * v[12];
+        let s38 = -2.0 * v[13];
+        let s39 = 2.0 * v[12];
+        let s40 = 2.0 * v[13];
+        let mut m = ::zeitner::__private::Vector::<16>::zeros();
+        let mut f = ::zeitner::__private::Vector::<16>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<8, 16>::zeros();
+        let mut b = ::zeitner::__private::Vector::<8>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        m[4] = self.m;
+        m[5] = self.m;
+        m[6] = self.m;
+        m[7] = self.m;
+        m[8] = self.m;
+        m[9] = self.m;
+        m[10] = self.m;
+        m[11] = self.m;
+        m[12] = self.m;
+        m[13] = self.m;
+        m[14] = self.m;
+        m[15] = self.m;
+        f[1] = s0;
+        f[3] = s0;
+        f[5] = s0;
+        f[7] = s0;
+        f[9] = s0;
+        f[11] = s0;
+        f[13] = s0;
+        f[15] = s0;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s1;
+        g[(1, 1)] = -s2;
+        g[(1, 2)] = s1;
+        g[(1, 3)] = s2;
+        g[(2, 2)] = -s3;
+        g[(2, 3)] = -s4;
+        g[(2, 4)] = s3;
+        g[(2, 5)] = s4;
+        g[(3, 4)] = -s5;
+        g[(3, 5)] = -s6;
+        g[(3, 6)] = s5;
+        g[(3, 7)] = s6;
+        g[(4, 6)] = -s7;
+        g[(4, 7)] = -s8;
+        g[(4, 8)] = s7;
+        g[(4, 9)] = s8;
+        g[(5, 8)] = -s9;
+        g[(5, 9)] = -s10;
+        g[(5, 10)] = s9;
+        g[(5, 11)] = s10;
+        g[(6, 10)] = -s11;
+        g[(6, 11)] = -s12;
+        g[(6, 12)] = s11;
+        g[(6, 13)] = s12;
+        g[(7, 12)] = -s13;
+        g[(7, 13)] = -s14;
+        g[(7, 14)] = s13;
+        g[(7, 15)] = s14;
+        b[0] = v[0] * s15 + v[1] * s16;
+        b[1] = v[0] * (s17 - -2.0 * v[0]) + v[1] * (s18 - -2.0 * v[1])
+            + v[2] * (s19 - s15) + v[3] * (s20 - s16);
+        b[2] = v[2] * (s21 - s17) + v[3] * (s22 - s18) + v[4] * (s23 - s19)
+            + v[5] * (s24 - s20);
+        b[3] = v[4] * (s25 - s21) + v[5] * (s26 - s22) + v[6] * (s27 - s23)
+            + v[7] * (s28 - s24);
+        b[4] = v[6] * (s29 - s25) + v[7] * (s30 - s26) + v[8] * (s31 - s27)
+            + v[9] * (s32 - s28);
+        b[5] = v[8] * (s33 - s29) + v[9] * (s34 - s30) + v[10] * (s35 - s31)
+            + v[11] * (s36 - s32);
+        b[6] = v[10] * (s37 - s33) + v[11] * (s38 - s34) + v[12] * (s39 - s35)
+            + v[13] * (s40 - s36);
+        b[7] = v[12] * (-2.0 * v[14] - s37) + v[13] * (-2.0 * v[15] - s38)
+            + v[14] * (2.0 * v[14] - s39) + v[15] * (2.0 * v[15] - s40);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -2372,6 +2831,179 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
                 ops_unshared: ::zeitner::__private::OpCounts {
                     adds: 106u64,
                     muls: 184u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 32,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                            (7, 0),
+                            (8, 0),
+                            (9, 0),
+                            (10, 0),
+                            (11, 0),
+                            (12, 0),
+                            (13, 0),
+                            (14, 0),
+                            (15, 0),
+                            (16, 0),
+                            (17, 0),
+                            (18, 0),
+                            (19, 0),
+                            (20, 0),
+                            (21, 0),
+                            (22, 0),
+                            (23, 0),
+                            (24, 0),
+                            (25, 0),
+                            (26, 0),
+                            (27, 0),
+                            (28, 0),
+                            (29, 0),
+                            (30, 0),
+                            (31, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 32,
+                        cols: 1,
+                        nonzeros: &[
+                            (1, 0),
+                            (3, 0),
+                            (5, 0),
+                            (7, 0),
+                            (9, 0),
+                            (11, 0),
+                            (13, 0),
+                            (15, 0),
+                            (17, 0),
+                            (19, 0),
+                            (21, 0),
+                            (23, 0),
+                            (25, 0),
+                            (27, 0),
+                            (29, 0),
+                            (31, 0),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 16,
+                        cols: 32,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (1, 3),
+                            (2, 2),
+                            (2, 3),
+                            (2, 4),
+                            (2, 5),
+                            (3, 4),
+                            (3, 5),
+                            (3, 6),
+                            (3, 7),
+                            (4, 6),
+                            (4, 7),
+                            (4, 8),
+                            (4, 9),
+                            (5, 8),
+                            (5, 9),
+                            (5, 10),
+                            (5, 11),
+                            (6, 10),
+                            (6, 11),
+                            (6, 12),
+                            (6, 13),
+                            (7, 12),
+                            (7, 13),
+                            (7, 14),
+                            (7, 15),
+                            (8, 14),
+                            (8, 15),
+                            (8, 16),
+                            (8, 17),
+                            (9, 16),
+                            (9, 17),
+                            (9, 18),
+                            (9, 19),
+                            (10, 18),
+                            (10, 19),
+                            (10, 20),
+                            (10, 21),
+                            (11, 20),
+                            (11, 21),
+                            (11, 22),
+                            (11, 23),
+                            (12, 22),
+                            (12, 23),
+                            (12, 24),
+                            (12, 25),
+                            (13, 24),
+                            (13, 25),
+                            (13, 26),
+                            (13, 27),
+                            (14, 26),
+                            (14, 27),
+                            (14, 28),
+                            (14, 29),
+                            (15, 28),
+                            (15, 29),
+                            (15, 30),
+                            (15, 31),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 16,
+                        cols: 1,
+                        nonzeros: &[
+                            (0, 0),
+                            (1, 0),
+                            (2, 0),
+                            (3, 0),
+                            (4, 0),
+                            (5, 0),
+                            (6, 0),
+                            (7, 0),
+                            (8, 0),
+                            (9, 0),
+                            (10, 0),
+                            (11, 0),
+                            (12, 0),
+                            (13, 0),
+                            (14, 0),
+                            (15, 0),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 167u64,
+                    muls: 159u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 212u64,
+                    muls: 262u64,
                     divs: 0u64,
                     transcendental: 0u64,
                     opaque_calls: 0u64,
@@ -3062,6 +3694,256 @@ impl ::zeitner::__private::ConstrainedSystem<32, 16> for Chain16 {
         b[15] = v[28] * (-2.0 * v[30] - s54) + v[29] * (-2.0 * v[31] - s55)
             + v[30] * (2.0 * v[30] - s56) + v[31] * (2.0 * v[31] - s57);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<32>,
+        v: &::zeitner::__private::Vector<32>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<32>,
+        ::zeitner::__private::Matrix<16, 32>,
+        ::zeitner::__private::Vector<16>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -(self.m * self.g);
+        let s1 = 2.0 * (q[2] - q[0]);
+        let s2 = 2.0 * (q[3] - q[1]);
+        let s3 = 2.0 * (q[4] - q[2]);
+        let s4 = 2.0 * (q[5] - q[3]);
+        let s5 = 2.0 * (q[6] - q[4]);
+        let s6 = 2.0 * (q[7] - q[5]);
+        let s7 = 2.0 * (q[8] - q[6]);
+        let s8 = 2.0 * (q[9] - q[7]);
+        let s9 = 2.0 * (q[10] - q[8]);
+        let s10 = 2.0 * (q[11] - q[9]);
+        let s11 = 2.0 * (q[12] - q[10]);
+        let s12 = 2.0 * (q[13] - q[11]);
+        let s13 = 2.0 * (q[14] - q[12]);
+        let s14 = 2.0 * (q[15] - q[13]);
+        let s15 = 2.0 * (q[16] - q[14]);
+        let s16 = 2.0 * (q[17] - q[15]);
+        let s17 = 2.0 * (q[18] - q[16]);
+        let s18 = 2.0 * (q[19] - q[17]);
+        let s19 = 2.0 * (q[20] - q[18]);
+        let s20 = 2.0 * (q[21] - q[19]);
+        let s21 = 2.0 * (q[22] - q[20]);
+        let s22 = 2.0 * (q[23] - q[21]);
+        let s23 = 2.0 * (q[24] - q[22]);
+        let s24 = 2.0 * (q[25] - q[23]);
+        let s25 = 2.0 * (q[26] - q[24]);
+        let s26 = 2.0 * (q[27] - q[25]);
+        let s27 = 2.0 * (q[28] - q[26]);
+        let s28 = 2.0 * (q[29] - q[27]);
+        let s29 = 2.0 * (q[30] - q[28]);
+        let s30 = 2.0 * (q[31] - q[29]);
+        let s31 = 2.0 * v[0];
+        let s32 = 2.0 * v[1];
+        let s33 = -2.0 * v[2];
+        let s34 = -2.0 * v[3];
+        let s35 = 2.0 * v[2];
+        let s36 = 2.0 * v[3];
+        let s37 = -2.0 * v[4];
+        let s38 = -2.0 * v[5];
+        let s39 = 2.0 * v[4];
+        let s40 = 2.0 * v[5];
+        let s41 = -2.0 * v[6];
+        let s42 = -2.0 * v[7];
+        let s43 = 2.0 * v[6];
+        let s44 = 2.0 * v[7];
+        let s45 = -2.0 * v[8];
+        let s46 = -2.0 * v[9];
+        let s47 = 2.0 * v[8];
+        let s48 = 2.0 * v[9];
+        let s49 = -2.0 * v[10];
+        let s50 = -2.0 * v[11];
+        let s51 = 2.0 * v[10];
+        let s52 = 2.0 * v[11];
+        let s53 = -2.0 * v[12];
+        let s54 = -2.0 * v[13];
+        let s55 = 2.0 * v[12];
+        let s56 = 2.0 * v[13];
+        let s57 = -2.0 * v[14];
+        let s58 = -2.0 * v[15];
+        let s59 = 2.0 * v[14];
+        let s60 = 2.0 * v[15];
+        let s61 = -2.0 * v[16];
+        let s62 = -2.0 * v[17];
+        let s63 = 2.0 * v[16];
+        let s64 = 2.0 * v[17];
+        let s65 = -2.0 * v[18];
+        let s66 = -2.0 * v[19];
+        let s67 = 2.0 * v[18];
+        let s68 = 2.0 * v[19];
+        let s69 = -2.0 * v[20];
+        let s70 = -2.0 * v[21];
+        let s71 = 2.0 * v[20];
+        let s72 = 2.0 * v[21];
+        let s73 = -2.0 * v[22];
+        let s74 = -2.0 * v[23];
+        let s75 = 2.0 * v[22];
+        let s76 = 2.0 * v[23];
+        let s77 = -2.0 * v[24];
+        let s78 = -2.0 * v[25];
+        let s79 = 2.0 * v[24];
+        let s80 = 2.0 * v[25];
+        let s81 = -2.0 * v[26];
+        let s82 = -2.0 * v[27];
+        let s83 = 2.0 * v[26];
+        let s84 = 2.0 * v[27];
+        let s85 = -2.0 * v[28];
+        let s86 = -2.0 * v[29];
+        let s87 = 2.0 * v[28];
+        let s88 = 2.0 * v[29];
+        let mut m = ::zeitner::__private::Vector::<32>::zeros();
+        let mut f = ::zeitner::__private::Vector::<32>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<16, 32>::zeros();
+        let mut b = ::zeitner::__private::Vector::<16>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        m[4] = self.m;
+        m[5] = self.m;
+        m[6] = self.m;
+        m[7] = self.m;
+        m[8] = self.m;
+        m[9] = self.m;
+        m[10] = self.m;
+        m[11] = self.m;
+        m[12] = self.m;
+        m[13] = self.m;
+        m[14] = self.m;
+        m[15] = self.m;
+        m[16] = self.m;
+        m[17] = self.m;
+        m[18] = self.m;
+        m[19] = self.m;
+        m[20] = self.m;
+        m[21] = self.m;
+        m[22] = self.m;
+        m[23] = self.m;
+        m[24] = self.m;
+        m[25] = self.m;
+        m[26] = self.m;
+        m[27] = self.m;
+        m[28] = self.m;
+        m[29] = self.m;
+        m[30] = self.m;
+        m[31] = self.m;
+        f[1] = s0;
+        f[3] = s0;
+        f[5] = s0;
+        f[7] = s0;
+        f[9] = s0;
+        f[11] = s0;
+        f[13] = s0;
+        f[15] = s0;
+        f[17] = s0;
+        f[19] = s0;
+        f[21] = s0;
+        f[23] = s0;
+        f[25] = s0;
+        f[27] = s0;
+        f[29] = s0;
+        f[31] = s0;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s1;
+        g[(1, 1)] = -s2;
+        g[(1, 2)] = s1;
+        g[(1, 3)] = s2;
+        g[(2, 2)] = -s3;
+        g[(2, 3)] = -s4;
+        g[(2, 4)] = s3;
+        g[(2, 5)] = s4;
+        g[(3, 4)] = -s5;
+        g[(3, 5)] = -s6;
+        g[(3, 6)] = s5;
+        g[(3, 7)] = s6;
+        g[(4, 6)] = -s7;
+        g[(4, 7)] = -s8;
+        g[(4, 8)] = s7;
+        g[(4, 9)] = s8;
+        g[(5, 8)] = -s9;
+        g[(5, 9)] = -s10;
+        g[(5, 10)] = s9;
+        g[(5, 11)] = s10;
+        g[(6, 10)] = -s11;
+        g[(6, 11)] = -s12;
+        g[(6, 12)] = s11;
+        g[(6, 13)] = s12;
+        g[(7, 12)] = -s13;
+        g[(7, 13)] = -s14;
+        g[(7, 14)] = s13;
+        g[(7, 15)] = s14;
+        g[(8, 14)] = -s15;
+        g[(8, 15)] = -s16;
+        g[(8, 16)] = s15;
+        g[(8, 17)] = s16;
+        g[(9, 16)] = -s17;
+        g[(9, 17)] = -s18;
+        g[(9, 18)] = s17;
+        g[(9, 19)] = s18;
+        g[(10, 18)] = -s19;
+        g[(10, 19)] = -s20;
+        g[(10, 20)] = s19;
+        g[(10, 21)] = s20;
+        g[(11, 20)] = -s21;
+        g[(11, 21)] = -s22;
+        g[(11, 22)] = s21;
+        g[(11, 23)] = s22;
+        g[(12, 22)] = -s23;
+        g[(12, 23)] = -s24;
+        g[(12, 24)] = s23;
+        g[(12, 25)] = s24;
+        g[(13, 24)] = -s25;
+        g[(13, 25)] = -s26;
+        g[(13, 26)] = s25;
+        g[(13, 27)] = s26;
+        g[(14, 26)] = -s27;
+        g[(14, 27)] = -s28;
+        g[(14, 28)] = s27;
+        g[(14, 29)] = s28;
+        g[(15, 28)] = -s29;
+        g[(15, 29)] = -s30;
+        g[(15, 30)] = s29;
+        g[(15, 31)] = s30;
+        b[0] = v[0] * s31 + v[1] * s32;
+        b[1] = v[0] * (s33 - -2.0 * v[0]) + v[1] * (s34 - -2.0 * v[1])
+            + v[2] * (s35 - s31) + v[3] * (s36 - s32);
+        b[2] = v[2] * (s37 - s33) + v[3] * (s38 - s34) + v[4] * (s39 - s35)
+            + v[5] * (s40 - s36);
+        b[3] = v[4] * (s41 - s37) + v[5] * (s42 - s38) + v[6] * (s43 - s39)
+            + v[7] * (s44 - s40);
+        b[4] = v[6] * (s45 - s41) + v[7] * (s46 - s42) + v[8] * (s47 - s43)
+            + v[9] * (s48 - s44);
+        b[5] = v[8] * (s49 - s45) + v[9] * (s50 - s46) + v[10] * (s51 - s47)
+            + v[11] * (s52 - s48);
+        b[6] = v[10] * (s53 - s49) + v[11] * (s54 - s50) + v[12] * (s55 - s51)
+            + v[13] * (s56 - s52);
+        b[7] = v[12] * (s57 - s53) + v[13] * (s58 - s54) + v[14] * (s59 - s55)
+            + v[15] * (s60 - s56);
+        b[8] = v[14] * (s61 - s57) + v[15] * (s62 - s58) + v[16] * (s63 - s59)
+            + v[17] * (s64 - s60);
+        b[9] = v[16] * (s65 - s61) + v[17] * (s66 - s62) + v[18] * (s67 - s63)
+            + v[19] * (s68 - s64);
+        b[10] = v[18] * (s69 - s65) + v[19] * (s70 - s66) + v[20] * (s71 - s67)
+            + v[21] * (s72 - s68);
+        b[11] = v[20] * (s73 - s69) + v[21] * (s74 - s70) + v[22] * (s75 - s71)
+            + v[23] * (s76 - s72);
+        b[12] = v[22] * (s77 - s73) + v[23] * (s78 - s74) + v[24] * (s79 - s75)
+            + v[25] * (s80 - s76);
+        b[13] = v[24] * (s81 - s77) + v[25] * (s82 - s78) + v[26] * (s83 - s79)
+            + v[27] * (s84 - s80);
+        b[14] = v[26] * (s85 - s81) + v[27] * (s86 - s82) + v[28] * (s87 - s83)
+            + v[29] * (s88 - s84);
+        b[15] = v[28] * (-2.0 * v[30] - s85) + v[29] * (-2.0 * v[31] - s86)
+            + v[30] * (2.0 * v[30] - s87) + v[31] * (2.0 * v[31] - s88);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

@@ -189,6 +189,49 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -509,6 +552,29 @@ impl ::zeitner::__private::ConstrainedSystem<1, 1> for Ball {
         use ::zeitner::__private::Real as _;
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<1>,
+        v: &::zeitner::__private::Vector<1>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<1>,
+        ::zeitner::__private::Matrix<1, 1>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<1>::zeros();
+        let mut f = ::zeitner::__private::Vector::<1>::zeros();
+        let mut g = ::zeitner::__private::Vector::<1>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m;
+        f[0] = -(self.m * self.g);
+        g[0] = 1.0;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -854,6 +920,49 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
                 ops_unshared: ::zeitner::__private::OpCounts {
                     adds: 1u64,
                     muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
                     divs: 0u64,
                     transcendental: 0u64,
                     opaque_calls: 0u64,
@@ -1255,6 +1364,33 @@ impl ::zeitner::__private::ConstrainedSystem<2, 2> for WallPendulum {
         let mut b = ::zeitner::__private::Vector::<2>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[1] = -(self.m * self.g);
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = 1.0;
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -1674,6 +1810,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (1, 1), (1, 2), (2, 1), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -2010,6 +2189,39 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for FallingBar {
         b[1] = s0;
         b[2] = -s0;
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Vector<3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.a * q[2].cos();
+        let s1 = v[2] * (self.a * q[2].sin() * v[2]);
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.j;
+        f[1] = -(self.m * self.g);
+        g[(0, 0)] = 1.0;
+        g[(1, 1)] = 1.0;
+        g[(1, 2)] = -s0;
+        g[(2, 1)] = 1.0;
+        g[(2, 2)] = s0;
+        b[1] = s1;
+        b[2] = -s1;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

@@ -245,6 +245,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for Everything {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 31u64,
+                    muls: 24u64,
+                    divs: 0u64,
+                    transcendental: 22u64,
+                    opaque_calls: 1u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 31u64,
+                    muls: 27u64,
+                    divs: 0u64,
+                    transcendental: 24u64,
+                    opaque_calls: 1u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -469,6 +512,52 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for Everything {
             + v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b[1] = -1.0 + -0.5 * v[2];
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.1 * q[2].cos();
+        let s1 = q[0].powi(2);
+        let s2 = q[0].sin();
+        let s3 = q[1].powi(2);
+        let mut m = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[(0, 0)] = self.m + s1;
+        m[(0, 1)] = s0;
+        m[(1, 0)] = s0;
+        m[(1, 1)] = self.m;
+        m[(2, 2)] = self.m;
+        f[0] = s2 * q[1].cos() + 0.1 * q[2].tan() + (0.1 * q[0]).asin()
+            + (0.1 * q[1]).acos() + q[2].atan()
+            + (if t < self.t_off && !(t > 10.0) { self.drive(t) } else { 0.0 })
+            - v[0] * self.k;
+        f[1] = q[0].abs() + q[1].signum() + q[2].min(q[0]) + q[0].max(q[1])
+            + q[0].hypot(q[1]) + q[1].atan2(q[2])
+            - v[1]
+                * (q[0].sinh() + q[1].cosh() + q[2].tanh() + (s1 + 1.0).ln()
+                    + (s3 + 2.0).log10() + q[2].exp());
+        f[2] = s2 + q[0].powi(-2) + (1.0 + s3).powf(1.5) + (1.0 + q[2].powi(2)).sqrt()
+            - v[2] + zeitner::scalar::consts::PI + LENGTH;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 2)] = 1.0;
+        b[0] = LENGTH.powi(2) * (0.1 * (2.0 * (2.0 * (2.0 * t).sin())))
+            + v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        b[1] = -1.0 + -0.5 * v[2];
+        (::zeitner::__private::FullMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

@@ -220,6 +220,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 3u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 5u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -531,6 +574,35 @@ impl ::zeitner::__private::ConstrainedSystem<3, 1> for KnifeEdge {
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[2] * (-(v[1] * q[2].sin()) - v[0] * q[2].cos());
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<1, 3>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.j;
+        f[0] = self.m * self.g * self.alpha.sin();
+        g[(0, 0)] = -s0;
+        g[(0, 1)] = s1;
+        b[0] = v[2] * (-(v[1] * s0) - v[0] * s1);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -916,6 +988,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 2), (1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 3u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 5u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1232,6 +1347,37 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteeredKnifeEdge {
         let mut b = ::zeitner::__private::Vector::<2>::zeros();
         b[1] = v[2] * (-(v[1] * q[2].sin()) - v[0] * q[2].cos());
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = q[2].sin();
+        let s1 = q[2].cos();
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.edge.m;
+        m[1] = self.edge.m;
+        m[2] = self.edge.j;
+        f[0] = self.edge.m * self.edge.g * self.edge.alpha.sin();
+        f[2] = self.torque;
+        g[(0, 2)] = 1.0;
+        g[(1, 0)] = -s0;
+        g[(1, 1)] = s1;
+        b[1] = v[2] * (-(v[1] * s0) - v[0] * s1);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

@@ -179,6 +179,49 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -327,6 +370,32 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for Pendulum {
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<1, 2>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[1] = -(self.m * self.g);
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

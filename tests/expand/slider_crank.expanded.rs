@@ -196,6 +196,57 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 3,
+                        cols: 4,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (1, 3),
+                            (2, 3),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 14u64,
+                    muls: 20u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 16u64,
+                    muls: 24u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -402,6 +453,46 @@ impl ::zeitner::__private::ConstrainedSystem<4, 3> for SliderCrankOnAxis {
         b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
             + v[2] * (2.0 * v[2] - s0) + v[3] * (2.0 * v[3] - s1);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<3, 4>,
+        ::zeitner::__private::Vector<3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * (q[2] - q[0]);
+        let s1 = 2.0 * (q[3] - q[1]);
+        let s2 = 2.0 * v[0];
+        let s3 = 2.0 * v[1];
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<3, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.ms;
+        m[3] = self.ms;
+        f[1] = -(self.m * self.g);
+        f[3] = -(self.ms * self.g);
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s0;
+        g[(1, 1)] = -s1;
+        g[(1, 2)] = s0;
+        g[(1, 3)] = s1;
+        g[(2, 3)] = 1.0;
+        b[0] = v[0] * s2 + v[1] * s3;
+        b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
+            + v[2] * (2.0 * v[2] - s2) + v[3] * (2.0 * v[3] - s3);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

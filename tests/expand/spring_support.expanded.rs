@@ -201,6 +201,49 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (0, 2), (0, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 17u64,
+                    muls: 20u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 19u64,
+                    muls: 22u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -521,6 +564,41 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringSupportedPendulum {
         b[0] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
             + v[2] * (2.0 * v[2] - 2.0 * v[0]) + v[3] * (2.0 * v[3] - 2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<1, 4>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * (q[2] - q[0]);
+        let s1 = 2.0 * (q[3] - q[1]);
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.support;
+        m[1] = self.support;
+        m[2] = self.m;
+        m[3] = self.m;
+        f[0] = -(q[0] * self.k) - v[0] * self.c;
+        f[1] = -(q[1] * self.k) - v[1] * self.c - self.support * self.g;
+        f[3] = -(self.m * self.g);
+        g[(0, 0)] = -s0;
+        g[(0, 1)] = -s1;
+        g[(0, 2)] = s0;
+        g[(0, 3)] = s1;
+        b[0] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
+            + v[2] * (2.0 * v[2] - 2.0 * v[0]) + v[3] * (2.0 * v[3] - 2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

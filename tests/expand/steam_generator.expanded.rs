@@ -204,6 +204,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 2), (1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 1u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 2u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -534,6 +577,38 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SteamGenerator {
         let mut b = ::zeitner::__private::Vector::<2>::zeros();
         b[1] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.load(t);
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.j;
+        f[0] = s0 - v[0] * self.d;
+        f[1] = -(self.m * self.g);
+        f[2] = s0 * self.h1;
+        g[(0, 0)] = 1.0;
+        g[(0, 2)] = -self.h3;
+        g[(1, 0)] = 2.0 * q[0];
+        g[(1, 1)] = 2.0 * (q[1] - self.h2);
+        b[1] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -943,6 +1018,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 2), (2, 0), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 1u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 9u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 2u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1305,6 +1423,40 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for SteamGeneratorWithGap {
         let mut b = ::zeitner::__private::Vector::<3>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<3, 3>,
+        ::zeitner::__private::Vector<3>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.load(t);
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.base.m;
+        m[1] = self.base.m;
+        m[2] = self.base.j;
+        f[0] = s0 - v[0] * self.base.d;
+        f[1] = -(self.base.m * self.base.g);
+        f[2] = s0 * self.base.h1;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * (q[1] - self.base.h2);
+        g[(1, 0)] = -1.0;
+        g[(1, 2)] = self.base.h3;
+        g[(2, 0)] = 1.0;
+        g[(2, 2)] = -self.base.h3;
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

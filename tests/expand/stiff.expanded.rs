@@ -193,6 +193,49 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 12u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 19u64,
+                    muls: 16u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -369,6 +412,39 @@ impl ::zeitner::__private::ConstrainedSystem<4, 1> for SpringPendulum {
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<1, 4>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.k * (q[2] - q[0]) + self.c * (v[2] - v[0]);
+        let s1 = self.k * (q[3] - q[1] + self.l0) + self.c * (v[3] - v[1]);
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m1;
+        m[1] = self.m1;
+        m[2] = self.m2;
+        m[3] = self.m2;
+        f[0] = s0;
+        f[1] = s1 - self.m1 * self.g;
+        f[2] = -s0;
+        f[3] = -s1 - self.m2 * self.g;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -660,6 +736,49 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (1, 3)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 14u64,
+                    muls: 20u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 16u64,
+                    muls: 24u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -837,6 +956,45 @@ impl ::zeitner::__private::ConstrainedSystem<4, 2> for DoublePendulum {
         b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
             + v[2] * (2.0 * v[2] - s0) + v[3] * (2.0 * v[3] - s1);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<2, 4>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * (q[2] - q[0]);
+        let s1 = 2.0 * (q[3] - q[1]);
+        let s2 = 2.0 * v[0];
+        let s3 = 2.0 * v[1];
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m1;
+        m[1] = self.m1;
+        m[2] = self.m2;
+        m[3] = self.m2;
+        f[1] = -(self.m1 * self.g);
+        f[3] = -(self.m2 * self.g);
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        g[(1, 0)] = -s0;
+        g[(1, 1)] = -s1;
+        g[(1, 2)] = s0;
+        g[(1, 3)] = s1;
+        b[0] = v[0] * s2 + v[1] * s3;
+        b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
+            + v[2] * (2.0 * v[2] - s2) + v[3] * (2.0 * v[3] - s3);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -1116,6 +1274,49 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1), (1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 8u64,
+                    muls: 17u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1277,6 +1478,40 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for SliderCrank {
         b[0] = v[0] * s0 + s1;
         b[1] = s1 + v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[2] * (2.0 * v[2] - s0);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * q[1];
+        let s1 = 2.0 * (q[2] - q[0]);
+        let s2 = 2.0 * v[0];
+        let s3 = v[1] * (2.0 * v[1]);
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.ms;
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = s0;
+        g[(1, 0)] = -s1;
+        g[(1, 1)] = s0;
+        g[(1, 2)] = s1;
+        b[0] = v[0] * s2 + s3;
+        b[1] = s3 + v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[2] * (2.0 * v[2] - s2);
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -1564,6 +1799,62 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(1, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[
+                            (0, 0),
+                            (0, 1),
+                            (1, 0),
+                            (1, 1),
+                            (1, 2),
+                            (1, 3),
+                            (2, 2),
+                            (2, 3),
+                            (3, 0),
+                            (3, 1),
+                            (3, 2),
+                            (3, 3),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 17u64,
+                    muls: 23u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 22u64,
+                    muls: 42u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -1781,6 +2072,63 @@ impl ::zeitner::__private::ConstrainedSystem<4, 4> for RedundantFourBar {
         b[2] = s5 + s6;
         b[3] = s6 + s2 + s5;
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<4, 4>,
+        ::zeitner::__private::Vector<4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -(self.m * self.g);
+        let s1 = 2.0 * q[0];
+        let s2 = 2.0 * q[1];
+        let s3 = 2.0 * (q[2] - q[0]);
+        let s4 = 2.0 * (q[3] - q[1]);
+        let s5 = 2.0 * (q[2] - self.d);
+        let s6 = 2.0 * q[3];
+        let s7 = 2.0 * v[0];
+        let s8 = 2.0 * v[1];
+        let s9 = v[0] * s7 + v[1] * s8;
+        let s10 = 2.0 * v[2];
+        let s11 = 2.0 * v[3];
+        let s12 = v[2] * s10;
+        let s13 = v[3] * s11;
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        f[1] = s0;
+        f[3] = s0;
+        g[(0, 0)] = s1;
+        g[(0, 1)] = s2;
+        g[(1, 0)] = -s3;
+        g[(1, 1)] = -s4;
+        g[(1, 2)] = s3;
+        g[(1, 3)] = s4;
+        g[(2, 2)] = s5;
+        g[(2, 3)] = s6;
+        g[(3, 0)] = s1;
+        g[(3, 1)] = s2;
+        g[(3, 2)] = s5;
+        g[(3, 3)] = s6;
+        b[0] = s9;
+        b[1] = v[0] * (-2.0 * v[2] - -2.0 * v[0]) + v[1] * (-2.0 * v[3] - -2.0 * v[1])
+            + v[2] * (s10 - s7) + v[3] * (s11 - s8);
+        b[2] = s12 + s13;
+        b[3] = s13 + s9 + s12;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -2071,6 +2419,49 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -2221,6 +2612,34 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CoupledMassPendulum {
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<1, 2>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[(0, 0)] = self.m11;
+        m[(0, 1)] = self.m12;
+        m[(1, 0)] = self.m12;
+        m[(1, 1)] = self.m22;
+        f[1] = -(self.m22 * self.g);
+        g[(0, 0)] = 2.0 * q[0];
+        g[(0, 1)] = 2.0 * q[1];
+        b[0] = v[0] * (2.0 * v[0]) + v[1] * (2.0 * v[1]);
+        (::zeitner::__private::FullMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(
@@ -2473,6 +2892,49 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
                 },
             },
             ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 1,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 10u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
                 name: "force_jacobians",
                 blocks: &[
                     ::zeitner::__private::BlockSummary {
@@ -2622,6 +3084,33 @@ impl ::zeitner::__private::ConstrainedSystem<2, 1> for CuspBead {
         let mut b = ::zeitner::__private::Vector::<1>::zeros();
         b[0] = v[1] * (2.0 * v[1]) - v[0] * (v[0] * (s0 + 2.0 * s0));
         b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<1, 2>,
+        ::zeitner::__private::Vector<1>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 2.0 * q[0];
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<1, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<1>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[1] = -(self.m * self.g);
+        g[(0, 0)] = -(q[0].powi(2) + q[0] * s0);
+        g[(0, 1)] = 2.0 * q[1];
+        b[0] = v[1] * (2.0 * v[1]) - v[0] * (v[0] * (s0 + 2.0 * s0));
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
     }
     #[inline]
     fn force_jacobians(

@@ -126,6 +126,26 @@ fn check_scene<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         &c_dv,
         &jacobian_fd(|v| reaction(&q, v), &v),
     );
+    // The fused stage computes the same four functions, what they share once.
+    let (mass, force, jacobian, bias) = s.stage(&q, &v, t);
+    let separate = [
+        (mass.mul(&a), s.mass_matrix(&q, t).mul(&a)),
+        (force, s.applied_force(&q, &v, t)),
+        (
+            jacobian.tr_mul(&lambda),
+            s.constraint_jacobian(&q, &v, t).tr_mul(&lambda),
+        ),
+    ];
+    for (part, (fused, apart)) in ["M a", "F", "Gᵀλ"].iter().zip(separate) {
+        let error = (fused - apart).amax() / (1.0 + apart.amax());
+        assert!(
+            error < 1e-14,
+            "{name}: the stage's {part} is off by {error:e}"
+        );
+    }
+    let apart = s.constraint_acceleration_bias(&q, &v, t);
+    let error = (bias - apart).amax() / (1.0 + apart.amax());
+    assert!(error < 1e-14, "{name}: the stage's b is off by {error:e}");
     let product = s.mass_jacobian_product(&q, t, &a);
     assert_close(
         &format!("{name}: ∂(M a)/∂q"),

@@ -20,7 +20,14 @@ pub fn active_jacobian<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     t: f64,
     closing: Option<usize>,
 ) -> Matrix<Z, N> {
-    let mut g = scene.constraint_jacobian(q, v, t);
+    active::<S, N, Z>(scene.constraint_jacobian(q, v, t), closing)
+}
+
+/// `g` with the rows of the open gaps (all but `closing`) zeroed.
+fn active<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    mut g: Matrix<Z, N>,
+    closing: Option<usize>,
+) -> Matrix<Z, N> {
     for r in gap_rows::<S, N, Z>().filter(|&r| Some(r) != closing) {
         g.row_mut(r).fill(0.0);
     }
@@ -79,11 +86,32 @@ pub fn index1_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     v: &Vector<N>,
     t: f64,
 ) -> Option<(Vector<N>, Vector<Z>)> {
-    let factor = scene.mass_matrix(q, t).factor()?;
-    let g = active_jacobian(scene, q, v, t, None);
-    let free = factor.solve(&scene.applied_force(q, v, t));
+    let mass = scene.mass_matrix(q, t);
+    let force = scene.applied_force(q, v, t);
+    let g = scene.constraint_jacobian(q, v, t);
+    index1_of::<S, N, Z>((mass, force, g, scene.constraint_acceleration_bias(q, v, t)))
+}
+
+/// [`index1_acceleration`] from the scene's one generated function for `M`, `F`, `G` and `b`
+/// (`ConstrainedSystem::stage`), as a user of both crates could write it.
+pub fn index1_acceleration_fused<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    q: &Vector<N>,
+    v: &Vector<N>,
+    t: f64,
+) -> Option<(Vector<N>, Vector<Z>)> {
+    index1_of::<S, N, Z>(scene.stage(q, v, t))
+}
+
+/// The index-1 form from `(M, F, G, b)` at one point.
+fn index1_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    (mass, force, g, bias): (S::Mass, Vector<N>, Matrix<Z, N>, Vector<Z>),
+) -> Option<(Vector<N>, Vector<Z>)> {
+    let factor = mass.factor()?;
+    let g = active::<S, N, Z>(g, None);
+    let free = factor.solve(&force);
     let directions = factor.solve(&g.transpose());
-    let bias = without_gaps::<S, N, Z>(scene.constraint_acceleration_bias(q, v, t));
+    let bias = without_gaps::<S, N, Z>(bias);
     let lambda = gram::<S, N, Z>(&g, &directions)
         .cholesky()?
         .solve(&(g * free + bias));

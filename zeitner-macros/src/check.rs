@@ -18,9 +18,18 @@ pub struct Sizes {
 const MAX_GAPS: usize = 32;
 const MAX_EVENTS: usize = 32;
 
+/// From this many coordinates on a scene keeps its N×N derivatives sparse: below it the dense
+/// storage's fixed-size matrices are faster and fit a thread's stack.
+const SPARSE_FROM_COORDINATES: usize = 64;
+
 impl Sizes {
     pub fn z(&self) -> usize {
         self.r + self.k
+    }
+
+    /// Whether the scene is large enough for the sparse storage.
+    pub fn sparse(&self) -> bool {
+        self.n >= SPARSE_FROM_COORDINATES
     }
 }
 

@@ -270,10 +270,6 @@ pub(crate) fn op_report(item: &syn::ItemImpl) -> Vec<(&'static str, OpCounts, Op
         .collect()
 }
 
-/// From this many coordinates on a scene keeps its N×N derivatives sparse: below it the dense
-/// storage's fixed-size matrices are faster and fit a thread's stack.
-const SPARSE_FROM_COORDINATES: usize = 64;
-
 fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call]) -> TokenStream {
     let rt = quote!(::zeitner::__private);
     let n = Literal::usize_unsuffixed(scene.sizes.n);
@@ -334,7 +330,7 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
         (true, false) => (quote!(#rt::FullMass<#n>), quote!(Full)),
     };
     let summaries = scene.functions.iter().map(|g| function_summary(g, &rt));
-    let storage = if scene.sizes.n >= SPARSE_FROM_COORDINATES {
+    let storage = if scene.sizes.sparse() {
         quote!(#rt::LargeSceneStorage)
     } else {
         quote!(#rt::Dense)
@@ -542,6 +538,10 @@ fn signature(
             quote!((#square, #square)),
         ),
         Output::MassJacobianProduct => (quote!(q: &#vec_n, t: #rt::Float, a: &#vec_n), square),
+        Output::Stage => (
+            state,
+            quote!((Self::Mass, #vec_n, #rt::Matrix<#z, #n>, #rt::Vector<#z>)),
+        ),
         other => unreachable!("no signature of its own for {other:?}"),
     }
 }
@@ -671,6 +671,14 @@ impl Emitter<'_> {
                 } else {
                     quote!(#rt::FullMass(#m))
                 }
+            }
+            (Output::Stage, [m, f, g, b]) => {
+                let mass = if generated.blocks[0].cols == 1 {
+                    quote!(#rt::DiagonalMass(#m))
+                } else {
+                    quote!(#rt::FullMass(#m))
+                };
+                quote!((#mass, #f, #g, #b))
             }
             (_, [single]) => quote!(#single),
             (_, many) => quote!((#(#many),*)),

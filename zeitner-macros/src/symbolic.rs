@@ -12,6 +12,7 @@ use crate::lower::{Lowered, VarKind, Vars};
 use crate::model::{Model, Role, Shape};
 
 /// One output array of a generated function.
+#[derive(Clone)]
 pub struct Block {
     /// Name of the local in the generated code.
     pub name: &'static str,
@@ -32,6 +33,8 @@ pub enum Output {
     ConstraintPositionPartials,
     ConstraintRate,
     ConstraintAccelerationBias,
+    /// `(M, F, G, b)` in one function: what a stage with its multipliers solved needs.
+    Stage,
     ForceJacobians,
     ConstraintForceJacobians,
     MassJacobianProduct,
@@ -57,6 +60,7 @@ impl Output {
             Output::ConstraintPositionPartials => "constraint_position_partials",
             Output::ConstraintRate => "constraint_rate",
             Output::ConstraintAccelerationBias => "constraint_acceleration_bias",
+            Output::Stage => "stage",
             Output::ForceJacobians => "force_jacobians",
             Output::ConstraintForceJacobians => "constraint_force_jacobians",
             Output::MassJacobianProduct => "mass_jacobian_product",
@@ -222,6 +226,7 @@ pub fn build(
     derivation.values(&values);
     let structure = derivation.constraint_jacobian(&values.constraints);
     let levels = derivation.levels(&values.constraints, &structure);
+    derivation.stage();
     derivation.force_jacobians(&values.force);
     let multipliers = derivation.constraint_force_jacobians(&values.constraints, &structure);
     if mass_depends_on_q {
@@ -490,6 +495,30 @@ impl Derivation<'_> {
         self.functions
             .push((Output::ConstraintAccelerationBias, vec![bias_block]));
         Levels { rate, bias }
+    }
+
+    /// `M`, `F`, `G` and `b` as one function, scheduled together so that what they share
+    /// (the sines and cosines of a mechanism's angles) is computed once per stage. Not for a
+    /// scene large enough for the sparse storage, whose steps never call it: it would only
+    /// double the code the compiler gets.
+    fn stage(&mut self) {
+        if self.sizes.sparse() {
+            return;
+        }
+        let parts = [
+            Output::MassMatrix,
+            Output::AppliedForce,
+            Output::ConstraintJacobian,
+            Output::ConstraintAccelerationBias,
+        ];
+        let blocks = parts
+            .iter()
+            .filter_map(|part| {
+                let found = self.functions.iter().find(|(output, _)| output == part);
+                found.map(|(_, blocks)| blocks[0].clone())
+            })
+            .collect();
+        self.functions.push((Output::Stage, blocks));
     }
 
     /// `∂F/∂q` and `∂F/∂q'`.

@@ -458,8 +458,17 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     fn factor_now(&mut self, q: &Vector<N>, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
-        self.evaluations.mass_factorizations += 1;
         let mass = self.system.mass_matrix(q, t);
+        self.factor_of(mass, t)
+    }
+
+    /// The factor of `mass`, evaluated at time `t`: the one kept where the mass is constant.
+    #[inline(always)]
+    fn factor_of(&mut self, mass: S::Mass, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
+        if let (true, Some(factor)) = (S::MASS_IS_CONSTANT, &self.constant_factor) {
+            return Ok(factor.clone());
+        }
+        self.evaluations.mass_factorizations += 1;
         mass.factor().ok_or_else(|| {
             // Tell a NaN apart from a mass that is merely not positive definite.
             let probe = mass.mul(&Vector::repeat(1.0));
@@ -602,19 +611,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         v: &Vector<N>,
         t: Float,
     ) -> Result<Option<(Vector<N>, Vector<Z>)>, StepError> {
-        let factor = self.mass_factor(q, t)?;
+        // One generated function for all four: what they share is computed once.
+        let (mass, force, unmasked, unmasked_bias) = self.system.stage(q, v, t);
+        let factor = self.factor_of(mass, t)?;
         self.evaluations.constraint_jacobians += 1;
         self.evaluations.forces += 1;
         self.evaluations.acceleration_biases += 1;
-        let unmasked = self.system.constraint_jacobian(q, v, t);
         if self.masks() && !all_finite(unmasked.as_slice()) {
             return Ok(None);
         }
         let jacobian = self.mask_open(unmasked);
         let m_inv_gt = factor.solve(&jacobian.transpose());
-        let force = self.system.applied_force(q, v, t);
         let m_inv_f = factor.solve(&force);
-        let unmasked_bias = self.system.constraint_acceleration_bias(q, v, t);
         if self.masks() && !all_finite(unmasked_bias.as_slice()) {
             return Ok(None);
         }

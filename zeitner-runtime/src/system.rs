@@ -79,6 +79,22 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     /// `b` in the acceleration-level constraint `G q'' + b = 0`:
     /// `b = (∂w/∂q) q' + ∂w/∂t`.
     fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z>;
+    /// `(M, F, G, b)` at one state: everything a stage whose multipliers are solved at it
+    /// needs. The default calls the four functions; `#[constrained_system]` generates one
+    /// function that computes what they share (a mechanism's sines and cosines) once.
+    fn stage(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Self::Mass, Vector<N>, Matrix<Z, N>, Vector<Z>) {
+        (
+            self.mass_matrix(q, t),
+            self.applied_force(q, v, t),
+            self.constraint_jacobian(q, v, t),
+            self.constraint_acceleration_bias(q, v, t),
+        )
+    }
     /// `(∂F/∂q, ∂F/∂q')`.
     fn force_jacobians(
         &self,

@@ -91,6 +91,14 @@ where
     fn constraint_acceleration_bias(&self, q: &Vector<N>, v: &Vector<N>, t: Float) -> Vector<Z> {
         self.scene.constraint_acceleration_bias(q, v, t)
     }
+    fn stage(
+        &self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> (Self::Mass, Vector<N>, Matrix<Z, N>, Vector<Z>) {
+        self.scene.stage(q, v, t)
+    }
     fn force_jacobians(
         &self,
         q: &Vector<N>,

@@ -243,8 +243,10 @@ pub fn rust_peers<
             let radau2 =
                 crate::de_peer::radau5::<S, N, Z, Y>(&scene, start, t_end, Index::Two, rtols);
             add("peer-de-radau5-index2", radau2);
-            let dop853 = crate::de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols);
+            let dop853 = crate::de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols, false);
             add("peer-de-dop853-projected", dop853);
+            let fused = crate::de_peer::dop853::<S, N, Z, X>(&scene, start, t_end, rtols, true);
+            add("peer-de-dop853-projected-fused", fused);
         }
         let _ = (&mut add, &scene, start, t_end, rtols);
         runs

@@ -192,7 +192,10 @@ fn preamble(repeats: usize) -> String {
          index-2 formulations (variables' indices declared as RADAU5 asks) and its DOP853 on the \
          index-1 ODE, projected back onto the constraints when it leaves them by more than atol \
          (over the last four first-step lengths, where the crate cannot restart, only the end \
-         state is projected). On the pendulum against the wall every in-process peer runs with \
+         state is projected); `peer-de-dop853-projected-fused` is that DOP853 with its right-hand side \
+         reading the scene's fused stage (`ConstrainedSystem::stage`, the one generated function for \
+         M, F, G and b that our methods with the multipliers at every stage call), as a user of both \
+         crates could write it: the headline's last two columns, what our integrator alone buys. On the pendulum against the wall every in-process peer runs with \
          its gap free while open (its λ held at 0) and an event where it closes: Newton's impact \
          law (M-orthogonal impulse, the gap's restitution) sets the velocities there and the method \
          goes on from that state (diffsol: its root finding and `state_mut_back`; \
@@ -209,34 +212,59 @@ fn preamble(repeats: usize) -> String {
     )
 }
 
-/// For each scene and error target: our fastest run, the fastest peer's, and their ratio.
+/// Who a headline column runs: our methods, the peers on the scene's model functions, or the
+/// peers given the same fused stage our methods call (`-fused`).
+#[derive(Clone, Copy, PartialEq)]
+enum Side {
+    Ours,
+    Peers,
+    FusedPeers,
+}
+
+impl Side {
+    fn runs(self, method: &str) -> bool {
+        let fused = method.ends_with("-fused");
+        match self {
+            Side::Ours => method.starts_with("zeitner-"),
+            Side::Peers => method.starts_with("peer-") && !fused,
+            Side::FusedPeers => method.starts_with("peer-") && fused,
+        }
+    }
+}
+
+/// For each scene and error target: our fastest run, the fastest peer's on the model
+/// functions (what our code generation and integrator buy together) and the fastest peer's
+/// on our fused stage (what the integrator alone buys), each with its ratio to ours.
 fn headline(scenes: &[Scene], rows: &[Row]) -> String {
-    let fastest = |scene: &str, target: f64, ours: bool| -> Option<&Row> {
-        fastest_run(rows, scene, target, |method| {
-            method.starts_with("zeitner-") == ours && (ours || method.starts_with("peer-"))
-        })
+    let fastest = |scene: &str, target: f64, side: Side| -> Option<&Row> {
+        fastest_run(rows, scene, target, |method| side.runs(method))
     };
     let mut headline = String::from(
-        "| scene | error ≤ | our fastest | best peer | peer time / ours |\n|---|---|---|---|---|\n",
+        "| scene | error ≤ | our fastest | best peer | peer time / ours | best peer on the fused stage | its time / ours |\n\
+         |---|---|---|---|---|---|---|\n",
     );
     for scene in scenes {
         for target in [1e-4, 1e-6, 1e-8] {
-            let ours = fastest(scene.name, target, true);
-            let peer = fastest(scene.name, target, false);
+            let ours = fastest(scene.name, target, Side::Ours);
             let describe = |r: Option<&Row>| {
                 r.map_or("not reached".to_string(), |r| {
                     format!("{:.3} ms `{}` {}", r.cpu_seconds * 1e3, r.method, r.setting)
                 })
             };
-            let ratio = match (ours, peer) {
-                (Some(o), Some(p)) => format!("{:.1}", p.cpu_seconds / o.cpu_seconds),
-                _ => "–".to_string(),
+            let against = |side: Side| {
+                let peer = fastest(scene.name, target, side);
+                let ratio = match (ours, peer) {
+                    (Some(o), Some(p)) => format!("{:.1}", p.cpu_seconds / o.cpu_seconds),
+                    _ => "–".to_string(),
+                };
+                format!("{} | {ratio}", describe(peer))
             };
             headline.push_str(&format!(
-                "| {} | {target:.0e} | {} | {} | {ratio} |\n",
+                "| {} | {target:.0e} | {} | {} | {} |\n",
                 scene.name,
                 describe(ours),
-                describe(peer)
+                against(Side::Peers),
+                against(Side::FusedPeers)
             ));
         }
     }
