@@ -86,10 +86,11 @@ pub fn index1_acceleration<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     v: &Vector<N>,
     t: f64,
 ) -> Option<(Vector<N>, Vector<Z>)> {
-    let mass = scene.mass_matrix(q, t);
+    let factor = scene.mass_matrix(q, t).factor()?;
+    let g = active_jacobian(scene, q, v, t, None);
     let force = scene.applied_force(q, v, t);
-    let g = scene.constraint_jacobian(q, v, t);
-    index1_of::<S, N, Z>((mass, force, g, scene.constraint_acceleration_bias(q, v, t)))
+    let bias = scene.constraint_acceleration_bias(q, v, t);
+    index1_with::<S, N, Z>(factor, g, force, bias)
 }
 
 /// [`index1_acceleration`] from the scene's one generated function for `M`, `F`, `G` and `b`
@@ -100,15 +101,19 @@ pub fn index1_acceleration_fused<S: ConstrainedSystem<N, Z>, const N: usize, con
     v: &Vector<N>,
     t: f64,
 ) -> Option<(Vector<N>, Vector<Z>)> {
-    index1_of::<S, N, Z>(scene.stage(q, v, t))
+    let (mass, force, g, bias) = scene.stage(q, v, t);
+    let factor = mass.factor()?;
+    index1_with::<S, N, Z>(factor, active::<S, N, Z>(g, None), force, bias)
 }
 
-/// The index-1 form from `(M, F, G, b)` at one point.
-fn index1_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    (mass, force, g, bias): (S::Mass, Vector<N>, Matrix<Z, N>, Vector<Z>),
+/// The index-1 form from the factor of `M`, the active `G`, `F` and `b` at one point.
+#[inline(always)]
+fn index1_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    factor: impl MassFactor<N>,
+    g: Matrix<Z, N>,
+    force: Vector<N>,
+    bias: Vector<Z>,
 ) -> Option<(Vector<N>, Vector<Z>)> {
-    let factor = mass.factor()?;
-    let g = active::<S, N, Z>(g, None);
     let free = factor.solve(&force);
     let directions = factor.solve(&g.transpose());
     let bias = without_gaps::<S, N, Z>(bias);
