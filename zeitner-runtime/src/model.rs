@@ -462,12 +462,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         self.factor_of(mass, t)
     }
 
-    /// The factor of `mass`, evaluated at time `t`: the one kept where the mass is constant.
+    /// The factor of a constant mass, kept since [`Model::prepare`].
+    #[inline(always)]
+    fn kept_factor(&self) -> Option<FactorOf<S, N, Z>> {
+        match &self.constant_factor {
+            Some(factor) if S::MASS_IS_CONSTANT => Some(factor.clone()),
+            _ => None,
+        }
+    }
+
+    /// The factor of `mass`, evaluated at time `t`.
     #[inline(always)]
     fn factor_of(&mut self, mass: S::Mass, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
-        if let (true, Some(factor)) = (S::MASS_IS_CONSTANT, &self.constant_factor) {
-            return Ok(factor.clone());
-        }
         self.evaluations.mass_factorizations += 1;
         mass.factor().ok_or_else(|| {
             // Tell a NaN apart from a mass that is merely not positive definite.
@@ -485,9 +491,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     #[inline]
     pub fn mass_factor(&mut self, q: &Vector<N>, t: Float) -> Result<FactorOf<S, N, Z>, StepError> {
-        match &self.constant_factor {
-            Some(factor) if S::MASS_IS_CONSTANT => Ok(factor.clone()),
-            _ => self.factor_now(q, t),
+        match self.kept_factor() {
+            Some(factor) => Ok(factor),
+            None => self.factor_now(q, t),
         }
     }
 
@@ -613,7 +619,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     ) -> Result<Option<(Vector<N>, Vector<Z>)>, StepError> {
         // One generated function for all four: what they share is computed once.
         let (mass, force, unmasked, unmasked_bias) = self.system.stage(q, v, t);
-        let factor = self.factor_of(mass, t)?;
+        let factor = match self.kept_factor() {
+            Some(factor) => factor,
+            None => self.factor_of(mass, t)?,
+        };
         self.evaluations.constraint_jacobians += 1;
         self.evaluations.forces += 1;
         self.evaluations.acceleration_biases += 1;
