@@ -48,7 +48,7 @@ use zeitner::{
     Vector, VelocityProjection, WithStorage,
 };
 
-use crate::fuzz_scenes::{FollowerPendulum, Sleigh, TwoLinkArm};
+use crate::fuzz_scenes::{FollowerPendulum, FrictionBlock, Sleigh, TwoLinkArm};
 use zeitner_scenes::andrews::Andrews;
 use zeitner_scenes::chain::{Chain2, Chain4};
 use zeitner_scenes::contact::{Ball, FallingBar, WallPendulum};
@@ -97,14 +97,17 @@ pub enum SceneKind {
     Ball,
     WallPendulum,
     FallingBar,
+    /// A block on a spring on a floor, sliding with Coulomb friction on a moving belt.
+    FrictionBlock,
 }
 
 impl SceneKind {
-    /// The scenes with gaps (and events), the last three of [`SceneKind::ALL`].
-    pub const CONTACT: [SceneKind; 3] = [
+    /// The scenes with gaps (and events, friction), the last four of [`SceneKind::ALL`].
+    pub const CONTACT: [SceneKind; 4] = [
         SceneKind::Ball,
         SceneKind::WallPendulum,
         SceneKind::FallingBar,
+        SceneKind::FrictionBlock,
     ];
 
     pub fn has_contacts(self) -> bool {
@@ -124,7 +127,7 @@ impl SceneKind {
         }
     }
 
-    pub const ALL: [SceneKind; 17] = [
+    pub const ALL: [SceneKind; 18] = [
         SceneKind::Pendulum,
         SceneKind::SteamGenerator,
         SceneKind::Andrews,
@@ -142,6 +145,7 @@ impl SceneKind {
         SceneKind::Ball,
         SceneKind::WallPendulum,
         SceneKind::FallingBar,
+        SceneKind::FrictionBlock,
     ];
 
     /// A consistent start for the given parameters (the scene's own, where it has one), with a
@@ -228,9 +232,10 @@ impl SceneKind {
                 let vx = l * cos * rate;
                 (vec![l * sin, -l * cos, 0.0], vec![vx, l * sin * rate, vx])
             }
-            SceneKind::Ball | SceneKind::WallPendulum | SceneKind::FallingBar => {
-                contact_state(self, p, rng)
-            }
+            SceneKind::Ball
+            | SceneKind::WallPendulum
+            | SceneKind::FallingBar
+            | SceneKind::FrictionBlock => contact_state(self, p, rng),
         }
     }
 }
@@ -363,6 +368,24 @@ fn contact_state(scene: SceneKind, p: &Parameters, rng: &mut Rng) -> (Vec<Float>
             };
             (vec![0.0, y, theta], vec![0.0, gap_speed(rng), w])
         }
+        SceneKind::FrictionBlock => {
+            // Riding the belt, resting, or sliding either way; the spring stretched or not.
+            let belt = p["belt"];
+            let vx = match rng.random_range(0..5) {
+                0 | 1 => belt,
+                2 => 0.0,
+                3 => {
+                    let hair = log_uniform(rng, -14.0, -8.0);
+                    belt + signed(rng, hair)
+                }
+                _ => rng.random_range(-3.0..3.0),
+            };
+            let x = match rng.random_bool(0.3) {
+                true => 0.0,
+                false => rng.random_range(-1.0..1.0),
+            };
+            (vec![x, gap_offset(rng)], vec![vx, gap_speed(rng)])
+        }
         _ => unreachable!("not a contact scene"),
     }
 }
@@ -390,6 +413,16 @@ fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut Parameters) {
     }
     if rng.random_bool(0.6) {
         p["e"] = restitution(rng);
+    }
+    if scene == SceneKind::FrictionBlock && rng.random_bool(0.6) {
+        p["mu"] = match rng.random_range(0..10) {
+            0..=4 => rng.random_range(0.0..1.5),
+            5 => 0.0,
+            6 => log_uniform(rng, 1.0, 3.0),
+            7 => -rng.random_range(0.0..1.0),
+            8 => Float::NAN,
+            _ => hostile(rng),
+        };
     }
     if scene == SceneKind::WallPendulum && rng.random_bool(0.5) {
         let l = p["length"];
@@ -1743,6 +1776,7 @@ fn landed_on_purpose(reason: StopReason) -> bool {
         StopReason::Event { .. }
             | StopReason::ContactsOpened { .. }
             | StopReason::GapsClosing { .. }
+            | StopReason::FrictionChanged { .. }
             | StopReason::TimeEventReached
     )
 }
@@ -2326,6 +2360,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
             StopReason::ContactsOpened { gaps } | StopReason::GapsClosing { gaps } => {
                 !gaps.is_empty() && (0..S::UNILATERAL_CONSTRAINTS).any(|k| gaps.contains(k))
             }
+            StopReason::FrictionChanged { sticking, slipping } => {
+                // Only closed sliding contacts change, each to one state.
+                let changed = sticking.union(slipping);
+                let closed = sim.closed_gaps();
+                let sliding = GapSet::first(S::SLIDING_CONTACTS);
+                !changed.is_empty()
+                    && sticking.without(slipping) == sticking
+                    && changed.without(closed.intersection(sliding)).is_empty()
+            }
             _ => false,
         };
         if !consistent {
@@ -2785,4 +2828,5 @@ scene_table! {
     Ball => Ball [1, 1] { m: 1.0, g: 9.81, e: 0.8 };
     WallPendulum => WallPendulum [2, 2] { m: 1.0, length: 1.0, g: 9.81, e: 0.8, height: -0.5 };
     FallingBar => FallingBar [3, 3] { m: 1.0, j: 0.1, a: 0.5, g: 9.81, e: 0.5 };
+    FrictionBlock => FrictionBlock [2, 2] { m: 1.0, k: 50.0, mu: 0.4, belt: 0.3, g: 9.81, e: 0.5 };
 }

@@ -168,3 +168,42 @@ impl FollowerPendulum {
         [vz - vx]
     }
 }
+
+/// A block on a floor (`y ≥ 0`) that can lift off and land (restitution `e`), held by a spring
+/// of stiffness `k` to `x = 0` and sliding with Coulomb friction `mu` on a belt that moves at
+/// `belt`: gaps, impacts, sticking and slipping in one scene.
+pub struct FrictionBlock {
+    pub m: Float,
+    pub k: Float,
+    pub mu: Float,
+    pub belt: Float,
+    pub g: Float,
+    pub e: Float,
+}
+
+#[constrained_system]
+impl FrictionBlock {
+    fn mass(&self) -> [Float; 2] {
+        [self.m, self.m]
+    }
+
+    fn force(&self, [x, _y]: [Float; 2]) -> [Float; 2] {
+        [-self.k * x, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
+        [y]
+    }
+
+    fn restitution(&self) -> [Float; 1] {
+        [self.e]
+    }
+
+    fn slips(&self, _q: [Float; 2], [vx, _vy]: [Float; 2]) -> [Float; 1] {
+        [vx - self.belt]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}

@@ -9,8 +9,10 @@ use crate::model::{Model, ModelFn, Role, Shape};
 pub struct Sizes {
     pub n: usize,
     pub r: usize,
+    /// Velocity-level rows, the slip rows (`s`) last among them.
     pub k: usize,
     pub u: usize,
+    pub s: usize,
     pub e: usize,
 }
 
@@ -85,9 +87,11 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
     let length = |role: Role| model.function(role).map_or(0, |f| f.shape.len());
     let u = length(Role::Gaps);
     let r = length(Role::Constraints) + u;
-    let k = length(Role::VelocityConstraints);
+    let s = length(Role::Slips);
+    let k = length(Role::VelocityConstraints) + s;
     let e = length(Role::Events);
     check_gaps_and_events(model, (u, e), errors);
+    check_friction(model, u, errors);
     // Position-level rows may be absent (a purely nonholonomic model), but not all rows.
     for role in [Role::Constraints, Role::VelocityConstraints, Role::Gaps] {
         if let Some(function) = model.function(role).filter(|_| r + k == 0) {
@@ -103,7 +107,31 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
     }
     // More rows than coordinates is not an error: redundant but consistent rows (a truss
     // pinned at both ends) are the runtime's to handle, with minimum-norm multipliers.
-    Sizes { n, r, k, u, e }
+    Sizes { n, r, k, u, s, e }
+}
+
+/// One slip velocity and one friction coefficient per gap, each with the other.
+fn check_friction(model: &Model<'_>, u: usize, errors: &mut Errors) {
+    for role in [Role::Slips, Role::Friction] {
+        if let Some(function) = model.function(role).filter(|f| f.shape.len() != u) {
+            errors.error_spanned_by(
+                function.shape.len_expr(),
+                format_args!(
+                    "`{}` has {} entries, but the model has {u} gaps: one per gap",
+                    role.name(),
+                    function.shape.len()
+                ),
+            );
+        }
+    }
+    let (slips, friction) = (model.function(Role::Slips), model.function(Role::Friction));
+    if let (Some(friction), None) = (friction, slips) {
+        errors.error_spanned_by(
+            friction.shape.len_expr(),
+            "`friction` needs `slips`: the slip velocity of each gap's contact, along which \
+             its friction acts",
+        );
+    }
 }
 
 /// One restitution per gap, none without gaps; gaps and events within the runtime's limits.

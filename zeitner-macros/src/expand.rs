@@ -299,7 +299,9 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let (u, e) = (scene.sizes.u, scene.sizes.e);
     let gaps = (u > 0).then(|| quote!(const UNILATERAL_CONSTRAINTS: usize = #u;));
     let events = (e > 0).then(|| quote!(const EVENTS: usize = #e;));
-    let gaps_and_events = quote!(#gaps #events);
+    let s = scene.sizes.s;
+    let slides = (s > 0).then(|| quote!(const SLIDING_CONTACTS: usize = #s;));
+    let gaps_and_events = quote!(#gaps #events #slides);
     // The Jacobians by their structural nonzeros as well, for the sparse storage, and where
     // those nonzeros are.
     let vec_n = quote!(#rt::Vector<#n>);
@@ -490,6 +492,13 @@ fn values_only(
             fn restitution(&self, gap: usize) -> #rt::Float {
                 let e = { #body };
                 if gap < #count { e[gap] } else { 0.0 }
+            }
+        },
+        Output::Friction => quote! {
+            #[inline]
+            fn friction(&self, gap: usize) -> #rt::Float {
+                let mu = { #body };
+                if gap < #count { mu[gap] } else { 0.0 }
             }
         },
         Output::EventFunctions => quote! {

@@ -19,6 +19,10 @@ pub enum Role {
     Gaps,
     /// Newton's coefficient of restitution of each gap.
     Restitution,
+    /// The slip velocity of each gap's contact: velocity-level rows, the last of all.
+    Slips,
+    /// Coulomb's coefficient of friction of each gap.
+    Friction,
     /// Functions whose zero crossings stop a step.
     Events,
     /// Times at which the model's functions are not smooth.
@@ -28,13 +32,15 @@ pub enum Role {
 }
 
 impl Role {
-    pub const ALL: [Role; 9] = [
+    pub const ALL: [Role; 11] = [
         Role::Mass,
         Role::Force,
         Role::Constraints,
         Role::VelocityConstraints,
         Role::Gaps,
         Role::Restitution,
+        Role::Slips,
+        Role::Friction,
         Role::Events,
         Role::TimeEvents,
         Role::Parameters,
@@ -48,6 +54,8 @@ impl Role {
             Role::VelocityConstraints => "velocity_constraints",
             Role::Gaps => "gaps",
             Role::Restitution => "restitution",
+            Role::Slips => "slips",
+            Role::Friction => "friction",
             Role::Events => "events",
             Role::TimeEvents => "time_events",
             Role::Parameters => "parameters",
@@ -56,14 +64,17 @@ impl Role {
 
     /// Whether the function may take velocities.
     pub fn takes_velocities(self) -> bool {
-        matches!(self, Role::Force | Role::VelocityConstraints | Role::Events)
+        matches!(
+            self,
+            Role::Force | Role::VelocityConstraints | Role::Slips | Role::Events
+        )
     }
 
     /// Whether the function may take the state at all (the others depend on parameters only).
     pub fn takes_state(self) -> bool {
         !matches!(
             self,
-            Role::Restitution | Role::TimeEvents | Role::Parameters
+            Role::Restitution | Role::Friction | Role::TimeEvents | Role::Parameters
         )
     }
 
@@ -71,7 +82,7 @@ impl Role {
     pub fn is_constraint(self) -> bool {
         matches!(
             self,
-            Role::Constraints | Role::VelocityConstraints | Role::Gaps
+            Role::Constraints | Role::VelocityConstraints | Role::Gaps | Role::Slips
         )
     }
 
@@ -85,6 +96,8 @@ impl Role {
             }
             Role::Gaps => "fn gaps(&self, q: [f64; N], t: f64) -> [f64; U]",
             Role::Restitution => "fn restitution(&self) -> [f64; U]",
+            Role::Slips => "fn slips(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; U]",
+            Role::Friction => "fn friction(&self) -> [f64; U]",
             Role::Events => "fn events(&self, q: [f64; N], v: [f64; N], t: f64) -> [f64; E]",
             Role::TimeEvents => "fn time_events(&self) -> [f64; K]",
             Role::Parameters => "fn parameters(&self) -> [f64; P]",
@@ -197,7 +210,7 @@ impl<'a> Model<'a> {
                     errors.error_spanned_by(
                         other,
                         "only the model functions (`mass`, `force`, `constraints`, `velocity_constraints`, \
-                         `gaps`, `restitution`, `events`, `time_events`, `parameters`), helper methods and `const`s may \
+                         `gaps`, `restitution`, `slips`, `friction`, `events`, `time_events`, `parameters`), helper methods and `const`s may \
                          stand in a #[constrained_system] impl; put other items in a second `impl` block",
                     );
                     continue;

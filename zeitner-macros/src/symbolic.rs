@@ -45,6 +45,7 @@ pub enum Output {
     ParameterConstraints,
     EventJacobians,
     Restitution,
+    Friction,
     EventFunctions,
     TimeEventAfter,
 }
@@ -71,6 +72,7 @@ impl Output {
             Output::ParameterConstraints => "parameter_constraints",
             Output::EventJacobians => "event_jacobians",
             Output::Restitution => "restitution",
+            Output::Friction => "friction",
             Output::EventFunctions => "event_functions",
             Output::TimeEventAfter => "time_event_after",
         }
@@ -146,7 +148,7 @@ pub fn check(
                     }
                 }
             }
-            (Role::VelocityConstraints, _) => {
+            (Role::VelocityConstraints | Role::Slips, _) => {
                 for (j, &id) in lowered.entries.iter().enumerate() {
                     if !deps.any(graph, id, is_velocity) {
                         errors.error_at(
@@ -262,6 +264,7 @@ struct ModelValues {
     parameters: Vec<Entry>,
     events: Vec<Entry>,
     restitution: Vec<Entry>,
+    friction: Vec<Entry>,
     time_events: Vec<Entry>,
 }
 
@@ -310,6 +313,7 @@ impl ModelValues {
         let mut constraints = entries_of(Role::Constraints);
         constraints.extend(entries_of(Role::Gaps));
         constraints.extend(entries_of(Role::VelocityConstraints));
+        constraints.extend(entries_of(Role::Slips));
         ModelValues {
             full_mass,
             mass,
@@ -318,6 +322,7 @@ impl ModelValues {
             parameters: entries_of(Role::Parameters),
             events: entries_of(Role::Events),
             restitution: entries_of(Role::Restitution),
+            friction: entries_of(Role::Friction),
             time_events: entries_of(Role::TimeEvents),
         }
     }
@@ -844,6 +849,7 @@ impl Derivation<'_> {
     fn values_only(&mut self, values: &ModelValues) {
         let values_only = [
             (&values.restitution, Output::Restitution, "e"),
+            (&values.friction, Output::Friction, "mu"),
             (&values.events, Output::EventFunctions, "e"),
             (&values.time_events, Output::TimeEventAfter, "times"),
         ];

@@ -3,7 +3,9 @@
 //! when the state is re-initialised.
 
 use crate::error::{Row, RowSet, StepError};
-use crate::linalg::{all_finite, dependent, finite_state, keep_leading_rows, max_abs, solve_spd};
+use crate::linalg::{
+    all_finite, dependent, finite_state, keep_leading_rows, max_abs, solve_spd, Lu,
+};
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model, REDUNDANT_ROWS};
 use crate::options::StartPolicy;
@@ -405,13 +407,21 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let bias = model.bias(&q, &v, t)?;
     let rhs = directions.jacobian * m_inv_f + bias;
     let gram = directions.gram();
-    let lambda = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
-        StepError::RankDeficientConstraints {
-            t,
-            dependent_rows: rows,
+    let (lambda, a) = match model.slipping_directions((&q, &v, t), &directions)? {
+        None => {
+            let lambda = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+                StepError::RankDeficientConstraints {
+                    t,
+                    dependent_rows: rows,
+                }
+            })?;
+            (lambda, m_inv_f - directions.m_inv_gt * lambda)
         }
-    })?;
-    let a = m_inv_f - directions.m_inv_gt * lambda;
+        Some(m_inv_wt) => {
+            let lambda = slipping_multipliers(&directions, &m_inv_wt, &rhs, t)?;
+            (lambda, m_inv_f - m_inv_wt * lambda)
+        }
+    };
     if !(all_finite(a.as_slice()) & all_finite(lambda.as_slice())) {
         return Err(StepError::non_finite_state(t));
     }
@@ -421,6 +431,29 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         gram,
     };
     Ok((point, gram))
+}
+
+/// The multipliers of `G M⁻¹Wᵀ λ = rhs` where contacts slip: Coulomb's force along a slip is
+/// carried by the normal multiplier, which makes the system unsymmetric (LU). Singular where
+/// the contacts admit no consistent force (Painlevé's configurations among them).
+#[cold]
+fn slipping_multipliers<F, const N: usize, const Z: usize>(
+    directions: &ConstraintDirections<F, N, Z>,
+    m_inv_wt: &Matrix<N, Z>,
+    rhs: &Vector<Z>,
+    t: Float,
+) -> Result<Vector<Z>, StepError> {
+    let mut system = directions.jacobian * m_inv_wt;
+    directions.masked.regularise(&mut system);
+    let singular = || StepError::NoConsistentFriction {
+        t,
+        gaps: directions.masked.slipping(),
+    };
+    let lu = Lu::new(system).ok_or_else(singular)?;
+    let lambda = lu.solve(rhs);
+    all_finite(lambda.as_slice())
+        .then_some(lambda)
+        .ok_or_else(singular)
 }
 
 /// `G` and `G M⁻¹ Gᵀ` at a consistent point, kept for the next step's multiplier prediction.
@@ -509,7 +542,7 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
         Some(g) => *g,
         None => model.jacobian(&end.q, &end.v, end.t)?,
     };
-    let constraint_force = -g.tr_mul(&end.lambda);
+    let constraint_force = model.constraint_force((&end.q, &end.v, end.t), &g, &end.lambda);
     // The step's multipliers too: a row that no force reads (a closed contact's, masked) can
     // carry an overflowed prediction through Newton untouched (f32 fuzz, a ball under
     // g = f32::MAX: λ = -3.4e38 extrapolated to -∞).

@@ -18,6 +18,10 @@ use crate::output::Point;
 use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
 
+/// A sticking contact slips where its force leaves Coulomb's cone by more than this share of
+/// the multipliers.
+const RELEASE: Float = crate::scalar::floors::CONTACT_RELEASE;
+
 /// What one impact did.
 ///
 /// ```
@@ -109,6 +113,69 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     Ok(opened)
 }
 
+/// Sets each closed sliding contact slipping where its slip velocity at `(q, v, t)` exceeds
+/// `tolerance` (forwards where it is positive) and sticking elsewhere, before a start is made
+/// consistent (a sticking contact's slip velocity is then projected to zero).
+pub(crate) fn slip_by_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    tolerance: Float,
+) -> Result<(), StepError> {
+    let rates = model.slip_rates(q, v, t)?;
+    let (mut slipping, mut forward) = (GapSet::EMPTY, GapSet::EMPTY);
+    for (k, &rate) in rates.iter().enumerate().take(S::SLIDING_CONTACTS) {
+        if rate.abs() > tolerance {
+            slipping.insert(k);
+        }
+        if rate > tolerance {
+            forward.insert(k);
+        }
+    }
+    model.set_slipping((slipping, forward));
+    Ok(())
+}
+
+/// Sets slipping the closed sticking contacts whose force at a consistent point leaves
+/// Coulomb's cone (by more than rounding), the farthest out first, each in the direction its
+/// sticking force pushed, and recomputes the point until every sticking contact holds; returns
+/// the contacts set slipping.
+pub(crate) fn slip_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    point: &mut Point<N, Z>,
+) -> Result<GapSet, StepError> {
+    let mut slipped = GapSet::EMPTY;
+    for _ in 0..=S::SLIDING_CONTACTS {
+        let (slipping, mut forward) = model.slipping();
+        let closed = GapSet::first(S::SLIDING_CONTACTS).without(model.open_gaps());
+        let level = RELEASE * point.lambda.amax();
+        let beyond = closed
+            .without(slipping)
+            .iter()
+            .map(|k| (k, model.cone_margin(k, &point.lambda)))
+            .filter(|&(_, (margin, _))| margin < -level)
+            .fold(
+                None,
+                |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
+                    Some((_, w)) if w.0 <= m.0 => worst,
+                    _ => Some((k, m)),
+                },
+            );
+        let Some((k, (_, pushes_forward))) = beyond else {
+            return Ok(slipped);
+        };
+        slipped.insert(k);
+        let mut slipping = slipping;
+        slipping.insert(k);
+        match pushes_forward {
+            true => forward.insert(k),
+            false => forward.remove(k),
+        }
+        model.set_slipping((slipping, forward));
+        *point = consistent_point(model, point.t, point.q, point.v)?;
+    }
+    Ok(slipped)
+}
+
 /// The impact of the gaps in `impacting` at `(q, v, t)`: the impulse, the velocities after it,
 /// and the contacts that stay closed, which it leaves set in the model. The gaps bounce together
 /// (each with its own restitution) when one of them approaches faster than `rest_velocity`, and
@@ -135,6 +202,9 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         }
     }
     let closed_before = all.without(model.open_gaps());
+    // Frictionless: no slip row holds through the impulse (the contacts stick or slip after it,
+    // as their slip velocities then say).
+    model.set_slipping((GapSet::first(S::SLIDING_CONTACTS), GapSet::EMPTY));
     let energy = |model: &Model<'_, S, N, Z>, w: &Vector<N>| {
         0.5 * w.dot(&model.system.mass_matrix(q, t).mul(w))
     };

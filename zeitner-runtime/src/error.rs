@@ -1,6 +1,7 @@
 //! Typed failures. After any of them the simulator still holds its last accepted state. Each
 //! `Display` is a sentence that says what happened and what to change.
 
+use crate::gaps::GapSet;
 use crate::scalar::Float;
 use core::fmt;
 
@@ -225,10 +226,13 @@ pub enum InvalidOption {
     StepWork,
     /// An [`crate::EventSettings`] value out of range.
     Events,
-    /// A system with more gaps or event functions than the runtime holds (32 each).
+    /// A system with more gaps or event functions than the runtime holds (32 each), or
+    /// whose sliding contacts are not one per gap.
     TooManyEvents,
     /// A coefficient of restitution outside `0..=1` (or NaN).
     Restitution,
+    /// A friction coefficient that is negative or not finite.
+    Friction,
     /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
     SpectralRadius,
     /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`,
@@ -247,6 +251,8 @@ pub enum InvalidOption {
     SensitivitiesOfRawOutput,
     /// The start's derivatives set after the first step: they belong to the start.
     StartDerivativesAfterStart,
+    /// Sensitivities of a scene with friction, which have none yet.
+    SensitivitiesWithFriction,
 }
 
 impl fmt::Display for InvalidOption {
@@ -264,6 +270,10 @@ impl fmt::Display for InvalidOption {
             InvalidOption::SensitivitiesOfRawOutput => f.write_str(
                 "sensitivities are those of consistent points: use `VelocityProjection::Output` \
                  (the default) or `State`, not `Off`",
+            ),
+            InvalidOption::SensitivitiesWithFriction => f.write_str(
+                "sensitivities are not followed through friction yet: run the scene without \
+                 `friction`, or with `Simulator`",
             ),
             InvalidOption::StartDerivativesAfterStart => f.write_str(
                 "the start's derivatives are set before the first step: set them right after \
@@ -318,6 +328,10 @@ impl fmt::Display for InvalidOption {
             InvalidOption::TooManyEvents => f.write_str(
                 "the system has more than 32 gaps or more than 32 event functions; split them or \
                  combine several into one event function",
+            ),
+            InvalidOption::Friction => f.write_str(
+                "every friction coefficient must be finite and at least 0 (0: frictionless); a \
+                 negative one would drive the slip",
             ),
             InvalidOption::Restitution => f.write_str(
                 "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
@@ -409,6 +423,10 @@ pub enum StepError {
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
     InconsistentStart { worst_row: Row, residual: Float },
+    /// The slipping contacts `gaps` admit no consistent force: Coulomb's law along their slip
+    /// leaves the system for the multipliers singular (Painlevé's paradox, a friction
+    /// coefficient too large for the geometry).
+    NoConsistentFriction { t: Float, gaps: GapSet },
     /// Options or arguments were refused before anything was computed.
     InvalidOption(InvalidOption),
 }
@@ -455,6 +473,10 @@ impl StepError {
                  method if the model is stiff"
             }
             StepError::InconsistentStart { .. } => "give a state on or nearer the constraints",
+            StepError::NoConsistentFriction { .. } => {
+                "lower the friction coefficient of these contacts or change the geometry that \
+                 wedges them"
+            }
             StepError::InvalidOption(_) => "",
         }
     }
@@ -510,6 +532,11 @@ impl fmt::Display for StepError {
                 f,
                 "the initial state violates {worst_row} by {residual:e}: it could not be projected \
                  onto the constraints (or `StartPolicy::Refuse` forbids it)"
+            ),
+            StepError::NoConsistentFriction { t, gaps } => write!(
+                f,
+                "the slipping contacts of gaps {gaps:?} admit no consistent force at t = {t} \
+                 (Coulomb's law leaves their multipliers singular)"
             ),
             StepError::InvalidOption(option) => return write!(f, "invalid option: {option}"),
         }?;

@@ -26,6 +26,12 @@ pub(crate) enum Watched {
     Gap(usize),
     /// Closed gap `k`: its multiplier, which pulls when it rises through zero.
     Contact(usize),
+    /// Sticking contact `k`: how far its force is inside Coulomb's cone, which it leaves (to
+    /// slip) when that falls through zero.
+    Stick(usize),
+    /// Slipping contact `k` (or an open one, whose value stays positive): its slip velocity
+    /// along the slip, which stops (to stick, or to slip back) when it falls through zero.
+    Slide(usize),
 }
 
 impl Watched {
@@ -35,6 +41,7 @@ impl Watched {
             Watched::Event(_) => true,
             Watched::Gap(_) => direction == Direction::Falling,
             Watched::Contact(_) => direction == Direction::Rising,
+            Watched::Stick(_) | Watched::Slide(_) => direction == Direction::Falling,
         }
     }
 
@@ -54,6 +61,35 @@ pub(crate) struct Values {
     pub events: [Float; MAX_EVENTS],
     /// `g_u` above its level for open gaps, `λ` above its release level for closed ones.
     pub gaps: [Float; MAX_GAPS],
+    /// Of each sliding contact: the margin to Coulomb's cone while it sticks, the slip
+    /// velocity along the slip while it slips, each above its level; 1 while its gap is open.
+    pub slides: [Float; MAX_GAPS],
+}
+
+/// How many functions can be watched: the events, the gaps, the sliding contacts.
+const WATCHED: usize = MAX_EVENTS + 2 * MAX_GAPS;
+
+/// The contacts' states: open gaps, and slipping contacts.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Contacts {
+    open: GapSet,
+    slipping: GapSet,
+}
+
+impl Contacts {
+    fn of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+        model: &Model<'_, S, N, Z>,
+    ) -> Self {
+        Contacts {
+            open: model.open_gaps(),
+            slipping: model.slipping().0,
+        }
+    }
+
+    /// Whether anything is watched on the dense output besides the event functions.
+    fn sampled(&self) -> bool {
+        !self.open.is_empty() || !self.slipping.without(self.open).is_empty()
+    }
 }
 
 /// What is known of the watched functions at the current state: the side of zero of each event
@@ -67,6 +103,10 @@ pub(crate) struct Values {
 pub(crate) struct Watch {
     events: u32,
     levels: [Float; MAX_GAPS],
+    /// The sliding contacts' levels: rounding's share of the multipliers while one sticks;
+    /// zero while one slips, or its slip velocity less the tolerance where that started at
+    /// or below zero (a slip that starts from rest).
+    slide_levels: [Float; MAX_GAPS],
 }
 
 impl Default for Watch {
@@ -74,6 +114,7 @@ impl Default for Watch {
         Watch {
             events: 0,
             levels: [0.0; MAX_GAPS],
+            slide_levels: [0.0; MAX_GAPS],
         }
     }
 }
@@ -110,6 +151,23 @@ impl Watch {
                 watch.levels[k] = RELEASE * scale;
             }
         }
+        if S::SLIDING_CONTACTS > 0 {
+            let (slipping, forward) = model.slipping();
+            let rates = model.slip_rates(&point.q, &point.v, point.t)?;
+            for k in closed.iter().filter(|&k| k < S::SLIDING_CONTACTS) {
+                watch.slide_levels[k] = match slipping.contains(k) {
+                    true => {
+                        let along = along(forward, k) * rates[k];
+                        if along > 0.0 {
+                            0.0
+                        } else {
+                            along - tolerance
+                        }
+                    }
+                    false => RELEASE * point.lambda.amax(),
+                };
+            }
+        }
         Ok(watch)
     }
 
@@ -129,6 +187,7 @@ impl Watch {
         for k in (0..gaps).filter(|&k| !open.contains(k)) {
             watch.levels[k] = self.levels[k];
         }
+        watch.slide_levels = self.slide_levels;
         watch
     }
 
@@ -146,6 +205,7 @@ impl Watch {
         Watch {
             events: sides,
             levels,
+            slide_levels: [0.0; MAX_GAPS],
         }
     }
 
@@ -155,6 +215,10 @@ impl Watch {
 
     pub fn level(&self, k: usize) -> Float {
         self.levels[k]
+    }
+
+    fn slide_level(&self, k: usize) -> Float {
+        self.slide_levels[k]
     }
 
     /// The event sides as bits.
@@ -187,7 +251,37 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
             };
         }
     }
-    Ok(Values { events, gaps })
+    let mut slides = [1.0; MAX_GAPS];
+    if S::SLIDING_CONTACTS > 0 {
+        let (open, (slipping, forward)) = (model.open_gaps(), model.slipping());
+        let rates = match slipping.without(open).is_empty() {
+            true => [0.0; MAX_GAPS],
+            false => model.slip_rates(&point.q, &point.v, point.t)?,
+        };
+        for (k, slide) in slides.iter_mut().enumerate().take(S::SLIDING_CONTACTS) {
+            if open.contains(k) {
+                continue;
+            }
+            *slide = match slipping.contains(k) {
+                true => along(forward, k) * rates[k],
+                false => model.cone_margin(k, &point.lambda).0,
+            } - watch.slide_level(k);
+        }
+    }
+    Ok(Values {
+        events,
+        gaps,
+        slides,
+    })
+}
+
+/// `+1` for a contact slipping forwards, `-1` backwards.
+fn along(forward: GapSet, k: usize) -> Float {
+    if forward.contains(k) {
+        1.0
+    } else {
+        -1.0
+    }
 }
 
 /// The watched function `which` at a point.
@@ -205,6 +299,14 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             let consistent = consistent_point(model, point.t, point.q, point.v)?;
             let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
             consistent.lambda[first + k] - watch.level(k)
+        }
+        Watched::Stick(k) => {
+            let consistent = consistent_point(model, point.t, point.q, point.v)?;
+            model.cone_margin(k, &consistent.lambda).0 - watch.slide_level(k)
+        }
+        Watched::Slide(k) => {
+            let rates = model.slip_rates(&point.q, &point.v, point.t)?;
+            along(model.slipping().1, k) * rates[k] - watch.slide_level(k)
         }
     })
 }
@@ -238,7 +340,7 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     end_values: &Values,
     time_tolerance: Float,
 ) -> Result<Option<Crossing>, StepError> {
-    let open = model.open_gaps();
+    let open = Contacts::of(model);
     let other_side = other_sides(model, (start, end), watch, end_values)?;
     let mut earliest: Option<Crossing> = None;
     for index in watched_indices::<S, N, Z>() {
@@ -279,28 +381,40 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
 /// [`MAX_EVENTS`].
 fn watched_indices<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 ) -> impl Iterator<Item = usize> + Clone {
-    (0..S::EVENTS).chain((0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k))
+    let gaps = (0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k);
+    let slides = (0..S::SLIDING_CONTACTS).map(|k| MAX_EVENTS + MAX_GAPS + k);
+    (0..S::EVENTS).chain(gaps).chain(slides)
 }
 
 /// What is watched at `index`, and whether it was positive at the step start (an open gap
 /// always was; a closed contact's multiplier, by convention, was not).
-fn watched(index: usize, watch: &Watch, open: GapSet) -> (Watched, bool) {
+fn watched(index: usize, watch: &Watch, contacts: Contacts) -> (Watched, bool) {
     if index < MAX_EVENTS {
         (Watched::Event(index), watch.event(index))
-    } else {
+    } else if index < MAX_EVENTS + MAX_GAPS {
         let k = index - MAX_EVENTS;
-        match open.contains(k) {
+        match contacts.open.contains(k) {
             true => (Watched::Gap(k), true),
             false => (Watched::Contact(k), false),
+        }
+    } else {
+        let k = index - MAX_EVENTS - MAX_GAPS;
+        let sticks = !contacts.open.contains(k) && !contacts.slipping.contains(k);
+        match sticks {
+            true => (Watched::Stick(k), true),
+            false => (Watched::Slide(k), true),
         }
     }
 }
 
 /// The value of the function at `index` in `values`.
 fn value_in(values: &Values, index: usize) -> Float {
-    match index < MAX_EVENTS {
-        true => values.events[index],
-        false => values.gaps[index - MAX_EVENTS],
+    if index < MAX_EVENTS {
+        values.events[index]
+    } else if index < MAX_EVENTS + MAX_GAPS {
+        values.gaps[index - MAX_EVENTS]
+    } else {
+        values.slides[index - MAX_EVENTS - MAX_GAPS]
     }
 }
 
@@ -312,14 +426,16 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (start, end): (&Point<N, Z>, &Point<N, Z>),
     watch: &Watch,
     end_values: &Values,
-) -> Result<[Option<(Float, Float)>; MAX_EVENTS + MAX_GAPS], StepError> {
-    let open = model.open_gaps();
-    let mut other_side = [None::<(Float, Float)>; MAX_EVENTS + MAX_GAPS];
-    if S::EVENTS == 0 && open.is_empty() {
+) -> Result<[Option<(Float, Float)>; WATCHED], StepError> {
+    let open = Contacts::of(model);
+    let mut other_side = [None::<(Float, Float)>; WATCHED];
+    if S::EVENTS == 0 && !open.sampled() {
         return Ok(other_side);
     }
-    let sampled = watched_indices::<S, N, Z>()
-        .filter(|&i| !matches!(watched(i, watch, open).0, Watched::Contact(_)));
+    let sampled = watched_indices::<S, N, Z>().filter(|&i| {
+        let which = watched(i, watch, open).0;
+        !matches!(which, Watched::Contact(_) | Watched::Stick(_))
+    });
     let h = end.t - start.t;
     let at = |j: usize| start.t + h * j as Float / (INTERIOR_SAMPLES + 1) as Float;
     let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
@@ -339,7 +455,7 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         return Ok(other_side);
     }
     // Each function's lowest sample before the end, by its position and signed value.
-    let mut lowest = [(0usize, Float::INFINITY); MAX_EVENTS + MAX_GAPS];
+    let mut lowest = [(0usize, Float::INFINITY); WATCHED];
     for index in sampled.clone() {
         lowest[index] = (0, signed(&first, index));
     }

@@ -60,8 +60,13 @@ impl GapSet {
         GapSet(self.0 | other.0)
     }
 
+    /// The gaps in both.
+    pub fn intersection(self, other: GapSet) -> GapSet {
+        GapSet(self.0 & other.0)
+    }
+
     /// The gaps, in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+    pub fn iter(self) -> impl Iterator<Item = usize> {
         let mut bits = self.0;
         core::iter::from_fn(move || {
             let k = bits.trailing_zeros() as usize;

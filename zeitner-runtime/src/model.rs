@@ -66,8 +66,12 @@ pub(crate) struct MaskedRows {
     /// Redundant rows, one bit each (only rows below [`REDUNDANT_ROWS`] can be).
     redundant: u64,
     open: GapSet,
-    /// The first gap row (16 bytes in all: the directions that carry this are copied often).
+    /// Slipping contacts: their slip rows are not enforced (those of open gaps neither).
+    slipping: GapSet,
+    /// The first gap row, and the first slip row (0 where the scene has none): 24 bytes in
+    /// all, as the directions that carry this are copied often.
     first: u16,
+    first_slip: u16,
     /// Whether any row is masked: one test on the paths every evaluation takes.
     any: bool,
 }
@@ -76,12 +80,15 @@ pub(crate) struct MaskedRows {
 pub(crate) const REDUNDANT_ROWS: usize = 64;
 
 impl MaskedRows {
-    fn new(first: usize, open: GapSet, redundant: u64) -> Self {
-        let any = !open.is_empty() || redundant != 0;
+    fn new(first: (usize, usize), open: GapSet, slipping: GapSet, redundant: u64) -> Self {
+        let slides = first.1 > 0 && !open.union(slipping).is_empty();
+        let any = !open.is_empty() || redundant != 0 || slides;
         MaskedRows {
             redundant,
             open,
-            first: first as u16,
+            slipping,
+            first: first.0 as u16,
+            first_slip: first.1 as u16,
             any,
         }
     }
@@ -89,6 +96,25 @@ impl MaskedRows {
     #[inline(always)]
     fn first(&self) -> usize {
         usize::from(self.first)
+    }
+
+    /// The slipping contacts whose gap is closed.
+    pub fn slipping(&self) -> GapSet {
+        self.slipping.without(self.open)
+    }
+
+    #[inline(always)]
+    fn firsts(&self) -> (usize, usize) {
+        (usize::from(self.first), usize::from(self.first_slip))
+    }
+
+    /// The gaps whose slip row is masked: open or slipping (none without slip rows).
+    #[inline(always)]
+    fn masked_slides(&self) -> GapSet {
+        match self.first_slip {
+            0 => GapSet::EMPTY,
+            _ => self.open.union(self.slipping),
+        }
     }
 
     /// The redundant rows, ascending.
@@ -105,12 +131,16 @@ impl MaskedRows {
 
     fn rows(&self) -> impl Iterator<Item = usize> + '_ {
         let gaps = self.open.iter().map(|k| self.first() + k);
-        gaps.chain(self.redundant_rows())
+        let slides = self.masked_slides().iter();
+        let slides = slides.map(|k| usize::from(self.first_slip) + k);
+        gaps.chain(slides).chain(self.redundant_rows())
     }
 
     #[inline(always)]
-    fn contains(&self, row: usize) -> bool {
+    pub fn contains(&self, row: usize) -> bool {
+        let slip = usize::from(self.first_slip);
         (row >= self.first() && self.open.contains(row - self.first()))
+            || (slip > 0 && row >= slip && self.masked_slides().contains(row - slip))
             || (row < REDUNDANT_ROWS && self.redundant >> row & 1 == 1)
     }
 
@@ -127,6 +157,9 @@ impl MaskedRows {
     fn clear_open<const R: usize, const C: usize>(&self, m: &mut Matrix<R, C>) {
         for k in self.open.iter() {
             m.row_mut(self.first() + k).fill(0.0);
+        }
+        for k in self.masked_slides().iter() {
+            m.row_mut(usize::from(self.first_slip) + k).fill(0.0);
         }
     }
 
@@ -158,6 +191,10 @@ impl MaskedRows {
         let scale = self.unmasked_scale(m);
         for k in self.open.iter() {
             m[(self.first() + k, self.first() + k)] = scale;
+        }
+        for k in self.masked_slides().iter() {
+            let row = usize::from(self.first_slip) + k;
+            m[(row, row)] = scale;
         }
     }
 
@@ -206,6 +243,7 @@ impl MaskedRows {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Masks {
     masked: MaskedRows,
+    forward: GapSet,
     share: Float,
 }
 
@@ -214,6 +252,8 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
     masked: MaskedRows,
+    /// Of the slipping contacts, those slipping forwards (`ṡ > 0`).
+    forward: GapSet,
     /// Where rows are redundant, the share of the tolerance the others are held to:
     /// `1 / max(1 + Σ|c_i|)` over their combinations `G_d = Σ c_i G_i` at the start.
     redundant_share: Float,
@@ -229,10 +269,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             evaluations: Evaluations::default(),
             constant_factor: None,
             masked: MaskedRows::new(
-                S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
+                (
+                    S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
+                    match S::SLIDING_CONTACTS {
+                        0 => 0,
+                        slides => Z - slides.min(Z),
+                    },
+                ),
+                GapSet::EMPTY,
                 GapSet::EMPTY,
                 0,
             ),
+            forward: GapSet::EMPTY,
             redundant_share: 1.0,
             derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
         })
@@ -244,25 +292,42 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     pub fn set_open_gaps(&mut self, open: GapSet) {
-        self.masked = MaskedRows::new(self.masked.first(), open, self.masked.redundant);
+        let (slipping, redundant) = (self.masked.slipping, self.masked.redundant);
+        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, redundant);
+    }
+
+    /// The slipping contacts, and of them those slipping forwards (`ṡ > 0`).
+    pub fn slipping(&self) -> (GapSet, GapSet) {
+        (self.masked.slipping, self.forward)
+    }
+
+    /// Sets the slipping contacts (the others stick while closed), and which of them slip
+    /// forwards (`ṡ > 0`).
+    pub fn set_slipping(&mut self, (slipping, forward): (GapSet, GapSet)) {
+        let (open, redundant) = (self.masked.open, self.masked.redundant);
+        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, redundant);
+        self.forward = forward;
     }
 
     /// The rows masked now (open gaps, redundant rows), to put back after a failed re-anchoring.
     pub fn saved_masks(&self) -> Masks {
         Masks {
             masked: self.masked,
+            forward: self.forward,
             share: self.redundant_share,
         }
     }
 
     pub fn restore_masks(&mut self, masks: Masks) {
         (self.masked, self.redundant_share) = (masks.masked, masks.share);
+        self.forward = masks.forward;
     }
 
     /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, the others to be held to
     /// `share` of the tolerance; no rows unmasks them.
     pub fn set_redundant_rows(&mut self, rows: u64, share: Float) {
-        self.masked = MaskedRows::new(self.masked.first(), self.masked.open, rows);
+        let (open, slipping) = (self.masked.open, self.masked.slipping);
+        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, rows);
         self.redundant_share = share;
     }
 
@@ -366,7 +431,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// rows to a path of their own.
     #[inline(always)]
     fn mask_open<const C: usize>(&self, mut m: Matrix<Z, C>) -> Matrix<Z, C> {
-        if S::UNILATERAL_CONSTRAINTS > 0 && !self.masked.open.is_empty() {
+        let slipping = S::SLIDING_CONTACTS > 0 && !self.masked.slipping.is_empty();
+        if S::UNILATERAL_CONSTRAINTS > 0 && (!self.masked.open.is_empty() || slipping) {
             self.masked.clear_open(&mut m);
         }
         m
@@ -412,6 +478,36 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         self.evaluations.constraint_rates += 1;
         let w = self.system.constraint_rate(q, v, t);
         Ok(self.gap_rows(&finite(w, t, ModelFunction::ConstraintRate)?))
+    }
+
+    /// Every sliding contact's slip velocity `ṡ`, sticking, slipping or open.
+    pub fn slip_rates(
+        &mut self,
+        q: &Vector<N>,
+        v: &Vector<N>,
+        t: Float,
+    ) -> Result<[Float; MAX_GAPS], StepError> {
+        self.evaluations.constraint_rates += 1;
+        let w = finite(
+            self.system.constraint_rate(q, v, t),
+            t,
+            ModelFunction::ConstraintRate,
+        )?;
+        let mut values = [0.0; MAX_GAPS];
+        let first = self.masked.firsts().1;
+        for (k, value) in values.iter_mut().enumerate().take(S::SLIDING_CONTACTS) {
+            *value = w[first + k];
+        }
+        Ok(values)
+    }
+
+    /// Of a closed contact `k` at multipliers `lambda`: how far its sticking force is inside
+    /// Coulomb's cone (`μ|λ_N| - |λ_T|`), and the sign of that force `λ_T`.
+    pub fn cone_margin(&self, k: usize, lambda: &Vector<Z>) -> (Float, bool) {
+        let (first, first_slip) = self.masked.firsts();
+        let (normal, tangential) = (lambda[first + k], lambda[first_slip + k]);
+        let margin = self.system.friction(k) * normal.abs() - tangential.abs();
+        (margin, tangential > 0.0)
     }
 
     /// The gap rows of a vector of all rows, by gap index.
@@ -580,7 +676,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
         self.evaluations.constraint_force_jacobians += 1;
-        let lambda = &self.mask(*lambda);
+        let lambda = &self.acting(lambda);
         self.derivatives
             .constraint_force_times(self.system, (q, v, t), lambda, x)
     }
@@ -604,6 +700,100 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         })
     }
 
+    /// Whether a contact slips now: never, as a constant, in a scene without slip rows.
+    #[inline(always)]
+    pub fn slips(&self) -> bool {
+        S::SLIDING_CONTACTS > 0 && !self.masked.slipping.without(self.masked.open).is_empty()
+    }
+
+    /// `-μσ` of slipping contact `k`: what its slip row carries of its normal multiplier.
+    fn slip_coefficient(&self, k: usize) -> Float {
+        let sign = if self.forward.contains(k) { 1.0 } else { -1.0 };
+        -sign * self.system.friction(k)
+    }
+
+    /// The rows `W` along which the multipliers act as forces (`Wᵀλ` is the constraint force):
+    /// `G`'s enforced rows (`masked`), and for a slipping contact its normal row plus `-μσ`
+    /// times its slip row (`unmasked`, where it is not enforced) — Coulomb's force `-μ|λ_N|`
+    /// along the slip `σ`, carried by the normal multiplier (`λ_N < 0` where it pushes).
+    #[cold]
+    fn forcing(&self, unmasked: &Matrix<Z, N>, mut masked: Matrix<Z, N>) -> Matrix<Z, N> {
+        let (first, first_slip) = self.masked.firsts();
+        for k in self.masked.slipping.without(self.masked.open).iter() {
+            let coefficient = self.slip_coefficient(k);
+            let slide = unmasked.row(first_slip + k);
+            let mut normal = masked.row_mut(first + k);
+            normal += coefficient * slide;
+        }
+        masked
+    }
+
+    /// The multipliers as forces act, `λ` masked, with each slipping contact's slip row carrying
+    /// `-μσλ_N` (so that `Gᵀ` of these is `Wᵀλ`, for the derivatives of the constraint force).
+    #[inline(always)]
+    fn acting(&self, lambda: &Vector<Z>) -> Vector<Z> {
+        let mut acting = self.mask(*lambda);
+        if self.slips() {
+            let (first, first_slip) = self.masked.firsts();
+            for k in self.masked.slipping.without(self.masked.open).iter() {
+                acting[first_slip + k] = self.slip_coefficient(k) * acting[first + k];
+            }
+        }
+        acting
+    }
+
+    /// `M⁻¹Wᵀ` at a point whose directions are known, where a contact slips (`None` where none
+    /// does: then it is `M⁻¹Gᵀ`).
+    pub fn slipping_directions(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        directions: &ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
+    ) -> Result<Option<Matrix<N, Z>>, StepError> {
+        if !self.slips() {
+            return Ok(None);
+        }
+        self.evaluations.constraint_jacobians += 1;
+        let unmasked = finite(
+            self.system.constraint_jacobian(q, v, t),
+            t,
+            ModelFunction::ConstraintJacobian,
+        )?;
+        let forcing = self.forcing(&unmasked, directions.jacobian);
+        Ok(Some(directions.factor.solve(&forcing.transpose())))
+    }
+
+    /// `∂a/∂λ = -M⁻¹Wᵀ` at a point whose acceleration is known.
+    #[inline(always)]
+    pub fn multiplier_effect(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
+    ) -> Result<Matrix<N, Z>, StepError> {
+        if !self.slips() {
+            return Ok(-at.factor.solve(&at.jacobian.transpose()));
+        }
+        self.evaluations.constraint_jacobians += 1;
+        let unmasked = self.system.constraint_jacobian(q, v, t);
+        let forcing = self.forcing(&unmasked, at.jacobian);
+        Ok(-at.factor.solve(&forcing.transpose()))
+    }
+
+    /// The constraint force `-Wᵀλ` at a point whose `G` (masked) is known.
+    #[inline(always)]
+    pub fn constraint_force(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        jacobian: &Matrix<Z, N>,
+        lambda: &Vector<Z>,
+    ) -> Vector<N> {
+        if !self.slips() {
+            return -jacobian.tr_mul(lambda);
+        }
+        self.evaluations.constraint_jacobians += 1;
+        let unmasked = self.system.constraint_jacobian(q, v, t);
+        -self.forcing(&unmasked, *jacobian).tr_mul(lambda)
+    }
+
     /// `(a, λ)` of the acceleration-level system `G M⁻¹Gᵀ λ = G M⁻¹F + b`, `a = M⁻¹(F - Gᵀλ)`,
     /// at a finite state, with only the results checked, in the operations and order of
     /// [`crate::consistency::consistent_point`] (the same roundings). `F`, `G`, `b` each enter
@@ -617,6 +807,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         v: &Vector<N>,
         t: Float,
     ) -> Result<Option<(Vector<N>, Vector<Z>)>, StepError> {
+        if self.slips() {
+            // Coulomb's force makes the system unsymmetric: the checked path solves it.
+            return Ok(None);
+        }
         // One generated function for all four: what they share is computed once.
         let (mass, force, unmasked, unmasked_bias) = self.system.stage(q, v, t);
         let factor = match self.kept_factor() {
@@ -704,7 +898,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             true => self.mask(unmasked),
             false => self.mask_open(unmasked),
         };
-        let a = factor.solve(&(force - jacobian.tr_mul(lambda)));
+        let a = match self.slips() {
+            false => factor.solve(&(force - jacobian.tr_mul(lambda))),
+            true => factor.solve(&(force - self.forcing(&unmasked, jacobian).tr_mul(lambda))),
+        };
         if !all_finite(a.as_slice()) {
             finite(force, t, ModelFunction::AppliedForce)?;
             finite(unmasked, t, ModelFunction::ConstraintJacobian)?;
@@ -732,7 +929,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
     ) -> Result<AccelerationJacobians<'_, SquareOf<S, N, Z>, N, Z>, StepError> {
-        let masked = self.mask(*lambda);
+        let masked = self.acting(lambda);
+        let dp = self.multiplier_effect((q, v, t), at)?;
         let point = AccelerationAt {
             a: &at.a,
             factor: &at.factor,
@@ -746,7 +944,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok(AccelerationJacobians {
             dq: self.derivatives.dq(),
             dv: self.derivatives.dv(),
-            dp: -at.factor.solve(&at.jacobian.transpose()),
+            dp,
         })
     }
 }

@@ -562,7 +562,12 @@ fn paper_sensitivity<S, const N: usize, const Z: usize, const K: usize>(
 where
     S: ConstrainedSystem<N, Z>,
 {
-    let b = -model.directions(&start.q, &start.v, start.t)?.m_inv_gt;
+    let point = (&start.q, &start.v, start.t);
+    let directions = model.directions(point.0, point.1, point.2)?;
+    let b = -match model.slipping_directions(point, &directions)? {
+        Some(m_inv_wt) => m_inv_wt,
+        None => directions.m_inv_gt,
+    };
     let power = |k: usize| (multipliers.first_power + k as i32) as Float;
     for k in 0..K {
         sensitivity.dq_dc[k] = (h * h / ((power(k) + 1.0) * (power(k) + 2.0))) * b;

@@ -165,10 +165,26 @@ pub(crate) fn interpolate<const N: usize, const Z: usize>(
             + (w[4] * h) * b.v
             + (w[5] * h * h) * b.a
     };
+    // Over a step so short that the positions barely change, the quintic's slope (a difference
+    // of positions over `h`) is mostly their rounding: there the velocities come from the cubic
+    // Hermite of `v` and `a` at the ends, whose truncation is negligible over such a step.
+    let barely_moved = (b.q - a.q).amax() < 1e6 * Float::EPSILON * a.q.amax().max(b.q.amax());
+    let v = match barely_moved {
+        false => combine(&slope) / h,
+        true => {
+            let (r2, r3) = (s2, s3);
+            let from_values = [1.0 - 3.0 * r2 + 2.0 * r3, 3.0 * r2 - 2.0 * r3];
+            let from_slopes = [s - 2.0 * r2 + r3, r3 - r2];
+            from_values[0] * a.v
+                + from_values[1] * b.v
+                + (from_slopes[0] * h) * a.a
+                + (from_slopes[1] * h) * b.a
+        }
+    };
     Point {
         t,
         q: combine(&value),
-        v: combine(&slope) / h,
+        v,
         a: a.a + s * (b.a - a.a),
         lambda: a.lambda + s * (b.lambda - a.lambda),
     }
@@ -244,6 +260,10 @@ pub enum StopReason {
     /// Contacts opened where their force would have pulled: their gaps are free again.
     /// `advance_to` goes on.
     ContactsOpened { gaps: GapSet },
+    /// Sliding contacts changed between sticking and slipping (located like an event): those
+    /// that stick now (their slip stopped and Coulomb's cone holds them), and those that slip
+    /// now (their force left the cone, or their slip reversed). `advance_to` goes on.
+    FrictionChanged { sticking: GapSet, slipping: GapSet },
 }
 
 #[cfg(all(test, feature = "dense-output"))]

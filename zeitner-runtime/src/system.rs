@@ -165,10 +165,22 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     const UNILATERAL_CONSTRAINTS: usize = 0;
     /// How many event functions [`Self::event_functions`] writes (at most [`MAX_EVENTS`]).
     const EVENTS: usize = 0;
+    /// How many gaps slide with Coulomb friction: `0`, or every gap. Their rows are the last
+    /// `SLIDING_CONTACTS` of all, velocity-level, one per gap: the slip velocity `ṡ` of its
+    /// contact. A closed contact sticks (`ṡ = 0` enforced while `|λ_T| ≤ μ|λ_N|`) or slips
+    /// (its row not enforced, the force `-μ|λ_N|` along `sign(ṡ)` applied instead); an open
+    /// one has neither.
+    const SLIDING_CONTACTS: usize = 0;
 
     /// Newton's coefficient of restitution of gap `gap` (`0..UNILATERAL_CONSTRAINTS`): the
     /// separating velocity after an impact is `e` times the approaching one. Default 0.
     fn restitution(&self, gap: usize) -> Float {
+        let _ = gap;
+        0.0
+    }
+
+    /// Coulomb's coefficient of friction of gap `gap` (`0..SLIDING_CONTACTS`). Default 0.
+    fn friction(&self, gap: usize) -> Float {
         let _ = gap;
         0.0
     }

@@ -67,6 +67,7 @@ where
     const SPARSITY: Option<Sparsity> = S::SPARSITY;
     const UNILATERAL_CONSTRAINTS: usize = S::UNILATERAL_CONSTRAINTS;
     const EVENTS: usize = S::EVENTS;
+    const SLIDING_CONTACTS: usize = S::SLIDING_CONTACTS;
     type Mass = S::Mass;
     type Storage = D;
 
@@ -150,6 +151,9 @@ where
     }
     fn restitution(&self, gap: usize) -> Float {
         self.scene.restitution(gap)
+    }
+    fn friction(&self, gap: usize) -> Float {
+        self.scene.friction(gap)
     }
     fn event_functions(&self, q: &Vector<N>, v: &Vector<N>, t: Float, values: &mut [Float]) {
         self.scene.event_functions(q, v, t, values)

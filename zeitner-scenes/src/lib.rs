@@ -14,6 +14,8 @@ pub mod chain;
 #[cfg(feature = "std")]
 pub mod contact;
 #[cfg(feature = "std")]
+pub mod friction;
+#[cfg(feature = "std")]
 pub mod full_grammar;
 #[cfg(feature = "std")]
 pub mod knife_edge;

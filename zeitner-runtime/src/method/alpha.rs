@@ -200,7 +200,12 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for Generali
             stiffness: None,
         };
         if let Some(end_sensitivity) = sensitivity {
-            let ends = (&at_start, &end, end_sensitivity);
+            // Where contacts slip, `∂a/∂λ` carries Coulomb's force too.
+            let start_effect = match model.slips() {
+                true => Some(model.multiplier_effect((&start.q, &start.v, start.t), &at_start)?),
+                false => None,
+            };
+            let ends = (&at_start, start_effect.as_ref(), &end, end_sensitivity);
             // Apart from the frame live across the solve, for a large scene.
             apart::<N, _>(|| self.end_sensitivity(model, ends, (start.t + h, h), multipliers))
                 .ok_or(stall)??;
@@ -294,7 +299,7 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     >(
         &mut self,
         model: &mut Model<'_, Sys, N, Z>,
-        (at_start, end, sensitivity): StepEnds<'_, FactorOf<Sys, N, Z>, N, Z>,
+        (at_start, start_effect, end, sensitivity): StepEnds<'_, FactorOf<Sys, N, Z>, N, Z>,
         (t, h): (Float, Float),
         multipliers: &Multipliers<Z, K>,
     ) -> Option<Result<(), StepError>> {
@@ -306,7 +311,10 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
         let weight = |k: usize| multipliers.weight(k, 0.0);
         let da0_dp = (0..K)
             .any(|k| weight(k) != 0.0)
-            .then(|| -at_start.factor.solve(&at_start.jacobian.transpose()));
+            .then(|| match start_effect {
+                Some(effect) => *effect,
+                None => -at_start.factor.solve(&at_start.jacobian.transpose()),
+            });
         let da0 = |k: usize| match &da0_dp {
             Some(dp) => weight(k) * dp,
             None => Matrix::<N, Z>::zeros(),
@@ -342,9 +350,11 @@ impl<const N: usize, D: Storage<N>> GeneralizedAlpha<N, D> {
     }
 }
 
-/// The start's acceleration, the end and the workspace of the end's sensitivity.
+/// The start's acceleration (and `∂a/∂λ` there where contacts slip), the end and the workspace
+/// of the end's sensitivity.
 type StepEnds<'a, F, const N: usize, const Z: usize> = (
     &'a Acceleration<F, N, Z>,
+    Option<&'a Matrix<N, Z>>,
     &'a StepEnd<N>,
     &'a mut EndSensitivity<N, Z>,
 );

@@ -3,12 +3,13 @@
 
 use super::attempt::Accepted;
 use super::{start_point, watch_at, Forget, Simulator};
-use crate::consistency::{consistent_point, end_report, StartReport};
+use crate::consistency::{consistent_point, consistent_start, end_report, StartReport};
 use crate::contact;
 use crate::contact::Impact;
 use crate::error::StepError;
 use crate::events::{self, Crossing, Values};
 use crate::gaps::GapSet;
+use crate::options::StartPolicy;
 use crate::outline::apart;
 use crate::output::{Direction, Point, StopReason};
 use crate::scalar::Float;
@@ -142,10 +143,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
         }
         let closing = self.closing_gaps(values)?;
+        let sliding = self.sliding_changes(values, releasing);
         self.watch = watch;
         if S::UNILATERAL_CONSTRAINTS > 0 && !releasing.is_empty() {
             self.open_contacts(releasing)?;
         }
+        let slid = match sliding.0.union(sliding.1).is_empty() {
+            true => None,
+            false => Some(self.change_friction(sliding)?),
+        };
         self.pending.rising = watch.event_bits();
         self.pending.events = events;
         self.pending.impact = closing;
@@ -155,7 +161,77 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !closing.is_empty() {
             return Ok(Some(StopReason::GapsClosing { gaps: closing }));
         }
-        Ok((!releasing.is_empty()).then_some(StopReason::ContactsOpened { gaps: releasing }))
+        if !releasing.is_empty() {
+            return Ok(Some(StopReason::ContactsOpened { gaps: releasing }));
+        }
+        Ok(slid.map(|(sticking, slipping)| StopReason::FrictionChanged { sticking, slipping }))
+    }
+
+    /// The closed sliding contacts (not opening now) whose watched value fell through zero at
+    /// the step end: sticking ones whose force left Coulomb's cone, and slipping ones whose
+    /// slip stopped.
+    fn sliding_changes(&self, values: &Values, releasing: GapSet) -> (GapSet, GapSet) {
+        let (mut to_slip, mut to_stop) = (GapSet::EMPTY, GapSet::EMPTY);
+        if S::SLIDING_CONTACTS == 0 {
+            return (to_slip, to_stop);
+        }
+        let slipping = self.model.slipping().0;
+        let closed = GapSet::first(S::SLIDING_CONTACTS).without(self.model.open_gaps());
+        for k in closed.without(releasing).iter() {
+            if values.slides[k] < 0.0 {
+                match slipping.contains(k) {
+                    true => to_stop.insert(k),
+                    false => to_slip.insert(k),
+                }
+            }
+        }
+        (to_slip, to_stop)
+    }
+
+    /// Sets the contacts of `to_slip` slipping (along their sticking force) and tries those of
+    /// `to_stop` sticking at the current end: the velocities projected onto the rows that now
+    /// hold, and a contact whose sticking force leaves Coulomb's cone set slipping (backwards,
+    /// where its slip reverses). Returns the changed contacts that stick and that slip. On an
+    /// error nothing changed.
+    pub(super) fn change_friction(
+        &mut self,
+        (to_slip, to_stop): (GapSet, GapSet),
+    ) -> Result<(GapSet, GapSet), StepError> {
+        let masks = self.model.saved_masks();
+        let changed = self.friction_changed((to_slip, to_stop));
+        changed.inspect_err(|_| self.model.restore_masks(masks))
+    }
+
+    fn friction_changed(
+        &mut self,
+        (to_slip, to_stop): (GapSet, GapSet),
+    ) -> Result<(GapSet, GapSet), StepError> {
+        let last = &self.record.last;
+        let (start, before) = (last.start, last.end);
+        let step = (last.step_multipliers, last.newton_iterations);
+        let (mut slipping, mut forward) = self.model.slipping();
+        for k in to_slip.iter() {
+            slipping.insert(k);
+            match self.model.cone_margin(k, &before.lambda).1 {
+                true => forward.insert(k),
+                false => forward.remove(k),
+            }
+        }
+        for k in to_stop.iter() {
+            slipping.remove(k);
+        }
+        self.model.set_slipping((slipping, forward));
+        let tolerance = self.options.constraint_tolerance;
+        let state = (before.q, before.v, before.t);
+        // The step's report stays the step's, ending where the contacts changed (a sticking
+        // contact's velocity projected onto its row: within the constraint tolerance).
+        let (mut point, _) =
+            consistent_start(&mut self.model, state, tolerance, StartPolicy::Project)?;
+        let slipped = contact::slip_beyond_cone(&mut self.model, &mut point)?;
+        let last = end_report(&mut self.model, start, point, step.0, step.1, None)?;
+        let watch = watch_at(&mut self.model, &last.end, tolerance)?;
+        self.anchor((last, watch, None), Forget::Steps);
+        Ok((to_stop.without(slipped), to_slip.union(slipped)))
     }
 
     /// Open gaps at the current end that close now: approaching, and within the time tolerance

@@ -141,12 +141,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         suits_the_rows::<S, N, Z>(&options)?;
         let fits = S::EVENTS <= MAX_EVENTS
             && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
-            && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS;
+            && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS
+            && (S::SLIDING_CONTACTS == 0 || S::SLIDING_CONTACTS == S::UNILATERAL_CONSTRAINTS)
+            && S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS;
         if !fits {
             return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
         }
         if (0..S::UNILATERAL_CONSTRAINTS).any(|k| !(0.0..=1.0).contains(&system.restitution(k))) {
             return Err(StepError::InvalidOption(InvalidOption::Restitution));
+        }
+        let friction = |k: usize| system.friction(k);
+        if (0..S::SLIDING_CONTACTS).any(|k| !(friction(k) >= 0.0 && friction(k).is_finite())) {
+            return Err(StepError::InvalidOption(InvalidOption::Friction));
         }
         let mut model = Model::new(system)?;
         let (point, start_report) = start_point(&mut model, (start.q, start.v, start.t), &options)?;

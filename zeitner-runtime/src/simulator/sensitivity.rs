@@ -98,6 +98,11 @@ where
                 InvalidOption::SensitivitiesOfRawOutput,
             ));
         }
+        if S::SLIDING_CONTACTS > 0 {
+            return Err(StepError::InvalidOption(
+                InvalidOption::SensitivitiesWithFriction,
+            ));
+        }
         let simulator = Simulator::new(system, start, options)?;
         let mut sensitivities = SensitivitySimulator {
             simulator,

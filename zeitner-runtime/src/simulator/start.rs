@@ -97,6 +97,9 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
         let closed = contact::touching(model, (&q, &v, t), tolerance)?;
         model.set_open_gaps(GapSet::first(S::UNILATERAL_CONSTRAINTS).without(closed));
     }
+    if S::SLIDING_CONTACTS > 0 {
+        contact::slip_by_velocities(model, (&q, &v, t), tolerance)?;
+    }
     let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
     if S::UNILATERAL_CONSTRAINTS > 0 {
         // The projection may push an open gap through: close it too and project again.
@@ -112,7 +115,12 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
             model.set_open_gaps(closing);
             (point, report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
         }
-        if !contact::open_pulling(model, &mut point)?.is_empty() {
+        let opened = contact::open_pulling(model, &mut point)?;
+        let slipped = match S::SLIDING_CONTACTS {
+            0 => GapSet::EMPTY,
+            _ => contact::slip_beyond_cone(model, &mut point)?,
+        };
+        if !opened.union(slipped).is_empty() {
             report.multipliers = point.lambda;
         }
     }

@@ -1,0 +1,1672 @@
+#[allow(dead_code)]
+impl Incline {
+    fn mass(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m]
+    }
+    fn force(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [0.0, -self.m * self.g]
+    }
+    fn gaps(&self, [x, y]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y * self.angle.cos() - x * self.angle.sin()]
+    }
+    fn slips(&self, _q: [Float; 2], [vx, vy]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [vx * self.angle.cos() + vy * self.angle.sin()]
+    }
+    fn friction(&self) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<2, 2> for Incline {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 2,
+        position_constraints: 1,
+        velocity_constraints: 1,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0), (0, 1), (1, 0), (1, 1)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const SLIDING_CONTACTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 0), (0, 1), (1, 0), (1, 1)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.angle.cos();
+        let s1 = self.angle.sin();
+        let mut g = ::zeitner::__private::Vector::<2>::zeros();
+        g[0] = q[1] * s0 - q[0] * s1;
+        g[1] = s0 * v[0] + s1 * v[1];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.angle.cos();
+        let s1 = self.angle.sin();
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        g[(0, 0)] = -s1;
+        g[(0, 1)] = s0;
+        g[(1, 0)] = s0;
+        g[(1, 1)] = s1;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut p = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        p[(0, 0)] = -self.angle.sin();
+        p[(0, 1)] = self.angle.cos();
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.angle.cos();
+        let s1 = self.angle.sin();
+        let mut w = ::zeitner::__private::Vector::<2>::zeros();
+        w[0] = s0 * v[1] - s1 * v[0];
+        w[1] = s0 * v[0] + s1 * v[1];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.angle.cos();
+        let s1 = self.angle.sin();
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[1] = -(self.m * self.g);
+        g[(0, 0)] = -s1;
+        g[(0, 1)] = s0;
+        g[(1, 0)] = s0;
+        g[(1, 1)] = s1;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<1>::zeros();
+            mu[0] = self.mu;
+            mu
+        };
+        if gap < 1 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.angle.cos();
+        let s1 = self.angle.sin();
+        values[0] = -s1;
+        values[1] = s0;
+        values[2] = s0;
+        values[3] = s1;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+}
+#[allow(dead_code)]
+impl SlidingOscillator {
+    fn mass(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m]
+    }
+    fn force(&self, [x, _y]: [Float; 2]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [-self.k * x, -self.m * self.g]
+    }
+    fn gaps(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y]
+    }
+    fn slips(&self, _q: [Float; 2], [vx, _vy]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [vx]
+    }
+    fn friction(&self) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<2, 2> for SlidingOscillator {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 2,
+        position_constraints: 1,
+        velocity_constraints: 1,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const SLIDING_CONTACTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 1), (1, 0)],
+        force_jacobians: [&[(0, 0)], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        f[0] = -(q[0] * self.k);
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<2>::zeros();
+        g[0] = q[1];
+        g[1] = v[0];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut p = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        p[(0, 1)] = 1.0;
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<2>::zeros();
+        w[0] = v[1];
+        w[1] = v[0];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[0] = -(q[0] * self.k);
+        f[1] = -(self.m * self.g);
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        dq[(0, 0)] = -self.k;
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<1>::zeros();
+            mu[0] = self.mu;
+            mu
+        };
+        if gap < 1 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -self.k;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+}
+#[allow(dead_code)]
+impl Belt {
+    fn mass(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m]
+    }
+    fn force(&self, [x, _y]: [Float; 2]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [-self.k * x, -self.m * self.g]
+    }
+    fn gaps(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y]
+    }
+    fn slips(&self, _q: [Float; 2], [vx, _vy]: [Float; 2]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [vx - self.belt]
+    }
+    fn friction(&self) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<2, 2> for Belt {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 2,
+        position_constraints: 1,
+        velocity_constraints: 1,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 1), (1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[(0, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 2,
+                        cols: 2,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<2>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const SLIDING_CONTACTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 1), (1, 0)],
+        force_jacobians: [&[(0, 0)], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        f[0] = -(q[0] * self.k);
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<2>::zeros();
+        g[0] = q[1];
+        g[1] = v[0] - self.belt;
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut p = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        p[(0, 1)] = 1.0;
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<2>::zeros();
+        w[0] = v[1];
+        w[1] = v[0] - self.belt;
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<2>,
+        ::zeitner::__private::Matrix<2, 2>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<2>::zeros();
+        let mut f = ::zeitner::__private::Vector::<2>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        f[0] = -(q[0] * self.k);
+        f[1] = -(self.m * self.g);
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        dq[(0, 0)] = -self.k;
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+    ) -> (::zeitner::__private::Matrix<2, 2>, ::zeitner::__private::Matrix<2, 2>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<2, 2>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<1>::zeros();
+            mu[0] = self.mu;
+            mu
+        };
+        if gap < 1 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = -self.k;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<2>,
+        v: &::zeitner::__private::Vector<2>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+}

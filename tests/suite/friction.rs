@@ -1,0 +1,228 @@
+//! Coulomb friction on closed contacts against closed forms: a block on an incline that sticks
+//! or slides, a mass on a spring sliding to rest on a floor, a mass on a spring riding a belt.
+
+use zeitner::{
+    GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
+};
+use zeitner_scenes::friction::{Belt, Incline, SlidingOscillator};
+
+fn tight() -> Options {
+    Options {
+        step: StepControl::adaptive(1e-10).with_atol(1e-12),
+        ..Options::default()
+    }
+}
+
+/// The largest of `|x - reference|` over the entries, relative to the reference's scale.
+fn off(x: &[f64], reference: &[f64], scale: f64) -> f64 {
+    x.iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs() / scale)
+        .fold(0.0, f64::max)
+}
+
+/// The block released at rest `s0 = 1` up an incline, at `t = 1`: where it is, against the
+/// closed form, and the normal force.
+fn incline_at_one_second(angle_degrees: f64, mu: f64) -> (f64, f64) {
+    let incline = Incline {
+        m: 2.0,
+        g: 9.81,
+        angle: angle_degrees.to_radians(),
+        mu,
+    };
+    let (sin, cos) = incline.angle.sin_cos();
+    let start = Start {
+        q: Vector::<2>::new(cos, sin),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&incline, start, tight()).unwrap();
+    sim.advance_to(1.0, |_| {}).unwrap();
+    let end = sim.last().end;
+    let reference = incline.released_at_rest(1.0, 1.0);
+    let state = [end.q[0], end.q[1], end.v[0], end.v[1]];
+    let normal = -end.lambda[0];
+    (
+        off(&state, &reference, 1.0),
+        (normal - incline.normal_force()).abs() / incline.normal_force(),
+    )
+}
+
+#[test]
+fn a_block_on_an_incline_slides_as_coulomb_says_and_sticks_where_its_cone_holds_it() {
+    // tan 30° = 0.577: slides for μ = 0.3 and 0.0, sticks for μ = 0.6 and 1.0.
+    for (mu, slides) in [(0.0, true), (0.3, true), (0.6, false), (1.0, false)] {
+        let (error, normal) = incline_at_one_second(30.0, mu);
+        println!("incline 30°, μ = {mu}: state off by {error:.1e}, normal force by {normal:.1e}");
+        assert!(
+            error < 1e-8,
+            "μ = {mu} (slides: {slides}): off by {error:e}"
+        );
+        assert!(normal < 1e-8, "μ = {mu}: normal force off by {normal:e}");
+    }
+}
+
+#[test]
+fn a_block_started_sliding_up_an_incline_stops_and_then_slides_down_or_stays() {
+    // Up the slope at 2 m/s: decelerated by g(sin θ + μ cos θ) until it stops at
+    // t₁ = v / that, then down with g(sin θ − μ cos θ) if tan θ > μ.
+    for (mu, stays) in [(0.3, false), (0.8, true)] {
+        let incline = Incline {
+            m: 1.0,
+            g: 9.81,
+            angle: 30f64.to_radians(),
+            mu,
+        };
+        let (sin, cos) = incline.angle.sin_cos();
+        let start = Start {
+            q: Vector::<2>::new(0.0, 0.0),
+            v: Vector::<2>::new(2.0 * cos, 2.0 * sin),
+            t: 0.0,
+        };
+        let mut sim = Simulator::new(&incline, start, tight()).unwrap();
+        let mut changes = Vec::new();
+        sim.advance_to(1.0, |step| {
+            if let StopReason::FrictionChanged { sticking, slipping } = step.reason() {
+                changes.push((step.end.t, sticking, slipping));
+            }
+        })
+        .unwrap();
+        let up = 9.81 * (sin + mu * cos);
+        let stop = 2.0 / up;
+        let top = 2.0 * stop - 0.5 * up * stop * stop;
+        let down = 9.81 * (sin - mu * cos);
+        let t = 1.0 - stop;
+        let s = if stays { top } else { top - 0.5 * down * t * t };
+        let ds = if stays { 0.0 } else { -down * t };
+        let end = sim.last().end;
+        let reference = [s * cos, s * sin, ds * cos, ds * sin];
+        let error = off(&[end.q[0], end.q[1], end.v[0], end.v[1]], &reference, 1.0);
+        assert!(error < 1e-8, "μ = {mu}: off by {error:e} ({changes:?})");
+        assert_eq!(changes.len(), 1, "μ = {mu}: {changes:?}");
+        let (t_change, sticking, slipping) = changes[0];
+        assert!(
+            (t_change - stop).abs() < 1e-9,
+            "μ = {mu}: stopped at {t_change}, not {stop}"
+        );
+        println!(
+            "incline started up the slope, μ = {mu}: state off by {error:.1e}, stop {:.1e} s off",
+            (t_change - stop).abs()
+        );
+        match stays {
+            true => assert_eq!((sticking, slipping), (GapSet::first(1), GapSet::EMPTY)),
+            false => assert_eq!((sticking, slipping), (GapSet::EMPTY, GapSet::first(1))),
+        }
+    }
+}
+
+#[test]
+fn a_mass_on_a_spring_sliding_on_a_floor_loses_four_mu_n_over_k_a_cycle_and_stops_in_the_dead_band()
+{
+    let oscillator = SlidingOscillator {
+        m: 1.0,
+        g: 9.81,
+        k: 100.0,
+        mu: 0.2,
+    };
+    let x0 = 0.5;
+    let start = Start {
+        q: Vector::<2>::new(x0, 0.0),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&oscillator, start, tight()).unwrap();
+    let mut rests = Vec::new();
+    let stop = oscillator.stop_time(x0);
+    for t in [0.1, 0.3, 0.7, 1.1, stop + 0.5] {
+        sim.advance_to(t, |step| {
+            if let StopReason::FrictionChanged { .. } = step.reason() {
+                rests.push((step.end.t, step.end.q[0]));
+            }
+        })
+        .unwrap();
+        let end = sim.last().end;
+        let (reference, _) = oscillator.released_at_rest(x0, t);
+        let error = off(&[end.q[0], end.v[0]], &reference, x0);
+        assert!(error < 1e-8, "t = {t}: off by {error:e} ({rests:?})");
+        println!("sliding oscillator at t = {t}: off by {error:.1e}");
+    }
+    // It comes to rest (each reversal) a half-period apart, mirrored about ±μ m g / k (so
+    // 4 μ m g / k nearer the spring's rest each cycle); the last rest is for good.
+    let (last_t, last_x) = *rests.last().unwrap();
+    assert!(
+        (last_t - stop).abs() < 1e-9,
+        "stopped at {last_t}, not {stop}: {rests:?}"
+    );
+    let off_stop = (last_t - stop).abs();
+    println!(
+        "sliding oscillator: {} rests, the last {off_stop:.1e} s off",
+        rests.len()
+    );
+    assert!(last_x.abs() <= oscillator.dead_band(), "{rests:?}");
+    for pair in rests.windows(2) {
+        let (from, to) = (pair[0].1, pair[1].1);
+        let mirrored = 2.0 * oscillator.dead_band() * from.signum() - from;
+        assert!((to - mirrored).abs() < 1e-8, "{rests:?}");
+        assert!((pair[1].0 - pair[0].0 - std::f64::consts::PI / 10.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn a_mass_on_a_belt_rides_it_until_the_spring_pulls_mu_n_then_swings() {
+    let belt = Belt {
+        m: 1.0,
+        g: 9.81,
+        k: 50.0,
+        mu: 0.4,
+        belt: 0.3,
+    };
+    let start = Start {
+        q: Vector::<2>::new(0.0, 0.0),
+        v: Vector::<2>::new(belt.belt, 0.0),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&belt, start, tight()).unwrap();
+    let mut first_slip = None;
+    for t in [0.1, 0.2, 0.5, 1.0, 2.0] {
+        sim.advance_to(t, |step| {
+            if let StopReason::FrictionChanged { slipping, .. } = step.reason() {
+                if !slipping.is_empty() && first_slip.is_none() {
+                    first_slip = Some(step.end.t);
+                }
+            }
+        })
+        .unwrap();
+        let end = sim.last().end;
+        let error = off(&[end.q[0], end.v[0]], &belt.motion(t), 0.1);
+        assert!(error < 1e-8, "t = {t}: off by {error:e}");
+        println!("belt at t = {t}: off by {error:.1e}");
+    }
+    let slip = first_slip.expect("it slips");
+    assert!(
+        (slip - belt.slip_time()).abs() < 1e-9,
+        "{slip} against {}",
+        belt.slip_time()
+    );
+    println!("belt: slips {:.1e} s off", (slip - belt.slip_time()).abs());
+}
+
+#[test]
+fn a_negative_or_not_finite_friction_coefficient_is_refused_by_name() {
+    for mu in [-0.1, f64::NAN, f64::INFINITY] {
+        let incline = Incline {
+            m: 1.0,
+            g: 9.81,
+            angle: 0.5,
+            mu,
+        };
+        let start = Start {
+            q: Vector::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        };
+        let refused = Simulator::new(&incline, start, Options::default()).err();
+        let expected = StepError::InvalidOption(InvalidOption::Friction);
+        assert_eq!(refused, Some(expected), "μ = {mu}");
+        assert!(expected.to_string().contains("friction coefficient"));
+    }
+}

@@ -1,0 +1,196 @@
+//! Contacts with Coulomb friction, each with its closed form: a block on an incline, a mass on
+//! a spring sliding on a floor, a mass on a spring riding a moving belt. Every scene is written
+//! in world coordinates with a gap (the contact's normal) and a slip velocity (its tangent), as
+//! a user would state them.
+
+use zeitner::{constrained_system, Float};
+
+/// A block (a point mass) on a plane through the origin inclined at `angle` (radians, rising
+/// to the right), under gravity `g`, with friction coefficient `mu`. The gap is the distance from
+/// the plane, the slip velocity the speed along it (positive up the slope).
+#[derive(Clone, Debug)]
+pub struct Incline {
+    pub m: Float,
+    pub g: Float,
+    pub angle: Float,
+    pub mu: Float,
+}
+
+#[constrained_system]
+impl Incline {
+    fn mass(&self) -> [Float; 2] {
+        [self.m, self.m]
+    }
+
+    fn force(&self) -> [Float; 2] {
+        [0.0, -self.m * self.g]
+    }
+
+    fn gaps(&self, [x, y]: [Float; 2]) -> [Float; 1] {
+        [y * self.angle.cos() - x * self.angle.sin()]
+    }
+
+    fn slips(&self, _q: [Float; 2], [vx, vy]: [Float; 2]) -> [Float; 1] {
+        [vx * self.angle.cos() + vy * self.angle.sin()]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl Incline {
+    /// Where the block is at `t`, released from rest at distance `s0` along the slope: up the
+    /// slope `s0 - a t²/2` with `a = g (sin θ − μ cos θ)` where that is positive, `s0` (it sticks)
+    /// where it is not. Returns `(x, y, ẋ, ẏ)`.
+    pub fn released_at_rest(&self, s0: Float, t: Float) -> [Float; 4] {
+        let (sin, cos) = self.angle.sin_cos();
+        let a = (self.g * (sin - self.mu * cos)).max(0.0);
+        let (s, ds) = (s0 - 0.5 * a * t * t, -a * t);
+        [s * cos, s * sin, ds * cos, ds * sin]
+    }
+
+    /// The normal force the plane carries: `m g cos θ`.
+    pub fn normal_force(&self) -> Float {
+        self.m * self.g * self.angle.cos()
+    }
+}
+
+/// A mass on a floor (`y ≥ 0`) held by a spring of stiffness `k` to `x = 0`, sliding with
+/// friction `mu`: its swings shrink by `4 μ m g / k` a cycle, and it stops where the spring can
+/// no longer overcome friction.
+#[derive(Clone, Debug)]
+pub struct SlidingOscillator {
+    pub m: Float,
+    pub g: Float,
+    pub k: Float,
+    pub mu: Float,
+}
+
+#[constrained_system]
+impl SlidingOscillator {
+    fn mass(&self) -> [Float; 2] {
+        [self.m, self.m]
+    }
+
+    fn force(&self, [x, _y]: [Float; 2]) -> [Float; 2] {
+        [-self.k * x, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
+        [y]
+    }
+
+    fn slips(&self, _q: [Float; 2], [vx, _vy]: [Float; 2]) -> [Float; 1] {
+        [vx]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl SlidingOscillator {
+    /// `μ m g / k`: half the dead band in which the mass stays once it stops.
+    pub fn dead_band(&self) -> Float {
+        self.mu * self.m * self.g / self.k
+    }
+
+    /// The motion released from rest at `x0`, in closed form: each half-swing is a harmonic
+    /// half-period about `±dead_band` (against the slip), ending at rest; the mass stops for good
+    /// at the first rest inside the dead band. Returns `(x, ẋ)` at `t` and the time it stops.
+    pub fn released_at_rest(&self, x0: Float, t: Float) -> ([Float; 2], Float) {
+        let omega = (self.k / self.m).sqrt();
+        let half = core::f64::consts::PI as Float / omega;
+        let band = self.dead_band();
+        let (mut x, mut start) = (x0, 0.0);
+        loop {
+            if x.abs() <= band {
+                return ([x, 0.0], start);
+            }
+            // Slipping towards the spring's rest: friction pushes back, the centre moves.
+            let centre = band * x.signum();
+            if t < start + half {
+                let phase = omega * (t - start);
+                let amplitude = x - centre;
+                let position = centre + amplitude * phase.cos();
+                let velocity = -amplitude * omega * phase.sin();
+                let stop = self.stop_time(x0);
+                return ([position, velocity], stop);
+            }
+            x = 2.0 * centre - x;
+            start += half;
+        }
+    }
+
+    /// When the mass released from rest at `x0` stops for good.
+    pub fn stop_time(&self, x0: Float) -> Float {
+        let half = core::f64::consts::PI as Float / (self.k / self.m).sqrt();
+        let band = self.dead_band();
+        let (mut x, mut stop) = (x0, 0.0);
+        while x.abs() > band {
+            x = 2.0 * band * x.signum() - x;
+            stop += half;
+        }
+        stop
+    }
+}
+
+/// A mass on a belt that moves at `belt` (`y ≥ 0` its surface), held by a spring of stiffness
+/// `k` to `x = 0`, with friction `mu`. Started on the spring's rest point at the belt's speed it
+/// rides along (sticks) until the spring's pull reaches `μ m g`, then slips for ever on a
+/// harmonic swing whose slip speed comes back to zero once a period, just touching.
+#[derive(Clone, Debug)]
+pub struct Belt {
+    pub m: Float,
+    pub g: Float,
+    pub k: Float,
+    pub mu: Float,
+    pub belt: Float,
+}
+
+#[constrained_system]
+impl Belt {
+    fn mass(&self) -> [Float; 2] {
+        [self.m, self.m]
+    }
+
+    fn force(&self, [x, _y]: [Float; 2]) -> [Float; 2] {
+        [-self.k * x, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x, y]: [Float; 2]) -> [Float; 1] {
+        [y]
+    }
+
+    fn slips(&self, _q: [Float; 2], [vx, _vy]: [Float; 2]) -> [Float; 1] {
+        [vx - self.belt]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl Belt {
+    /// When the mass, started at `x = 0` at the belt's speed, starts to slip: `μ m g / (k v)`.
+    pub fn slip_time(&self) -> Float {
+        self.mu * self.m * self.g / (self.k * self.belt)
+    }
+
+    /// `(x, ẋ)` at `t`: riding the belt until [`Belt::slip_time`], then swinging about
+    /// `μ m g / k` with amplitude `v / ω`.
+    pub fn motion(&self, t: Float) -> [Float; 2] {
+        let slip = self.slip_time();
+        if t <= slip {
+            return [self.belt * t, self.belt];
+        }
+        let omega = (self.k / self.m).sqrt();
+        let centre = self.mu * self.m * self.g / self.k;
+        let phase = omega * (t - slip);
+        [
+            centre + self.belt / omega * phase.sin(),
+            self.belt * phase.cos(),
+        ]
+    }
+}
