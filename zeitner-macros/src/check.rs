@@ -19,6 +19,7 @@ pub struct Sizes {
 /// The most gaps and the most event functions a model may have (the runtime's limits).
 const MAX_GAPS: usize = 32;
 const MAX_EVENTS: usize = 32;
+const MAX_SLIDING_CONTACTS: usize = MAX_GAPS / 2;
 
 /// From this many coordinates on a scene keeps its N×N derivatives sparse: below it the dense
 /// storage's fixed-size matrices are faster and fit a thread's stack.
@@ -123,6 +124,18 @@ fn check_friction(model: &Model<'_>, u: usize, errors: &mut Errors) {
                 ),
             );
         }
+    }
+    if let Some(slips) = model
+        .function(Role::Slips)
+        .filter(|_| u > MAX_SLIDING_CONTACTS)
+    {
+        errors.error_spanned_by(
+            slips.shape.len_expr(),
+            format_args!(
+                "a model with friction has at most {MAX_SLIDING_CONTACTS} gaps (the runtime's \
+                 limit); this one has {u}"
+            ),
+        );
     }
     let (slips, friction) = (model.function(Role::Slips), model.function(Role::Friction));
     if let (Some(friction), None) = (friction, slips) {

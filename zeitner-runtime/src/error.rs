@@ -227,7 +227,7 @@ pub enum InvalidOption {
     /// An [`crate::EventSettings`] value out of range.
     Events,
     /// A system with more gaps or event functions than the runtime holds (32 each), or
-    /// whose sliding contacts are not one per gap.
+    /// whose sliding contacts are not one per gap (at most 16).
     TooManyEvents,
     /// A coefficient of restitution outside `0..=1` (or NaN).
     Restitution,

@@ -13,9 +13,9 @@ use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::gaps::GapSet;
 use crate::model::Model;
-use crate::output::{interpolate, Direction, Point};
+use crate::output::{interpolate, interpolate_velocities, Direction, Point};
 use crate::scalar::Float;
-use crate::system::{ConstrainedSystem, MAX_EVENTS, MAX_GAPS};
+use crate::system::{ConstrainedSystem, MAX_EVENTS, MAX_GAPS, MAX_SLIDING_CONTACTS};
 
 /// A function the simulator watches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,21 +59,28 @@ const RELEASE: Float = crate::scalar::floors::CONTACT_RELEASE;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Values {
     pub events: [Float; MAX_EVENTS],
-    /// `g_u` above its level for open gaps, `λ` above its release level for closed ones.
+    /// `g_u` above its level for open gaps, `λ` above its release level for closed ones; in a
+    /// scene with friction, from [`SLIDES`] on, each sliding contact's margin to Coulomb's cone
+    /// while it sticks or its slip velocity along the slip while it slips, above its level (1
+    /// while its gap is open).
     pub gaps: [Float; MAX_GAPS],
-    /// Of each sliding contact: the margin to Coulomb's cone while it sticks, the slip
-    /// velocity along the slip while it slips, each above its level; 1 while its gap is open.
-    pub slides: [Float; MAX_GAPS],
 }
 
-/// How many functions can be watched: the events, the gaps, the sliding contacts.
-const WATCHED: usize = MAX_EVENTS + 2 * MAX_GAPS;
+/// Where the sliding contacts' values start among the gaps': a scene with friction has at most
+/// [`MAX_SLIDING_CONTACTS`] gaps, so the gaps' arrays hold both (and a scene without friction
+/// carries nothing more).
+pub(crate) const SLIDES: usize = MAX_SLIDING_CONTACTS;
+
+/// How many functions can be watched: the events, then the gaps (and sliding contacts).
+const WATCHED: usize = MAX_EVENTS + MAX_GAPS;
 
 /// The contacts' states: open gaps, and slipping contacts.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Contacts {
     open: GapSet,
     slipping: GapSet,
+    /// How many contacts slide (their values from [`SLIDES`] on).
+    slides: usize,
 }
 
 impl Contacts {
@@ -83,6 +90,7 @@ impl Contacts {
         Contacts {
             open: model.open_gaps(),
             slipping: model.slipping().0,
+            slides: S::SLIDING_CONTACTS,
         }
     }
 
@@ -102,11 +110,10 @@ impl Contacts {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Watch {
     events: u32,
+    /// The gaps' levels, and from [`SLIDES`] on the sliding contacts': rounding's share of the
+    /// multipliers while one sticks; zero while one slips, or its slip velocity less the
+    /// tolerance where that started at or below zero (a slip that starts from rest).
     levels: [Float; MAX_GAPS],
-    /// The sliding contacts' levels: rounding's share of the multipliers while one sticks;
-    /// zero while one slips, or its slip velocity less the tolerance where that started at
-    /// or below zero (a slip that starts from rest).
-    slide_levels: [Float; MAX_GAPS],
 }
 
 impl Default for Watch {
@@ -114,7 +121,6 @@ impl Default for Watch {
         Watch {
             events: 0,
             levels: [0.0; MAX_GAPS],
-            slide_levels: [0.0; MAX_GAPS],
         }
     }
 }
@@ -155,7 +161,7 @@ impl Watch {
             let (slipping, forward) = model.slipping();
             let rates = model.slip_rates(&point.q, &point.v, point.t)?;
             for k in closed.iter().filter(|&k| k < S::SLIDING_CONTACTS) {
-                watch.slide_levels[k] = match slipping.contains(k) {
+                watch.levels[SLIDES + k] = match slipping.contains(k) {
                     true => {
                         let along = along(forward, k) * rates[k];
                         if along > 0.0 {
@@ -175,7 +181,7 @@ impl Watch {
     pub fn after(
         &self,
         values: &Values,
-        (events, gaps): (usize, usize),
+        (events, gaps, slides): (usize, usize, usize),
         open: GapSet,
         tolerance: Float,
     ) -> Watch {
@@ -187,7 +193,9 @@ impl Watch {
         for k in (0..gaps).filter(|&k| !open.contains(k)) {
             watch.levels[k] = self.levels[k];
         }
-        watch.slide_levels = self.slide_levels;
+        for k in (0..slides).filter(|&k| !open.contains(k)) {
+            watch.levels[SLIDES + k] = self.levels[SLIDES + k];
+        }
         watch
     }
 
@@ -205,7 +213,6 @@ impl Watch {
         Watch {
             events: sides,
             levels,
-            slide_levels: [0.0; MAX_GAPS],
         }
     }
 
@@ -218,7 +225,7 @@ impl Watch {
     }
 
     fn slide_level(&self, k: usize) -> Float {
-        self.slide_levels[k]
+        self.levels[SLIDES + k]
     }
 
     /// The event sides as bits.
@@ -251,15 +258,16 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
             };
         }
     }
-    let mut slides = [1.0; MAX_GAPS];
     if S::SLIDING_CONTACTS > 0 {
         let (open, (slipping, forward)) = (model.open_gaps(), model.slipping());
         let rates = match slipping.without(open).is_empty() {
             true => [0.0; MAX_GAPS],
             false => model.slip_rates(&point.q, &point.v, point.t)?,
         };
-        for (k, slide) in slides.iter_mut().enumerate().take(S::SLIDING_CONTACTS) {
+        for k in 0..S::SLIDING_CONTACTS {
+            let slide = &mut gaps[SLIDES + k];
             if open.contains(k) {
+                *slide = 1.0;
                 continue;
             }
             *slide = match slipping.contains(k) {
@@ -268,11 +276,7 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
             } - watch.slide_level(k);
         }
     }
-    Ok(Values {
-        events,
-        gaps,
-        slides,
-    })
+    Ok(Values { events, gaps })
 }
 
 /// `+1` for a contact slipping forwards, `-1` backwards.
@@ -309,6 +313,20 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             along(model.slipping().1, k) * rates[k] - watch.slide_level(k)
         }
     })
+}
+
+/// The step's dense output at `t`, with the velocities of a very short step from the ends'
+/// velocities where a slip velocity is watched ([`interpolate_velocities`]).
+#[inline(always)]
+fn dense<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    start: &Point<N, Z>,
+    end: &Point<N, Z>,
+    t: Float,
+) -> Point<N, Z> {
+    match S::SLIDING_CONTACTS {
+        0 => interpolate(start, end, t),
+        _ => interpolate_velocities(start, end, t),
+    }
 }
 
 /// A crossing located on a step's dense output.
@@ -381,9 +399,13 @@ pub(crate) fn earliest<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
 /// [`MAX_EVENTS`].
 fn watched_indices<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 ) -> impl Iterator<Item = usize> + Clone {
-    let gaps = (0..S::UNILATERAL_CONSTRAINTS).map(|k| MAX_EVENTS + k);
-    let slides = (0..S::SLIDING_CONTACTS).map(|k| MAX_EVENTS + MAX_GAPS + k);
-    (0..S::EVENTS).chain(gaps).chain(slides)
+    // One range for the gaps and the sliding contacts after them (from `SLIDES` on).
+    let (gaps, slides) = (S::UNILATERAL_CONSTRAINTS, S::SLIDING_CONTACTS);
+    let contacts = (0..gaps + slides).map(move |j| match j < gaps {
+        true => MAX_EVENTS + j,
+        false => MAX_EVENTS + SLIDES + j - gaps,
+    });
+    (0..S::EVENTS).chain(contacts)
 }
 
 /// What is watched at `index`, and whether it was positive at the step start (an open gap
@@ -391,14 +413,14 @@ fn watched_indices<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 fn watched(index: usize, watch: &Watch, contacts: Contacts) -> (Watched, bool) {
     if index < MAX_EVENTS {
         (Watched::Event(index), watch.event(index))
-    } else if index < MAX_EVENTS + MAX_GAPS {
+    } else if contacts.slides == 0 || index < MAX_EVENTS + SLIDES {
         let k = index - MAX_EVENTS;
         match contacts.open.contains(k) {
             true => (Watched::Gap(k), true),
             false => (Watched::Contact(k), false),
         }
     } else {
-        let k = index - MAX_EVENTS - MAX_GAPS;
+        let k = index - MAX_EVENTS - SLIDES;
         let sticks = !contacts.open.contains(k) && !contacts.slipping.contains(k);
         match sticks {
             true => (Watched::Stick(k), true),
@@ -409,12 +431,9 @@ fn watched(index: usize, watch: &Watch, contacts: Contacts) -> (Watched, bool) {
 
 /// The value of the function at `index` in `values`.
 fn value_in(values: &Values, index: usize) -> Float {
-    if index < MAX_EVENTS {
-        values.events[index]
-    } else if index < MAX_EVENTS + MAX_GAPS {
-        values.gaps[index - MAX_EVENTS]
-    } else {
-        values.slides[index - MAX_EVENTS - MAX_GAPS]
+    match index < MAX_EVENTS {
+        true => values.events[index],
+        false => values.gaps[index - MAX_EVENTS],
     }
 }
 
@@ -439,7 +458,7 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let h = end.t - start.t;
     let at = |j: usize| start.t + h * j as Float / (INTERIOR_SAMPLES + 1) as Float;
     let (first, middle) = (values(model, start, watch)?, INTERIOR_SAMPLES.div_ceil(2));
-    let centre = values(model, &interpolate(start, end, at(middle)), watch)?;
+    let centre = values(model, &dense::<S, N, Z>(start, end, at(middle)), watch)?;
     let side = |index: usize| match watched(index, watch, open).1 {
         true => 1.0,
         false => -1.0,
@@ -462,7 +481,7 @@ fn other_sides<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     for j in (1..=INTERIOR_SAMPLES).filter(|_| may_dip) {
         let sample = match j == middle {
             true => centre,
-            false => values(model, &interpolate(start, end, at(j)), watch)?,
+            false => values(model, &dense::<S, N, Z>(start, end, at(j)), watch)?,
         };
         for index in sampled.clone() {
             let value = value_in(&sample, index);
@@ -519,7 +538,10 @@ fn sample_value<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         0 => value_in(known.first, index),
         j if j == known.centre.0 => value_in(known.centre.1, index),
         j if j == INTERIOR_SAMPLES + 1 => value_in(known.end, index),
-        _ => value_in(&values(model, &interpolate(start, end, t), watch)?, index),
+        _ => value_in(
+            &values(model, &dense::<S, N, Z>(start, end, t), watch)?,
+            index,
+        ),
     };
     Ok((t, value))
 }
@@ -550,7 +572,10 @@ fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         let (t0, f0) = signed_at(0)?;
         let neighbour = signed_at(right)?;
         let t = t0 + (neighbour.0 - t0) / (16 * right) as Float;
-        let value = value_in(&values(model, &interpolate(start, end, t), watch)?, index);
+        let value = value_in(
+            &values(model, &dense::<S, N, Z>(start, end, t), watch)?,
+            index,
+        );
         if (value > 0.0) != was_positive {
             return Ok(Some((t, value)));
         }
@@ -573,7 +598,7 @@ fn dip<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             return Ok(None);
         }
         let value = value_in(
-            &values(model, &interpolate(start, end, vertex), watch)?,
+            &values(model, &dense::<S, N, Z>(start, end, vertex), watch)?,
             index,
         );
         if (value > 0.0) != was_positive {
@@ -643,7 +668,7 @@ fn locate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         } else {
             0.5 * (a + b)
         };
-        let ft = value_of(model, watched, &interpolate(start, end, t), watch)?;
+        let ft = value_of(model, watched, &dense::<S, N, Z>(start, end, t), watch)?;
         if (ft > 0.0) == (fb > 0.0) {
             (b, fb) = (t, ft);
             if retained == -1 {

@@ -68,7 +68,9 @@ pub(crate) struct MaskedRows {
     open: GapSet,
     /// Slipping contacts: their slip rows are not enforced (those of open gaps neither).
     slipping: GapSet,
-    /// The first gap row, and the first slip row (0 where the scene has none): 24 bytes in
+    /// The gaps whose slip row is masked: open or slipping (none without slip rows).
+    masked_slides: GapSet,
+    /// The first gap row, and the first slip row (0 where the scene has none): 32 bytes in
     /// all, as the directions that carry this are copied often.
     first: u16,
     first_slip: u16,
@@ -83,10 +85,15 @@ impl MaskedRows {
     fn new(first: (usize, usize), open: GapSet, slipping: GapSet, redundant: u64) -> Self {
         let slides = first.1 > 0 && !open.union(slipping).is_empty();
         let any = !open.is_empty() || redundant != 0 || slides;
+        let masked_slides = match first.1 {
+            0 => GapSet::EMPTY,
+            _ => open.union(slipping),
+        };
         MaskedRows {
             redundant,
             open,
             slipping,
+            masked_slides,
             first: first.0 as u16,
             first_slip: first.1 as u16,
             any,
@@ -111,10 +118,7 @@ impl MaskedRows {
     /// The gaps whose slip row is masked: open or slipping (none without slip rows).
     #[inline(always)]
     fn masked_slides(&self) -> GapSet {
-        match self.first_slip {
-            0 => GapSet::EMPTY,
-            _ => self.open.union(self.slipping),
-        }
+        self.masked_slides
     }
 
     /// The redundant rows, ascending.

@@ -98,10 +98,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// if any: see [`Simulator::singular_configuration`].
     pub(super) fn vanishing_rows(&self, g: &Matrix<Z, N>, t: Float) -> Option<StepError> {
         let mut rows = RowSet::new(S::POSITION_CONSTRAINTS);
+        let first_gap = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
+        let open = self.model.open_gaps();
         let masked = self.model.masked_rows();
         let vanishing = |j: usize| g.row(j).norm() < 1e-3 * self.jacobian_row_scale[j];
         // A masked row (an open gap's, a slipping contact's) reads as zero by design.
-        for j in (0..Z).filter(|&j| vanishing(j) && !masked.contains(j)) {
+        let unmasked = |j: usize| match S::SLIDING_CONTACTS {
+            0 => !(j >= first_gap && open.contains(j - first_gap)),
+            _ => !masked.contains(j),
+        };
+        for j in (0..Z).filter(|&j| vanishing(j) && unmasked(j)) {
             rows.insert(j);
         }
         (!rows.is_empty()).then_some(StepError::RankDeficientConstraints {

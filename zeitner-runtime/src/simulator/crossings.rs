@@ -129,7 +129,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         values: &Values,
     ) -> Result<Option<StopReason>, StepError> {
         let open = self.model.open_gaps();
-        let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS);
+        let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS, S::SLIDING_CONTACTS);
         let watch = self
             .watch
             .after(values, counts, open, self.options.constraint_tolerance);
@@ -178,7 +178,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let slipping = self.model.slipping().0;
         let closed = GapSet::first(S::SLIDING_CONTACTS).without(self.model.open_gaps());
         for k in closed.without(releasing).iter() {
-            if values.slides[k] < 0.0 {
+            if values.gaps[events::SLIDES + k] < 0.0 {
                 match slipping.contains(k) {
                     true => to_stop.insert(k),
                     false => to_slip.insert(k),

@@ -43,7 +43,7 @@ use crate::output::Point;
 use crate::output::{Statistics, StepReport, StopReason};
 use crate::polynomial::StepPolynomial;
 use crate::storage::Storage;
-use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS};
+use crate::system::{ConstrainedSystem, Vector, MAX_EVENTS, MAX_GAPS, MAX_SLIDING_CONTACTS};
 
 /// `T` held as scene `S`'s storage holds a run's workspace.
 type Held<S, T, const N: usize, const Z: usize> =
@@ -143,7 +143,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
             && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS
             && (S::SLIDING_CONTACTS == 0 || S::SLIDING_CONTACTS == S::UNILATERAL_CONSTRAINTS)
-            && S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS;
+            && S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS
+            && S::SLIDING_CONTACTS <= MAX_SLIDING_CONTACTS;
         if !fits {
             return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
         }
