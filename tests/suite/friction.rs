@@ -159,6 +159,23 @@ fn a_mass_on_a_spring_sliding_on_a_floor_loses_four_mu_n_over_k_a_cycle_and_stop
         rests.len()
     );
     assert!(last_x.abs() <= oscillator.dead_band(), "{rests:?}");
+    // The energy lost is the friction's work, μ m g times the path slid between the rests.
+    let end = sim.last().end;
+    let energy = |x: f64, v: f64| 0.5 * oscillator.m * v * v + 0.5 * oscillator.k * x * x;
+    let lost = energy(x0, 0.0) - energy(end.q[0], end.v[0]);
+    let path: f64 = std::iter::once(x0)
+        .chain(rests.iter().map(|&(_, x)| x))
+        .collect::<Vec<_>>()
+        .windows(2)
+        .map(|pair| (pair[1] - pair[0]).abs())
+        .sum();
+    let work = oscillator.mu * oscillator.m * oscillator.g * path;
+    let balance = (lost - work).abs() / lost;
+    assert!(
+        balance < 1e-8,
+        "energy lost {lost} against friction work {work}"
+    );
+    println!("sliding oscillator: energy lost equals the friction work to {balance:.1e}");
     for pair in rests.windows(2) {
         let (from, to) = (pair[0].1, pair[1].1);
         let mirrored = 2.0 * oscillator.dead_band() * from.signum() - from;
@@ -169,13 +186,7 @@ fn a_mass_on_a_spring_sliding_on_a_floor_loses_four_mu_n_over_k_a_cycle_and_stop
 
 #[test]
 fn a_mass_on_a_belt_rides_it_until_the_spring_pulls_mu_n_then_swings() {
-    let belt = Belt {
-        m: 1.0,
-        g: 9.81,
-        k: 50.0,
-        mu: 0.4,
-        belt: 0.3,
-    };
+    let belt = Belt::example();
     let start = Start {
         q: Vector::<2>::new(0.0, 0.0),
         v: Vector::<2>::new(belt.belt, 0.0),

@@ -7,6 +7,7 @@ use zeitner::{
     ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
 };
 
+use crate::scenes::friction::{Belt, SlidingOscillator};
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference;
 use crate::scenes::steam_generator::SteamGenerator;
@@ -235,6 +236,8 @@ pub fn all_cases(long_steps: u64, mut progress: impl FnMut(&str)) -> Vec<Case> {
     scales(&mut cases);
     progress("bad starts");
     bad_starts(&mut cases);
+    progress("friction");
+    friction(&mut cases);
     cases
 }
 
@@ -634,6 +637,47 @@ fn bad_starts(cases: &mut Vec<Case>) {
 }
 
 /// The default options with Dormand–Prince throughout, as the bad starts' rows are labelled.
+/// Coulomb friction: a mass on a spring sliding to rest on a floor, `μ` from 0 to 1 (its
+/// energy may only fall), and a mass riding a belt whose slip speed comes back to zero and
+/// grazes it once a period (the belt does work: no energy check).
+fn friction(cases: &mut Vec<Case>) {
+    let start = (Vector::<2>::new(0.5, 0.0), Vector::zeros());
+    for mu in [0.0, 0.1, 0.5, 1.0] {
+        let scene = SlidingOscillator {
+            m: 1.0,
+            g: 9.81,
+            k: 100.0,
+            mu,
+        };
+        let energy = |q: &[f64], v: &[f64]| {
+            0.5 * (v[0] * v[0] + v[1] * v[1]) + 50.0 * q[0] * q[0] + 9.81 * q[1]
+        };
+        let variant = format!("sliding oscillator, μ = {mu}");
+        let (stops, steps, energy) = (
+            &[2.0],
+            &[1e-3],
+            Some((&energy as &dyn Fn(&[f64], &[f64]) -> f64, 12.5)),
+        );
+        push_all(
+            cases, "friction", &variant, &scene, start, stops, steps, 1e-10, energy,
+        );
+    }
+    let belt = Belt::example();
+    let riding = (Vector::<2>::zeros(), Vector::<2>::new(0.3, 0.0));
+    let variant = "belt, slip speed grazing zero";
+    push_all(
+        cases,
+        "friction",
+        variant,
+        &belt,
+        riding,
+        &[2.0],
+        &[1e-3],
+        1e-10,
+        None,
+    );
+}
+
 fn dormand_prince() -> Options {
     Options {
         method: InnerMethod::DormandPrince54,

@@ -173,6 +173,18 @@ impl Belt {
 }
 
 impl Belt {
+    /// A 1 kg mass on a 50 N/m spring riding a belt at 0.3 m/s with `μ = 0.4`: it slips at
+    /// 0.2616 s.
+    pub fn example() -> Self {
+        Belt {
+            m: 1.0,
+            g: 9.81,
+            k: 50.0,
+            mu: 0.4,
+            belt: 0.3,
+        }
+    }
+
     /// When the mass, started at `x = 0` at the belt's speed, starts to slip: `μ m g / (k v)`.
     pub fn slip_time(&self) -> Float {
         self.mu * self.m * self.g / (self.k * self.belt)

@@ -184,6 +184,7 @@ where
                 reason,
                 StopReason::StopTimeReached | StopReason::Event { .. }
             ) {
+                self.simulator.forget_reached_target(t_end);
                 return Ok(reason);
             }
         }

@@ -12,7 +12,9 @@ use crate::model::Model;
 use crate::options::{MultiplierModel, Options, StepControl};
 use crate::output::{Point, StepReport};
 use crate::scalar::Float;
-use crate::system::{ConstrainedSystem, Matrix, Vector};
+use crate::system::{
+    ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS, MAX_SLIDING_CONTACTS,
+};
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// Goes on from the given multipliers instead of those of the acceleration-level system at
@@ -76,6 +78,30 @@ pub(super) fn suits_the_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z
         return Err(StepError::InvalidOption(
             InvalidOption::ConstantMultipliersOnVelocityRows,
         ));
+    }
+    Ok(())
+}
+
+/// Refuses a system whose gaps, events or sliding contacts the runtime cannot hold, and
+/// restitution or friction coefficients out of their range.
+pub(super) fn suits_the_contacts<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    system: &S,
+) -> Result<(), StepError> {
+    let fits = S::EVENTS <= MAX_EVENTS
+        && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
+        && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS
+        && (S::SLIDING_CONTACTS == 0 || S::SLIDING_CONTACTS == S::UNILATERAL_CONSTRAINTS)
+        && S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS
+        && S::SLIDING_CONTACTS <= MAX_SLIDING_CONTACTS;
+    if !fits {
+        return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
+    }
+    if (0..S::UNILATERAL_CONSTRAINTS).any(|k| !(0.0..=1.0).contains(&system.restitution(k))) {
+        return Err(StepError::InvalidOption(InvalidOption::Restitution));
+    }
+    let friction = |k: usize| system.friction(k);
+    if (0..S::SLIDING_CONTACTS).any(|k| !(friction(k) >= 0.0 && friction(k).is_finite())) {
+        return Err(StepError::InvalidOption(InvalidOption::Friction));
     }
     Ok(())
 }
