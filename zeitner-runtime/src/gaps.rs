@@ -1,6 +1,8 @@
 //! Sets of gaps: plain data that the model, the reports and the contact logic share.
 
-use crate::system::MAX_GAPS;
+/// The most gaps a scene may have (a [`GapSet`] holds one bit each). Kept here, the leaf its
+/// users import, so that plain data (errors naming gaps) does not reach the system trait.
+pub const MAX_GAPS: usize = 32;
 
 /// A set of gaps by their index in the model's `gaps` (`0..UNILATERAL_CONSTRAINTS`).
 ///

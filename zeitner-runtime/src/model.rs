@@ -707,7 +707,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// Whether a contact slips now: never, as a constant, in a scene without slip rows.
     #[inline(always)]
     pub fn slips(&self) -> bool {
-        S::SLIDING_CONTACTS > 0 && !self.masked.slipping.without(self.masked.open).is_empty()
+        S::SLIDING_CONTACTS > 0 && !self.masked.slipping().is_empty()
     }
 
     /// `-μσ` of slipping contact `k`: what its slip row carries of its normal multiplier.
@@ -723,7 +723,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     #[cold]
     fn forcing(&self, unmasked: &Matrix<Z, N>, mut masked: Matrix<Z, N>) -> Matrix<Z, N> {
         let (first, first_slip) = self.masked.firsts();
-        for k in self.masked.slipping.without(self.masked.open).iter() {
+        for k in self.masked.slipping().iter() {
             let coefficient = self.slip_coefficient(k);
             let slide = unmasked.row(first_slip + k);
             let mut normal = masked.row_mut(first + k);
@@ -739,7 +739,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let mut acting = self.mask(*lambda);
         if self.slips() {
             let (first, first_slip) = self.masked.firsts();
-            for k in self.masked.slipping.without(self.masked.open).iter() {
+            for k in self.masked.slipping().iter() {
                 acting[first_slip + k] = self.slip_coefficient(k) * acting[first + k];
             }
         }

@@ -331,7 +331,7 @@ impl<const N: usize, const P: usize> EventGradient<N, P> {
 }
 
 /// The most gaps (unilateral rows) a system may have.
-pub const MAX_GAPS: usize = 32;
+pub use crate::gaps::MAX_GAPS;
 /// The most gaps a scene with friction may have ([`ConstrainedSystem::SLIDING_CONTACTS`]).
 pub const MAX_SLIDING_CONTACTS: usize = MAX_GAPS / 2;
 /// The most event functions a system may have.
