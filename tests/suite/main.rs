@@ -9,7 +9,6 @@ mod andrews;
 mod energy_drift;
 mod errors;
 mod every_stage;
-mod friction;
 mod generalized_alpha;
 mod generated_derivatives;
 mod high_order;

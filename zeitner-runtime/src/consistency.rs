@@ -3,6 +3,7 @@
 //! when the state is re-initialised.
 
 use crate::error::{Row, RowSet, StepError};
+use crate::gaps::GapSet;
 use crate::linalg::{
     all_finite, dependent, finite_state, keep_leading_rows, max_abs, solve_spd, Lu,
 };
@@ -434,8 +435,13 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 }
 
 /// The multipliers of `G M⁻¹Wᵀ λ = rhs` where contacts slip: Coulomb's force along a slip is
-/// carried by the normal multiplier, which makes the system unsymmetric (LU). Singular where
-/// the contacts admit no consistent force (Painlevé's configurations among them).
+/// carried by the normal multiplier, which makes the system unsymmetric (LU).
+///
+/// Painlevé's configurations are refused, naming the contact: where the `k`-th diagonal entry
+/// of `(G M⁻¹Wᵀ)⁻¹` is not positive, a push at slipping contact `k` (the others held) draws its
+/// gap closer instead of opening it, so that the contact admits no consistent force (where the
+/// free motion would close it) or two (where it would open it: lifting off, or a larger push).
+/// Frictionless, the system is symmetric positive definite and every such entry positive.
 #[cold]
 fn slipping_multipliers<F, const N: usize, const Z: usize>(
     directions: &ConstraintDirections<F, N, Z>,
@@ -450,6 +456,16 @@ fn slipping_multipliers<F, const N: usize, const Z: usize>(
         gaps: directions.masked.slipping(),
     };
     let lu = Lu::new(system).ok_or_else(singular)?;
+    for k in directions.masked.slipping().iter() {
+        let row = directions.masked.gap_row(k);
+        let mut unit = Vector::<Z>::zeros();
+        unit[row] = 1.0;
+        if !(lu.solve(&unit)[row] > 0.0) {
+            let mut gap = GapSet::EMPTY;
+            gap.insert(k);
+            return Err(StepError::NoConsistentFriction { t, gaps: gap });
+        }
+    }
     let lambda = lu.solve(rhs);
     all_finite(lambda.as_slice())
         .then_some(lambda)

@@ -423,9 +423,11 @@ pub enum StepError {
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
     InconsistentStart { worst_row: Row, residual: Float },
-    /// The slipping contacts `gaps` admit no consistent force: Coulomb's law along their slip
-    /// leaves the system for the multipliers singular (Painlevé's paradox, a friction
-    /// coefficient too large for the geometry).
+    /// The slipping contacts `gaps` admit no unique consistent force: Coulomb's law along their
+    /// slip leaves the system for the multipliers singular, or a contact is in Painlevé's
+    /// configuration (a friction coefficient too large for the geometry: a push there closes
+    /// the gap further, so there is no consistent force or there are two); `gaps` then names
+    /// that one contact.
     NoConsistentFriction { t: Float, gaps: GapSet },
     /// Options or arguments were refused before anything was computed.
     InvalidOption(InvalidOption),
@@ -474,8 +476,8 @@ impl StepError {
             }
             StepError::InconsistentStart { .. } => "give a state on or nearer the constraints",
             StepError::NoConsistentFriction { .. } => {
-                "lower the friction coefficient of these contacts or change the geometry that \
-                 wedges them"
+                "lower the friction coefficient of these contacts, change the geometry that \
+                 wedges them, or give the contact compliance (a stiff spring in place of the gap)"
             }
             StepError::InvalidOption(_) => "",
         }
@@ -535,8 +537,9 @@ impl fmt::Display for StepError {
             ),
             StepError::NoConsistentFriction { t, gaps } => write!(
                 f,
-                "the slipping contacts of gaps {gaps:?} admit no consistent force at t = {t} \
-                 (Coulomb's law leaves their multipliers singular)"
+                "the slipping contacts of gaps {gaps:?} admit no unique consistent force at \
+                 t = {t} (Coulomb's law leaves their multipliers singular, or Painlevé's \
+                 configuration: a push there closes the gap further)"
             ),
             StepError::InvalidOption(option) => return write!(f, "invalid option: {option}"),
         }?;

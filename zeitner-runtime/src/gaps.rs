@@ -17,9 +17,16 @@ pub const MAX_GAPS: usize = 32;
 /// assert_eq!(closed.union(GapSet::first(2)).len(), 3);
 /// assert!(!closed.contains(40) && GapSet::EMPTY.is_empty()); // at most 32 gaps
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GapSet(u32);
+
+/// The gaps' numbers, `{1, 3}`, as errors and reports name them.
+impl core::fmt::Debug for GapSet {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_set().entries(self.iter()).finish()
+    }
+}
 
 impl GapSet {
     pub const EMPTY: GapSet = GapSet(0);

@@ -110,6 +110,11 @@ impl MaskedRows {
         self.slipping.without(self.open)
     }
 
+    /// The row of gap `k`'s constraint.
+    pub fn gap_row(&self, k: usize) -> usize {
+        self.first() + k
+    }
+
     #[inline(always)]
     fn firsts(&self) -> (usize, usize) {
         (usize::from(self.first), usize::from(self.first_slip))

@@ -50,6 +50,30 @@ impl Incline {
         [s * cos, s * sin, ds * cos, ds * sin]
     }
 
+    /// When the block sent up the slope from the origin at `speed` stops: `v / g(sin θ + μ cos θ)`.
+    pub fn stop_time(&self, speed: Float) -> Float {
+        let (sin, cos) = self.angle.sin_cos();
+        speed / (self.g * (sin + self.mu * cos))
+    }
+
+    /// Where the block is at `t`, sent up the slope from the origin at `speed`: decelerated by
+    /// `g (sin θ + μ cos θ)` until [`Incline::stop_time`], then sliding down with
+    /// `g (sin θ − μ cos θ)` where that is positive, else staying. Returns `(x, y, ẋ, ẏ)`.
+    pub fn sent_up_the_slope(&self, speed: Float, t: Float) -> [Float; 4] {
+        let (sin, cos) = self.angle.sin_cos();
+        let up = self.g * (sin + self.mu * cos);
+        let stop = self.stop_time(speed);
+        let (s, ds) = if t <= stop {
+            (speed * t - 0.5 * up * t * t, speed - up * t)
+        } else {
+            let top = speed * stop - 0.5 * up * stop * stop;
+            let down = (self.g * (sin - self.mu * cos)).max(0.0);
+            let after = t - stop;
+            (top - 0.5 * down * after * after, -down * after)
+        };
+        [s * cos, s * sin, ds * cos, ds * sin]
+    }
+
     /// The normal force the plane carries: `m g cos θ`.
     pub fn normal_force(&self) -> Float {
         self.m * self.g * self.angle.cos()
@@ -204,5 +228,58 @@ impl Belt {
             centre + self.belt / omega * phase.sin(),
             self.belt * phase.cos(),
         ]
+    }
+}
+
+/// Painlevé's rod: a uniform rod of mass `m` and length `2 l` (coordinates: its centre `x, y`
+/// and its angle `θ` to the floor), its lower end `(x − l cos θ, y − l sin θ)` on a rough floor
+/// (gap 1) and its upper end under a ceiling at `ceiling` (gap 0, open), friction `mu` at both.
+/// Sliding with its lower end moving away from the centre (towards −x), the floor's push
+/// `n M⁻¹ nᵀ − μ n M⁻¹ tᵀ = (1 + 3 cos²θ − 3 μ sin θ cos θ) / m` turns negative for
+/// `μ > (1 + 3 cos²θ) / (3 sin θ cos θ)` (at least 4/3, at `tan θ = 2`): no consistent contact
+/// force exists there, as Painlevé found (1895).
+#[derive(Clone, Debug)]
+pub struct PainleveRod {
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
+    pub mu: Float,
+    pub ceiling: Float,
+}
+
+#[constrained_system]
+impl PainleveRod {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, self.m * self.l * self.l / 3.0]
+    }
+
+    fn force(&self) -> [Float; 3] {
+        [0.0, -self.m * self.g, 0.0]
+    }
+
+    fn gaps(&self, [_x, y, th]: [Float; 3]) -> [Float; 2] {
+        [self.ceiling - y - self.l * th.sin(), y - self.l * th.sin()]
+    }
+
+    fn slips(&self, [_x, _y, th]: [Float; 3], [vx, _vy, w]: [Float; 3]) -> [Float; 2] {
+        [vx - self.l * th.sin() * w, vx + self.l * th.sin() * w]
+    }
+
+    fn friction(&self) -> [Float; 2] {
+        [self.mu, self.mu]
+    }
+}
+
+impl PainleveRod {
+    /// The friction coefficient above which the rod at angle `th`, its lower end slipping
+    /// towards −x, is in Painlevé's configuration: `(1 + 3 cos²θ) / (3 sin θ cos θ)`.
+    pub fn threshold(th: Float) -> Float {
+        let (sin, cos) = th.sin_cos();
+        (1.0 + 3.0 * cos * cos) / (3.0 * sin * cos)
+    }
+
+    /// The rod at angle `th`, its lower end on the floor and slipping at `slip` along x.
+    pub fn sliding(&self, th: Float, slip: Float) -> ([Float; 3], [Float; 3]) {
+        ([0.0, self.l * th.sin(), th], [slip, 0.0, 0.0])
     }
 }

@@ -1,10 +1,11 @@
 //! Coulomb friction on closed contacts against closed forms: a block on an incline that sticks
-//! or slides, a mass on a spring sliding to rest on a floor, a mass on a spring riding a belt.
+//! or slides, a mass on a spring sliding to rest on a floor, a mass on a spring riding a belt;
+//! and Painlevé's rod, refused where no consistent contact force exists.
 
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{Belt, Incline, SlidingOscillator};
+use zeitner_scenes::friction::{Belt, Incline, PainleveRod, SlidingOscillator};
 
 fn tight() -> Options {
     Options {
@@ -87,15 +88,9 @@ fn a_block_started_sliding_up_an_incline_stops_and_then_slides_down_or_stays() {
             }
         })
         .unwrap();
-        let up = 9.81 * (sin + mu * cos);
-        let stop = 2.0 / up;
-        let top = 2.0 * stop - 0.5 * up * stop * stop;
-        let down = 9.81 * (sin - mu * cos);
-        let t = 1.0 - stop;
-        let s = if stays { top } else { top - 0.5 * down * t * t };
-        let ds = if stays { 0.0 } else { -down * t };
+        let stop = incline.stop_time(2.0);
         let end = sim.last().end;
-        let reference = [s * cos, s * sin, ds * cos, ds * sin];
+        let reference = incline.sent_up_the_slope(2.0, 1.0);
         let error = off(&[end.q[0], end.q[1], end.v[0], end.v[1]], &reference, 1.0);
         assert!(error < 1e-8, "μ = {mu}: off by {error:e} ({changes:?})");
         assert_eq!(changes.len(), 1, "μ = {mu}: {changes:?}");
@@ -235,5 +230,70 @@ fn a_negative_or_not_finite_friction_coefficient_is_refused_by_name() {
         let expected = StepError::InvalidOption(InvalidOption::Friction);
         assert_eq!(refused, Some(expected), "μ = {mu}");
         assert!(expected.to_string().contains("friction coefficient"));
+    }
+}
+
+fn rod(mu: f64) -> PainleveRod {
+    PainleveRod {
+        m: 1.0,
+        l: 0.5,
+        g: 9.81,
+        mu,
+        ceiling: 2.0,
+    }
+}
+
+/// The rod at `tan θ = 2`, where Painlevé's threshold is lowest (4/3), its lower end slipping.
+fn rod_start(rod: &PainleveRod, slip: f64) -> Start<3> {
+    let (q, v) = rod.sliding(2f64.atan(), slip);
+    Start {
+        q: Vector::from(q),
+        v: Vector::from(v),
+        t: 0.0,
+    }
+}
+
+#[test]
+fn painleves_rod_is_refused_naming_its_contact_where_no_consistent_force_exists() {
+    let th = 2f64.atan();
+    assert!((PainleveRod::threshold(th) - 4.0 / 3.0).abs() < 1e-15);
+    for mu in [1.34, 1.5, 3.0] {
+        let rod = rod(mu);
+        let refused = Simulator::new(&rod, rod_start(&rod, -1.0), tight()).err();
+        let Some(StepError::NoConsistentFriction { gaps, .. }) = refused else {
+            panic!("μ = {mu}: not refused ({refused:?})");
+        };
+        // Gap 0 (the ceiling) is open: the floor's contact, gap 1, is named.
+        let mut floor = GapSet::EMPTY;
+        floor.insert(1);
+        assert_eq!(gaps, floor, "μ = {mu}");
+        let message = refused.unwrap().to_string();
+        assert!(message.contains("Painlevé"), "{message}");
+        println!("Painlevé's rod, μ = {mu}: {message}");
+    }
+}
+
+#[test]
+fn painleves_rod_below_the_threshold_or_slipping_the_other_way_carries_the_closed_form_force() {
+    // θ̇ = 0: the floor's push is m g / (1 + 3 cos²θ + 3 μ σ sin θ cos θ), σ the slip's sign.
+    let th = 2f64.atan();
+    let (sin, cos) = th.sin_cos();
+    for (mu, slip) in [
+        (0.0, -1.0),
+        (0.5, -1.0),
+        (1.3, -1.0),
+        (1.5, 1.0),
+        (3.0, 1.0),
+    ] {
+        let rod = rod(mu);
+        let mut sim = Simulator::new(&rod, rod_start(&rod, slip), tight()).unwrap();
+        let sigma = f64::signum(slip);
+        let push = rod.m * rod.g / (1.0 + 3.0 * cos * cos + 3.0 * mu * sigma * sin * cos);
+        let normal = -sim.last().end.lambda[1];
+        let error = (normal - push).abs() / push;
+        println!("Painlevé's rod, μ = {mu}, slipping {slip}: push off by {error:.1e}");
+        assert!(error < 1e-12, "μ = {mu}: push {normal}, not {push}");
+        sim.advance_to(0.02, |_| {}).unwrap();
+        assert_eq!(sim.last().end.t, 0.02);
     }
 }
