@@ -5,7 +5,10 @@
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{Belt, Incline, PainleveRod, SlidingOscillator};
+use zeitner_scenes::friction::{
+    Belt, Incline, PainleveRod, SlidingOscillator, SlidingSupportSteamGenerator,
+};
+use zeitner_scenes::reference;
 
 fn tight() -> Options {
     Options {
@@ -295,5 +298,47 @@ fn painleves_rod_below_the_threshold_or_slipping_the_other_way_carries_the_close
         assert!(error < 1e-12, "μ = {mu}: push {normal}, not {push}");
         sim.advance_to(0.02, |_| {}).unwrap();
         assert_eq!(sim.last().end.t, 0.02);
+    }
+}
+
+#[test]
+fn the_steam_generator_on_a_sliding_support_follows_its_reduced_model_through_strike_and_slip() {
+    // Free flight on the column, a plastic strike at C, then C slipping along its guide against
+    // friction: against the reduced Newton–Euler model in φ (`reference`).
+    for mu in [0.0, 0.1, 0.3] {
+        let scene = SlidingSupportSteamGenerator {
+            mu,
+            ..SlidingSupportSteamGenerator::paper()
+        };
+        let start = Start {
+            q: Vector::<3>::zeros(),
+            v: Vector::zeros(),
+            t: 0.0,
+        };
+        let mut sim = Simulator::new(&scene, start, tight()).unwrap();
+        let mut strikes = 0;
+        for t in [0.5, 1.0, 2.0] {
+            sim.advance_to(t, |step| strikes += usize::from(step.impact().is_some()))
+                .unwrap();
+            let end = sim.last().end;
+            let reference = reference::sliding_support_steam_generator(&scene, t);
+            let state = [end.q.as_slice(), end.v.as_slice()].concat();
+            let expected = [reference.q, reference.v].concat();
+            let scale = expected.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+            let error = off(&state, &expected, scale);
+            // The pulled plate (gap 1) holds C: its push is −λ of its row.
+            let forces = [end.lambda[0], -end.lambda[2]];
+            let force_error = off(&forces, &reference.lambda, reference.lambda[1].abs());
+            println!(
+                "sliding support, μ = {mu}, t = {t}: state off by {error:.1e}, forces by \
+                 {force_error:.1e}"
+            );
+            assert!(error < 1e-8, "μ = {mu}, t = {t}: state off by {error:e}");
+            assert!(
+                force_error < 1e-8,
+                "μ = {mu}, t = {t}: forces off by {force_error:e}"
+            );
+        }
+        assert_eq!(strikes, 1, "μ = {mu}");
     }
 }

@@ -61,7 +61,9 @@ step count
 or  FAIL,<setting>,<message>
 with setting the step count as given. cpu_seconds is the CPU time (time.process_time) of the
 integration loop (each run builds a fresh model first, outside the timing): the median of 3 runs
-after a warm-up, or the warm-up's time alone when it took over 1 s.
+after a warm-up, or the warm-up's time alone when it took over 1 s. OpenBLAS, which Siconos'
+algebra calls, is held to one thread (OPENBLAS_NUM_THREADS=1 unless the caller sets it): its idle
+workers otherwise spin and triple the process CPU time on these tiny systems.
 """
 import ctypes
 import math
@@ -69,6 +71,12 @@ import os
 import sys
 import tempfile
 import time
+
+# Siconos' dense algebra goes through OpenBLAS (the pthread build here). On these 2x2 systems its
+# worker threads only spin: with them, process_time (which counts every thread) came out about 3x
+# larger, mostly system time (1e5 incline steps: 1.29 s against 0.44 s). One thread, unless the
+# caller says otherwise; it must be set before numpy or Siconos loads the library.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import numpy as np
 

@@ -2,6 +2,7 @@
 //! any tolerance the tests use.
 
 use super::contact::{Ball, WallPendulum};
+use super::friction::SlidingSupportSteamGenerator;
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
 use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
@@ -302,6 +303,128 @@ pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
         }
     }
     t + 0.5 * (lo + hi)
+}
+
+/// The steam generator on its sliding support ([`SlidingSupportSteamGenerator`], plastic
+/// strike `e = 0`) by Newton–Euler in reduced coordinates, phase by phase, to `t`:
+/// - free flight in `(φ, q3)` as in [`steam_generator_first_contact`], until C's travel
+///   `h2 sin φ − h3 q3` reaches the clearance on either side (bisection on RK4 steps);
+/// - the strike: both constraints' velocities brought to zero by the M-orthogonal projection
+///   `v⁺ = v − M⁻¹Gᵀ(G M⁻¹Gᵀ)⁻¹G v` (Newton's law with `e = 0`, no tangential impulse), with
+///   `G` the column's row `(2 q1, 2 (q2 − h2), 0)` and the plate's `±(1, 0, −h3)`;
+/// - slipping along the guide: one degree of freedom φ (`q1 = h2 sin φ`,
+///   `q2 = h2 (1 − cos φ)`, `q3 = (q1 ∓ c)/h3`). The body's three equations
+///   `M q'' = F − G_colᵀ λ + N n − μ σ N e₂`, with `q''` written through `φ''`, are linear in
+///   `φ''`, the column's multiplier `λ` and the plate's push `N ≥ 0` along its normal `n`
+///   (friction against the slip `q2'`, of sign `σ`); solved by Cramer's rule, RK4 at 1e-5 s.
+///
+/// Returns the state, then `[λ_column, N]`; panics where the slip stops or the plate lets go
+/// before `t`, which this reference does not model.
+pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Float) -> State<3, 2> {
+    assert!(s.e == 0.0, "the reference models a plastic strike");
+    let b = &s.base;
+    let h = 1e-5;
+    let free = |t: Float, y: &[Float; 4]| -> [Float; 4] {
+        let (phi, w, _q3, w3) = (y[0], y[1], y[2], y[3]);
+        let (sin, cos) = phi.sin_cos();
+        let p = b.load(t);
+        let q_phi = (p - b.d * b.h2 * cos * w) * b.h2 * cos - b.m * b.g * b.h2 * sin;
+        [w, q_phi / (b.m * b.h2 * b.h2), w3, p * b.h1 / b.j]
+    };
+    let travel = |y: &[Float; 4]| b.h2 * y[0].sin() - b.h3 * y[2];
+    let mut y = rk4(free, 0.0, [0.0; 4], b.rise, (b.rise / h).round() as usize);
+    let mut t0 = b.rise;
+    loop {
+        let next = rk4(free, t0, y, t0 + h, 1);
+        if travel(&next).abs() >= s.clearance {
+            break;
+        }
+        assert!(t0 + h < t, "no strike before {t}");
+        (t0, y) = (t0 + h, next);
+    }
+    let (mut lo, mut hi) = (0.0, h);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        match travel(&rk4(free, t0, y, t0 + mid, 1)).abs() >= s.clearance {
+            true => hi = mid,
+            false => lo = mid,
+        }
+    }
+    let strike = t0 + 0.5 * (lo + hi);
+    y = rk4(free, t0, y, strike, 1);
+    // The plate struck: +1 pushed (gap 0, travel = +c), −1 pulled (gap 1, travel = −c).
+    let side = travel(&y).signum();
+    let (phi, w) = (y[0], y[1]);
+    let (sin, cos) = phi.sin_cos();
+    let q = [b.h2 * sin, b.h2 * (1.0 - cos), y[2]];
+    let v = [b.h2 * cos * w, b.h2 * sin * w, y[3]];
+    let mass = [b.m, b.m, b.j];
+    let rows = [[2.0 * q[0], 2.0 * (q[1] - b.h2), 0.0], [1.0, 0.0, -b.h3]];
+    let dot = |a: &[Float; 3], c: &[Float; 3]| (0..3).map(|k| a[k] * c[k]).sum::<Float>();
+    let weighted = |i: usize, j: usize| {
+        (0..3)
+            .map(|k| rows[i][k] * rows[j][k] / mass[k])
+            .sum::<Float>()
+    };
+    let (a, c, d) = (weighted(0, 0), weighted(0, 1), weighted(1, 1));
+    let (r0, r1) = (dot(&rows[0], &v), dot(&rows[1], &v));
+    let det = a * d - c * c;
+    let mu = [(d * r0 - c * r1) / det, (a * r1 - c * r0) / det];
+    let v_after: [Float; 3] =
+        core::array::from_fn(|k| v[k] - (rows[0][k] * mu[0] + rows[1][k] * mu[1]) / mass[k]);
+    let w = v_after[0] / (b.h2 * cos);
+    // Slipping along the guide: φ'' and the forces from the body's three equations.
+    let normal = [-side, 0.0, side * b.h3];
+    let slipping = |t: Float, phi: Float, w: Float| -> (Float, [Float; 2]) {
+        let (sin, cos) = phi.sin_cos();
+        let (q1, q2) = (b.h2 * sin, b.h2 * (1.0 - cos));
+        let sigma = (b.h2 * sin * w).signum();
+        let p = b.load(t);
+        let f = [p - b.d * b.h2 * cos * w, -b.m * b.g, p * b.h1];
+        // Columns: φ'', λ (enters as −G_colᵀ λ), N (enters as +N n − μσN e₂).
+        let system = [
+            [b.m * b.h2 * cos, 2.0 * q1, -normal[0]],
+            [b.m * b.h2 * sin, 2.0 * (q2 - b.h2), s.mu * sigma],
+            [b.j * b.h2 * cos / b.h3, 0.0, -normal[2]],
+        ];
+        let rhs = [
+            f[0] + b.m * b.h2 * sin * w * w,
+            f[1] - b.m * b.h2 * cos * w * w,
+            f[2] + b.j * b.h2 * sin * w * w / b.h3,
+        ];
+        let [acc, lambda, push] = solve3(system, rhs);
+        (acc, [lambda, push])
+    };
+    let rhs = |t: Float, y: &[Float; 2]| [y[1], slipping(t, y[0], y[1]).0];
+    let slip = |y: &[Float; 2]| b.h2 * y[0].sin() * y[1];
+    let sigma = slip(&[phi, w]).signum();
+    let steps = ((t - strike) / h).ceil().max(1.0) as usize;
+    let step = (t - strike) / steps as Float;
+    let mut phase = [phi, w];
+    for k in 0..steps {
+        phase = rk4(
+            rhs,
+            strike + k as Float * step,
+            phase,
+            strike + (k + 1) as Float * step,
+            1,
+        );
+        assert!(
+            slip(&phase).signum() == sigma,
+            "the slip stopped before {t}"
+        );
+    }
+    let (phi, w) = (phase[0], phase[1]);
+    let (acc, forces) = slipping(t, phi, w);
+    assert!(forces[1] >= 0.0, "the plate let go before {t}");
+    let _ = acc;
+    let (sin, cos) = phi.sin_cos();
+    let q1 = b.h2 * sin;
+    State {
+        q: [q1, b.h2 * (1.0 - cos), (q1 - side * s.clearance) / b.h3],
+        v: [b.h2 * cos * w, b.h2 * sin * w, b.h2 * cos * w / b.h3],
+        lambda: forces,
+    }
 }
 
 #[cfg(test)]
