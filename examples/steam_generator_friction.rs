@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Parser;
-use scenes::friction::SlidingSupportSteamGenerator;
+use scenes::steam_generator::SlidingSupportSteamGenerator;
 use zeitner::{Options, Simulator, Start, StepControl, StopReason, Vector};
 use zeitner_figures::{write_csv, write_panels, Panel};
 
@@ -102,9 +102,9 @@ fn simulate(scene: &SlidingSupportSteamGenerator, args: &Args) -> Result<Run, ze
     let clock = Instant::now();
     let mut sim = Simulator::new(scene, start, options)?;
     sim.set_stop_time(args.end_time)?;
-    let (b, mu) = (&scene.base, scene.mu);
+    let b = &scene.base;
     let mut run = Run {
-        mu,
+        mu: scene.mu,
         samples: Vec::new(),
         strikes: 0,
         slip_reversals: 0,
@@ -131,18 +131,12 @@ fn simulate(scene: &SlidingSupportSteamGenerator, args: &Args) -> Result<Run, ze
             }
             let p = sim.sample(t.min(end_t))?;
             // Rows: the column, the plates pushed (gap 0) and pulled (gap 1), their slips.
-            let push = -(p.lambda[1] + p.lambda[2]);
-            let slip = p.v[1];
-            // A slipping contact reports no tangential multiplier: Coulomb's force is μ N.
-            let friction = if push > 0.0 && slip.abs() > 1e-9 {
-                -mu * slip.signum() * push
-            } else {
-                -(p.lambda[3] + p.lambda[4])
-            };
+            // The slip rows' multipliers carry the friction, sticking or slipping.
+            let friction = -(p.lambda[3] + p.lambda[4]);
             run.samples.push(Sample {
                 t,
                 q1: p.q[0],
-                v2: slip,
+                v2: p.v[1],
                 travel: p.q[0] - b.h3 * p.q[2],
                 column: 2.0 * b.h2 * p.lambda[0],
                 support: p.lambda[1] - p.lambda[2],

@@ -5,10 +5,9 @@
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{
-    Belt, Incline, PainleveRod, SlidingOscillator, SlidingSupportSteamGenerator,
-};
+use zeitner_scenes::friction::{Belt, Incline, PainleveRod, SlidingOscillator};
 use zeitner_scenes::reference;
+use zeitner_scenes::steam_generator::SlidingSupportSteamGenerator;
 
 fn tight() -> Options {
     Options {
@@ -46,9 +45,15 @@ fn incline_at_one_second(angle_degrees: f64, mu: f64) -> (f64, f64) {
     let reference = incline.released_at_rest(1.0, 1.0);
     let state = [end.q[0], end.q[1], end.v[0], end.v[1]];
     let normal = -end.lambda[0];
+    // The friction force along the slope, `-λ_T`: `μ N` against the slip where it slides,
+    // what holds it (`m g sin θ`) where it sticks.
+    let (sin, _) = incline.angle.sin_cos();
+    let holding = incline.m * incline.g * sin;
+    let friction = holding.min(mu * incline.normal_force());
+    let friction_error = (-end.lambda[1] - friction).abs() / incline.normal_force();
     (
         off(&state, &reference, 1.0),
-        (normal - incline.normal_force()).abs() / incline.normal_force(),
+        ((normal - incline.normal_force()).abs() / incline.normal_force()).max(friction_error),
     )
 }
 
@@ -57,12 +62,18 @@ fn a_block_on_an_incline_slides_as_coulomb_says_and_sticks_where_its_cone_holds_
     // tan 30° = 0.577: slides for μ = 0.3 and 0.0, sticks for μ = 0.6 and 1.0.
     for (mu, slides) in [(0.0, true), (0.3, true), (0.6, false), (1.0, false)] {
         let (error, normal) = incline_at_one_second(30.0, mu);
-        println!("incline 30°, μ = {mu}: state off by {error:.1e}, normal force by {normal:.1e}");
+        println!(
+            "incline 30°, μ = {mu}: state off by {error:.1e}, normal and friction force by \
+             {normal:.1e}"
+        );
         assert!(
             error < 1e-8,
             "μ = {mu} (slides: {slides}): off by {error:e}"
         );
-        assert!(normal < 1e-8, "μ = {mu}: normal force off by {normal:e}");
+        assert!(
+            normal < 1e-8,
+            "μ = {mu}: normal or friction force off by {normal:e}"
+        );
     }
 }
 

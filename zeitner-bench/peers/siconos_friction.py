@@ -50,14 +50,15 @@ Scenes (SI units, a point mass, world x right, y up, g = 9.81 down):
 
 Reported: x, y, vx, vy (world) at T_END, then N and T: the last step's contact impulse P1 in the
 local frame (inter.lambda_(1)) divided by h, N its normal part (>= 0), T its tangential part, the
-friction on the block along the scene's tangent (up the slope; +x on the belt). max_g = |gap(q)| at
+friction on the block along the scene's tangent (up the slope; +x on the belt), printed as
+Zeitner's multipliers of the gap's and the slip's rows (both of unit gradient): -N and -T. max_g = |gap(q)| at
 the end. Siconos prints its solver warnings ("Non smooth solver warning") on the C++ stdout; the
 integration runs with file descriptor 1 sent to a temporary file, and any such warning makes the
 setting FAIL.
 
 Prints once SETUP,<wall_seconds> (the first model built and its simulation initialised), then per
 step count
-    ROW,<setting>,<steps>,<cpu_seconds>,<max_g>,x,y,vx,vy,N,T
+    ROW,<setting>,<steps>,<cpu_seconds>,<max_g>,x,y,vx,vy,-N,-T
 or  FAIL,<setting>,<message>
 with setting the step count as given. cpu_seconds is the CPU time (time.process_time) of the
 integration loop (each run builds a fresh model first, outside the timing): the median of 3 runs
@@ -230,7 +231,10 @@ def main():
                 cpu = sorted(times)[1]
             values, max_g = state()
             normal, tangential = scene.contact()
-            row = ",".join(f"{float(x):.17g}" for x in [*values, normal, tangential])
+            # In Zeitner's convention M q'' = F - G^T lambda, the rows of unit gradient: the
+            # plane's push N along the normal is lambda_N = -N, the friction T along the tangent
+            # lambda_T = -T.
+            row = ",".join(f"{float(x):.17g}" for x in [*values, -normal, -tangential])
             print(f"ROW,{setting},{steps},{cpu:.17g},{max_g:.17g},{row}", flush=True)
         except Exception as error:
             message = str(error).replace("\n", " ").replace(",", ";")[:200]

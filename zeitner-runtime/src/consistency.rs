@@ -420,7 +420,8 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
         Some(m_inv_wt) => {
             let lambda = slipping_multipliers(&directions, &m_inv_wt, &rhs, t)?;
-            (lambda, m_inv_f - m_inv_wt * lambda)
+            // Reported with each slipping contact's friction in its `λ_T`: `M a = F - Gᵀλ`.
+            (model.acting(&lambda), m_inv_f - m_inv_wt * lambda)
         }
     };
     if !(all_finite(a.as_slice()) & all_finite(lambda.as_slice())) {

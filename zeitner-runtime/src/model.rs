@@ -738,9 +738,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// The multipliers as forces act, `λ` masked, with each slipping contact's slip row carrying
-    /// `-μσλ_N` (so that `Gᵀ` of these is `Wᵀλ`, for the derivatives of the constraint force).
+    /// `-μσλ_N` (so that `Gᵀ` of these is `Wᵀλ`: for the derivatives of the constraint force,
+    /// and the multipliers a consistent point reports, its friction in `λ_T`).
     #[inline(always)]
-    fn acting(&self, lambda: &Vector<Z>) -> Vector<Z> {
+    pub fn acting(&self, lambda: &Vector<Z>) -> Vector<Z> {
         let mut acting = self.mask(*lambda);
         if self.slips() {
             let (first, first_slip) = self.masked.firsts();

@@ -3,7 +3,6 @@
 //! in world coordinates with a gap (the contact's normal) and a slip velocity (its tangent), as
 //! a user would state them.
 
-use crate::steam_generator::SteamGenerator;
 use zeitner::{constrained_system, Float};
 
 /// A block (a point mass) on a plane through the origin inclined at `angle` (radians, rising
@@ -282,88 +281,5 @@ impl PainleveRod {
     /// The rod at angle `th`, its lower end on the floor and slipping at `slip` along x.
     pub fn sliding(&self, th: Float, slip: Float) -> ([Float; 3], [Float; 3]) {
         ([0.0, self.l * th.sin(), th], [slip, 0.0, 0.0])
-    }
-}
-
-/// The paper's steam generator whose lateral support at C is a slide bearing: C moves in a
-/// guide with `clearance` on either side, strikes it (Newton's restitution `e`, no tangential
-/// impulse), and then slides along it — vertically, the guide's direction — against Coulomb's
-/// friction `mu`, or sticks. In the paper's linear geometry the rotation moves C across the guide
-/// (`q1 − h3 q3`) and not along it, so C's slip velocity is `q2'`. The question the scene
-/// answers for the support's design: how the friction of the plate changes the forces the
-/// column and the support carry, and whether the support locks the structure.
-#[derive(Clone, Debug)]
-pub struct SlidingSupportSteamGenerator {
-    pub base: SteamGenerator,
-    /// The guide's clearance on either side of C, m.
-    pub clearance: Float,
-    /// Newton's coefficient of restitution where C strikes the guide.
-    pub e: Float,
-    /// Coulomb's coefficient of the guide's plates.
-    pub mu: Float,
-}
-
-impl SlidingSupportSteamGenerator {
-    /// The paper's scene with a 5 mm clearance, a plastic strike (`e = 0`) and steel on PTFE,
-    /// `μ = 0.1`.
-    pub fn paper() -> Self {
-        SlidingSupportSteamGenerator {
-            base: SteamGenerator::paper(),
-            clearance: 0.005,
-            e: 0.0,
-            mu: 0.1,
-        }
-    }
-
-    pub fn load(&self, t: Float) -> Float {
-        self.base.load(t)
-    }
-}
-
-#[constrained_system]
-impl SlidingSupportSteamGenerator {
-    fn mass(&self) -> [Float; 3] {
-        [self.base.m, self.base.m, self.base.j]
-    }
-
-    fn force(
-        &self,
-        [_q1, _q2, _q3]: [Float; 3],
-        [v1, _v2, _v3]: [Float; 3],
-        t: Float,
-    ) -> [Float; 3] {
-        let p = self.load(t);
-        [
-            p - self.base.d * v1,
-            -self.base.m * self.base.g,
-            p * self.base.h1,
-        ]
-    }
-
-    fn constraints(&self, [q1, q2, _q3]: [Float; 3]) -> [Float; 1] {
-        [q1 * q1 + (q2 - self.base.h2).powi(2) - self.base.h2 * self.base.h2]
-    }
-
-    /// C's travel left before it meets the guide's plate, pushed (first) and pulled (second).
-    fn gaps(&self, [q1, _q2, q3]: [Float; 3]) -> [Float; 2] {
-        let travel = q1 - self.base.h3 * q3;
-        [self.clearance - travel, self.clearance + travel]
-    }
-
-    /// C's velocity along the guide, on either plate.
-    fn slips(&self, _q: [Float; 3], [_v1, v2, _v3]: [Float; 3]) -> [Float; 2] {
-        [v2, v2]
-    }
-
-    fn restitution(&self) -> [Float; 2] {
-        [self.e, self.e]
-    }
-
-    fn friction(&self) -> [Float; 2] {
-        [self.mu, self.mu]
-    }
-
-    fn time_events(&self) -> [Float; 2] {
-        [self.base.rise, self.base.off]
     }
 }

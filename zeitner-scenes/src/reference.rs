@@ -2,10 +2,9 @@
 //! any tolerance the tests use.
 
 use super::contact::{Ball, WallPendulum};
-use super::friction::SlidingSupportSteamGenerator;
 use super::pendulum::Pendulum;
 use super::spring_support::SpringSupportedPendulum;
-use super::steam_generator::{SteamGenerator, SteamGeneratorWithGap};
+use super::steam_generator::{SlidingSupportSteamGenerator, SteamGenerator, SteamGeneratorWithGap};
 use zeitner::Float;
 
 /// A reference state and its multipliers at one time.
