@@ -2308,3 +2308,599 @@ impl ::zeitner::__private::ConstrainedSystem<3, 4> for PainleveRod {
         values[0] = s0 * lambda[0] + s0 * lambda[1] - s1 * lambda[2] + s1 * lambda[3];
     }
 }
+#[allow(dead_code)]
+impl Disk {
+    fn mass(&self) -> [Float; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m, 0.5 * self.m * self.r * self.r]
+    }
+    fn force(&self) -> [Float; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [0.0, -self.m * self.g, 0.0]
+    }
+    fn gaps(&self, [_x, y, _phi]: [Float; 3]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y - self.r]
+    }
+    /// The velocity of the disk's lowest point along the floor.
+    fn slips(&self, _q: [Float; 3], [vx, _vy, w]: [Float; 3]) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [vx + self.r * w]
+    }
+    fn restitution(&self) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.e]
+    }
+    fn friction(&self) -> [Float; 1] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<3, 2> for Disk {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 3,
+        position_constraints: 1,
+        velocity_constraints: 1,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 1), (1, 0), (1, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 1)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 2,
+                        cols: 3,
+                        nonzeros: &[(0, 1), (1, 0), (1, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "restitution",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "e",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 1,
+                        cols: 1,
+                        nonzeros: &[(0, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 1usize;
+    const SLIDING_CONTACTS: usize = 1usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 1), (1, 0), (1, 2)],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.r * (0.5 * self.m * self.r);
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<2>::zeros();
+        g[0] = q[1] - self.r;
+        g[1] = v[0] + self.r * v[2];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        g[(1, 2)] = self.r;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<2, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut p = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        p[(0, 1)] = 1.0;
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<2>::zeros();
+        w[0] = v[1];
+        w[1] = v[0] + self.r * v[2];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<2> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<2, 3>,
+        ::zeitner::__private::Vector<2>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<2, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<2>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.r * (0.5 * self.m * self.r);
+        f[1] = -(self.m * self.g);
+        g[(0, 1)] = 1.0;
+        g[(1, 0)] = 1.0;
+        g[(1, 2)] = self.r;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn restitution(&self, gap: usize) -> ::zeitner::__private::Float {
+        let e = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut e = ::zeitner::__private::Vector::<1>::zeros();
+            e[0] = self.e;
+            e
+        };
+        if gap < 1 { e[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<1>::zeros();
+            mu[0] = self.mu;
+            mu
+        };
+        if gap < 1 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = 1.0;
+        values[2] = self.r;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<2>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+}

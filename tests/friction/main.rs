@@ -5,7 +5,7 @@
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{Belt, Incline, PainleveRod, SlidingOscillator};
+use zeitner_scenes::friction::{Belt, Disk, Incline, PainleveRod, SlidingOscillator};
 use zeitner_scenes::reference;
 use zeitner_scenes::steam_generator::SlidingSupportSteamGenerator;
 
@@ -316,7 +316,7 @@ fn painleves_rod_below_the_threshold_or_slipping_the_other_way_carries_the_close
 fn the_steam_generator_on_a_sliding_support_follows_its_reduced_model_through_strike_and_slip() {
     // Free flight on the column, a plastic strike at C, then C slipping along its guide against
     // friction: against the reduced Newton–Euler model in φ (`reference`).
-    for mu in [0.0, 0.1, 0.3] {
+    for mu in [0.0, 0.1, 0.3, 1.0, 3.0, 10.0] {
         let scene = SlidingSupportSteamGenerator {
             mu,
             ..SlidingSupportSteamGenerator::paper()
@@ -351,5 +351,54 @@ fn the_steam_generator_on_a_sliding_support_follows_its_reduced_model_through_st
             );
         }
         assert_eq!(strikes, 1, "μ = {mu}");
+    }
+}
+
+#[test]
+fn a_disk_striking_a_rough_floor_gets_coulombs_tangential_impulse_slipping_through_or_rolling() {
+    // Dropped 0.2 m with 1 m/s sideways and no spin, it strikes at 1.98 m/s: the impulse stops
+    // its lowest point's slip where μ (1 + e) |vy| ≥ vx / 3, and takes μ P off it otherwise.
+    let (height, vx) = (0.2, 1.0);
+    for (mu, e) in [(0.05, 0.5), (0.1, 0.0), (0.3, 0.5), (0.0, 0.8), (1.0, 0.0)] {
+        let disk = Disk {
+            m: 2.0,
+            r: 0.1,
+            g: 9.81,
+            mu,
+            e,
+        };
+        let start = Start {
+            q: Vector::<3>::new(0.0, disk.r + height, 0.0),
+            v: Vector::<3>::new(vx, 0.0, 0.0),
+            t: 0.0,
+        };
+        let mut sim = Simulator::new(&disk, start, tight()).unwrap();
+        let mut strike = None;
+        sim.advance_to(0.3, |step| {
+            if let Some(impact) = step.impact() {
+                strike.get_or_insert(*impact);
+            }
+        })
+        .unwrap();
+        let impact = strike.expect("it strikes the floor");
+        let vy = -(2.0 * disk.g * height).sqrt();
+        let expected = disk.after_strike(vx, vy);
+        let error = off(impact.velocity_after.as_slice(), &expected, vx);
+        // The floor's impulses: pushing (negative), and the friction's −m Δẋ.
+        let push = disk.m * (1.0 + e) * -vy;
+        let friction = disk.m * (vx - expected[0]);
+        let impulse_error = off(
+            &[-impact.impulse[0], impact.impulse[1]],
+            &[push, friction],
+            push,
+        );
+        println!(
+            "disk striking at μ = {mu}, e = {e}: velocities off by {error:.1e}, impulses by \
+             {impulse_error:.1e}, energy lost {:.4} J",
+            impact.energy_lost
+        );
+        assert!(error < 1e-9, "μ = {mu}, e = {e}: {error:e}");
+        assert!(impulse_error < 1e-9, "μ = {mu}, e = {e}: {impulse_error:e}");
+        assert!(impact.energy_lost >= 0.0);
     }
 }

@@ -25,34 +25,108 @@ pub struct Peer {
     pub leading_args: &'static [&'static str],
     /// Fixed-step peers take step counts; adaptive ones relative tolerances.
     pub fixed_steps: bool,
+    /// Where its Python comes from.
+    pub python: PeerPython,
+    /// A fixed-step peer's step sizes, where the common ones are not its own (a first-order
+    /// scheme reaches the errors of the others only with far smaller steps).
+    pub step_sizes: Option<&'static [f64]>,
 }
 
-pub const PEERS: [Peer; 4] = [
+/// The Python a peer runs in.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum PeerPython {
+    /// The virtual environment of [`python`] (pip's casadi and exudyn).
+    Venv,
+    /// The system's Python with a Debian package ([`debian_python`]).
+    Debian {
+        package: &'static str,
+        module: &'static str,
+    },
+}
+
+pub const PEERS: [Peer; 5] = [
     Peer {
         name: "peer-casadi-idas",
         script: "casadi_idas.py",
         leading_args: &["vm"],
         fixed_steps: false,
+        python: PeerPython::Venv,
+        step_sizes: None,
     },
     Peer {
         name: "peer-casadi-idas-c",
         script: "casadi_idas.py",
         leading_args: &["codegen"],
         fixed_steps: false,
+        python: PeerPython::Venv,
+        step_sizes: None,
     },
     Peer {
         name: "peer-exudyn-ga",
         script: "exudyn_ga.py",
         leading_args: &["ga"],
         fixed_steps: true,
+        python: PeerPython::Venv,
+        step_sizes: None,
     },
     Peer {
         name: "peer-exudyn-trapezoidal",
         script: "exudyn_ga.py",
         leading_args: &["trapezoidal"],
         fixed_steps: true,
+        python: PeerPython::Venv,
+        step_sizes: None,
+    },
+    Peer {
+        name: "peer-siconos-moreau-jean",
+        script: "siconos_friction.py",
+        leading_args: &[],
+        fixed_steps: true,
+        python: PeerPython::Debian {
+            package: "python3-siconos",
+            module: "siconos.kernel",
+        },
+        // First order where a transition falls inside a step: the incline reaches 1e-6 only
+        // with 1e-7 s steps (1.6e-6 at 1e-6 s).
+        step_sizes: Some(&[1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7]),
     },
 ];
+
+/// The system's Python (`/usr/bin/python3`, where Debian installs its Python packages) with
+/// `module` importable, installing `package` with apt-get on first use (as root, as on the
+/// benchmark's machines). `Err` says why the peer is unavailable.
+pub fn debian_python(package: &str, module: &str) -> Result<PathBuf, String> {
+    let python = PathBuf::from("/usr/bin/python3");
+    let ready = || {
+        Command::new(&python)
+            .args(["-c", &format!("import {module}")])
+            .output()
+            .map(|o| o.status.success())
+            .unwrap_or(false)
+    };
+    if ready() {
+        return Ok(python);
+    }
+    eprintln!("installing {package} with apt-get …");
+    let installed = Command::new("sh")
+        .args([
+            "-c",
+            &format!("apt-get update -qq && apt-get install -y -qq {package} > /dev/null"),
+        ])
+        .status();
+    if !matches!(installed, Ok(s) if s.success()) {
+        return Err(format!(
+            "apt-get install {package} failed (Debian, as root, with its mirror reachable?)"
+        ));
+    }
+    if ready() {
+        Ok(python)
+    } else {
+        Err(format!(
+            "{module} does not import after installing {package}"
+        ))
+    }
+}
 
 /// A Python with the peers installed, in a virtual environment under `dir`; created on first
 /// use. `Err` says why the peers are unavailable.

@@ -444,7 +444,7 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 /// free motion would close it) or two (where it would open it: lifting off, or a larger push).
 /// Frictionless, the system is symmetric positive definite and every such entry positive.
 #[cold]
-fn slipping_multipliers<F, const N: usize, const Z: usize>(
+pub(crate) fn slipping_multipliers<F, const N: usize, const Z: usize>(
     directions: &ConstraintDirections<F, N, Z>,
     m_inv_wt: &Matrix<N, Z>,
     rhs: &Vector<Z>,

@@ -8,7 +8,7 @@
 //! impulse would pull is dropped from the problem and solved again (an active set, which
 //! settles simultaneous impacts consistently).
 
-use crate::consistency::consistent_point;
+use crate::consistency::{consistent_point, slipping_multipliers};
 use crate::error::StepError;
 use crate::gaps::GapSet;
 use crate::linalg::solve_spd;
@@ -202,31 +202,26 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         }
     }
     let closed_before = all.without(model.open_gaps());
-    // Frictionless: no slip row holds through the impulse (the contacts stick or slip after it,
-    // as their slip velocities then say).
-    model.set_slipping((GapSet::first(S::SLIDING_CONTACTS), GapSet::EMPTY));
     let energy = |model: &Model<'_, S, N, Z>, w: &Vector<N>| {
         0.5 * w.dot(&model.system.mass_matrix(q, t).mul(w))
     };
     let before = energy(model, v);
-    let mut solved = impulse(
-        model,
-        (q, v, t),
-        (closed_before, impacting),
-        &coefficients,
-        &rates,
-    )?;
-    if energy(model, &solved.1) > before * (1.0 + crate::scalar::floors::ENERGY_SLACK) {
-        // Inelastic: the impulse is then an M-orthogonal projection, which cannot add energy.
+    let gains = |model: &Model<'_, S, N, Z>, w: &Vector<N>| {
+        energy(model, w) > before * (1.0 + crate::scalar::floors::ENERGY_SLACK)
+    };
+    let contacts = (closed_before, impacting);
+    let mut solved = impulse(model, (q, v, t), contacts, &coefficients, &rates, COULOMB)?;
+    if gains(model, &solved.1) {
+        // Inelastic; and where Newton's and Coulomb's laws together still add energy (as they
+        // can), frictionless too: the impulse is then an M-orthogonal projection, which cannot.
         coefficients = [0.0; MAX_GAPS];
-        model.set_open_gaps(all.without(closed_before));
-        solved = impulse(
-            model,
-            (q, v, t),
-            (closed_before, impacting),
-            &coefficients,
-            &rates,
-        )?;
+        for friction in [COULOMB, FRICTIONLESS] {
+            model.set_open_gaps(all.without(closed_before));
+            solved = impulse(model, (q, v, t), contacts, &coefficients, &rates, friction)?;
+            if !gains(model, &solved.1) {
+                break;
+            }
+        }
     }
     let (impulse, after, active) = solved;
     let bouncing = {
@@ -256,10 +251,21 @@ pub(crate) fn impact<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
     })
 }
 
+/// Coulomb's law at the contacts during an impulse, or none (every slip row free).
+const COULOMB: bool = true;
+const FRICTIONLESS: bool = false;
+
 /// The impulse problem with the contacts `closed` (kept at `ġ = 0`) and `impacting` (sent to
 /// `ġ⁺ = -e ġ⁻` with the given coefficients), bilateral rows kept: a gap whose impulse would pull
 /// leaves the problem, which is solved again. Returns the impulse, the velocities after it and
 /// the gaps that took part.
+///
+/// With `coulomb`, each contact of the problem with friction sticks (`ṡ⁺ = 0`, its tangential
+/// impulse within `μ|Λ_N|`) or slips (`-μσ|Λ_N|` against the slip `σ` after the impulse), as
+/// the slip velocities before suggest; a sticking contact its cone cannot hold slips, in the
+/// direction its impulse pushed against, and a slipping one whose slip the friction reverses
+/// sticks, one change at a time, until both laws hold (Glocker and Pfeiffer's impact law with
+/// Newton's restitution, the few contacts' complementarity problem solved by pivoting).
 #[allow(clippy::type_complexity)]
 fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -267,10 +273,69 @@ fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     (closed, impacting): (GapSet, GapSet),
     coefficients: &[Float; MAX_GAPS],
     rates: &[Float; MAX_GAPS],
+    coulomb: bool,
+) -> Result<(Vector<Z>, Vector<N>, GapSet), StepError> {
+    let sliding = GapSet::first(S::SLIDING_CONTACTS);
+    let coulomb = coulomb && S::SLIDING_CONTACTS > 0;
+    if coulomb {
+        let slips = model.slip_rates(q, v, t)?;
+        let (mut slipping, mut forward) = (GapSet::EMPTY, GapSet::EMPTY);
+        for k in sliding.iter() {
+            // Frictionless contacts slip, whatever their slip velocity.
+            if slips[k] != 0.0 || model.system.friction(k) == 0.0 {
+                slipping.insert(k);
+            }
+            if slips[k] > 0.0 {
+                forward.insert(k);
+            }
+        }
+        model.set_slipping((slipping, forward));
+    } else {
+        // No slip row holds through the impulse (the contacts stick or slip after it, as
+        // their slip velocities then say).
+        model.set_slipping((sliding, GapSet::EMPTY));
+    }
+    let mut active = closed.union(impacting);
+    // Each pass changes one contact's sticking or slipping, which one contact can need twice.
+    for _ in 0..=2 * S::SLIDING_CONTACTS {
+        let (impulse, after);
+        (impulse, after, active) = normal_impulse(
+            model,
+            (q, v, t),
+            (active, impacting),
+            coefficients,
+            rates,
+            coulomb,
+        )?;
+        if !coulomb {
+            return Ok((impulse, after, active));
+        }
+        match revised_friction(model, (q, &after, t), &impulse, active)? {
+            Some(modes) => model.set_slipping(modes),
+            None => return Ok((impulse, after, active)),
+        }
+    }
+    Err(StepError::NoConsistentFriction {
+        t,
+        gaps: active.intersection(sliding),
+    })
+}
+
+/// The impulse with the contacts' sticking and slipping as the model has them: the gaps in
+/// `active`, less those whose impulse would pull. With `coulomb` the slipping contacts' friction
+/// acts (the unsymmetric system, solved by LU; the impulse returned with each slipping contact's
+/// friction in its tangential entry, as the multipliers are reported).
+#[allow(clippy::type_complexity)]
+fn normal_impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    (mut active, impacting): (GapSet, GapSet),
+    coefficients: &[Float; MAX_GAPS],
+    rates: &[Float; MAX_GAPS],
+    coulomb: bool,
 ) -> Result<(Vector<Z>, Vector<N>, GapSet), StepError> {
     let all = GapSet::first(S::UNILATERAL_CONSTRAINTS);
     let first = S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS;
-    let mut active = closed.union(impacting);
     let mut impulse = Vector::<Z>::zeros();
     let mut after = *v;
     for _ in 0..=S::UNILATERAL_CONSTRAINTS {
@@ -280,14 +345,26 @@ fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         for k in impacting.iter().filter(|&k| active.contains(k)) {
             rhs[first + k] += coefficients[k] * rates[k];
         }
-        let gram = directions.gram();
-        impulse = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
-            StepError::RankDeficientConstraints {
-                t,
-                dependent_rows: rows,
+        let slipping = match coulomb {
+            true => model.slipping_directions((q, v, t), &directions)?,
+            false => None,
+        };
+        (impulse, after) = match slipping {
+            None => {
+                let gram = directions.gram();
+                let impulse = solve_spd(&gram, &rhs, S::POSITION_CONSTRAINTS).map_err(|rows| {
+                    StepError::RankDeficientConstraints {
+                        t,
+                        dependent_rows: rows,
+                    }
+                })?;
+                (impulse, v - directions.m_inv_gt * impulse)
             }
-        })?;
-        after = v - directions.m_inv_gt * impulse;
+            Some(m_inv_wt) => {
+                let impulse = slipping_multipliers(&directions, &m_inv_wt, &rhs, t)?;
+                (model.acting(&impulse), v - m_inv_wt * impulse)
+            }
+        };
         let pulling = active.iter().find(|&k| impulse[first + k] > 0.0);
         match pulling {
             Some(k) => active.remove(k),
@@ -295,4 +372,49 @@ fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
     }
     Ok((impulse, after, active))
+}
+
+/// The one change of sticking or slipping an impulse needs, if any: the active sticking contact
+/// farthest outside its cone slips (forwards where its impulse pushed backwards), else an active
+/// slipping contact whose slip the friction reversed (`(q, after, t)`) sticks.
+fn revised_friction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, after, t): (&Vector<N>, &Vector<N>, Float),
+    impulse: &Vector<Z>,
+    active: GapSet,
+) -> Result<Option<(GapSet, GapSet)>, StepError> {
+    let (mut slipping, mut forward) = model.slipping();
+    let contacts = active.intersection(GapSet::first(S::SLIDING_CONTACTS));
+    let level = RELEASE * impulse.amax();
+    let beyond = contacts
+        .without(slipping)
+        .iter()
+        .map(|k| (k, model.cone_margin(k, impulse)))
+        .filter(|&(_, (margin, _))| margin < -level)
+        .fold(
+            None,
+            |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
+                Some((_, w)) if w.0 <= m.0 => worst,
+                _ => Some((k, m)),
+            },
+        );
+    if let Some((k, (_, forwards))) = beyond {
+        slipping.insert(k);
+        match forwards {
+            true => forward.insert(k),
+            false => forward.remove(k),
+        }
+        return Ok(Some((slipping, forward)));
+    }
+    let slips = model.slip_rates(q, after, t)?;
+    let scale = slips.iter().fold(0.0, |m: Float, s| m.max(s.abs()));
+    let reversed = contacts.intersection(slipping).iter().find(|&k| {
+        let sign = if forward.contains(k) { 1.0 } else { -1.0 };
+        model.system.friction(k) > 0.0 && sign * slips[k] < -RELEASE * scale
+    });
+    Ok(reversed.map(|k| {
+        slipping.remove(k);
+        forward.remove(k);
+        (slipping, forward)
+    }))
 }

@@ -283,3 +283,59 @@ impl PainleveRod {
         ([0.0, self.l * th.sin(), th], [slip, 0.0, 0.0])
     }
 }
+
+/// A uniform disk of mass `m` and radius `r` (coordinates: its centre `x, y` and its angle `φ`,
+/// counter-clockwise) over a rough floor (friction `mu`, restitution `e`): the oblique impact of
+/// the textbooks, and rolling after it.
+#[derive(Clone, Debug)]
+pub struct Disk {
+    pub m: Float,
+    pub r: Float,
+    pub g: Float,
+    pub mu: Float,
+    pub e: Float,
+}
+
+#[constrained_system]
+impl Disk {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, 0.5 * self.m * self.r * self.r]
+    }
+
+    fn force(&self) -> [Float; 3] {
+        [0.0, -self.m * self.g, 0.0]
+    }
+
+    fn gaps(&self, [_x, y, _phi]: [Float; 3]) -> [Float; 1] {
+        [y - self.r]
+    }
+
+    /// The velocity of the disk's lowest point along the floor.
+    fn slips(&self, _q: [Float; 3], [vx, _vy, w]: [Float; 3]) -> [Float; 1] {
+        [vx + self.r * w]
+    }
+
+    fn restitution(&self) -> [Float; 1] {
+        [self.e]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl Disk {
+    /// `(ẋ, ẏ, φ̇)` right after the disk, not spinning, strikes the floor at `(vx, vy)`,
+    /// `vx > 0 > vy`: the floor's impulse `P = m (1 + e) |vy|` and a tangential one `F` that
+    /// takes `3 F / m` off the lowest point's slip `vx` (`F / m` off `ẋ`, `2 F / (m r)` off `φ̇`):
+    /// `F = μ P` where that leaves it slipping, `F = m vx / 3` (rolling) where it does not.
+    pub fn after_strike(&self, vx: Float, vy: Float) -> [Float; 3] {
+        let normal = self.m * (1.0 + self.e) * -vy;
+        let tangential = (self.mu * normal).min(self.m * vx / 3.0);
+        [
+            vx - tangential / self.m,
+            -self.e * vy,
+            -2.0 * tangential / (self.m * self.r),
+        ]
+    }
+}

@@ -308,9 +308,11 @@ pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
 /// strike `e = 0`) by Newton–Euler in reduced coordinates, phase by phase, to `t`:
 /// - free flight in `(φ, q3)` as in [`steam_generator_first_contact`], until C's travel
 ///   `h2 sin φ − h3 q3` reaches the clearance on either side (bisection on RK4 steps);
-/// - the strike: both constraints' velocities brought to zero by the M-orthogonal projection
-///   `v⁺ = v − M⁻¹Gᵀ(G M⁻¹Gᵀ)⁻¹G v` (Newton's law with `e = 0`, no tangential impulse), with
-///   `G` the column's row `(2 q1, 2 (q2 − h2), 0)` and the plate's `±(1, 0, −h3)`;
+/// - the strike: both constraints' velocities brought to zero (Newton's law with `e = 0`) by
+///   the column's impulse, the plate's push `P` and Coulomb's `μP` against C's slip along the
+///   guide where that leaves it slipping; where it does not, all three velocities brought to
+///   zero (the three rows are independent), and the body then held at rest while the cone
+///   holds its forces, or slipping from rest against the force the cone could not hold;
 /// - slipping along the guide: one degree of freedom φ (`q1 = h2 sin φ`,
 ///   `q2 = h2 (1 − cos φ)`, `q3 = (q1 ∓ c)/h3`). The body's three equations
 ///   `M q'' = F − G_colᵀ λ + N n − μ σ N e₂`, with `q''` written through `φ''`, are linear in
@@ -318,7 +320,7 @@ pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
 ///   (friction against the slip `q2'`, of sign `σ`); solved by Cramer's rule, RK4 at 1e-5 s.
 ///
 /// Returns the state, then `[λ_column, N]`; panics where the slip stops or the plate lets go
-/// before `t`, which this reference does not model.
+/// before `t`, or the load changes while the body is held, which this reference does not model.
 pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Float) -> State<3, 2> {
     assert!(s.e == 0.0, "the reference models a plastic strike");
     let b = &s.base;
@@ -358,26 +360,32 @@ pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Floa
     let q = [b.h2 * sin, b.h2 * (1.0 - cos), y[2]];
     let v = [b.h2 * cos * w, b.h2 * sin * w, y[3]];
     let mass = [b.m, b.m, b.j];
-    let rows = [[2.0 * q[0], 2.0 * (q[1] - b.h2), 0.0], [1.0, 0.0, -b.h3]];
-    let dot = |a: &[Float; 3], c: &[Float; 3]| (0..3).map(|k| a[k] * c[k]).sum::<Float>();
-    let weighted = |i: usize, j: usize| {
-        (0..3)
-            .map(|k| rows[i][k] * rows[j][k] / mass[k])
-            .sum::<Float>()
-    };
-    let (a, c, d) = (weighted(0, 0), weighted(0, 1), weighted(1, 1));
-    let (r0, r1) = (dot(&rows[0], &v), dot(&rows[1], &v));
-    let det = a * d - c * c;
-    let mu = [(d * r0 - c * r1) / det, (a * r1 - c * r0) / det];
-    let v_after: [Float; 3] =
-        core::array::from_fn(|k| v[k] - (rows[0][k] * mu[0] + rows[1][k] * mu[1]) / mass[k]);
-    let w = v_after[0] / (b.h2 * cos);
-    // Slipping along the guide: φ'' and the forces from the body's three equations.
+    // The column's row, the plate's normal (its push acts along it) and the guide's direction.
+    let column = [2.0 * q[0], 2.0 * (q[1] - b.h2), 0.0];
     let normal = [-side, 0.0, side * b.h3];
-    let slipping = |t: Float, phi: Float, w: Float| -> (Float, [Float; 2]) {
+    let along = [0.0, 1.0, 0.0];
+    let dot = |a: &[Float; 3], c: &[Float; 3]| (0..3).map(|k| a[k] * c[k]).sum::<Float>();
+    let weighted =
+        |a: &[Float; 3], c: &[Float; 3]| (0..3).map(|k| a[k] * c[k] / mass[k]).sum::<Float>();
+    // The strike slipping: `M Δv = −column Λ + P (normal − μσ along)`, with the column's and
+    // the plate's rates zero after it; solved for (Λ, P).
+    let sigma = (b.h2 * sin * w).signum();
+    let pushing: [Float; 3] = core::array::from_fn(|k| normal[k] - s.mu * sigma * along[k]);
+    let (a, c) = (weighted(&column, &column), weighted(&column, &pushing));
+    let (d, e) = (weighted(&normal, &column), weighted(&normal, &pushing));
+    let (r0, r1) = (dot(&column, &v), dot(&normal, &v));
+    // −a Λ + c P = −r0, −d Λ + e P = −r1.
+    let det = -a * e + c * d;
+    let (column_impulse, push) = ((-r0 * e + c * r1) / det, (-a * -r1 - -d * -r0) / det);
+    let slid: [Float; 3] = core::array::from_fn(|k| {
+        v[k] + (-column[k] * column_impulse + push * pushing[k]) / mass[k]
+    });
+    let (mut w, mut sigma) = (slid[0] / (b.h2 * cos), sigma);
+    let slips_on = sigma * slid[1] > 0.0;
+    // Slipping along the guide: φ'' and the forces from the body's three equations.
+    let slipping = |t: Float, phi: Float, w: Float, sigma: Float| -> (Float, [Float; 2]) {
         let (sin, cos) = phi.sin_cos();
         let (q1, q2) = (b.h2 * sin, b.h2 * (1.0 - cos));
-        let sigma = (b.h2 * sin * w).signum();
         let p = b.load(t);
         let f = [p - b.d * b.h2 * cos * w, -b.m * b.g, p * b.h1];
         // Columns: φ'', λ (enters as −G_colᵀ λ), N (enters as +N n − μσN e₂).
@@ -394,9 +402,36 @@ pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Floa
         let [acc, lambda, push] = solve3(system, rhs);
         (acc, [lambda, push])
     };
-    let rhs = |t: Float, y: &[Float; 2]| [y[1], slipping(t, y[0], y[1]).0];
+    if !slips_on {
+        // The friction stopped the slip: the three rows hold every velocity at zero, with an
+        // impulse `M(0 − v) = −column Λ + P normal + T along` inside the cone.
+        let columns = |a: &[Float; 3], c: &[Float; 3], e: &[Float; 3]| {
+            [[a[0], c[0], e[0]], [a[1], c[1], e[1]], [a[2], c[2], e[2]]]
+        };
+        let minus_column = column.map(|x| -x);
+        let momentum: [Float; 3] = core::array::from_fn(|k| -mass[k] * v[k]);
+        let [_, push, tangential] = solve3(columns(&minus_column, &normal, &along), momentum);
+        assert!(tangential.abs() <= s.mu * push, "the strike does not stick");
+        // At rest: held, `F − column λ + N normal + T along = 0`, while the cone holds it.
+        let p = b.load(strike);
+        let f = [p, -b.m * b.g, p * b.h1];
+        let held = solve3(columns(&minus_column, &normal, &along), f.map(|x| -x));
+        if held[2].abs() <= s.mu * held[1] {
+            assert!(
+                strike > b.rise && b.off > t,
+                "the load changes while it is held"
+            );
+            return State {
+                q: [q[0], q[1], (q[0] - side * s.clearance) / b.h3],
+                v: [0.0; 3],
+                lambda: [held[0], held[1]],
+            };
+        }
+        // It slips against the force that could not hold it.
+        (w, sigma) = (0.0, -held[2].signum());
+    }
+    let rhs = |t: Float, y: &[Float; 2]| [y[1], slipping(t, y[0], y[1], sigma).0];
     let slip = |y: &[Float; 2]| b.h2 * y[0].sin() * y[1];
-    let sigma = slip(&[phi, w]).signum();
     let steps = ((t - strike) / h).ceil().max(1.0) as usize;
     let step = (t - strike) / steps as Float;
     let mut phase = [phi, w];
@@ -414,9 +449,8 @@ pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Floa
         );
     }
     let (phi, w) = (phase[0], phase[1]);
-    let (acc, forces) = slipping(t, phi, w);
+    let (_, forces) = slipping(t, phi, w, sigma);
     assert!(forces[1] >= 0.0, "the plate let go before {t}");
-    let _ = acc;
     let (sin, cos) = phi.sin_cos();
     let q1 = b.h2 * sin;
     State {

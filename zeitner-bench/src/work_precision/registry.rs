@@ -9,6 +9,7 @@ use crate::scaling::scenes::{
 };
 use crate::scenes::andrews::Andrews;
 use crate::scenes::contact::{Ball, WallPendulum};
+use crate::scenes::friction::{Belt, Incline};
 use crate::scenes::knife_edge::KnifeEdge;
 use crate::scenes::modal::Modes;
 use crate::scenes::pendulum::Pendulum;
@@ -22,8 +23,8 @@ use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepCon
 use super::large::{large_scene, Large};
 use super::methods::Method;
 use super::scene::{
-    flattened, measure, no_own_methods, relative_to_largest, rust_peers, worst_relative, Runner,
-    Scene,
+    flattened, measure, no_own_methods, relative_to_largest, rust_peers, worst_relative,
+    PeerRunner, Runner, Scene,
 };
 
 /// One scene of the benchmark.
@@ -150,6 +151,33 @@ pub const SCENES: &[Entry] = &[
             construct: "scenes::slider_crank::SliderCrankOnAxis::nominal()",
             start: "scenes::slider_crank::SliderCrankOnAxis::nominal()\
                     .at_rest(30f64.to_radians())",
+            t_end: 2.0,
+        },
+    },
+    Entry {
+        name: "incline",
+        build: incline_scene,
+        script_peers: &["peer-siconos-moreau-jean"],
+        user_crate: SceneCrate {
+            // The file holds three more friction scenes, which this crate compiles too.
+            scene: "incline",
+            source: Source::Example("friction"),
+            construct: "scenes::friction::Incline { m: 1.0, g: 9.81, angle: 30f64.to_radians(), \
+                        mu: 0.3 }",
+            start: "(Vector::<2>::zeros(), Vector::<2>::new(2.0 * 30f64.to_radians().cos(), \
+                    2.0 * 30f64.to_radians().sin()))",
+            t_end: 1.0,
+        },
+    },
+    Entry {
+        name: "belt",
+        build: belt_scene,
+        script_peers: &["peer-siconos-moreau-jean"],
+        user_crate: SceneCrate {
+            scene: "belt",
+            source: Source::Example("friction"),
+            construct: "scenes::friction::Belt::example()",
+            start: "(Vector::<2>::zeros(), Vector::<2>::new(0.3, 0.0))",
             t_end: 2.0,
         },
     },
@@ -312,6 +340,75 @@ fn bouncing_ball_scene() -> Result<Scene, String> {
         own_methods: no_own_methods,
         run_rust_peers: rust_peers::<_, 1, 1, 2, 3>(Ball { ..scene }, start, t_end),
         run: to_the_end("bouncing_ball", scene, start, t_end, None),
+    })
+}
+
+/// No in-process peer models friction: they integrate the frictionless index-1 form.
+fn no_rust_peers() -> PeerRunner {
+    Box::new(|_| Vec::new())
+}
+
+fn incline_scene() -> Result<Scene, String> {
+    let (t_end, speed) = (1.0, 2.0);
+    let scene = Incline {
+        m: 1.0,
+        g: 9.81,
+        angle: 30f64.to_radians(),
+        mu: 0.3,
+    };
+    let [x, y, vx, vy] = scene.sent_up_the_slope(speed, t_end);
+    // Sliding down at the end: the plane pushes N, friction μN acts up the slope.
+    let normal = scene.normal_force();
+    let reference = State {
+        q: [x, y],
+        v: [vx, vy],
+        lambda: [-normal, -scene.mu * normal],
+    };
+    let (sin, cos) = scene.angle.sin_cos();
+    let start = (Vector::zeros(), Vector::<2>::new(speed * cos, speed * sin));
+    Ok(Scene {
+        name: "incline",
+        title: "A block sent up a 30° incline at 2 m/s, μ = 0.3: it stops at 0.27 s and slides \
+                back down, 1 s",
+        t_end,
+        constraint_tolerance: 1e-12,
+        tightest_rtol: 0.0,
+        reference: flattened(&reference),
+        large: false,
+        error_measure: worst_relative,
+        velocity_rows: has_velocity_rows(&scene),
+        own_methods: no_own_methods,
+        run_rust_peers: no_rust_peers(),
+        run: to_the_end("incline", scene, start, t_end, None),
+    })
+}
+
+fn belt_scene() -> Result<Scene, String> {
+    let t_end = 2.0;
+    let scene = Belt::example();
+    let [x, vx] = scene.motion(t_end);
+    // Slipping behind the belt at the end: friction μ m g pushes the mass along +x.
+    let weight = scene.m * scene.g;
+    let reference = State {
+        q: [x, 0.0],
+        v: [vx, 0.0],
+        lambda: [-weight, -scene.mu * weight],
+    };
+    let start = (Vector::zeros(), Vector::<2>::new(scene.belt, 0.0));
+    Ok(Scene {
+        name: "belt",
+        title: "A mass on a spring riding a belt, μ = 0.4: it sticks to 0.26 s, then slips, its \
+                slip speed grazing zero once a period, 2 s",
+        t_end,
+        constraint_tolerance: 1e-12,
+        tightest_rtol: 0.0,
+        reference: flattened(&reference),
+        large: false,
+        error_measure: worst_relative,
+        velocity_rows: has_velocity_rows(&scene),
+        own_methods: no_own_methods,
+        run_rust_peers: no_rust_peers(),
+        run: to_the_end("belt", scene, start, t_end, None),
     })
 }
 

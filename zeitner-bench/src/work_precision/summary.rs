@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use crate::figure;
 use crate::measure::{cpu_seconds, median};
-use crate::peers;
+use crate::peers::{self, PeerPython};
 use crate::scenes;
 use zeitner::{ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, Vector};
 
@@ -31,36 +31,50 @@ pub fn peer_rows(
     };
     let mut rows = Vec::new();
     let mut setups = Vec::new();
-    match peers::python(&args.output_dir) {
-        Ok(python) => {
-            for peer in &peers::PEERS {
-                let modelled = scenes
-                    .iter()
-                    .filter(|(entry, _)| entry.script_peers.contains(&peer.name));
-                for (_, scene) in modelled {
-                    let (rtols, step_sizes) = large_settings(scene, rtols, step_sizes);
-                    let settings: Vec<f64> = if peer.fixed_steps {
-                        step_sizes
-                            .iter()
-                            .map(|h| (scene.t_end / h).round())
-                            .collect()
-                    } else {
-                        rtols.to_vec()
-                    };
-                    let (runs, setup) = peers::run(
-                        &python,
-                        peer,
-                        scene.name,
-                        scene.t_end,
-                        &settings,
-                        scene.reference.0.len(),
-                    );
-                    rows.extend(runs.into_iter().map(|run| peer_row(scene, peer.name, run)));
-                    setups.extend(setup.map(|seconds| (scene.name, peer.name, seconds)));
-                }
-            }
+    for peer in &peers::PEERS {
+        let mut modelled = scenes
+            .iter()
+            .filter(|(entry, _)| entry.script_peers.contains(&peer.name))
+            .peekable();
+        if modelled.peek().is_none() {
+            continue;
         }
-        Err(reason) => println!("Python peers unavailable: {reason}"),
+        let python = match peer.python {
+            PeerPython::Venv => peers::python(&args.output_dir),
+            PeerPython::Debian { package, module } => peers::debian_python(package, module),
+        };
+        let python = match python {
+            Ok(python) => python,
+            Err(reason) => {
+                println!("{} unavailable: {reason}", peer.name);
+                continue;
+            }
+        };
+        for (_, scene) in modelled {
+            let (rtols, step_sizes) = large_settings(scene, rtols, step_sizes);
+            let step_sizes = match (peer.step_sizes, args.quick) {
+                (Some(own), false) => own,
+                _ => step_sizes,
+            };
+            let settings: Vec<f64> = if peer.fixed_steps {
+                step_sizes
+                    .iter()
+                    .map(|h| (scene.t_end / h).round())
+                    .collect()
+            } else {
+                rtols.to_vec()
+            };
+            let (runs, setup) = peers::run(
+                &python,
+                peer,
+                scene.name,
+                scene.t_end,
+                &settings,
+                scene.reference.0.len(),
+            );
+            rows.extend(runs.into_iter().map(|run| peer_row(scene, peer.name, run)));
+            setups.extend(setup.map(|seconds| (scene.name, peer.name, seconds)));
+        }
     }
     for (_, scene) in scenes {
         let (rtols, _) = large_settings(scene, rtols, step_sizes);
