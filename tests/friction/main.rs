@@ -168,6 +168,8 @@ fn a_mass_on_a_spring_sliding_on_a_floor_loses_four_mu_n_over_k_a_cycle_and_stop
         rests.len()
     );
     assert!(last_x.abs() <= oscillator.dead_band(), "{rests:?}");
+    // Each rest changed the one contact: the statistics count them.
+    assert_eq!(sim.statistics().friction_changes, rests.len() as u64);
     // The energy lost is the friction's work, μ m g times the path slid between the rests.
     let end = sim.last().end;
     let energy = |x: f64, v: f64| 0.5 * oscillator.m * v * v + 0.5 * oscillator.k * x * x;

@@ -374,6 +374,10 @@ pub struct Statistics {
     /// then lay a little beyond their end (the next step goes on from nearer). They are
     /// reported as [`StopReason::StepTaken`].
     pub steps_aimed_at_crossings: u64,
+    /// Contacts that changed between sticking and slipping at a located transition (each
+    /// [`StopReason::FrictionChanged`] counts its contacts): where they pile up over a short
+    /// time, the contacts chatter.
+    pub friction_changes: u64,
     /// The accepted steps after which [`crate::InnerMethod::Automatic`] found the run stiff and went
     /// on with its implicit method; none while it has not.
     pub turned_implicit_after: Option<u64>,

@@ -152,6 +152,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             true => None,
             false => Some(self.change_friction(sliding)?),
         };
+        if let Some((sticking, slipping)) = slid {
+            self.statistics.friction_changes += (sticking.len() + slipping.len()) as u64;
+        }
         self.pending.rising = watch.event_bits();
         self.pending.events = events;
         self.pending.impact = closing;
