@@ -5,7 +5,7 @@
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{Belt, Disk, Incline, PainleveRod, SlidingOscillator};
+use zeitner_scenes::friction::{Belt, Disk, Incline, PainleveRod, SlidingOscillator, TwoBlocks};
 use zeitner_scenes::reference;
 use zeitner_scenes::steam_generator::SlidingSupportSteamGenerator;
 
@@ -403,4 +403,56 @@ fn a_disk_striking_a_rough_floor_gets_coulombs_tangential_impulse_slipping_throu
         assert!(impulse_error < 1e-9, "μ = {mu}, e = {e}: {impulse_error:e}");
         assert!(impact.energy_lost >= 0.0);
     }
+}
+
+#[test]
+fn two_blocks_on_a_spring_slip_and_stick_at_once_as_their_closed_form_says() {
+    // Released at rest 1.2 m apart on a 1 m spring: each block swings about its end of the
+    // rest length as a sliding oscillator of stiffness 2k; both contacts change together.
+    let blocks = TwoBlocks {
+        m: 1.0,
+        g: 9.81,
+        k: 50.0,
+        mu: 0.2,
+        rest: 1.0,
+    };
+    let half = 0.6;
+    let start = Start {
+        q: Vector::<4>::new(-half, 0.0, half, 0.0),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&blocks, start, tight()).unwrap();
+    let mut changes = Vec::new();
+    let each = blocks.each_block();
+    let x0 = half - 0.5 * blocks.rest;
+    for t in [0.1, 0.3, 0.5, 1.0, 2.0] {
+        sim.advance_to(t, |step| {
+            if let StopReason::FrictionChanged { sticking, slipping } = step.reason() {
+                changes.push((step.end.t, sticking.union(slipping)));
+            }
+        })
+        .unwrap();
+        let end = sim.last().end;
+        let ([u, du], _) = each.released_at_rest(x0, t);
+        let reference = [-u - 0.5, 0.0, u + 0.5, 0.0, -du, 0.0, du, 0.0];
+        let state = [end.q.as_slice(), end.v.as_slice()].concat();
+        let error = off(&state, &reference, half);
+        println!("two blocks at t = {t}: off by {error:.1e}");
+        assert!(error < 1e-8, "t = {t}: off by {error:e} ({changes:?})");
+    }
+    let both = GapSet::first(2);
+    assert!(!changes.is_empty());
+    assert!(
+        changes.iter().all(|&(_, gaps)| gaps == both),
+        "each change takes both contacts at once: {changes:?}"
+    );
+    let stop = each.stop_time(x0);
+    let last = changes.last().unwrap().0;
+    println!(
+        "two blocks: {} changes of both contacts, the last {:.1e} s off",
+        changes.len(),
+        (last - stop).abs()
+    );
+    assert!((last - stop).abs() < 1e-9, "stopped at {last}, not {stop}");
 }

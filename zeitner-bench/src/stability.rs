@@ -7,7 +7,7 @@ use zeitner::{
     ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
 };
 
-use crate::scenes::friction::{Belt, SlidingOscillator};
+use crate::scenes::friction::{Belt, Disk, SlidingOscillator, TwoBlocks};
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference;
 use crate::scenes::steam_generator::SteamGenerator;
@@ -638,8 +638,10 @@ fn bad_starts(cases: &mut Vec<Case>) {
 
 /// The default options with Dormand–Prince throughout, as the bad starts' rows are labelled.
 /// Coulomb friction: a mass on a spring sliding to rest on a floor, `μ` from 0 to 1 (its
-/// energy may only fall), and a mass riding a belt whose slip speed comes back to zero and
-/// grazes it once a period (the belt does work: no energy check).
+/// energy may only fall), a mass riding a belt whose slip speed comes back to zero and grazes
+/// it once a period (the belt does work: no energy check), two blocks on a spring whose two
+/// contacts slip and stick at once, and a disk striking a rough floor, bouncing and rolling
+/// (impacts with friction).
 fn friction(cases: &mut Vec<Case>) {
     let start = (Vector::<2>::new(0.5, 0.0), Vector::zeros());
     for mu in [0.0, 0.1, 0.5, 1.0] {
@@ -675,6 +677,54 @@ fn friction(cases: &mut Vec<Case>) {
         &[1e-3],
         1e-10,
         None,
+    );
+    let blocks = TwoBlocks {
+        m: 1.0,
+        g: 9.81,
+        k: 50.0,
+        mu: 0.2,
+        rest: 1.0,
+    };
+    let apart = (Vector::<4>::new(-0.6, 0.0, 0.6, 0.0), Vector::zeros());
+    let energy = |q: &[f64], v: &[f64]| {
+        let stretch = q[2] - q[0] - 1.0;
+        0.5 * v.iter().map(|x| x * x).sum::<f64>() + 25.0 * stretch * stretch + 9.81 * (q[1] + q[3])
+    };
+    push_all(
+        cases,
+        "friction",
+        "two blocks on a spring, both contacts at once",
+        &blocks,
+        apart,
+        &[2.0],
+        &[1e-3],
+        1e-10,
+        Some((&energy, 1.0)),
+    );
+    let disk = Disk {
+        m: 2.0,
+        r: 0.1,
+        g: 9.81,
+        mu: 0.3,
+        e: 0.5,
+    };
+    let dropped = (
+        Vector::<3>::new(0.0, 0.3, 0.0),
+        Vector::<3>::new(1.0, 0.0, 0.0),
+    );
+    let energy = |q: &[f64], v: &[f64]| {
+        (v[0] * v[0] + v[1] * v[1]) + 0.005 * v[2] * v[2] + 2.0 * 9.81 * q[1]
+    };
+    push_all(
+        cases,
+        "friction",
+        "disk striking a rough floor, μ = 0.3, e = 0.5",
+        &disk,
+        dropped,
+        &[1.0],
+        &[1e-3],
+        1e-10,
+        Some((&energy, 6.9)),
     );
 }
 

@@ -339,3 +339,53 @@ impl Disk {
         ]
     }
 }
+
+/// Two blocks of mass `m` on a rough floor (friction `mu`), joined by a spring of stiffness `k`
+/// and rest length `rest`: two contacts that slip, and stick, at once. Released at rest
+/// symmetrically, each block is a [`SlidingOscillator`] of stiffness `2 k` about its half of
+/// the rest length.
+#[derive(Clone, Debug)]
+pub struct TwoBlocks {
+    pub m: Float,
+    pub g: Float,
+    pub k: Float,
+    pub mu: Float,
+    pub rest: Float,
+}
+
+#[constrained_system]
+impl TwoBlocks {
+    fn mass(&self) -> [Float; 4] {
+        [self.m, self.m, self.m, self.m]
+    }
+
+    fn force(&self, [x1, _y1, x2, _y2]: [Float; 4]) -> [Float; 4] {
+        let pull = self.k * (x2 - x1 - self.rest);
+        [pull, -self.m * self.g, -pull, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x1, y1, _x2, y2]: [Float; 4]) -> [Float; 2] {
+        [y1, y2]
+    }
+
+    fn slips(&self, _q: [Float; 4], [vx1, _vy1, vx2, _vy2]: [Float; 4]) -> [Float; 2] {
+        [vx1, vx2]
+    }
+
+    fn friction(&self) -> [Float; 2] {
+        [self.mu, self.mu]
+    }
+}
+
+impl TwoBlocks {
+    /// Each block's motion about the centre, released at rest with the blocks `2 half_span`
+    /// apart: the sliding oscillator it is.
+    pub fn each_block(&self) -> SlidingOscillator {
+        SlidingOscillator {
+            m: self.m,
+            g: self.g,
+            k: 2.0 * self.k,
+            mu: self.mu,
+        }
+    }
+}
