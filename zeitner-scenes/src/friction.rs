@@ -151,6 +151,9 @@ impl SlidingOscillator {
     pub fn stop_time(&self, x0: Float) -> Float {
         let half = core::f64::consts::PI as Float / (self.k / self.m).sqrt();
         let band = self.dead_band();
+        if band <= 0.0 {
+            return Float::INFINITY;
+        }
         let (mut x, mut stop) = (x0, 0.0);
         while x.abs() > band {
             x = 2.0 * band * x.signum() - x;
