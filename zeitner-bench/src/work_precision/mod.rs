@@ -95,7 +95,7 @@ pub fn run(args: Args) -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     let scaling = summary::chain_scaling(repeats, &args.output_dir)?;
-    let mut summary = summary::summary_markdown(&scenes, &rows, repeats);
+    let mut summary = summary::summary_markdown(&scenes, &rows, &args, repeats);
     summary.push_str(&first_results);
     summary.push_str(&scaling);
     print!("{summary}");
