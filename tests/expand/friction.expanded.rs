@@ -2904,3 +2904,589 @@ impl ::zeitner::__private::ConstrainedSystem<3, 2> for Disk {
         use ::zeitner::__private::Real as _;
     }
 }
+#[allow(dead_code)]
+impl TwoBlocks {
+    fn mass(&self) -> [Float; 4] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m, self.m, self.m]
+    }
+    fn force(&self, [x1, _y1, x2, _y2]: [Float; 4]) -> [Float; 4] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let pull = self.k * (x2 - x1 - self.rest);
+        [pull, -self.m * self.g, -pull, -self.m * self.g]
+    }
+    fn gaps(&self, [_x1, y1, _x2, y2]: [Float; 4]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [y1, y2]
+    }
+    fn slips(&self, _q: [Float; 4], [vx1, _vy1, vx2, _vy2]: [Float; 4]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [vx1, vx2]
+    }
+    fn friction(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu, self.mu]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<4, 4> for TwoBlocks {
+    const POSITION_CONSTRAINTS: usize = 2;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 4,
+        position_constraints: 2,
+        velocity_constraints: 2,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[(0, 1), (1, 3), (2, 0), (3, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[(0, 1), (1, 3)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[(0, 1), (1, 3), (2, 0), (3, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 2u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 7u64,
+                    muls: 4u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[(0, 0), (0, 2), (2, 0), (2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 4,
+                        cols: 4,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<4>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 2usize;
+    const SLIDING_CONTACTS: usize = 2usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[(0, 1), (1, 3), (2, 0), (3, 2)],
+        force_jacobians: [&[(0, 0), (0, 2), (2, 0), (2, 2)], &[]],
+        constraint_force_jacobians: [&[], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.k * (q[2] - q[0] - self.rest);
+        let s1 = -(self.m * self.g);
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        f[0] = s0;
+        f[1] = s1;
+        f[2] = -s0;
+        f[3] = s1;
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Vector::<4>::zeros();
+        g[0] = q[1];
+        g[1] = q[3];
+        g[2] = v[0];
+        g[3] = v[2];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<4, 4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut g = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        g[(0, 1)] = 1.0;
+        g[(1, 3)] = 1.0;
+        g[(2, 0)] = 1.0;
+        g[(3, 2)] = 1.0;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<4, 4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut p = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        p[(0, 1)] = 1.0;
+        p[(1, 3)] = 1.0;
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut w = ::zeitner::__private::Vector::<4>::zeros();
+        w[0] = v[1];
+        w[1] = v[3];
+        w[2] = v[0];
+        w[3] = v[2];
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<4>,
+        ::zeitner::__private::Matrix<4, 4>,
+        ::zeitner::__private::Vector<4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = self.k * (q[2] - q[0] - self.rest);
+        let s1 = -(self.m * self.g);
+        let mut m = ::zeitner::__private::Vector::<4>::zeros();
+        let mut f = ::zeitner::__private::Vector::<4>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.m;
+        m[3] = self.m;
+        f[0] = s0;
+        f[1] = s1;
+        f[2] = -s0;
+        f[3] = s1;
+        g[(0, 1)] = 1.0;
+        g[(1, 3)] = 1.0;
+        g[(2, 0)] = 1.0;
+        g[(3, 2)] = 1.0;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -self.k;
+        let mut dq = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        dq[(0, 0)] = s0;
+        dq[(0, 2)] = self.k;
+        dq[(2, 0)] = self.k;
+        dq[(2, 2)] = s0;
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<4>,
+    ) -> (::zeitner::__private::Matrix<4, 4>, ::zeitner::__private::Matrix<4, 4>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<4, 4>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<2>::zeros();
+            mu[0] = self.mu;
+            mu[1] = self.mu;
+            mu
+        };
+        if gap < 2 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        values[0] = 1.0;
+        values[1] = 1.0;
+        values[2] = 1.0;
+        values[3] = 1.0;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = -self.k;
+        values[0] = s0;
+        values[1] = self.k;
+        values[2] = self.k;
+        values[3] = s0;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<4>,
+        v: &::zeitner::__private::Vector<4>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<4>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+}
