@@ -6,7 +6,8 @@
 //! restitution law solved as one impulse problem in the mass metric: every bilateral row and
 //! every closed gap keeps `ġ = 0`, every impacting gap gets `ġ⁺ = -e ġ⁻`, and a gap whose
 //! impulse would pull is dropped from the problem and solved again (an active set, which
-//! settles simultaneous impacts consistently).
+//! settles simultaneous impacts consistently). Contacts with friction stick or slip through the
+//! impulse as Coulomb's law says (see `impulse`).
 
 use crate::consistency::{consistent_point, slipping_multipliers};
 use crate::error::StepError;
