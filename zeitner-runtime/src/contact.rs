@@ -146,35 +146,45 @@ pub(crate) fn slip_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const
 ) -> Result<GapSet, StepError> {
     let mut slipped = GapSet::EMPTY;
     for _ in 0..=S::SLIDING_CONTACTS {
-        let (slipping, mut forward) = model.slipping();
         let closed = GapSet::first(S::SLIDING_CONTACTS).without(model.open_gaps());
-        let level = RELEASE * point.lambda.amax();
-        let beyond = closed
-            .without(slipping)
-            .iter()
-            .map(|k| (k, model.cone_margin(k, &point.lambda)))
-            .filter(|&(_, (margin, _))| margin < -level)
-            .fold(
-                None,
-                |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
-                    Some((_, w)) if w.0 <= m.0 => worst,
-                    _ => Some((k, m)),
-                },
-            );
-        let Some((k, (_, pushes_forward))) = beyond else {
+        let Some((k, modes)) = farthest_beyond_cone(model, closed, &point.lambda) else {
             return Ok(slipped);
         };
         slipped.insert(k);
-        let mut slipping = slipping;
-        slipping.insert(k);
-        match pushes_forward {
-            true => forward.insert(k),
-            false => forward.remove(k),
-        }
-        model.set_slipping((slipping, forward));
+        model.set_slipping(modes);
         *point = consistent_point(model, point.t, point.q, point.v)?;
     }
     Ok(slipped)
+}
+
+/// Of the sticking contacts among `contacts`, the one whose force (or impulse) `lambda` lies
+/// farthest outside Coulomb's cone, by more than rounding; with the model's slipping contacts
+/// and their directions once it slips too, in the direction its sticking force pushed against.
+fn farthest_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &Model<'_, S, N, Z>,
+    contacts: GapSet,
+    lambda: &Vector<Z>,
+) -> Option<(usize, (GapSet, GapSet))> {
+    let (mut slipping, mut forward) = model.slipping();
+    let level = RELEASE * lambda.amax();
+    let (k, (_, forwards)) = contacts
+        .without(slipping)
+        .iter()
+        .map(|k| (k, model.cone_margin(k, lambda)))
+        .filter(|&(_, (margin, _))| margin < -level)
+        .fold(
+            None,
+            |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
+                Some((_, w)) if w.0 <= m.0 => worst,
+                _ => Some((k, m)),
+            },
+        )?;
+    slipping.insert(k);
+    match forwards {
+        true => forward.insert(k),
+        false => forward.remove(k),
+    }
+    Some((k, (slipping, forward)))
 }
 
 /// The impact of the gaps in `impacting` at `(q, v, t)`: the impulse, the velocities after it,
@@ -279,16 +289,11 @@ fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     let sliding = GapSet::first(S::SLIDING_CONTACTS);
     let coulomb = coulomb && S::SLIDING_CONTACTS > 0;
     if coulomb {
-        let slips = model.slip_rates(q, v, t)?;
-        let (mut slipping, mut forward) = (GapSet::EMPTY, GapSet::EMPTY);
-        for k in sliding.iter() {
-            // Frictionless contacts slip, whatever their slip velocity.
-            if slips[k] != 0.0 || model.system.friction(k) == 0.0 {
-                slipping.insert(k);
-            }
-            if slips[k] > 0.0 {
-                forward.insert(k);
-            }
+        slip_by_velocities(model, (q, v, t), 0.0)?;
+        // Frictionless contacts slip, whatever their slip velocity.
+        let (mut slipping, forward) = model.slipping();
+        for k in sliding.iter().filter(|&k| model.system.friction(k) == 0.0) {
+            slipping.insert(k);
         }
         model.set_slipping((slipping, forward));
     } else {
@@ -384,29 +389,11 @@ fn revised_friction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     impulse: &Vector<Z>,
     active: GapSet,
 ) -> Result<Option<(GapSet, GapSet)>, StepError> {
-    let (mut slipping, mut forward) = model.slipping();
     let contacts = active.intersection(GapSet::first(S::SLIDING_CONTACTS));
-    let level = RELEASE * impulse.amax();
-    let beyond = contacts
-        .without(slipping)
-        .iter()
-        .map(|k| (k, model.cone_margin(k, impulse)))
-        .filter(|&(_, (margin, _))| margin < -level)
-        .fold(
-            None,
-            |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
-                Some((_, w)) if w.0 <= m.0 => worst,
-                _ => Some((k, m)),
-            },
-        );
-    if let Some((k, (_, forwards))) = beyond {
-        slipping.insert(k);
-        match forwards {
-            true => forward.insert(k),
-            false => forward.remove(k),
-        }
-        return Ok(Some((slipping, forward)));
+    if let Some((_, modes)) = farthest_beyond_cone(model, contacts, impulse) {
+        return Ok(Some(modes));
     }
+    let (mut slipping, mut forward) = model.slipping();
     let slips = model.slip_rates(q, after, t)?;
     let scale = slips.iter().fold(0.0, |m: Float, s| m.max(s.abs()));
     let reversed = contacts.intersection(slipping).iter().find(|&k| {

@@ -269,7 +269,18 @@ fn solve3(m: [[Float; 3]; 3], b: [Float; 3]) -> [Float; 3] {
 /// `|h2 sin φ - h3 q3|` reaches the clearance. RK4 with 1e-5 s steps across the load's kink, the
 /// crossing refined by bisection on RK4 steps from the last grid point. Returns the time.
 pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
-    let b = &s.base;
+    // The free flight ends within a few seconds under the sustained load.
+    free_flight_to_contact(&s.base, s.clearance, 10.0).0
+}
+
+/// The free flight of [`steam_generator_first_contact`] until the travel at C reaches
+/// `clearance` on either side, which it must before `before`: the time and
+/// `(φ, φ', q3, q3')` then.
+fn free_flight_to_contact(
+    b: &SteamGenerator,
+    clearance: Float,
+    before: Float,
+) -> (Float, [Float; 4]) {
     let rhs = |t: Float, y: &[Float; 4]| -> [Float; 4] {
         let (phi, w, _q3, w3) = (y[0], y[1], y[2], y[3]);
         let (sin, cos) = phi.sin_cos();
@@ -279,29 +290,29 @@ pub fn steam_generator_first_contact(s: &SteamGeneratorWithGap) -> Float {
     };
     let travel = |y: &[Float; 4]| (b.h2 * y[0].sin() - b.h3 * y[2]).abs();
     let h = 1e-5;
-    let (mut t, mut y) = (0.0, [0.0; 4]);
     // Up to the kink, then on in steps of h until the travel passes the clearance.
-    y = rk4(rhs, 0.0, y, b.rise, (b.rise / h).round() as usize);
-    t += b.rise;
-    assert!(travel(&y) < s.clearance, "contact before the load's kink");
-    // The free flight ends within a few seconds under the sustained load.
-    for _ in 0..(10.0 / h) as usize {
+    let mut y = rk4(rhs, 0.0, [0.0; 4], b.rise, (b.rise / h).round() as usize);
+    let mut t = b.rise;
+    assert!(travel(&y) < clearance, "contact before the load's kink");
+    loop {
         let next = rk4(rhs, t, y, t + h, 1);
-        if travel(&next) >= s.clearance {
+        if travel(&next) >= clearance {
             break;
         }
+        assert!(t + h < before, "no contact before {before}");
         (t, y) = (t + h, next);
     }
     let (mut lo, mut hi) = (0.0, h);
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
-        if travel(&rk4(rhs, t, y, t + mid, 1)) >= s.clearance {
+        if travel(&rk4(rhs, t, y, t + mid, 1)) >= clearance {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    t + 0.5 * (lo + hi)
+    let contact = t + 0.5 * (lo + hi);
+    (contact, rk4(rhs, t, y, contact, 1))
 }
 
 /// The steam generator on its sliding support ([`SlidingSupportSteamGenerator`], plastic
@@ -325,36 +336,9 @@ pub fn sliding_support_steam_generator(s: &SlidingSupportSteamGenerator, t: Floa
     assert!(s.e == 0.0, "the reference models a plastic strike");
     let b = &s.base;
     let h = 1e-5;
-    let free = |t: Float, y: &[Float; 4]| -> [Float; 4] {
-        let (phi, w, _q3, w3) = (y[0], y[1], y[2], y[3]);
-        let (sin, cos) = phi.sin_cos();
-        let p = b.load(t);
-        let q_phi = (p - b.d * b.h2 * cos * w) * b.h2 * cos - b.m * b.g * b.h2 * sin;
-        [w, q_phi / (b.m * b.h2 * b.h2), w3, p * b.h1 / b.j]
-    };
-    let travel = |y: &[Float; 4]| b.h2 * y[0].sin() - b.h3 * y[2];
-    let mut y = rk4(free, 0.0, [0.0; 4], b.rise, (b.rise / h).round() as usize);
-    let mut t0 = b.rise;
-    loop {
-        let next = rk4(free, t0, y, t0 + h, 1);
-        if travel(&next).abs() >= s.clearance {
-            break;
-        }
-        assert!(t0 + h < t, "no strike before {t}");
-        (t0, y) = (t0 + h, next);
-    }
-    let (mut lo, mut hi) = (0.0, h);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        match travel(&rk4(free, t0, y, t0 + mid, 1)).abs() >= s.clearance {
-            true => hi = mid,
-            false => lo = mid,
-        }
-    }
-    let strike = t0 + 0.5 * (lo + hi);
-    y = rk4(free, t0, y, strike, 1);
+    let (strike, y) = free_flight_to_contact(b, s.clearance, t);
     // The plate struck: +1 pushed (gap 0, travel = +c), −1 pulled (gap 1, travel = −c).
-    let side = travel(&y).signum();
+    let side = (b.h2 * y[0].sin() - b.h3 * y[2]).signum();
     let (phi, w) = (y[0], y[1]);
     let (sin, cos) = phi.sin_cos();
     let q = [b.h2 * sin, b.h2 * (1.0 - cos), y[2]];
