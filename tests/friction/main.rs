@@ -1,11 +1,16 @@
 //! Coulomb friction on closed contacts against closed forms: a block on an incline that sticks
 //! or slides, a mass on a spring sliding to rest on a floor, a mass on a spring riding a belt;
-//! and Painlevé's rod, refused where no consistent contact force exists.
+//! and Painlevé's rod, refused where no consistent contact force exists. In space (two
+//! tangents, Coulomb's cone a disc): a ball slipping on a floor until it rolls, striking it
+//! with spin, a mass sent across a slope that curves to a stop, a block pulled until it breaks
+//! away.
 
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
-use zeitner_scenes::friction::{Belt, Disk, Incline, PainleveRod, SlidingOscillator, TwoBlocks};
+use zeitner_scenes::friction::{
+    Ball, Belt, Disk, Incline, PainleveRod, PulledBlock, SlidingOscillator, SlopeAcross, TwoBlocks,
+};
 use zeitner_scenes::reference;
 use zeitner_scenes::steam_generator::SlidingSupportSteamGenerator;
 
@@ -455,4 +460,218 @@ fn two_blocks_on_a_spring_slip_and_stick_at_once_as_their_closed_form_says() {
         (last - stop).abs()
     );
     assert!((last - stop).abs() < 1e-9, "stopped at {last}, not {stop}");
+}
+
+/// The times of a run's friction changes up to `t_end`: `(t, sticking, slipping)`.
+fn friction_changes<S, const N: usize, const Z: usize>(
+    sim: &mut Simulator<'_, S, N, Z>,
+    t_end: f64,
+) -> Vec<(f64, GapSet, GapSet)>
+where
+    S: zeitner::ConstrainedSystem<N, Z>,
+{
+    let mut changes = Vec::new();
+    sim.advance_to(t_end, |step| {
+        if let StopReason::FrictionChanged { sticking, slipping } = step.reason() {
+            changes.push((step.end.t, sticking, slipping));
+        }
+    })
+    .unwrap();
+    changes
+}
+
+#[test]
+fn a_ball_slipping_on_a_rough_floor_in_space_slows_its_slip_along_one_direction_and_rolls() {
+    let ball = Ball {
+        m: 0.5,
+        r: 0.1,
+        g: 9.81,
+        mu: 0.2,
+        e: 0.0,
+    };
+    // Its lowest point slips at (1 + 0.1, 0.3 + 0.2) m/s: neither along its velocity nor its spin.
+    let (v0, w0) = ([1.0, 0.3, 0.0], [2.0, -1.0, 0.5]);
+    let start = Start {
+        q: Vector::<6>::new(0.0, 0.0, ball.r, 0.0, 0.0, 0.0),
+        v: Vector::<6>::new(v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&ball, start, tight()).unwrap();
+    let rolls = ball.rolls_at(v0, w0);
+    let t_end = 2.0 * rolls;
+    let changes = friction_changes(&mut sim, t_end);
+    assert_eq!(changes.len(), 1, "{changes:?}");
+    let (t_roll, sticking, _) = changes[0];
+    assert_eq!(sticking, GapSet::first(1));
+    let late = (t_roll - rolls).abs();
+    let end = sim.last().end;
+    let (velocities, moved) = ball.on_the_floor(v0, w0, t_end);
+    let error =
+        off(end.v.as_slice(), &velocities, 1.0).max(off(&[end.q[0], end.q[1]], &moved, 1.0));
+    // The energy lost is the friction's work: μ m g times the slip's path, |ṡ₀| t/2.
+    let energy = |v: &Vector<6>| {
+        let inertia = 0.4 * ball.m * ball.r * ball.r;
+        0.5 * ball.m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+            + 0.5 * inertia * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5])
+    };
+    let slip = (v0[0] - ball.r * w0[1]).hypot(v0[1] + ball.r * w0[0]);
+    let work = ball.mu * ball.m * ball.g * slip * rolls / 2.0;
+    let lost = energy(&start.v) - energy(&end.v);
+    let balance = (lost - work).abs() / work;
+    println!(
+        "ball in space: rolls {late:.1e} s off the closed form, state off by {error:.1e}, energy \
+         lost equals the friction work to {balance:.1e}"
+    );
+    assert!(late < 1e-9, "rolls at {t_roll}, not {rolls}");
+    assert!(error < 1e-8, "{error:e}");
+    assert!(balance < 1e-8, "lost {lost}, work {work}");
+    // Rolling, its slip holds at zero with no friction force.
+    let slip_end = [end.v[0] - ball.r * end.v[4], end.v[1] + ball.r * end.v[3]];
+    assert!(slip_end[0].hypot(slip_end[1]) < 1e-10, "{slip_end:?}");
+    assert!(end.lambda[1].hypot(end.lambda[2]) < 1e-9 * ball.m * ball.g);
+}
+
+#[test]
+fn a_spinning_ball_striking_a_rough_floor_in_space_gets_coulombs_impulse_against_its_slip() {
+    // Dropped 0.2 m with a velocity and a spin whose slip at the lowest point is oblique: the
+    // impulse stops the slip where 7/2 μ (1 + e)|vz| reaches it, and shortens it otherwise.
+    let height = 0.2;
+    for (mu, e) in [(0.05, 0.5), (0.1, 0.0), (0.6, 0.5), (0.0, 0.8)] {
+        let ball = Ball {
+            m: 0.5,
+            r: 0.1,
+            g: 9.81,
+            mu,
+            e,
+        };
+        let (v0, w0) = ([1.0, -0.5, 0.0], [4.0, 3.0, -2.0]);
+        let start = Start {
+            q: Vector::<6>::new(0.0, 0.0, ball.r + height, 0.0, 0.0, 0.0),
+            v: Vector::<6>::new(v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]),
+            t: 0.0,
+        };
+        let mut sim = Simulator::new(&ball, start, tight()).unwrap();
+        let mut strike = None;
+        sim.advance_to(0.25, |step| {
+            if let Some(impact) = step.impact() {
+                strike.get_or_insert(*impact);
+            }
+        })
+        .unwrap();
+        let impact = strike.expect("it strikes the floor");
+        let vz = -(2.0 * ball.g * height).sqrt();
+        let expected = ball.after_strike([v0[0], v0[1], vz], w0);
+        let error = off(impact.velocity_after.as_slice(), &expected, 1.0);
+        println!(
+            "ball striking in space at μ = {mu}, e = {e}: velocities off by {error:.1e}, energy \
+             lost {:.4} J",
+            impact.energy_lost
+        );
+        assert!(error < 1e-9, "μ = {mu}, e = {e}: {error:e}");
+        assert!(impact.energy_lost >= 0.0);
+    }
+}
+
+#[test]
+fn a_mass_sent_across_a_rough_slope_curves_down_it_and_stops_where_the_hodograph_says() {
+    // k = μ cot θ > 1: it stops. At k = 4 its slip turns down the slope only as (t_s - t)^(1/3)
+    // near the stop, which the step and the stop's location must follow.
+    for k in [2.0, 4.0] {
+        let angle: f64 = 0.3;
+        let slope = SlopeAcross {
+            m: 1.5,
+            g: 9.81,
+            angle,
+            mu: k * angle.tan(),
+        };
+        let speed = 2.0;
+        let start = Start {
+            q: Vector::<3>::zeros(),
+            v: Vector::<3>::new(speed, 0.0, 0.0),
+            t: 0.0,
+        };
+        let mut sim = Simulator::new(&slope, start, tight()).unwrap();
+        let (stop, across_stop, down_stop) = slope.sent_across(speed, 0.0);
+        // Where it is when it has turned half-way (φ = 45°), then where it stops.
+        let w_half = (std::f64::consts::PI / 8.0).tan();
+        let (t_half, across_half, down_half) = slope.sent_across(speed, w_half);
+        let position = |across: f64, down: f64| [across, -down * angle.cos(), -down * angle.sin()];
+        sim.advance_to(t_half, |_| {}).unwrap();
+        let half = sim.last().end;
+        let half_error = off(
+            half.q.as_slice(),
+            &position(across_half, down_half),
+            across_stop,
+        );
+        let speed_half = half.v.norm();
+        let speed_error = (speed_half - slope.speed_at(speed, w_half)).abs() / speed;
+        let changes = friction_changes(&mut sim, 1.5 * stop);
+        let end = sim.last().end;
+        let stop_error = off(
+            end.q.as_slice(),
+            &position(across_stop, down_stop),
+            across_stop,
+        );
+        assert_eq!(changes.len(), 1, "{changes:?}");
+        let late = (changes[0].0 - stop).abs();
+        println!(
+            "across a slope at k = {k}: at 45° off by {half_error:.1e} (speed {speed_error:.1e}), \
+             stops {late:.1e} s off the closed form, {stop_error:.1e} from its place; \
+             {} steps",
+            sim.statistics().steps
+        );
+        assert!(half_error < 1e-8, "k = {k}: {half_error:e}");
+        assert!(speed_error < 1e-8, "k = {k}: {speed_error:e}");
+        assert!(
+            late < 1e-8,
+            "k = {k}: stops at {}, not {stop}",
+            changes[0].0
+        );
+        assert!(stop_error < 1e-8, "k = {k}: {stop_error:e}");
+        assert!(end.v.norm() < 1e-9, "it stays: {}", end.v.norm());
+    }
+}
+
+#[test]
+fn a_block_pulled_on_a_rough_floor_in_space_breaks_away_when_the_pull_reaches_its_cone() {
+    let block = PulledBlock {
+        m: 2.0,
+        g: 9.81,
+        mu: 0.4,
+        rate: 5.0,
+        heading: 2.2,
+    };
+    let start = Start {
+        q: Vector::<3>::zeros(),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&block, start, tight()).unwrap();
+    let away = block.breaks_away_at();
+    let t_end = away + 1.0;
+    let changes = friction_changes(&mut sim, t_end);
+    assert_eq!(changes.len(), 1, "{changes:?}");
+    assert_eq!(changes[0].2, GapSet::first(1));
+    let late = (changes[0].0 - away).abs();
+    let end = sim.last().end;
+    let (s, ds) = block.slid(t_end);
+    let (cos, sin) = (block.heading.cos(), block.heading.sin());
+    let expected = [s * cos, s * sin, 0.0, ds * cos, ds * sin, 0.0];
+    let state = [end.q[0], end.q[1], end.q[2], end.v[0], end.v[1], end.v[2]];
+    let error = off(&state, &expected, s.max(ds));
+    println!(
+        "pulled block: breaks away {late:.1e} s off the closed form, state off by {error:.1e}"
+    );
+    assert!(late < 1e-9, "breaks away at {}, not {away}", changes[0].0);
+    assert!(error < 1e-8, "{error:e}");
+    // Sliding, its friction is μ N against the slip, in the slip rows' multipliers.
+    let friction = [-end.lambda[1], -end.lambda[2]];
+    let expected = [
+        -block.mu * block.m * block.g * cos,
+        -block.mu * block.m * block.g * sin,
+    ];
+    assert!(
+        off(&friction, &expected, block.m * block.g) < 1e-9,
+        "{friction:?}"
+    );
 }

@@ -111,19 +111,34 @@ pub fn sizes(model: &Model<'_>, errors: &mut Errors) -> Sizes {
     Sizes { n, r, k, u, s, e }
 }
 
-/// One slip velocity and one friction coefficient per gap, each with the other.
+/// One slip velocity per gap (in the plane) or two (in space), and one friction coefficient
+/// per gap, each with the other.
 fn check_friction(model: &Model<'_>, u: usize, errors: &mut Errors) {
-    for role in [Role::Slips, Role::Friction] {
-        if let Some(function) = model.function(role).filter(|f| f.shape.len() != u) {
-            errors.error_spanned_by(
-                function.shape.len_expr(),
-                format_args!(
-                    "`{}` has {} entries, but the model has {u} gaps: one per gap",
-                    role.name(),
-                    function.shape.len()
-                ),
-            );
-        }
+    if let Some(slips) = model
+        .function(Role::Slips)
+        .filter(|f| f.shape.len() != u && f.shape.len() != 2 * u)
+    {
+        errors.error_spanned_by(
+            slips.shape.len_expr(),
+            format_args!(
+                "`slips` has {} entries, but the model has {u} gaps: one per gap in the plane \
+                 ({u}), or two per gap in space ({}), gap k's at 2k and 2k + 1",
+                slips.shape.len(),
+                2 * u
+            ),
+        );
+    }
+    if let Some(friction) = model
+        .function(Role::Friction)
+        .filter(|f| f.shape.len() != u)
+    {
+        errors.error_spanned_by(
+            friction.shape.len_expr(),
+            format_args!(
+                "`friction` has {} entries, but the model has {u} gaps: one per gap",
+                friction.shape.len()
+            ),
+        );
     }
     if let Some(slips) = model
         .function(Role::Slips)

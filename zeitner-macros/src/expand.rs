@@ -300,7 +300,11 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let gaps = (u > 0).then(|| quote!(const UNILATERAL_CONSTRAINTS: usize = #u;));
     let events = (e > 0).then(|| quote!(const EVENTS: usize = #e;));
     let s = scene.sizes.s;
-    let slides = (s > 0).then(|| quote!(const SLIDING_CONTACTS: usize = #s;));
+    // A contact in space has two slip rows; one in the plane the trait's default, one.
+    let slides = (s > 0).then(|| match s == 2 * u {
+        true => quote!(const SLIDING_CONTACTS: usize = #u; const TANGENTS: usize = 2;),
+        false => quote!(const SLIDING_CONTACTS: usize = #s;),
+    });
     let gaps_and_events = quote!(#gaps #events #slides);
     // The Jacobians by their structural nonzeros as well, for the sparse storage, and where
     // those nonzeros are.
@@ -340,7 +344,9 @@ fn expand_scene(self_ty: &syn::Type, scene: &Scene, vars: &Vars, calls: &[Call])
     let k = Literal::usize_unsuffixed(scene.sizes.k);
     let mass_is_constant = scene.mass_is_constant;
     let time_dependent = scene.time_dependent;
-    let dynamics_depend_on_velocity = scene.dynamics_depend_on_velocity;
+    // In space a slipping contact's friction turns with its slip velocity.
+    let spatial_friction = scene.sizes.s > 0 && scene.sizes.s == 2 * scene.sizes.u;
+    let dynamics_depend_on_velocity = scene.dynamics_depend_on_velocity || spatial_friction;
     quote! {
         #[allow(unused_variables, unused_mut, clippy::all)]
         impl #rt::ConstrainedSystem<#n, #z> for #self_ty {

@@ -39,9 +39,11 @@ use proc_macro::TokenStream;
 ///   would pull; with `restitution(&self) -> [f64; U]`, Newton's coefficient of each (0 to 1,
 ///   default 0);
 /// - `slips` — `fn slips(&self, q, v, t) -> [f64; U]`, the slip velocity of each gap's contact
-///   (linear in `q'`); with `friction(&self) -> [f64; U]`, Coulomb's coefficient of each. A closed
-///   contact then sticks (`slips` held at zero while its force stays in the cone) or slips
-///   (`-μ|λ_N|` against the slip), the changes located like events;
+///   (linear in `q'`), or `[f64; 2 * U]` in space, two tangents per contact (gap k's at 2k and
+///   2k + 1, orthonormal for the disc cone to be round); with `friction(&self) -> [f64; U]`,
+///   Coulomb's coefficient of each. A closed contact then sticks (`slips` held at zero while its
+///   force stays in the cone `|λ_T| ≤ μ|λ_N|`) or slips (`-μ|λ_N|` against the slip, along
+///   `ṡ/|ṡ|` in space), the changes located like events;
 /// - `events` — event functions whose zero crossings `Simulator::advance_to` stops at
 ///   (`StopReason::Event`). An event function must be continuous along the motion: a crossing is
 ///   a change of sign between two samples of the step's dense output, so a jump through zero (the

@@ -421,7 +421,10 @@ fn point_with<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         Some(m_inv_wt) => {
             let lambda = slipping_multipliers(&directions, &m_inv_wt, &rhs, t)?;
             // Reported with each slipping contact's friction in its `λ_T`: `M a = F - Gᵀλ`.
-            (model.acting(&lambda), m_inv_f - m_inv_wt * lambda)
+            (
+                model.acting((&q, &v, t), &lambda)?,
+                m_inv_f - m_inv_wt * lambda,
+            )
         }
     };
     if !(all_finite(a.as_slice()) & all_finite(lambda.as_slice())) {
@@ -559,7 +562,7 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
         Some(g) => *g,
         None => model.jacobian(&end.q, &end.v, end.t)?,
     };
-    let constraint_force = model.constraint_force((&end.q, &end.v, end.t), &g, &end.lambda);
+    let constraint_force = model.constraint_force((&end.q, &end.v, end.t), &g, &end.lambda)?;
     // The step's multipliers too: a row that no force reads (a closed contact's, masked) can
     // carry an overflowed prediction through Newton untouched (f32 fuzz, a ball under
     // g = f32::MAX: λ = -3.4e38 extrapolated to -∞).

@@ -11,9 +11,10 @@
 
 use crate::consistency::{consistent_point, slipping_multipliers};
 use crate::error::StepError;
-use crate::gaps::GapSet;
+use crate::gaps::{GapSet, Slipping, Tangent};
 use crate::linalg::solve_spd;
 use crate::mass::MassMatrix;
+use crate::math::Real;
 use crate::model::Model;
 use crate::output::Point;
 use crate::scalar::Float;
@@ -114,26 +115,35 @@ pub(crate) fn open_pulling<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     Ok(opened)
 }
 
-/// Sets each closed sliding contact slipping where its slip velocity at `(q, v, t)` exceeds
-/// `tolerance` (forwards where it is positive) and sticking elsewhere, before a start is made
-/// consistent (a sticking contact's slip velocity is then projected to zero).
+/// Sets each closed sliding contact slipping where its slip speed at `(q, v, t)` exceeds
+/// `tolerance` (along its slip) and sticking elsewhere, before a start is made consistent (a
+/// sticking contact's slip velocity is then projected to zero).
 pub(crate) fn slip_by_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (&Vector<N>, &Vector<N>, Float),
     tolerance: Float,
 ) -> Result<(), StepError> {
     let rates = model.slip_rates(q, v, t)?;
-    let (mut slipping, mut forward) = (GapSet::EMPTY, GapSet::EMPTY);
+    let mut slipping = Slipping::NONE;
     for (k, &rate) in rates.iter().enumerate().take(S::SLIDING_CONTACTS) {
-        if rate.abs() > tolerance {
-            slipping.insert(k);
-        }
-        if rate > tolerance {
-            forward.insert(k);
+        if let Some(direction) = slip_direction::<S, N, Z>(rate, tolerance) {
+            slipping.insert(k, direction);
         }
     }
-    model.set_slipping((slipping, forward));
+    model.set_slipping(slipping);
     Ok(())
+}
+
+/// The direction of a slip velocity whose speed exceeds `tolerance` (in the plane its sign).
+fn slip_direction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    rate: Tangent,
+    tolerance: Float,
+) -> Option<Tangent> {
+    let speed = Real::hypot(rate[0], rate[1]);
+    (speed > tolerance).then(|| match S::TANGENTS {
+        1 => [if rate[0] > 0.0 { 1.0 } else { -1.0 }, 0.0],
+        _ => [rate[0] / speed, rate[1] / speed],
+    })
 }
 
 /// Sets slipping the closed sticking contacts whose force at a consistent point leaves
@@ -164,27 +174,23 @@ fn farthest_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     model: &Model<'_, S, N, Z>,
     contacts: GapSet,
     lambda: &Vector<Z>,
-) -> Option<(usize, (GapSet, GapSet))> {
-    let (mut slipping, mut forward) = model.slipping();
+) -> Option<(usize, Slipping)> {
+    let mut slipping = model.slipping();
     let level = RELEASE * lambda.amax();
-    let (k, (_, forwards)) = contacts
-        .without(slipping)
+    let (k, (_, direction)) = contacts
+        .without(slipping.contacts)
         .iter()
         .map(|k| (k, model.cone_margin(k, lambda)))
         .filter(|&(_, (margin, _))| margin < -level)
         .fold(
             None,
-            |worst: Option<(usize, (Float, bool))>, (k, m)| match worst {
+            |worst: Option<(usize, (Float, Tangent))>, (k, m)| match worst {
                 Some((_, w)) if w.0 <= m.0 => worst,
                 _ => Some((k, m)),
             },
         )?;
-    slipping.insert(k);
-    match forwards {
-        true => forward.insert(k),
-        false => forward.remove(k),
-    }
-    Some((k, (slipping, forward)))
+    slipping.insert(k, direction);
+    Some((k, slipping))
 }
 
 /// The impact of the gaps in `impacting` at `(q, v, t)`: the impulse, the velocities after it,
@@ -291,19 +297,22 @@ fn impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     if coulomb {
         slip_by_velocities(model, (q, v, t), 0.0)?;
         // Frictionless contacts slip, whatever their slip velocity.
-        let (mut slipping, forward) = model.slipping();
+        let mut slipping = model.slipping();
         for k in sliding.iter().filter(|&k| model.system.friction(k) == 0.0) {
-            slipping.insert(k);
+            slipping.contacts.insert(k);
         }
-        model.set_slipping((slipping, forward));
+        model.set_slipping(slipping);
     } else {
         // No slip row holds through the impulse (the contacts stick or slip after it, as
         // their slip velocities then say).
-        model.set_slipping((sliding, GapSet::EMPTY));
+        let mut slipping = Slipping::NONE;
+        slipping.contacts = sliding;
+        model.set_slipping(slipping);
     }
     let mut active = closed.union(impacting);
-    // Each pass changes one contact's sticking or slipping, which one contact can need twice.
-    for _ in 0..=2 * S::SLIDING_CONTACTS {
+    // Each pass changes one contact's sticking or slipping, which one contact can need twice;
+    // in space, or turns a slipping contact's direction towards its slip after the impulse.
+    for _ in 0..=2 * S::SLIDING_CONTACTS + TURNS * (S::TANGENTS - 1) {
         let (impulse, after);
         (impulse, after, active) = normal_impulse(
             model,
@@ -352,7 +361,7 @@ fn normal_impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             rhs[first + k] += coefficients[k] * rates[k];
         }
         let slipping = match coulomb {
-            true => model.slipping_directions((q, v, t), &directions)?,
+            true => model.impulse_directions((q, v, t), &directions)?,
             false => None,
         };
         (impulse, after) = match slipping {
@@ -368,7 +377,7 @@ fn normal_impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             }
             Some(m_inv_wt) => {
                 let impulse = slipping_multipliers(&directions, &m_inv_wt, &rhs, t)?;
-                (model.acting(&impulse), v - m_inv_wt * impulse)
+                (model.acting_impulse(&impulse), v - m_inv_wt * impulse)
             }
         };
         let pulling = active.iter().find(|&k| impulse[first + k] > 0.0);
@@ -381,28 +390,61 @@ fn normal_impulse<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
 }
 
 /// The one change of sticking or slipping an impulse needs, if any: the active sticking contact
-/// farthest outside its cone slips (forwards where its impulse pushed backwards), else an active
-/// slipping contact whose slip the friction reversed (`(q, after, t)`) sticks.
+/// farthest outside its cone slips (against its impulse's push), else an active slipping contact
+/// whose slip the friction reversed (`(q, after, t)`) sticks; in space, else the slipping
+/// contact whose slip after the impulse turned farthest from its direction (by more than
+/// rounding) takes that slip's direction.
 fn revised_friction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, after, t): (&Vector<N>, &Vector<N>, Float),
     impulse: &Vector<Z>,
     active: GapSet,
-) -> Result<Option<(GapSet, GapSet)>, StepError> {
+) -> Result<Option<Slipping>, StepError> {
     let contacts = active.intersection(GapSet::first(S::SLIDING_CONTACTS));
     if let Some((_, modes)) = farthest_beyond_cone(model, contacts, impulse) {
         return Ok(Some(modes));
     }
-    let (mut slipping, mut forward) = model.slipping();
+    let mut slipping = model.slipping();
     let slips = model.slip_rates(q, after, t)?;
-    let scale = slips.iter().fold(0.0, |m: Float, s| m.max(s.abs()));
-    let reversed = contacts.intersection(slipping).iter().find(|&k| {
-        let sign = if forward.contains(k) { 1.0 } else { -1.0 };
-        model.system.friction(k) > 0.0 && sign * slips[k] < -RELEASE * scale
-    });
-    Ok(reversed.map(|k| {
+    let scale = slips
+        .iter()
+        .fold(0.0, |m: Float, s| m.max(Real::hypot(s[0], s[1])));
+    let rough = || {
+        let slipping = contacts.intersection(slipping.contacts).iter();
+        slipping.filter(|&k| model.system.friction(k) > 0.0)
+    };
+    if let Some(k) = rough().find(|&k| model.along(k, slips[k]) < -RELEASE * scale) {
         slipping.remove(k);
-        forward.remove(k);
-        (slipping, forward)
+        return Ok(Some(slipping));
+    }
+    if S::TANGENTS < 2 {
+        return Ok(None);
+    }
+    let turned = rough()
+        .filter_map(|k| Some((k, slip_direction::<S, N, Z>(slips[k], RELEASE * scale)?)))
+        .map(|(k, direction)| {
+            let along = slipping.along[k];
+            let turn = Real::hypot(direction[0] - along[0], direction[1] - along[1]);
+            (k, direction, turn)
+        })
+        .filter(|&(_, _, turn)| turn > TURN_TOLERANCE)
+        .fold(
+            None,
+            |best: Option<(usize, Tangent, Float)>, c| match best {
+                Some(b) if b.2 >= c.2 => best,
+                _ => Some(c),
+            },
+        );
+    Ok(turned.map(|(k, direction, _)| {
+        slipping.insert(k, direction);
+        slipping
     }))
 }
+
+/// In space, how many times an impulse turns its slipping contacts' directions towards their
+/// slip after it before it gives up (a fixed point: one turn where the contacts' tangential
+/// mobility is isotropic, a point mass's or a sphere's).
+const TURNS: usize = 64;
+/// A slipping contact's direction and its slip's after the impulse agree when they differ by
+/// less than this (a unit vector's distance).
+const TURN_TOLERANCE: Float = 64.0 * Float::EPSILON;

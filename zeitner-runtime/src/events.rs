@@ -89,7 +89,7 @@ impl Contacts {
     ) -> Self {
         Contacts {
             open: model.open_gaps(),
-            slipping: model.slipping().0,
+            slipping: model.slipping().contacts,
             slides: S::SLIDING_CONTACTS,
         }
     }
@@ -158,12 +158,12 @@ impl Watch {
             }
         }
         if S::SLIDING_CONTACTS > 0 {
-            let (slipping, forward) = model.slipping();
+            let slipping = model.slipping().contacts;
             let rates = model.slip_rates(&point.q, &point.v, point.t)?;
             for k in closed.iter().filter(|&k| k < S::SLIDING_CONTACTS) {
                 watch.levels[SLIDES + k] = match slipping.contains(k) {
                     true => {
-                        let along = along(forward, k) * rates[k];
+                        let along = model.along(k, rates[k]);
                         if along > 0.0 {
                             0.0
                         } else {
@@ -259,9 +259,9 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         }
     }
     if S::SLIDING_CONTACTS > 0 {
-        let (open, (slipping, forward)) = (model.open_gaps(), model.slipping());
+        let (open, slipping) = (model.open_gaps(), model.slipping().contacts);
         let rates = match slipping.without(open).is_empty() {
-            true => [0.0; MAX_GAPS],
+            true => [[0.0; 2]; SLIDES],
             false => model.slip_rates(&point.q, &point.v, point.t)?,
         };
         for k in 0..S::SLIDING_CONTACTS {
@@ -271,21 +271,12 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
                 continue;
             }
             *slide = match slipping.contains(k) {
-                true => along(forward, k) * rates[k],
+                true => model.along(k, rates[k]),
                 false => model.cone_margin(k, &point.lambda).0,
             } - watch.slide_level(k);
         }
     }
     Ok(Values { events, gaps })
-}
-
-/// `+1` for a contact slipping forwards, `-1` backwards.
-fn along(forward: GapSet, k: usize) -> Float {
-    if forward.contains(k) {
-        1.0
-    } else {
-        -1.0
-    }
 }
 
 /// The watched function `which` at a point.
@@ -310,7 +301,7 @@ fn value_of<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
         Watched::Slide(k) => {
             let rates = model.slip_rates(&point.q, &point.v, point.t)?;
-            along(model.slipping().1, k) * rates[k] - watch.slide_level(k)
+            model.along(k, rates[k]) - watch.slide_level(k)
         }
     })
 }

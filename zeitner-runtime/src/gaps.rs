@@ -84,3 +84,40 @@ impl GapSet {
         })
     }
 }
+
+/// The most gaps a scene with friction may have (its contacts' values sit after the gaps' in
+/// arrays of [`MAX_GAPS`]).
+pub const MAX_SLIDING_CONTACTS: usize = MAX_GAPS / 2;
+
+/// A direction in a contact's tangent plane, in the coordinates of its slip rows: `[σ, 0]` with
+/// `σ = ±1` where the contact has one tangent (in the plane), a unit vector where it has two
+/// (in space).
+pub(crate) type Tangent = [crate::scalar::Float; 2];
+
+/// The slipping contacts, and the direction each slips along: for a contact in the plane the
+/// sign of its slip, for one in space the direction of its slip where it was last set (the
+/// step's start, or where it began to slip), which tells the slip's side of the contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Slipping {
+    pub contacts: GapSet,
+    pub along: [Tangent; MAX_SLIDING_CONTACTS],
+}
+
+impl Slipping {
+    pub const NONE: Slipping = Slipping {
+        contacts: GapSet::EMPTY,
+        along: [[0.0; 2]; MAX_SLIDING_CONTACTS],
+    };
+
+    /// Contact `k` slips along `direction`.
+    pub fn insert(&mut self, k: usize, direction: Tangent) {
+        self.contacts.insert(k);
+        self.along[k] = direction;
+    }
+
+    /// Contact `k` sticks (or is open).
+    pub fn remove(&mut self, k: usize) {
+        self.contacts.remove(k);
+        self.along[k] = [0.0; 2];
+    }
+}

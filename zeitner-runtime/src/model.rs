@@ -2,9 +2,10 @@
 //! checked for non-finite values, so that a bad model becomes a typed error, not a NaN trajectory.
 
 use crate::error::{ModelFunction, RowSet, StepError};
-use crate::gaps::GapSet;
+use crate::gaps::{GapSet, Slipping, Tangent, MAX_SLIDING_CONTACTS};
 use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
+use crate::math::Real;
 use crate::output::Evaluations;
 use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
@@ -70,10 +71,12 @@ pub(crate) struct MaskedRows {
     slipping: GapSet,
     /// The gaps whose slip row is masked: open or slipping (none without slip rows).
     masked_slides: GapSet,
-    /// The first gap row, and the first slip row (0 where the scene has none): 32 bytes in
-    /// all, as the directions that carry this are copied often.
+    /// The first gap row, and the first slip row (0 where the scene has none), and how many
+    /// slip rows each contact has: 32 bytes in all, as the directions that carry this are
+    /// copied often.
     first: u16,
     first_slip: u16,
+    tangents: u8,
     /// Whether any row is masked: one test on the paths every evaluation takes.
     any: bool,
 }
@@ -82,7 +85,7 @@ pub(crate) struct MaskedRows {
 pub(crate) const REDUNDANT_ROWS: usize = 64;
 
 impl MaskedRows {
-    fn new(first: (usize, usize), open: GapSet, slipping: GapSet, redundant: u64) -> Self {
+    fn new(first: (usize, usize, u8), open: GapSet, slipping: GapSet, redundant: u64) -> Self {
         let slides = first.1 > 0 && !open.union(slipping).is_empty();
         let any = !open.is_empty() || redundant != 0 || slides;
         let masked_slides = match first.1 {
@@ -96,6 +99,7 @@ impl MaskedRows {
             masked_slides,
             first: first.0 as u16,
             first_slip: first.1 as u16,
+            tangents: first.2,
             any,
         }
     }
@@ -115,9 +119,20 @@ impl MaskedRows {
         self.first() + k
     }
 
+    fn layout(&self) -> (usize, usize, u8) {
+        (self.first(), usize::from(self.first_slip), self.tangents)
+    }
+
+    /// The row of contact `k`'s tangent `j`.
     #[inline(always)]
-    fn firsts(&self) -> (usize, usize) {
-        (usize::from(self.first), usize::from(self.first_slip))
+    pub fn slip_row(&self, k: usize, j: usize) -> usize {
+        usize::from(self.first_slip) + usize::from(self.tangents) * k + j
+    }
+
+    /// Contact `k`'s slip rows.
+    #[inline(always)]
+    fn slip_rows(&self, k: usize) -> core::ops::Range<usize> {
+        self.slip_row(k, 0)..self.slip_row(k + 1, 0)
     }
 
     /// The gaps whose slip row is masked: open or slipping (none without slip rows).
@@ -141,7 +156,7 @@ impl MaskedRows {
     fn rows(&self) -> impl Iterator<Item = usize> + '_ {
         let gaps = self.open.iter().map(|k| self.first() + k);
         let slides = self.masked_slides().iter();
-        let slides = slides.map(|k| usize::from(self.first_slip) + k);
+        let slides = slides.flat_map(|k| self.slip_rows(k));
         gaps.chain(slides).chain(self.redundant_rows())
     }
 
@@ -149,7 +164,11 @@ impl MaskedRows {
     pub fn contains(&self, row: usize) -> bool {
         let slip = usize::from(self.first_slip);
         (row >= self.first() && self.open.contains(row - self.first()))
-            || (slip > 0 && row >= slip && self.masked_slides().contains(row - slip))
+            || (slip > 0
+                && row >= slip
+                && self
+                    .masked_slides()
+                    .contains((row - slip) / usize::from(self.tangents)))
             || (row < REDUNDANT_ROWS && self.redundant >> row & 1 == 1)
     }
 
@@ -168,7 +187,9 @@ impl MaskedRows {
             m.row_mut(self.first() + k).fill(0.0);
         }
         for k in self.masked_slides().iter() {
-            m.row_mut(usize::from(self.first_slip) + k).fill(0.0);
+            for row in self.slip_rows(k) {
+                m.row_mut(row).fill(0.0);
+            }
         }
     }
 
@@ -202,8 +223,9 @@ impl MaskedRows {
             m[(self.first() + k, self.first() + k)] = scale;
         }
         for k in self.masked_slides().iter() {
-            let row = usize::from(self.first_slip) + k;
-            m[(row, row)] = scale;
+            for row in self.slip_rows(k) {
+                m[(row, row)] = scale;
+            }
         }
     }
 
@@ -252,7 +274,7 @@ impl MaskedRows {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Masks {
     masked: MaskedRows,
-    forward: GapSet,
+    along: [Tangent; MAX_SLIDING_CONTACTS],
     share: Float,
 }
 
@@ -261,8 +283,11 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     pub evaluations: Evaluations,
     constant_factor: Option<FactorOf<S, N, Z>>,
     masked: MaskedRows,
-    /// Of the slipping contacts, those slipping forwards (`ṡ > 0`).
-    forward: GapSet,
+    /// The direction each slipping contact slips along (see [`Slipping`]).
+    along: [Tangent; MAX_SLIDING_CONTACTS],
+    /// In space, the slip speed below which a slip's direction is taken from `along` more than
+    /// from the slip (see [`Model::slip_directions`]): the constraint tolerance.
+    slip_floor: Float,
     /// Where rows are redundant, the share of the tolerance the others are held to:
     /// `1 / max(1 + Σ|c_i|)` over their combinations `G_d = Σ c_i G_i` at the start.
     redundant_share: Float,
@@ -282,14 +307,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
                     S::POSITION_CONSTRAINTS - S::UNILATERAL_CONSTRAINTS,
                     match S::SLIDING_CONTACTS {
                         0 => 0,
-                        slides => Z - slides.min(Z),
+                        slides => Z - (S::TANGENTS * slides).min(Z),
                     },
+                    S::TANGENTS as u8,
                 ),
                 GapSet::EMPTY,
                 GapSet::EMPTY,
                 0,
             ),
-            forward: GapSet::EMPTY,
+            along: Slipping::NONE.along,
+            slip_floor: 0.0,
             redundant_share: 1.0,
             derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
         })
@@ -302,41 +329,139 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     pub fn set_open_gaps(&mut self, open: GapSet) {
         let (slipping, redundant) = (self.masked.slipping, self.masked.redundant);
-        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, redundant);
+        self.masked = MaskedRows::new(self.masked.layout(), open, slipping, redundant);
     }
 
-    /// The slipping contacts, and of them those slipping forwards (`ṡ > 0`).
-    pub fn slipping(&self) -> (GapSet, GapSet) {
-        (self.masked.slipping, self.forward)
+    /// The slipping contacts, and the direction each slips along.
+    pub fn slipping(&self) -> Slipping {
+        Slipping {
+            contacts: self.masked.slipping,
+            along: self.along,
+        }
     }
 
-    /// Sets the slipping contacts (the others stick while closed), and which of them slip
-    /// forwards (`ṡ > 0`).
-    pub fn set_slipping(&mut self, (slipping, forward): (GapSet, GapSet)) {
+    /// Sets the slipping contacts (the others stick while closed) and their directions.
+    pub fn set_slipping(&mut self, slipping: Slipping) {
         let (open, redundant) = (self.masked.open, self.masked.redundant);
-        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, redundant);
-        self.forward = forward;
+        self.masked = MaskedRows::new(self.masked.layout(), open, slipping.contacts, redundant);
+        self.along = slipping.along;
+    }
+
+    /// In space, at a step's end `(q, v, t)`, each closed contact slipping (but those in
+    /// `stopping`) faster than the slip floor takes the direction of its slip there, so that
+    /// only a turn of more than a right angle within one step (a stop, or all but one) crosses
+    /// the watched `ṡ · along`. Where the slip stayed on the side of its direction the friction
+    /// is unchanged; a slip slower than the floor (starting from rest) is all rounding.
+    pub fn turn_slips(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        stopping: GapSet,
+    ) -> Result<(), StepError> {
+        let turning = self.masked.slipping().without(stopping);
+        if S::TANGENTS < 2 || turning.is_empty() {
+            return Ok(());
+        }
+        let rates = self.slip_rates(q, v, t)?;
+        for k in turning.iter() {
+            let (speed, direction) = unit(rates[k]);
+            if speed > self.slip_floor {
+                self.along[k] = direction;
+            }
+        }
+        Ok(())
+    }
+
+    /// Of the slipping contacts in `crossed` (whose `ṡ · along` fell through zero at the step
+    /// end `(q, v, t)`), those that stop: all in the plane; in space those slipping slower
+    /// than `tolerance` there (the others turned by more than a right angle in the step).
+    pub fn stopping(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        crossed: GapSet,
+        tolerance: Float,
+    ) -> Result<GapSet, StepError> {
+        if S::TANGENTS < 2 || crossed.is_empty() {
+            return Ok(crossed);
+        }
+        let rates = self.slip_rates(q, v, t)?;
+        let mut stopping = GapSet::EMPTY;
+        for k in crossed.iter().filter(|&k| norm(rates[k]) <= tolerance) {
+            stopping.insert(k);
+        }
+        Ok(stopping)
+    }
+
+    /// Adds to `∂a/∂q'` how each slipping contact's friction in space turns with its slip:
+    /// `M⁻¹ (σμλ_N/|ṡ|) (G_Tᵀu⊥)(G_Tᵀu⊥)ᵀ`, `u⊥` normal to the slip in the tangent plane and `σ`
+    /// its side (the slip rows linear in `q'`; their change with `q` is left out). A damping
+    /// whose rate grows as the slip slows — stiff where a slip starts from rest under a load
+    /// that grows slowly past the cone, which an implicit method takes with this term.
+    #[cold]
+    fn turning_friction(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        lambda: &Vector<Z>,
+        factor: &FactorOf<S, N, Z>,
+    ) -> Result<(), StepError> {
+        let rates = self.slip_rates(q, v, t)?;
+        self.evaluations.constraint_jacobians += 1;
+        let unmasked = self.system.constraint_jacobian(q, v, t);
+        for k in self.masked.slipping().iter() {
+            let (speed, direction) = unit(rates[k]);
+            if speed <= self.slip_floor {
+                continue;
+            }
+            let side = if self.along(k, rates[k]) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            let normal = [-direction[1], direction[0]];
+            let y = (unmasked.row(self.masked.slip_row(k, 0)) * normal[0]
+                + unmasked.row(self.masked.slip_row(k, 1)) * normal[1])
+                .transpose();
+            let scale = side * self.system.friction(k) * lambda[self.masked.gap_row(k)] / speed;
+            let x = factor.solve(&y) * scale;
+            self.derivatives.add_to_dv(&x, &y);
+        }
+        Ok(())
+    }
+
+    /// Sets the slip speed under which, in space, a slip's direction is its contact's own.
+    pub fn set_slip_floor(&mut self, tolerance: Float) {
+        self.slip_floor = tolerance;
+    }
+
+    /// `ṡ · along` of contact `k` for its slip velocity `rate`: positive while it slips on the
+    /// side it was set to.
+    #[inline(always)]
+    pub fn along(&self, k: usize, rate: Tangent) -> Float {
+        let along = self.along[k];
+        match S::TANGENTS {
+            1 => along[0] * rate[0],
+            _ => along[0] * rate[0] + along[1] * rate[1],
+        }
     }
 
     /// The rows masked now (open gaps, redundant rows), to put back after a failed re-anchoring.
     pub fn saved_masks(&self) -> Masks {
         Masks {
             masked: self.masked,
-            forward: self.forward,
+            along: self.along,
             share: self.redundant_share,
         }
     }
 
     pub fn restore_masks(&mut self, masks: Masks) {
         (self.masked, self.redundant_share) = (masks.masked, masks.share);
-        self.forward = masks.forward;
+        self.along = masks.along;
     }
 
     /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, the others to be held to
     /// `share` of the tolerance; no rows unmasks them.
     pub fn set_redundant_rows(&mut self, rows: u64, share: Float) {
         let (open, slipping) = (self.masked.open, self.masked.slipping);
-        self.masked = MaskedRows::new(self.masked.firsts(), open, slipping, rows);
+        self.masked = MaskedRows::new(self.masked.layout(), open, slipping, rows);
         self.redundant_share = share;
     }
 
@@ -489,34 +614,48 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         Ok(self.gap_rows(&finite(w, t, ModelFunction::ConstraintRate)?))
     }
 
-    /// Every sliding contact's slip velocity `ṡ`, sticking, slipping or open.
+    /// Every sliding contact's slip velocity `ṡ` (its second entry 0 in the plane), sticking,
+    /// slipping or open.
     pub fn slip_rates(
         &mut self,
         q: &Vector<N>,
         v: &Vector<N>,
         t: Float,
-    ) -> Result<[Float; MAX_GAPS], StepError> {
+    ) -> Result<[Tangent; MAX_SLIDING_CONTACTS], StepError> {
         self.evaluations.constraint_rates += 1;
         let w = finite(
             self.system.constraint_rate(q, v, t),
             t,
             ModelFunction::ConstraintRate,
         )?;
-        let mut values = [0.0; MAX_GAPS];
-        let first = self.masked.firsts().1;
+        Ok(self.tangent_rows(&w))
+    }
+
+    /// Each sliding contact's entries of a vector of all rows.
+    fn tangent_rows(&self, rows: &Vector<Z>) -> [Tangent; MAX_SLIDING_CONTACTS] {
+        let mut values = [[0.0; 2]; MAX_SLIDING_CONTACTS];
         for (k, value) in values.iter_mut().enumerate().take(S::SLIDING_CONTACTS) {
-            *value = w[first + k];
+            for (j, entry) in value.iter_mut().enumerate().take(S::TANGENTS) {
+                *entry = rows[self.masked.slip_row(k, j)];
+            }
         }
-        Ok(values)
+        values
     }
 
     /// Of a closed contact `k` at multipliers `lambda`: how far its sticking force is inside
-    /// Coulomb's cone (`μ|λ_N| - |λ_T|`), and the sign of that force `λ_T`.
-    pub fn cone_margin(&self, k: usize, lambda: &Vector<Z>) -> (Float, bool) {
-        let (first, first_slip) = self.masked.firsts();
-        let (normal, tangential) = (lambda[first + k], lambda[first_slip + k]);
-        let margin = self.system.friction(k) * normal.abs() - tangential.abs();
-        (margin, tangential > 0.0)
+    /// Coulomb's cone (`μ|λ_N| - |λ_T|`), and the direction of that force `λ_T` (in the plane
+    /// its sign).
+    pub fn cone_margin(&self, k: usize, lambda: &Vector<Z>) -> (Float, Tangent) {
+        let normal = lambda[self.masked.gap_row(k)];
+        let tangential = self.tangent_rows(lambda)[k];
+        let (size, direction) = match S::TANGENTS {
+            1 => {
+                let sign = if tangential[0] > 0.0 { 1.0 } else { -1.0 };
+                (tangential[0].abs(), [sign, 0.0])
+            }
+            _ => unit(tangential),
+        };
+        (self.system.friction(k) * normal.abs() - size, direction)
     }
 
     /// The gap rows of a vector of all rows, by gap index.
@@ -685,7 +824,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         x: &Vector<N>,
     ) -> Result<Vector<N>, StepError> {
         self.evaluations.constraint_force_jacobians += 1;
-        let lambda = &self.acting(lambda);
+        let lambda = &self.acting((q, v, t), lambda)?;
         self.derivatives
             .constraint_force_times(self.system, (q, v, t), lambda, x)
     }
@@ -715,38 +854,86 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         S::SLIDING_CONTACTS > 0 && !self.masked.slipping().is_empty()
     }
 
-    /// `-μσ` of slipping contact `k`: what its slip row carries of its normal multiplier.
-    fn slip_coefficient(&self, k: usize) -> Float {
-        let sign = if self.forward.contains(k) { 1.0 } else { -1.0 };
-        -sign * self.system.friction(k)
+    /// The direction each slipping contact's friction opposes at `(q, v, t)`: in the plane the
+    /// sign it was set to; in space that of `ṡ + ε along` on the side of its direction `along`,
+    /// and beyond it (the slip through zero) of `-ṡ + ε along`, so that the force keeps its
+    /// direction through a stop as it does in the plane and the stop is a crossing of
+    /// `ṡ · along`. `ε`, the constraint tolerance, keeps a slip that starts from rest (or ends)
+    /// along its direction where `ṡ` is all rounding, as it would point anywhere.
+    #[cold]
+    fn slip_directions(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    ) -> Result<[Tangent; MAX_SLIDING_CONTACTS], StepError> {
+        if S::TANGENTS < 2 {
+            return Ok(self.along);
+        }
+        let rates = self.slip_rates(q, v, t)?;
+        let mut directions = self.along;
+        for k in self.masked.slipping().iter() {
+            let side = if self.along(k, rates[k]) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            let (speed, direction) = unit(rates[k]);
+            if speed > self.slip_floor {
+                directions[k] = [side * direction[0], side * direction[1]];
+            }
+        }
+        Ok(directions)
     }
 
     /// The rows `W` along which the multipliers act as forces (`Wᵀλ` is the constraint force):
-    /// `G`'s enforced rows (`masked`), and for a slipping contact its normal row plus `-μσ`
-    /// times its slip row (`unmasked`, where it is not enforced) — Coulomb's force `-μ|λ_N|`
-    /// along the slip `σ`, carried by the normal multiplier (`λ_N < 0` where it pushes).
+    /// `G`'s enforced rows (`masked`), and for a slipping contact its normal row plus `-μu`
+    /// times its slip rows (`unmasked`, where they are not enforced) — Coulomb's force `-μ|λ_N|`
+    /// along the slip direction `u` (`directions`), carried by the normal multiplier (`λ_N < 0`
+    /// where it pushes).
     #[cold]
-    fn forcing(&self, unmasked: &Matrix<Z, N>, mut masked: Matrix<Z, N>) -> Matrix<Z, N> {
-        let (first, first_slip) = self.masked.firsts();
+    fn forcing(
+        &self,
+        unmasked: &Matrix<Z, N>,
+        mut masked: Matrix<Z, N>,
+        directions: &[Tangent; MAX_SLIDING_CONTACTS],
+    ) -> Matrix<Z, N> {
         for k in self.masked.slipping().iter() {
-            let coefficient = self.slip_coefficient(k);
-            let slide = unmasked.row(first_slip + k);
-            let mut normal = masked.row_mut(first + k);
-            normal += coefficient * slide;
+            let mu = self.system.friction(k);
+            for (j, u) in directions[k].iter().enumerate().take(S::TANGENTS) {
+                let slide = unmasked.row(self.masked.slip_row(k, j));
+                let mut normal = masked.row_mut(self.masked.gap_row(k));
+                normal += -(u * mu) * slide;
+            }
         }
         masked
     }
 
-    /// The multipliers as forces act, `λ` masked, with each slipping contact's slip row carrying
-    /// `-μσλ_N` (so that `Gᵀ` of these is `Wᵀλ`: for the derivatives of the constraint force,
-    /// and the multipliers a consistent point reports, its friction in `λ_T`).
+    /// The multipliers as forces act at `(q, v, t)`, `λ` masked, with each slipping contact's
+    /// slip rows carrying `-μuλ_N` (so that `Gᵀ` of these is `Wᵀλ`: for the derivatives of the
+    /// constraint force, and the multipliers a consistent point reports, its friction in `λ_T`).
     #[inline(always)]
-    pub fn acting(&self, lambda: &Vector<Z>) -> Vector<Z> {
+    pub fn acting(
+        &mut self,
+        point: (&Vector<N>, &Vector<N>, Float),
+        lambda: &Vector<Z>,
+    ) -> Result<Vector<Z>, StepError> {
+        if !self.slips() {
+            return Ok(self.mask(*lambda));
+        }
+        let directions = self.slip_directions(point)?;
+        Ok(self.acting_along(lambda, &directions))
+    }
+
+    /// [`Model::acting`] with the slip directions given.
+    fn acting_along(
+        &self,
+        lambda: &Vector<Z>,
+        directions: &[Tangent; MAX_SLIDING_CONTACTS],
+    ) -> Vector<Z> {
         let mut acting = self.mask(*lambda);
-        if self.slips() {
-            let (first, first_slip) = self.masked.firsts();
-            for k in self.masked.slipping().iter() {
-                acting[first_slip + k] = self.slip_coefficient(k) * acting[first + k];
+        for k in self.masked.slipping().iter() {
+            let mu = self.system.friction(k);
+            for (j, u) in directions[k].iter().enumerate().take(S::TANGENTS) {
+                acting[self.masked.slip_row(k, j)] = -(u * mu) * acting[self.masked.gap_row(k)];
             }
         }
         acting
@@ -762,14 +949,46 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         if !self.slips() {
             return Ok(None);
         }
+        let along = self.slip_directions((q, v, t))?;
+        self.slipping_along((q, v, t), directions, &along).map(Some)
+    }
+
+    /// `M⁻¹Wᵀ` with the slip directions given.
+    fn slipping_along(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        directions: &ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
+        along: &[Tangent; MAX_SLIDING_CONTACTS],
+    ) -> Result<Matrix<N, Z>, StepError> {
         self.evaluations.constraint_jacobians += 1;
         let unmasked = finite(
             self.system.constraint_jacobian(q, v, t),
             t,
             ModelFunction::ConstraintJacobian,
         )?;
-        let forcing = self.forcing(&unmasked, directions.jacobian);
-        Ok(Some(directions.factor.solve(&forcing.transpose())))
+        let forcing = self.forcing(&unmasked, directions.jacobian, along);
+        Ok(directions.factor.solve(&forcing.transpose()))
+    }
+
+    /// An impulse's `M⁻¹Wᵀ` and the multipliers as they act, where the slipping contacts' friction
+    /// opposes the directions they were set to (the slip after the impulse), not the slip at
+    /// `(q, v, t)` before it: `None` where no contact slips.
+    #[allow(clippy::type_complexity)]
+    pub fn impulse_directions(
+        &mut self,
+        point: (&Vector<N>, &Vector<N>, Float),
+        directions: &ConstraintDirections<FactorOf<S, N, Z>, N, Z>,
+    ) -> Result<Option<Matrix<N, Z>>, StepError> {
+        if !self.slips() {
+            return Ok(None);
+        }
+        let along = self.along;
+        self.slipping_along(point, directions, &along).map(Some)
+    }
+
+    /// [`Model::acting`] for an impulse (see [`Model::impulse_directions`]).
+    pub fn acting_impulse(&self, impulse: &Vector<Z>) -> Vector<Z> {
+        self.acting_along(impulse, &self.along)
     }
 
     /// `∂a/∂λ = -M⁻¹Wᵀ` at a point whose acceleration is known.
@@ -782,9 +1001,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         if !self.slips() {
             return Ok(-at.factor.solve(&at.jacobian.transpose()));
         }
+        let along = self.slip_directions((q, v, t))?;
         self.evaluations.constraint_jacobians += 1;
         let unmasked = self.system.constraint_jacobian(q, v, t);
-        let forcing = self.forcing(&unmasked, at.jacobian);
+        let forcing = self.forcing(&unmasked, at.jacobian, &along);
         Ok(-at.factor.solve(&forcing.transpose()))
     }
 
@@ -795,13 +1015,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         (q, v, t): (&Vector<N>, &Vector<N>, Float),
         jacobian: &Matrix<Z, N>,
         lambda: &Vector<Z>,
-    ) -> Vector<N> {
+    ) -> Result<Vector<N>, StepError> {
         if !self.slips() {
-            return -jacobian.tr_mul(lambda);
+            return Ok(-jacobian.tr_mul(lambda));
         }
+        let along = self.slip_directions((q, v, t))?;
         self.evaluations.constraint_jacobians += 1;
         let unmasked = self.system.constraint_jacobian(q, v, t);
-        -self.forcing(&unmasked, *jacobian).tr_mul(lambda)
+        Ok(-self.forcing(&unmasked, *jacobian, &along).tr_mul(lambda))
     }
 
     /// `(a, λ)` of the acceleration-level system `G M⁻¹Gᵀ λ = G M⁻¹F + b`, `a = M⁻¹(F - Gᵀλ)`,
@@ -910,7 +1131,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         };
         let a = match self.slips() {
             false => factor.solve(&(force - jacobian.tr_mul(lambda))),
-            true => factor.solve(&(force - self.forcing(&unmasked, jacobian).tr_mul(lambda))),
+            true => {
+                let along = self.slip_directions((q, v, t))?;
+                let forcing = self.forcing(&unmasked, jacobian, &along);
+                factor.solve(&(force - forcing.tr_mul(lambda)))
+            }
         };
         if !all_finite(a.as_slice()) {
             finite(force, t, ModelFunction::AppliedForce)?;
@@ -939,7 +1164,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
         at: &Acceleration<FactorOf<S, N, Z>, N, Z>,
     ) -> Result<AccelerationJacobians<'_, SquareOf<S, N, Z>, N, Z>, StepError> {
-        let masked = self.acting(lambda);
+        let masked = self.acting((q, v, t), lambda)?;
         let dp = self.multiplier_effect((q, v, t), at)?;
         let point = AccelerationAt {
             a: &at.a,
@@ -951,10 +1176,28 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         self.evaluations.mass_jacobian_products += u64::from(!S::MASS_IS_CONSTANT);
         self.derivatives
             .evaluate(self.system, (q, v, t), &masked, point)?;
+        if S::TANGENTS > 1 && self.slips() {
+            self.turning_friction((q, v, t), lambda, &at.factor)?;
+        }
         Ok(AccelerationJacobians {
             dq: self.derivatives.dq(),
             dv: self.derivatives.dv(),
             dp,
         })
+    }
+}
+
+/// The length of a tangent vector.
+#[inline(always)]
+fn norm(x: Tangent) -> Float {
+    Real::hypot(x[0], x[1])
+}
+
+/// A tangent vector's length and direction (`[1, 0]` where it is zero).
+fn unit(x: Tangent) -> (Float, Tangent) {
+    let size = norm(x);
+    match size > 0.0 {
+        true => (size, [x[0] / size, x[1] / size]),
+        false => (size, [1.0, 0.0]),
     }
 }

@@ -166,11 +166,14 @@ pub trait ConstrainedSystem<const N: usize, const Z: usize> {
     /// How many event functions [`Self::event_functions`] writes (at most [`MAX_EVENTS`]).
     const EVENTS: usize = 0;
     /// How many gaps slide with Coulomb friction: `0`, or every gap. Their rows are the last
-    /// `SLIDING_CONTACTS` of all, velocity-level, one per gap: the slip velocity `ṡ` of its
-    /// contact. A closed contact sticks (`ṡ = 0` enforced while `|λ_T| ≤ μ|λ_N|`) or slips
-    /// (its row not enforced, the force `-μ|λ_N|` along `sign(ṡ)` applied instead); an open
-    /// one has neither.
+    /// `TANGENTS · SLIDING_CONTACTS` of all, velocity-level: the slip velocity `ṡ` of each
+    /// contact, gap `k`'s in rows `TANGENTS · k ..` of them. A closed contact sticks (`ṡ = 0`
+    /// enforced while `|λ_T| ≤ μ|λ_N|`) or slips (its rows not enforced, the force `-μ|λ_N|`
+    /// along `ṡ/|ṡ|` applied instead); an open one has neither.
     const SLIDING_CONTACTS: usize = 0;
+    /// The slip rows of each sliding contact: 1 in the plane (`ṡ` a number, its friction along
+    /// `sign(ṡ)`), 2 in space (`ṡ` a vector in the tangent plane, Coulomb's cone a disc).
+    const TANGENTS: usize = 1;
 
     /// Newton's coefficient of restitution of gap `gap` (`0..UNILATERAL_CONSTRAINTS`): the
     /// separating velocity after an impact is `e` times the approaching one. Default 0.
@@ -333,7 +336,7 @@ impl<const N: usize, const P: usize> EventGradient<N, P> {
 /// The most gaps (unilateral rows) a system may have.
 pub use crate::gaps::MAX_GAPS;
 /// The most gaps a scene with friction may have ([`ConstrainedSystem::SLIDING_CONTACTS`]).
-pub const MAX_SLIDING_CONTACTS: usize = MAX_GAPS / 2;
+pub use crate::gaps::MAX_SLIDING_CONTACTS;
 /// The most event functions a system may have.
 pub const MAX_EVENTS: usize = 32;
 

@@ -68,6 +68,7 @@ where
     const UNILATERAL_CONSTRAINTS: usize = S::UNILATERAL_CONSTRAINTS;
     const EVENTS: usize = S::EVENTS;
     const SLIDING_CONTACTS: usize = S::SLIDING_CONTACTS;
+    const TANGENTS: usize = S::TANGENTS;
     type Mass = S::Mass;
     type Storage = D;
 

@@ -392,3 +392,225 @@ impl TwoBlocks {
         }
     }
 }
+
+/// A ball (a uniform sphere of radius `r`) on a rough floor `z ≥ 0` in space, with friction
+/// `mu` and restitution `e`: Coulomb's cone a disc. Its coordinates are its centre `(x, y, z)`
+/// and three angles whose rates are its angular velocity `ω` (a sphere's dynamics do not depend
+/// on its orientation); its lowest point slips at `(ẋ - r ω_y, ẏ + r ω_x)`. Its tangential
+/// mobility is the same in every direction, so a slip keeps its direction while friction stops
+/// it: after `|ṡ₀| / (7/2 μ g)` it rolls.
+#[derive(Clone, Debug)]
+pub struct Ball {
+    pub m: Float,
+    pub r: Float,
+    pub g: Float,
+    pub mu: Float,
+    pub e: Float,
+}
+
+#[constrained_system]
+impl Ball {
+    fn mass(&self) -> [Float; 6] {
+        let inertia = 0.4 * self.m * self.r * self.r;
+        [self.m, self.m, self.m, inertia, inertia, inertia]
+    }
+
+    fn force(&self) -> [Float; 6] {
+        [0.0, 0.0, -self.m * self.g, 0.0, 0.0, 0.0]
+    }
+
+    fn gaps(&self, [_x, _y, z, _ax, _ay, _az]: [Float; 6]) -> [Float; 1] {
+        [z - self.r]
+    }
+
+    fn slips(&self, _q: [Float; 6], [vx, vy, _vz, wx, wy, _wz]: [Float; 6]) -> [Float; 2] {
+        [vx - self.r * wy, vy + self.r * wx]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+
+    fn restitution(&self) -> [Float; 1] {
+        [self.e]
+    }
+}
+
+impl Ball {
+    /// The ball on the floor at `t`, started there with velocity `v0` and angular velocity
+    /// `w0`: its slip `ṡ₀` falls along its direction `u` at `7/2 μ g` until it rolls at
+    /// [`Ball::rolls_at`]; meanwhile the centre decelerates by `μ g u` and the spin turns by
+    /// `5/2 μ g / r (-u_y, u_x, 0)`. Returns the six velocities and the centre's `(x, y)` moved.
+    pub fn on_the_floor(
+        &self,
+        v0: [Float; 3],
+        w0: [Float; 3],
+        t: Float,
+    ) -> ([Float; 6], [Float; 2]) {
+        let slip = [v0[0] - self.r * w0[1], v0[1] + self.r * w0[0]];
+        let speed = slip[0].hypot(slip[1]);
+        let u = [slip[0] / speed, slip[1] / speed];
+        let s = t.min(self.rolls_at(v0, w0));
+        let (a, turn) = (self.mu * self.g, 2.5 * self.mu * self.g / self.r);
+        let v = [v0[0] - a * s * u[0], v0[1] - a * s * u[1]];
+        let w = [w0[0] - turn * s * u[1], w0[1] + turn * s * u[0], w0[2]];
+        // Decelerating until it rolls, then at the rolling velocity.
+        let moved = [
+            v0[0] * s - 0.5 * a * s * s * u[0] + v[0] * (t - s),
+            v0[1] * s - 0.5 * a * s * s * u[1] + v[1] * (t - s),
+        ];
+        ([v[0], v[1], 0.0, w[0], w[1], w[2]], moved)
+    }
+
+    /// When the ball started on the floor with `v0`, `w0` rolls: `|ṡ₀| / (7/2 μ g)`.
+    pub fn rolls_at(&self, v0: [Float; 3], w0: [Float; 3]) -> Float {
+        let slip = [v0[0] - self.r * w0[1], v0[1] + self.r * w0[0]];
+        slip[0].hypot(slip[1]) / (3.5 * self.mu * self.g)
+    }
+
+    /// The velocities just after the ball strikes the floor at `vz < 0` with velocity `v` and
+    /// angular velocity `w`: Newton's `-e vz` normal, and Coulomb's impulse against the slip,
+    /// which keeps its direction and falls by `7/2 μ (1 + e)|vz|` or stops (the ball rolls).
+    pub fn after_strike(&self, v: [Float; 3], w: [Float; 3]) -> [Float; 6] {
+        let slip = [v[0] - self.r * w[1], v[1] + self.r * w[0]];
+        let speed = slip[0].hypot(slip[1]);
+        let push = (1.0 + self.e) * -v[2];
+        // The friction impulse per unit mass, along -u: at most μ push, at least what stops the
+        // slip (the slip falls by 7/2 of it).
+        let friction = (self.mu * push).min(speed / 3.5);
+        let u = match speed > 0.0 {
+            true => [slip[0] / speed, slip[1] / speed],
+            false => [0.0, 0.0],
+        };
+        let turn = 2.5 * friction / self.r;
+        [
+            v[0] - friction * u[0],
+            v[1] - friction * u[1],
+            -self.e * v[2],
+            w[0] - turn * u[1],
+            w[1] + turn * u[0],
+            w[2],
+        ]
+    }
+}
+
+/// A point mass on a plane in space inclined at `angle` (rising along `y`), with friction `mu`,
+/// sent across the slope: gravity's pull down the slope turns its slip while friction opposes
+/// it, so it slides on a curve. Its gap is the distance from the plane; its slip velocity the
+/// speed across the slope (`x`) and up it. With `k = μ cot θ`, the speed and the angle `φ`
+/// between the velocity and the way down the slope keep `v sin φ / tan^k(φ/2)` (Routh's
+/// hodograph); for `k > 1` the mass stops, turned straight down the slope, and stays.
+#[derive(Clone, Debug)]
+pub struct SlopeAcross {
+    pub m: Float,
+    pub g: Float,
+    pub angle: Float,
+    pub mu: Float,
+}
+
+#[constrained_system]
+impl SlopeAcross {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, self.m]
+    }
+
+    fn force(&self) -> [Float; 3] {
+        [0.0, 0.0, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x, y, z]: [Float; 3]) -> [Float; 1] {
+        [z * self.angle.cos() - y * self.angle.sin()]
+    }
+
+    fn slips(&self, _q: [Float; 3], [vx, vy, vz]: [Float; 3]) -> [Float; 2] {
+        [vx, vy * self.angle.cos() + vz * self.angle.sin()]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl SlopeAcross {
+    /// `k = μ cot θ`: friction over gravity's pull along the slope.
+    pub fn ratio(&self) -> Float {
+        self.mu / self.angle.tan()
+    }
+
+    /// Sent across the slope at `speed` from the origin, the mass at the half-angle tangent
+    /// `w = tan(φ/2)` of its turn (`1` at the start, `0` where it stops): the time, and its
+    /// displacement across and down the slope. From the hodograph `v = v₀ w^k (1 + w²)/(2w)`
+    /// and `v φ' = -g sin θ sin φ`, each a closed-form integral in `w`.
+    pub fn sent_across(&self, speed: Float, w: Float) -> (Float, Float, Float) {
+        let (k, a) = (self.ratio(), self.g * self.angle.sin());
+        // ∫_w^1 x^p (1 + x²) dx and ∫_w^1 x^p (1 - x²)(1 + x²) dx.
+        let rise =
+            |p: Float| (1.0 - w.powf(p + 1.0)) / (p + 1.0) + (1.0 - w.powf(p + 3.0)) / (p + 3.0);
+        let fall =
+            |p: Float| (1.0 - w.powf(p + 1.0)) / (p + 1.0) - (1.0 - w.powf(p + 5.0)) / (p + 5.0);
+        let time = speed / (2.0 * a) * rise(k - 2.0);
+        let across = speed * speed / (2.0 * a) * rise(2.0 * k - 2.0);
+        let down = speed * speed / (4.0 * a) * fall(2.0 * k - 3.0);
+        (time, across, down)
+    }
+
+    /// The speed at half-angle tangent `w`: `v₀ w^k (1 + w²) / (2w)`.
+    pub fn speed_at(&self, speed: Float, w: Float) -> Float {
+        speed * w.powf(self.ratio()) * (1.0 + w * w) / (2.0 * w)
+    }
+}
+
+/// A block (a point mass) on a rough floor `z ≥ 0` in space, pulled by a horizontal force
+/// growing as `rate · t` along `heading` (radians from `x`): it sticks until the pull reaches
+/// `μ m g`, then slides along the pull, `m s'' = rate · t − μ m g`.
+#[derive(Clone, Debug)]
+pub struct PulledBlock {
+    pub m: Float,
+    pub g: Float,
+    pub mu: Float,
+    pub rate: Float,
+    pub heading: Float,
+}
+
+#[constrained_system]
+impl PulledBlock {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, self.m]
+    }
+
+    fn force(&self, t: Float) -> [Float; 3] {
+        let pull = self.rate * t;
+        [
+            pull * self.heading.cos(),
+            pull * self.heading.sin(),
+            -self.m * self.g,
+        ]
+    }
+
+    fn gaps(&self, [_x, _y, z]: [Float; 3]) -> [Float; 1] {
+        [z]
+    }
+
+    fn slips(&self, _q: [Float; 3], [vx, vy, _vz]: [Float; 3]) -> [Float; 2] {
+        [vx, vy]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}
+
+impl PulledBlock {
+    /// When the pull reaches `μ m g` and the block starts to slide.
+    pub fn breaks_away_at(&self) -> Float {
+        self.mu * self.m * self.g / self.rate
+    }
+
+    /// How far the block has slid along the pull at `t`, and at what speed:
+    /// `rate (t − t₁)³ / 6m` and `rate (t − t₁)² / 2m` after the break-away time `t₁`.
+    pub fn slid(&self, t: Float) -> (Float, Float) {
+        let after = (t - self.breaks_away_at()).max(0.0);
+        let c = self.rate / self.m;
+        (c * after * after * after / 6.0, c * after * after / 2.0)
+    }
+}

@@ -143,7 +143,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
         }
         let closing = self.closing_gaps(values)?;
-        let sliding = self.sliding_changes(values, releasing);
+        let sliding = self.sliding_changes(values, releasing)?;
         self.watch = watch;
         if S::UNILATERAL_CONSTRAINTS > 0 && !releasing.is_empty() {
             self.open_contacts(releasing)?;
@@ -172,13 +172,17 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     /// The closed sliding contacts (not opening now) whose watched value fell through zero at
     /// the step end: sticking ones whose force left Coulomb's cone, and slipping ones whose
-    /// slip stopped.
-    fn sliding_changes(&self, values: &Values, releasing: GapSet) -> (GapSet, GapSet) {
+    /// slip stopped. In space the slipping ones that go on take their slip's direction there.
+    fn sliding_changes(
+        &mut self,
+        values: &Values,
+        releasing: GapSet,
+    ) -> Result<(GapSet, GapSet), StepError> {
         let (mut to_slip, mut to_stop) = (GapSet::EMPTY, GapSet::EMPTY);
         if S::SLIDING_CONTACTS == 0 {
-            return (to_slip, to_stop);
+            return Ok((to_slip, to_stop));
         }
-        let slipping = self.model.slipping().0;
+        let slipping = self.model.slipping().contacts;
         let closed = GapSet::first(S::SLIDING_CONTACTS).without(self.model.open_gaps());
         for k in closed.without(releasing).iter() {
             if values.gaps[events::SLIDES + k] < 0.0 {
@@ -188,7 +192,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 }
             }
         }
-        (to_slip, to_stop)
+        let end = self.record.last.end;
+        let tolerance = self.options.constraint_tolerance;
+        let end = (&end.q, &end.v, end.t);
+        to_stop = self.model.stopping(end, to_stop, tolerance)?;
+        self.model.turn_slips(end, to_stop)?;
+        Ok((to_slip, to_stop))
     }
 
     /// Sets the contacts of `to_slip` slipping (along their sticking force) and tries those of
@@ -212,18 +221,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let last = &self.record.last;
         let (start, before) = (last.start, last.end);
         let step = (last.step_multipliers, last.newton_iterations);
-        let (mut slipping, mut forward) = self.model.slipping();
+        let mut slipping = self.model.slipping();
         for k in to_slip.iter() {
-            slipping.insert(k);
-            match self.model.cone_margin(k, &before.lambda).1 {
-                true => forward.insert(k),
-                false => forward.remove(k),
-            }
+            slipping.insert(k, self.model.cone_margin(k, &before.lambda).1);
         }
         for k in to_stop.iter() {
             slipping.remove(k);
         }
-        self.model.set_slipping((slipping, forward));
+        self.model.set_slipping(slipping);
         let tolerance = self.options.constraint_tolerance;
         let state = (before.q, before.v, before.t);
         // The step's report stays the step's, ending where the contacts changed (a sticking

@@ -70,6 +70,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             self.stiffness = StiffnessTest::default();
         }
         self.method.use_step_control(options.step);
+        self.model.set_slip_floor(tolerance);
         self.watch = watch;
         // New options may cure a stall: the next steps are watched afresh.
         self.progress = Progress::default();

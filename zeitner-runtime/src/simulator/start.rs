@@ -91,7 +91,8 @@ pub(super) fn suits_the_contacts<S: ConstrainedSystem<N, Z>, const N: usize, con
         && S::UNILATERAL_CONSTRAINTS <= MAX_GAPS
         && S::UNILATERAL_CONSTRAINTS <= S::POSITION_CONSTRAINTS
         && (S::SLIDING_CONTACTS == 0 || S::SLIDING_CONTACTS == S::UNILATERAL_CONSTRAINTS)
-        && S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS
+        && (S::TANGENTS == 1 || S::TANGENTS == 2)
+        && S::TANGENTS * S::SLIDING_CONTACTS <= Z - S::POSITION_CONSTRAINTS
         && S::SLIDING_CONTACTS <= MAX_SLIDING_CONTACTS;
     if !fits {
         return Err(StepError::InvalidOption(InvalidOption::TooManyEvents));
@@ -124,6 +125,7 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
         model.set_open_gaps(GapSet::first(S::UNILATERAL_CONSTRAINTS).without(closed));
     }
     if S::SLIDING_CONTACTS > 0 {
+        model.set_slip_floor(tolerance);
         contact::slip_by_velocities(model, (&q, &v, t), tolerance)?;
     }
     let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;

@@ -135,6 +135,10 @@ impl<const N: usize> Derivatives<N, Matrix<N, N>> for DenseDerivatives<N> {
         &self.dv
     }
 
+    fn add_to_dv(&mut self, x: &Vector<N>, y: &Vector<N>) {
+        self.dv += x * y.transpose();
+    }
+
     #[inline]
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,

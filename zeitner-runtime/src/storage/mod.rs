@@ -121,6 +121,10 @@ pub trait Derivatives<const N: usize, Q> {
     ) -> Result<(), StepError>;
     fn dq(&self) -> &Q;
     fn dv(&self) -> &Q;
+    /// Adds `x yᵀ` to `∂a/∂q'`: a term the model's Jacobians do not carry (a slip in space,
+    /// whose friction turns with its velocity). The sparse storage keeps the entries within
+    /// `∂a/∂q'`'s pattern only.
+    fn add_to_dv(&mut self, x: &Vector<N>, y: &Vector<N>);
     /// `∂(Gᵀλ)/∂q · x` at `(q, v, t)` for fixed `λ`, checked like [`Derivatives::evaluate`];
     /// the derivatives kept are left as they are.
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(

@@ -286,6 +286,13 @@ impl<const N: usize> Derivatives<N, SparseSquare> for SparseDerivatives {
         &self.dv
     }
 
+    fn add_to_dv(&mut self, x: &Vector<N>, y: &Vector<N>) {
+        let square = &mut self.dv;
+        for (value, (row, column)) in square.values.iter_mut().zip(square.pattern.entries()) {
+            *value += x[row] * y[column];
+        }
+    }
+
     fn constraint_force_times<S: JacobianSource<N, Z>, const Z: usize>(
         &mut self,
         system: &S,
