@@ -7,7 +7,7 @@ use zeitner::{
     ConstrainedSystem, InnerMethod, Options, Simulator, Start, StepControl, StepError, Vector,
 };
 
-use crate::scenes::friction::{Belt, Disk, SlidingOscillator, TwoBlocks};
+use crate::scenes::friction::{Ball, Belt, Disk, PulledBlock, SlidingOscillator, TwoBlocks};
 use crate::scenes::pendulum::Pendulum;
 use crate::scenes::reference;
 use crate::scenes::steam_generator::SteamGenerator;
@@ -641,7 +641,8 @@ fn bad_starts(cases: &mut Vec<Case>) {
 /// energy may only fall), a mass riding a belt whose slip speed comes back to zero and grazes
 /// it once a period (the belt does work: no energy check), two blocks on a spring whose two
 /// contacts slip and stick at once, and a disk striking a rough floor, bouncing and rolling
-/// (impacts with friction).
+/// (impacts with friction); in space (Coulomb's cone a disc), a spinning ball bouncing to a
+/// roll, and a block pulled past its cone by a slowly growing load (a slip from rest, stiff).
 fn friction(cases: &mut Vec<Case>) {
     let start = (Vector::<2>::new(0.5, 0.0), Vector::zeros());
     for mu in [0.0, 0.1, 0.5, 1.0] {
@@ -725,6 +726,54 @@ fn friction(cases: &mut Vec<Case>) {
         &[1e-3],
         1e-10,
         Some((&energy, 6.9)),
+    );
+    friction_in_space(cases);
+}
+
+fn friction_in_space(cases: &mut Vec<Case>) {
+    let ball = Ball {
+        m: 0.5,
+        r: 0.1,
+        g: 9.81,
+        mu: 0.3,
+        e: 0.5,
+    };
+    let spinning = (
+        Vector::<6>::new(0.0, 0.0, 0.3, 0.0, 0.0, 0.0),
+        Vector::<6>::new(1.0, -0.5, 0.0, 4.0, 3.0, -2.0),
+    );
+    let energy = |q: &[f64], v: &[f64]| {
+        let spin = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
+        0.25 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.001 * spin + 0.5 * 9.81 * q[2]
+    };
+    push_all(
+        cases,
+        "friction",
+        "ball in space, spinning, bouncing to a roll, μ = 0.3, e = 0.5",
+        &ball,
+        spinning,
+        &[1.0],
+        &[1e-3],
+        1e-10,
+        Some((&energy, 1.8)),
+    );
+    let block = PulledBlock {
+        m: 2.0,
+        g: 9.81,
+        mu: 0.4,
+        rate: 5.0,
+        heading: 2.2,
+    };
+    push_all(
+        cases,
+        "friction",
+        "block in space pulled past its cone by a growing load",
+        &block,
+        (Vector::<3>::zeros(), Vector::zeros()),
+        &[2.5],
+        &[1e-3],
+        1e-10,
+        None,
     );
 }
 
