@@ -3,13 +3,14 @@
 //! and Painlevé's rod, refused where no consistent contact force exists. In space (two
 //! tangents, Coulomb's cone a disc): a ball slipping on a floor until it rolls, striking it
 //! with spin, a mass sent across a slope that curves to a stop, a block pulled until it breaks
-//! away.
+//! away. A ladder on a rough floor against a rough wall, held statically indeterminately.
 
 use zeitner::{
     GapSet, InvalidOption, Options, Simulator, Start, StepControl, StepError, StopReason, Vector,
 };
 use zeitner_scenes::friction::{
-    Ball, Belt, Disk, Incline, PainleveRod, PulledBlock, SlidingOscillator, SlopeAcross, TwoBlocks,
+    Ball, Belt, Disk, Incline, Ladder, PainleveRod, PulledBlock, SlidingOscillator, SlopeAcross,
+    TwoBlocks,
 };
 use zeitner_scenes::reference;
 use zeitner_scenes::steam_generator::SlidingSupportSteamGenerator;
@@ -674,4 +675,92 @@ fn a_block_pulled_on_a_rough_floor_in_space_breaks_away_when_the_pull_reaches_it
         off(&friction, &expected, block.m * block.g) < 1e-9,
         "{friction:?}"
     );
+}
+
+fn ladder() -> Ladder {
+    Ladder {
+        m: 10.0,
+        l: 3.0,
+        g: 9.81,
+        mu_floor: 0.4,
+        mu_wall: 0.3,
+    }
+}
+
+fn ladder_start(ladder: &Ladder, theta: f64) -> Start<3> {
+    let [x, y, theta] = ladder.standing(theta);
+    Start {
+        q: Vector::<3>::new(x, y, theta),
+        v: Vector::zeros(),
+        t: 0.0,
+    }
+}
+
+#[test]
+fn a_ladder_against_a_rough_wall_stands_above_its_least_angle_with_forces_in_both_cones() {
+    // Four rows on three coordinates: the friction forces have one free parameter, and the
+    // ladder stands wherever one choice keeps both ends in their cones.
+    let ladder = ladder();
+    let least = ladder.least_standing_angle();
+    for above in [1e-4, 0.01, 0.3] {
+        let start = ladder_start(&ladder, least + above);
+        let mut sim = Simulator::new(&ladder, start, tight()).unwrap();
+        let changes = friction_changes(&mut sim, 1.0);
+        let end = sim.last().end;
+        let moved = (end.q - start.q).amax().max(end.v.amax());
+        // Rows: the floor's and the wall's gaps, then their slips.
+        let (floor, wall) = (
+            (-end.lambda[0], end.lambda[2]),
+            (-end.lambda[1], end.lambda[3]),
+        );
+        let inside = |(normal, tangential): (f64, f64), mu: f64| mu * normal - tangential.abs();
+        let margins = (inside(floor, ladder.mu_floor), inside(wall, ladder.mu_wall));
+        // What the forces do together: carry the weight, whatever the choice among them.
+        let force = sim.last().constraint_force;
+        let weight = ladder.m * ladder.g;
+        let carried = off(force.as_slice(), &[0.0, weight, 0.0], weight);
+        println!(
+            "ladder {above} rad above its least angle: moved {moved:.1e}, cone margins \
+             {:.2e} and {:.2e} N, weight carried to {carried:.1e}",
+            margins.0, margins.1
+        );
+        assert!(changes.is_empty(), "{changes:?}");
+        assert!(moved < 1e-12, "{moved:e}");
+        let slack = 1e-9 * weight;
+        assert!(margins.0 > -slack && margins.1 > -slack, "{margins:?}");
+        assert!(carried < 1e-12, "{force}");
+    }
+}
+
+#[test]
+fn a_ladder_below_its_least_angle_slides_at_both_ends_as_its_reduced_model_says() {
+    let ladder = ladder();
+    let least = ladder.least_standing_angle();
+    for below in [1e-4, 0.05, 0.3] {
+        let theta0 = least - below;
+        let start = ladder_start(&ladder, theta0);
+        let mut sim = Simulator::new(&ladder, start, tight()).unwrap();
+        let slipping = sim.start_report().multipliers;
+        let t_end = 0.4;
+        sim.advance_to(t_end, |_| {}).unwrap();
+        let end = sim.last().end;
+        let (theta, omega) = ladder.released(theta0, t_end, 1e-5);
+        let (_, floor, wall) = ladder.sliding(theta, omega);
+        // The reduced model holds while both ends press.
+        assert!(floor > 0.0 && wall > 0.0, "{floor} {wall}");
+        let error = off(&[end.q[2], end.v[2]], &[theta, omega], 1.0);
+        let reaction = off(
+            &[-end.lambda[0], -end.lambda[1]],
+            &[floor, wall],
+            ladder.m * ladder.g,
+        );
+        println!(
+            "ladder {below} rad below its least angle: θ, θ' off the reduced model by \
+             {error:.1e}, normal forces by {reaction:.1e} at {t_end} s (θ from {theta0:.4} to \
+             {theta:.4})"
+        );
+        assert!(error < 1e-8, "{error:e}");
+        assert!(reaction < 1e-8, "{reaction:e}");
+        assert!(slipping.iter().all(|x| x.is_finite()));
+    }
 }

@@ -5,7 +5,8 @@
 use crate::error::{Row, RowSet, StepError};
 use crate::gaps::GapSet;
 use crate::linalg::{
-    all_finite, dependent, finite_state, keep_leading_rows, max_abs, solve_spd, Lu,
+    all_finite, dependent, dependent_preferring, finite_state, keep_leading_rows, max_abs,
+    solve_spd, Lu,
 };
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model, REDUNDANT_ROWS};
@@ -135,7 +136,12 @@ fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
 ) -> Result<RowSet, StepError> {
     let r = S::POSITION_CONSTRAINTS;
     let gram = model.directions(q, v, t)?.gram();
-    let dependent = dependent(&gram);
+    // With friction, a sticking contact's slip row is the one left dependent where there is
+    // a choice: a gap's row never is, and the cones choose among the multipliers.
+    let dependent = match S::SLIDING_CONTACTS {
+        0 => dependent(&gram),
+        _ => dependent_preferring(&gram, |row| row < r),
+    };
     let mut rows = RowSet::new(r);
     let mut bits = 0u64;
     let first_gap = r - S::UNILATERAL_CONSTRAINTS;
@@ -164,6 +170,7 @@ fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
     kept.regularise(&mut masked_gram);
     // The largest `1 + Σ|c_i|`: how far a dependent row misses where the others miss by one.
     let mut reach: Float = 1.0;
+    let mut indeterminate = None;
     for (row, _) in dependent.iter().enumerate().filter(|(_, &d)| d) {
         let mut column: Vector<Z> = gram.column(row).into_owned();
         kept.clear(&mut column);
@@ -174,8 +181,24 @@ fn mask_redundant_rows<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usiz
             }
         })?;
         reach = reach.max(1.0 + combination.iter().map(|c| c.abs()).sum::<Float>());
+        if S::SLIDING_CONTACTS > 0 {
+            // `G_d = Σ c_i G_i`: the multipliers may move along `e_d - c`.
+            let mut free = -combination;
+            free[row] = 1.0;
+            indeterminate = Some(free);
+        }
     }
     model.set_redundant_rows(bits, 1.0 / reach);
+    if let Some(free) = indeterminate {
+        if rows.len() > 1 {
+            // More than one free direction: the cones' choice is a linear programme.
+            return Err(StepError::RankDeficientConstraints {
+                t,
+                dependent_rows: rows,
+            });
+        }
+        model.set_indeterminate(free);
+    }
     Ok(rows)
 }
 
@@ -563,6 +586,15 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
         None => model.jacobian(&end.q, &end.v, end.t)?,
     };
     let constraint_force = model.constraint_force((&end.q, &end.v, end.t), &g, &end.lambda)?;
+    // A statically indeterminate contact set reports multipliers within its cones (they act
+    // alike: the force above is the same).
+    let end = match S::SLIDING_CONTACTS {
+        0 => end,
+        _ => Point {
+            lambda: model.within_cones(&end.lambda),
+            ..end
+        },
+    };
     // The step's multipliers too: a row that no force reads (a closed contact's, masked) can
     // carry an overflowed prediction through Newton untouched (f32 fuzz, a ball under
     // g = f32::MAX: λ = -3.4e38 extrapolated to -∞).

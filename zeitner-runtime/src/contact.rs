@@ -9,13 +9,14 @@
 //! settles simultaneous impacts consistently). Contacts with friction stick or slip through the
 //! impulse as Coulomb's law says (see `impulse`).
 
-use crate::consistency::{consistent_point, slipping_multipliers};
+use crate::consistency::{consistent_point, consistent_start, slipping_multipliers};
 use crate::error::StepError;
 use crate::gaps::{GapSet, Slipping, Tangent};
 use crate::linalg::solve_spd;
 use crate::mass::MassMatrix;
 use crate::math::Real;
 use crate::model::Model;
+use crate::options::StartPolicy;
 use crate::output::Point;
 use crate::scalar::Float;
 use crate::system::{ConstrainedSystem, Vector, MAX_GAPS};
@@ -146,13 +147,33 @@ fn slip_direction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     })
 }
 
+/// The slip speed an impulse leaves at a contact it stopped, by rounding: a share of the
+/// largest slip speed before or after it at `(q, after, t)` (before: `v`).
+pub(crate) fn impulse_rounding<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, after, t): (Vector<N>, Vector<N>, Float),
+    v: &Vector<N>,
+) -> Result<Float, StepError> {
+    let speeds = |rates: [Tangent; crate::gaps::MAX_SLIDING_CONTACTS]| {
+        rates
+            .iter()
+            .fold(0.0, |m: Float, s| m.max(Real::hypot(s[0], s[1])))
+    };
+    let before = speeds(model.slip_rates(&q, v, t)?);
+    let after = speeds(model.slip_rates(&q, &after, t)?);
+    Ok(RELEASE * before.max(after))
+}
+
 /// Sets slipping the closed sticking contacts whose force at a consistent point leaves
 /// Coulomb's cone (by more than rounding), the farthest out first, each in the direction its
 /// sticking force pushed, and recomputes the point until every sticking contact holds; returns
-/// the contacts set slipping.
+/// the contacts set slipping. Each point is made as a start is (to `tolerance`), as a contact
+/// that slips can make rows that were redundant necessary (a ladder whose foot slips is held by
+/// its top's slip row).
 pub(crate) fn slip_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     point: &mut Point<N, Z>,
+    tolerance: Float,
 ) -> Result<GapSet, StepError> {
     let mut slipped = GapSet::EMPTY;
     for _ in 0..=S::SLIDING_CONTACTS {
@@ -162,7 +183,8 @@ pub(crate) fn slip_beyond_cone<S: ConstrainedSystem<N, Z>, const N: usize, const
         };
         slipped.insert(k);
         model.set_slipping(modes);
-        *point = consistent_point(model, point.t, point.q, point.v)?;
+        let state = (point.q, point.v, point.t);
+        *point = consistent_start(model, state, tolerance, StartPolicy::Project)?.0;
     }
     Ok(slipped)
 }

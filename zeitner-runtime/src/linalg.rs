@@ -35,18 +35,30 @@ pub fn dependent_rows<const Z: usize>(a: &Matrix<Z, Z>, position_rows: usize) ->
 
 /// [`dependent_rows`], every one flagged.
 pub fn dependent<const Z: usize>(a: &Matrix<Z, Z>) -> [bool; Z] {
+    dependent_preferring(a, |_| true)
+}
+
+/// [`dependent`], the rows that are `preferred` pivoted first, so that where a choice exists
+/// the dependent rows are among the others.
+pub fn dependent_preferring<const Z: usize>(
+    a: &Matrix<Z, Z>,
+    preferred: impl Fn(usize) -> bool,
+) -> [bool; Z] {
     let mut work = *a;
     let mut remaining = [true; Z];
     let scale = (0..Z).map(|i| work[(i, i)].abs()).fold(0.0, Float::max);
+    let pivots = |work: &Matrix<Z, Z>, remaining: &[bool; Z], first: bool| {
+        (0..Z)
+            .filter(|&i| remaining[i] && preferred(i) == first)
+            .max_by(|&i, &j| work[(i, i)].total_cmp(&work[(j, j)]))
+            .filter(|&p| work[(p, p)] > RELATIVE_PIVOT * scale && work[(p, p)].is_finite())
+    };
     for _ in 0..Z {
-        let pivot = (0..Z)
-            .filter(|&i| remaining[i])
-            .max_by(|&i, &j| work[(i, i)].total_cmp(&work[(j, j)]));
-        let Some(p) = pivot else { break };
-        let d = work[(p, p)];
-        if !(d > RELATIVE_PIVOT * scale) || !d.is_finite() {
+        let pivot = pivots(&work, &remaining, true).or_else(|| pivots(&work, &remaining, false));
+        let Some(p) = pivot else {
             return remaining;
-        }
+        };
+        let d = work[(p, p)];
         remaining[p] = false;
         for i in 0..Z {
             for j in 0..Z {

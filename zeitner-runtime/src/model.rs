@@ -272,9 +272,10 @@ impl MaskedRows {
 /// What [`Model::saved_masks`] keeps: the masked rows and the share of the tolerance the
 /// enforced rows are held to.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Masks {
+pub(crate) struct Masks<const Z: usize> {
     masked: MaskedRows,
     along: [Tangent; MAX_SLIDING_CONTACTS],
+    indeterminate: Option<Vector<Z>>,
     share: Float,
 }
 
@@ -288,6 +289,10 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     /// In space, the slip speed below which a slip's direction is taken from `along` more than
     /// from the slip (see [`Model::slip_directions`]): the constraint tolerance.
     slip_floor: Float,
+    /// Where sticking contacts hold the system statically indeterminately (one redundant row in
+    /// a scene with friction), the multipliers' one free direction `n` (`Gᵀn = 0`): every
+    /// `λ + s n` acts alike, and Coulomb's cones choose among them.
+    indeterminate: Option<Vector<Z>>,
     /// Where rows are redundant, the share of the tolerance the others are held to:
     /// `1 / max(1 + Σ|c_i|)` over their combinations `G_d = Σ c_i G_i` at the start.
     redundant_share: Float,
@@ -317,6 +322,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             ),
             along: Slipping::NONE.along,
             slip_floor: 0.0,
+            indeterminate: None,
             redundant_share: 1.0,
             derivatives: StorageOf::<S, N, Z>::derivatives::<S, Z>()?,
         })
@@ -444,17 +450,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// The rows masked now (open gaps, redundant rows), to put back after a failed re-anchoring.
-    pub fn saved_masks(&self) -> Masks {
+    pub fn saved_masks(&self) -> Masks<Z> {
         Masks {
             masked: self.masked,
             along: self.along,
+            indeterminate: self.indeterminate,
             share: self.redundant_share,
         }
     }
 
-    pub fn restore_masks(&mut self, masks: Masks) {
+    pub fn restore_masks(&mut self, masks: Masks<Z>) {
         (self.masked, self.redundant_share) = (masks.masked, masks.share);
         self.along = masks.along;
+        self.indeterminate = masks.indeterminate;
     }
 
     /// Masks `rows` (bits, below [`REDUNDANT_ROWS`]) as redundant, the others to be held to
@@ -463,6 +471,118 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let (open, slipping) = (self.masked.open, self.masked.slipping);
         self.masked = MaskedRows::new(self.masked.layout(), open, slipping, rows);
         self.redundant_share = share;
+        if rows == 0 {
+            self.indeterminate = None;
+        }
+    }
+
+    /// Sets the multipliers' free direction of a statically indeterminate contact set.
+    pub fn set_indeterminate(&mut self, direction: Vector<Z>) {
+        self.indeterminate = Some(direction);
+    }
+
+    /// The multipliers of a statically indeterminate contact set that its sticking contacts'
+    /// cones admit, `λ + s n`: of those inside every cone by more than rounding (a few times the
+    /// share of the multipliers at which a contact counts as slipping) the nearest to the
+    /// least-norm one; where none is, those farthest inside the worst cone (its contact slips
+    /// where even that is outside). Elsewhere `lambda` itself.
+    pub fn within_cones(&self, lambda: &Vector<Z>) -> Vector<Z> {
+        match self.indeterminate {
+            Some(n) if S::SLIDING_CONTACTS > 0 => lambda + n * self.cone_shift(lambda, &n),
+            _ => *lambda,
+        }
+    }
+
+    /// `s` of [`Model::within_cones`]. The worst cone margin `φ(s)` over the sticking contacts
+    /// `n` touches is concave in `s` (a linear normal force less the friction's norm): its
+    /// superlevel set `φ ≥ 0` an interval, found by bisection from the least-norm `s` toward
+    /// the maximum, itself found by golden section.
+    #[cold]
+    fn cone_shift(&self, lambda: &Vector<Z>, n: &Vector<Z>) -> Float {
+        let sticking = GapSet::first(S::SLIDING_CONTACTS)
+            .without(self.masked.open)
+            .without(self.masked.slipping);
+        let touched = |k: usize| {
+            let mut rows = self.masked.slip_rows(k);
+            n[self.masked.gap_row(k)] != 0.0 || rows.any(|row| n[row] != 0.0)
+        };
+        let worst = |s: Float| {
+            let shifted = lambda + n * s;
+            sticking
+                .iter()
+                .filter(|&k| touched(k))
+                .map(|k| self.sticking_margin(k, &shifted))
+                .fold(Float::INFINITY, Float::min)
+        };
+        let inside = 4.0 * crate::scalar::floors::CONTACT_RELEASE * lambda.amax();
+        let least_norm = -lambda.dot(n) / n.dot(n);
+        let at_least_norm = worst(least_norm);
+        if !(at_least_norm < inside) || !least_norm.is_finite() {
+            return if least_norm.is_finite() {
+                least_norm
+            } else {
+                0.0
+            };
+        }
+        // Uphill from the least-norm point, doubling, until a feasible point or a fall.
+        let mut step = 1e-3 * lambda.amax().max(Float::MIN_POSITIVE) / n.amax();
+        let (right, left) = (worst(least_norm + step), worst(least_norm - step));
+        let side = match (right > at_least_norm, left > at_least_norm) {
+            (true, _) => 1.0,
+            (false, true) => -1.0,
+            // The maximum lies within a step either side.
+            (false, false) => 0.0,
+        };
+        let (mut inner, mut outer) = (least_norm - side * step, least_norm + side * step);
+        let mut best = if side > 0.0 { right } else { left };
+        let mut feasible = None;
+        for _ in 0..200 {
+            if best >= inside && side != 0.0 {
+                feasible = Some(outer);
+                break;
+            }
+            step *= 2.0;
+            let next = outer + side * step;
+            let value = worst(next);
+            if !(value > best) || side == 0.0 {
+                // The maximum lies between the last point below it and `next`.
+                let (low, high) = match side == 0.0 {
+                    true => (least_norm - step, least_norm + step),
+                    false => (inner.min(next), inner.max(next)),
+                };
+                let top = golden_maximum(&worst, low, high);
+                if worst(top) < inside {
+                    return top;
+                }
+                feasible = Some(top);
+                break;
+            }
+            (inner, outer, best) = (outer, next, value);
+        }
+        let Some(mut feasible) = feasible else {
+            return least_norm;
+        };
+        // The feasible end nearest the least-norm point.
+        let mut infeasible = least_norm;
+        for _ in 0..200 {
+            let middle = 0.5 * (feasible + infeasible);
+            if middle == feasible || middle == infeasible {
+                break;
+            }
+            match worst(middle) >= inside {
+                true => feasible = middle,
+                false => infeasible = middle,
+            }
+        }
+        feasible
+    }
+
+    /// A sticking contact's margin to its cone, `μ(-λ_N) - |λ_T|`: negative where its normal
+    /// force pulls, as the cone's other side.
+    fn sticking_margin(&self, k: usize, lambda: &Vector<Z>) -> Float {
+        let normal = lambda[self.masked.gap_row(k)];
+        let tangential = self.tangent_rows(lambda)[k];
+        self.system.friction(k) * -normal - norm(tangential)
     }
 
     /// The tolerance the enforced rows are held to so that every row, the redundant ones
@@ -645,7 +765,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     /// Of a closed contact `k` at multipliers `lambda`: how far its sticking force is inside
     /// Coulomb's cone (`μ|λ_N| - |λ_T|`), and the direction of that force `λ_T` (in the plane
     /// its sign).
+    /// Of a statically indeterminate set, at the multipliers its cones admit.
     pub fn cone_margin(&self, k: usize, lambda: &Vector<Z>) -> (Float, Tangent) {
+        let lambda = &self.within_cones(lambda);
         let normal = lambda[self.masked.gap_row(k)];
         let tangential = self.tangent_rows(lambda)[k];
         let (size, direction) = match S::TANGENTS {
@@ -1200,4 +1322,20 @@ fn unit(x: Tangent) -> (Float, Tangent) {
         true => (size, [x[0] / size, x[1] / size]),
         false => (size, [1.0, 0.0]),
     }
+}
+
+/// The maximum of a concave `f` on `[low, high]`, by golden section to rounding.
+fn golden_maximum(f: &impl Fn(Float) -> Float, mut low: Float, mut high: Float) -> Float {
+    let ratio: Float = 0.618_033_988_749_894_8;
+    for _ in 0..200 {
+        let (left, right) = (high - ratio * (high - low), low + ratio * (high - low));
+        if !(left > low && right < high) {
+            break;
+        }
+        match f(left) < f(right) {
+            true => low = left,
+            false => high = right,
+        }
+    }
+    0.5 * (low + high)
 }

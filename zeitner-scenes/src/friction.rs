@@ -614,3 +614,121 @@ impl PulledBlock {
         (c * after * after * after / 6.0, c * after * after / 2.0)
     }
 }
+
+/// A ladder (a uniform rod of length `l`) standing on a rough floor (`y ≥ 0`, friction
+/// `mu_floor`) and leaning on a rough wall (`x ≥ 0`, friction `mu_wall`), its coordinates its
+/// centre and its angle `θ` to the floor; the foot to the right of the wall. Sticking at both
+/// ends it is held statically indeterminately: four rows on three coordinates, the friction
+/// forces one free parameter, and it stands wherever some choice keeps both in their cones,
+/// `tan θ ≥ (1 − μ_f μ_w) / (2 μ_f)`. Below that angle both ends slip.
+#[derive(Clone, Debug)]
+pub struct Ladder {
+    pub m: Float,
+    pub l: Float,
+    pub g: Float,
+    pub mu_floor: Float,
+    pub mu_wall: Float,
+}
+
+#[constrained_system]
+impl Ladder {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, self.m * self.l * self.l / 12.0]
+    }
+
+    fn force(&self) -> [Float; 3] {
+        [0.0, -self.m * self.g, 0.0]
+    }
+
+    fn gaps(&self, [x, y, theta]: [Float; 3]) -> [Float; 2] {
+        let half = 0.5 * self.l;
+        [y - half * theta.sin(), x - half * theta.cos()]
+    }
+
+    fn slips(&self, [_x, _y, theta]: [Float; 3], [vx, vy, w]: [Float; 3]) -> [Float; 2] {
+        let half = 0.5 * self.l;
+        [vx - half * theta.sin() * w, vy + half * theta.cos() * w]
+    }
+
+    fn friction(&self) -> [Float; 2] {
+        [self.mu_floor, self.mu_wall]
+    }
+}
+
+impl Ladder {
+    /// The ladder at angle `theta`, standing: its centre and angle.
+    pub fn standing(&self, theta: Float) -> [Float; 3] {
+        let half = 0.5 * self.l;
+        [half * theta.cos(), half * theta.sin(), theta]
+    }
+
+    /// The least angle at which it stands: `tan θ = (1 − μ_f μ_w) / (2 μ_f)`.
+    pub fn least_standing_angle(&self) -> Float {
+        ((1.0 - self.mu_floor * self.mu_wall) / (2.0 * self.mu_floor)).atan()
+    }
+
+    /// Both ends slipping (the foot away from the wall, the top down it): `θ''` and the
+    /// floor's and the wall's normal forces at `(θ, θ')`, from the rod's three equations,
+    /// linear in them.
+    pub fn sliding(&self, theta: Float, omega: Float) -> (Float, Float, Float) {
+        let (m, half, g) = (self.m, 0.5 * self.l, self.g);
+        let (sin, cos) = theta.sin_cos();
+        let inertia = m * self.l * self.l / 12.0;
+        let (mf, mw) = (self.mu_floor, self.mu_wall);
+        // Unknowns (θ'', N_floor, N_wall). The centre (half cos θ, half sin θ):
+        // m ẍ = -μ_f N_f + N_w, m ÿ = N_f + μ_w N_w − m g,
+        // and θ turning clockwise (the ladder steeper as it grows), I θ'' = −τ with the
+        // torque about the centre τ = half (cos θ − μ_f sin θ) N_f − half (μ_w cos θ + sin θ) N_w.
+        let a = [
+            [m * half * sin, -mf, 1.0],
+            [-m * half * cos, 1.0, mw],
+            [inertia, half * (cos - mf * sin), -half * (mw * cos + sin)],
+        ];
+        let b = [
+            -m * half * cos * omega * omega,
+            m * g - m * half * sin * omega * omega,
+            0.0,
+        ];
+        let x = solve3(a, b);
+        (x[0], x[1], x[2])
+    }
+
+    /// Released at rest at `theta0` below its least standing angle, both ends slipping: `(θ, θ')`
+    /// at `t`, by RK4 on [`Ladder::sliding`] at `step`.
+    pub fn released(&self, theta0: Float, t: Float, step: Float) -> (Float, Float) {
+        let steps = (t / step).ceil().max(1.0) as usize;
+        let h = t / steps as Float;
+        let f = |(theta, omega): (Float, Float)| (omega, self.sliding(theta, omega).0);
+        let mut y = (theta0, 0.0);
+        for _ in 0..steps {
+            let k1 = f(y);
+            let k2 = f((y.0 + 0.5 * h * k1.0, y.1 + 0.5 * h * k1.1));
+            let k3 = f((y.0 + 0.5 * h * k2.0, y.1 + 0.5 * h * k2.1));
+            let k4 = f((y.0 + h * k3.0, y.1 + h * k3.1));
+            y = (
+                y.0 + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0),
+                y.1 + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1),
+            );
+        }
+        y
+    }
+}
+
+/// `a x = b` for a 3×3 `a`, by Cramer's rule.
+fn solve3(a: [[Float; 3]; 3], b: [Float; 3]) -> [Float; 3] {
+    let det = |m: [[Float; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(a);
+    let mut x = [0.0; 3];
+    for (j, value) in x.iter_mut().enumerate() {
+        let mut m = a;
+        for i in 0..3 {
+            m[i][j] = b[i];
+        }
+        *value = det(m) / d;
+    }
+    x
+}

@@ -2,7 +2,8 @@
 //! aimed again to end at one, the events and impacts it reports, and contacts that open.
 
 use super::attempt::Accepted;
-use super::{start_point, watch_at, Forget, Simulator};
+use super::start::start_slipping_above;
+use super::{watch_at, Forget, Simulator};
 use crate::consistency::{consistent_point, consistent_start, end_report, StartReport};
 use crate::contact;
 use crate::contact::Impact;
@@ -235,7 +236,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // contact's velocity projected onto its row: within the constraint tolerance).
         let (mut point, _) =
             consistent_start(&mut self.model, state, tolerance, StartPolicy::Project)?;
-        let slipped = contact::slip_beyond_cone(&mut self.model, &mut point)?;
+        let slipped = contact::slip_beyond_cone(&mut self.model, &mut point, tolerance)?;
         let last = end_report(&mut self.model, start, point, step.0, step.1, None)?;
         let watch = watch_at(&mut self.model, &last.end, tolerance)?;
         self.anchor((last, watch, None), Forget::Steps);
@@ -336,7 +337,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let state = (&before.q, &before.v, before.t);
         let impact = contact::impact(&mut self.model, state, gaps, rest)?;
         let state = (before.q, impact.velocity_after, before.t);
-        let (mut point, report) = start_point(&mut self.model, state, &self.options)?;
+        let slipping = match S::SLIDING_CONTACTS {
+            0 => self.options.constraint_tolerance,
+            _ => contact::impulse_rounding(&mut self.model, state, &before.v)?,
+        };
+        let options = &self.options;
+        let (mut point, report) = start_slipping_above(&mut self.model, state, options, slipping)?;
         contact::open_pulling(&mut self.model, &mut point)?;
         Ok((impact, point, report))
     }

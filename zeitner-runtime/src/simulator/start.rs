@@ -109,11 +109,25 @@ pub(super) fn suits_the_contacts<S: ConstrainedSystem<N, Z>, const N: usize, con
 
 /// The consistent start at `(q, v, t)` — for [`Simulator::new`], [`Simulator::reinitialise`]
 /// and after an impact alike — with how it was made consistent. Gaps that touch and do not
-/// separate start closed, unless their force would pull.
+/// separate start closed, unless their force would pull; contacts slipping faster than the
+/// constraint tolerance start slipping.
 pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    state: (Vector<N>, Vector<N>, Float),
+    options: &Options,
+) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
+    start_slipping_above(model, state, options, options.constraint_tolerance)
+}
+
+/// [`start_point`] with the slip speed above which a contact starts slipping: after an impact,
+/// whose impulse left each contact sticking (its slip zero to rounding) or slipping, the
+/// rounding's, not the tolerance's (under a loose tolerance a slip the impulse left would be
+/// held, a belt's speed given to what landed on it).
+pub(super) fn start_slipping_above<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, v, t): (Vector<N>, Vector<N>, Float),
     options: &Options,
+    slip_tolerance: Float,
 ) -> Result<(Point<N, Z>, StartReport<N, Z>), StepError> {
     if !t.is_finite() {
         return Err(StepError::InvalidOption(InvalidOption::EndTime));
@@ -126,7 +140,7 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
     }
     if S::SLIDING_CONTACTS > 0 {
         model.set_slip_floor(tolerance);
-        contact::slip_by_velocities(model, (&q, &v, t), tolerance)?;
+        contact::slip_by_velocities(model, (&q, &v, t), slip_tolerance)?;
     }
     let (mut point, mut report) = consistent_start(model, (q, v, t), tolerance, options.start)?;
     if S::UNILATERAL_CONSTRAINTS > 0 {
@@ -146,7 +160,7 @@ pub(super) fn start_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: u
         let opened = contact::open_pulling(model, &mut point)?;
         let slipped = match S::SLIDING_CONTACTS {
             0 => GapSet::EMPTY,
-            _ => contact::slip_beyond_cone(model, &mut point)?,
+            _ => contact::slip_beyond_cone(model, &mut point, tolerance)?,
         };
         if !opened.union(slipped).is_empty() {
             report.multipliers = point.lambda;
