@@ -5251,3 +5251,650 @@ impl ::zeitner::__private::ConstrainedSystem<3, 3> for PulledBlock {
         use ::zeitner::__private::Real as _;
     }
 }
+#[allow(dead_code)]
+impl Ladder {
+    fn mass(&self) -> [Float; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.m, self.m, self.m * self.l * self.l / 12.0]
+    }
+    fn force(&self) -> [Float; 3] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [0.0, -self.m * self.g, 0.0]
+    }
+    fn gaps(&self, [x, y, theta]: [Float; 3]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let half = 0.5 * self.l;
+        [y - half * theta.sin(), x - half * theta.cos()]
+    }
+    fn slips(&self, [_x, _y, theta]: [Float; 3], [vx, vy, w]: [Float; 3]) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let half = 0.5 * self.l;
+        [vx - half * theta.sin() * w, vy + half * theta.cos() * w]
+    }
+    fn friction(&self) -> [Float; 2] {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        [self.mu_floor, self.mu_wall]
+    }
+}
+#[allow(unused_variables, unused_mut, clippy::all)]
+impl ::zeitner::__private::ConstrainedSystem<3, 4> for Ladder {
+    const POSITION_CONSTRAINTS: usize = 2;
+    const MASS_IS_CONSTANT: bool = true;
+    const DYNAMICS_DEPEND_ON_VELOCITY: bool = false;
+    const SUMMARY: ::zeitner::__private::SceneSummary = ::zeitner::__private::SceneSummary {
+        coordinates: 3,
+        position_constraints: 2,
+        velocity_constraints: 2,
+        mass: ::zeitner::__private::MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[
+            ::zeitner::__private::FunctionSummary {
+                name: "mass_matrix",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 1u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 2u64,
+                    divs: 1u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "applied_force",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 1u64,
+                    muls: 1u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_residual",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 10u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_jacobian",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 3,
+                        nonzeros: &[
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 2),
+                            (2, 0),
+                            (2, 2),
+                            (3, 1),
+                            (3, 2),
+                        ],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 3u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 8u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_position_partials",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "p",
+                        rows: 4,
+                        cols: 3,
+                        nonzeros: &[(0, 1), (0, 2), (1, 0), (1, 2), (2, 2), (3, 2)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 10u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_rate",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "w",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 5u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 4u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_acceleration_bias",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 2u64,
+                    muls: 16u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "stage",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "m",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "f",
+                        rows: 3,
+                        cols: 1,
+                        nonzeros: &[(1, 0)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "g",
+                        rows: 4,
+                        cols: 3,
+                        nonzeros: &[
+                            (0, 1),
+                            (0, 2),
+                            (1, 0),
+                            (1, 2),
+                            (2, 0),
+                            (2, 2),
+                            (3, 1),
+                            (3, 2),
+                        ],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "b",
+                        rows: 4,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0), (2, 0), (3, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 10u64,
+                    divs: 1u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 5u64,
+                    muls: 27u64,
+                    divs: 1u64,
+                    transcendental: 8u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "constraint_force_jacobians",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "dq",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[(2, 2)],
+                    },
+                    ::zeitner::__private::BlockSummary {
+                        name: "dv",
+                        rows: 3,
+                        cols: 3,
+                        nonzeros: &[],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 7u64,
+                    divs: 0u64,
+                    transcendental: 2u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 3u64,
+                    muls: 12u64,
+                    divs: 0u64,
+                    transcendental: 4u64,
+                    opaque_calls: 0u64,
+                },
+            },
+            ::zeitner::__private::FunctionSummary {
+                name: "friction",
+                blocks: &[
+                    ::zeitner::__private::BlockSummary {
+                        name: "mu",
+                        rows: 2,
+                        cols: 1,
+                        nonzeros: &[(0, 0), (1, 0)],
+                    },
+                ],
+                ops: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+                ops_unshared: ::zeitner::__private::OpCounts {
+                    adds: 0u64,
+                    muls: 0u64,
+                    divs: 0u64,
+                    transcendental: 0u64,
+                    opaque_calls: 0u64,
+                },
+            },
+        ],
+    };
+    type Mass = ::zeitner::__private::DiagonalMass<3>;
+    type Storage = ::zeitner::__private::Dense;
+    const UNILATERAL_CONSTRAINTS: usize = 2usize;
+    const SLIDING_CONTACTS: usize = 2usize;
+    const SPARSITY: ::core::option::Option<::zeitner::__private::Sparsity> = ::core::option::Option::Some(::zeitner::__private::Sparsity {
+        constraint_jacobian: &[
+            (0, 1),
+            (0, 2),
+            (1, 0),
+            (1, 2),
+            (2, 0),
+            (2, 2),
+            (3, 1),
+            (3, 2),
+        ],
+        force_jacobians: [&[], &[]],
+        constraint_force_jacobians: [&[(2, 2)], &[]],
+    });
+    #[inline]
+    fn mass_matrix(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> Self::Mass {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.l * (self.m * self.l) / 12.0;
+        ::zeitner::__private::DiagonalMass(m)
+    }
+    #[inline]
+    fn applied_force(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        f[1] = -(self.m * self.g);
+        f
+    }
+    #[inline]
+    fn constraint_residual(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        let mut g = ::zeitner::__private::Vector::<4>::zeros();
+        g[0] = q[1] - s1;
+        g[1] = q[0] - s2;
+        g[2] = v[0] - s1 * v[2];
+        g[3] = v[1] + s2 * v[2];
+        g
+    }
+    #[inline]
+    fn constraint_jacobian(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<4, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        let mut g = ::zeitner::__private::Matrix::<4, 3>::zeros();
+        g[(0, 1)] = 1.0;
+        g[(0, 2)] = -s2;
+        g[(1, 0)] = 1.0;
+        g[(1, 2)] = s1;
+        g[(2, 0)] = 1.0;
+        g[(2, 2)] = -s1;
+        g[(3, 1)] = 1.0;
+        g[(3, 2)] = s2;
+        g
+    }
+    #[inline]
+    fn constraint_position_partials(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Matrix<4, 3> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        let mut p = ::zeitner::__private::Matrix::<4, 3>::zeros();
+        p[(0, 1)] = 1.0;
+        p[(0, 2)] = -s2;
+        p[(1, 0)] = 1.0;
+        p[(1, 2)] = s1;
+        p[(2, 2)] = -(s2 * v[2]);
+        p[(3, 2)] = -(s1 * v[2]);
+        p
+    }
+    #[inline]
+    fn constraint_rate(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin() * v[2];
+        let s2 = s0 * q[2].cos() * v[2];
+        let mut w = ::zeitner::__private::Vector::<4>::zeros();
+        w[0] = v[1] - s2;
+        w[1] = v[0] + s1;
+        w[2] = v[0] - s1;
+        w[3] = v[1] + s2;
+        w
+    }
+    #[inline]
+    fn constraint_acceleration_bias(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> ::zeitner::__private::Vector<4> {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = v[2] * (s0 * q[2].sin() * v[2]);
+        let s2 = v[2] * (s0 * q[2].cos() * v[2]);
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        b[0] = s1;
+        b[1] = s2;
+        b[2] = -s2;
+        b[3] = -s1;
+        b
+    }
+    #[inline]
+    fn stage(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (
+        Self::Mass,
+        ::zeitner::__private::Vector<3>,
+        ::zeitner::__private::Matrix<4, 3>,
+        ::zeitner::__private::Vector<4>,
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        let s3 = v[2] * (s1 * v[2]);
+        let s4 = v[2] * (s2 * v[2]);
+        let mut m = ::zeitner::__private::Vector::<3>::zeros();
+        let mut f = ::zeitner::__private::Vector::<3>::zeros();
+        let mut g = ::zeitner::__private::Matrix::<4, 3>::zeros();
+        let mut b = ::zeitner::__private::Vector::<4>::zeros();
+        m[0] = self.m;
+        m[1] = self.m;
+        m[2] = self.l * (self.m * self.l) / 12.0;
+        f[1] = -(self.m * self.g);
+        g[(0, 1)] = 1.0;
+        g[(0, 2)] = -s2;
+        g[(1, 0)] = 1.0;
+        g[(1, 2)] = s1;
+        g[(2, 0)] = 1.0;
+        g[(2, 2)] = -s1;
+        g[(3, 1)] = 1.0;
+        g[(3, 2)] = s2;
+        b[0] = s3;
+        b[1] = s4;
+        b[2] = -s4;
+        b[3] = -s3;
+        (::zeitner::__private::DiagonalMass(m), f, g, b)
+    }
+    #[inline]
+    fn force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        (dq, dv)
+    }
+    #[inline]
+    fn constraint_force_jacobians(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<4>,
+    ) -> (::zeitner::__private::Matrix<3, 3>, ::zeitner::__private::Matrix<3, 3>) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        let mut dq = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        let mut dv = ::zeitner::__private::Matrix::<3, 3>::zeros();
+        dq[(2, 2)] = s2 * lambda[1] + s1 * lambda[0] - s2 * lambda[2] - s1 * lambda[3];
+        (dq, dv)
+    }
+    #[inline]
+    fn friction(&self, gap: usize) -> ::zeitner::__private::Float {
+        let mu = {
+            #[allow(unused_imports)]
+            use ::zeitner::__private::Real as _;
+            let mut mu = ::zeitner::__private::Vector::<2>::zeros();
+            mu[0] = self.mu_floor;
+            mu[1] = self.mu_wall;
+            mu
+        };
+        if gap < 2 { mu[gap] } else { 0.0 }
+    }
+    #[inline]
+    fn constraint_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        values[0] = 1.0;
+        values[1] = -s2;
+        values[2] = 1.0;
+        values[3] = s1;
+        values[4] = 1.0;
+        values[5] = -s1;
+        values[6] = 1.0;
+        values[7] = s2;
+    }
+    #[inline]
+    fn force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+    }
+    #[inline]
+    fn constraint_force_jacobian_nonzeros(
+        &self,
+        q: &::zeitner::__private::Vector<3>,
+        v: &::zeitner::__private::Vector<3>,
+        t: ::zeitner::__private::Float,
+        lambda: &::zeitner::__private::Vector<4>,
+        values: &mut [::zeitner::__private::Float],
+    ) {
+        #[allow(unused_imports)]
+        use ::zeitner::__private::Real as _;
+        let s0 = 0.5 * self.l;
+        let s1 = s0 * q[2].sin();
+        let s2 = s0 * q[2].cos();
+        values[0] = s2 * lambda[1] + s1 * lambda[0] - s2 * lambda[2] - s1 * lambda[3];
+    }
+}
