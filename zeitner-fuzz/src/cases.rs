@@ -48,7 +48,7 @@ use zeitner::{
     Vector, VelocityProjection, WithStorage,
 };
 
-use crate::fuzz_scenes::{FollowerPendulum, FrictionBlock, Sleigh, TwoLinkArm};
+use crate::fuzz_scenes::{FollowerPendulum, FrictionBlock, FrictionPuck, Sleigh, TwoLinkArm};
 use zeitner_scenes::andrews::Andrews;
 use zeitner_scenes::chain::{Chain2, Chain4};
 use zeitner_scenes::contact::{Ball, FallingBar, WallPendulum};
@@ -99,15 +99,18 @@ pub enum SceneKind {
     FallingBar,
     /// A block on a spring on a floor, sliding with Coulomb friction on a moving belt.
     FrictionBlock,
+    /// The same in space: a puck whose slip turns, Coulomb's cone a disc.
+    FrictionPuck,
 }
 
 impl SceneKind {
-    /// The scenes with gaps (and events, friction), the last four of [`SceneKind::ALL`].
-    pub const CONTACT: [SceneKind; 4] = [
+    /// The scenes with gaps (and events, friction), the last five of [`SceneKind::ALL`].
+    pub const CONTACT: [SceneKind; 5] = [
         SceneKind::Ball,
         SceneKind::WallPendulum,
         SceneKind::FallingBar,
         SceneKind::FrictionBlock,
+        SceneKind::FrictionPuck,
     ];
 
     pub fn has_contacts(self) -> bool {
@@ -127,7 +130,7 @@ impl SceneKind {
         }
     }
 
-    pub const ALL: [SceneKind; 18] = [
+    pub const ALL: [SceneKind; 19] = [
         SceneKind::Pendulum,
         SceneKind::SteamGenerator,
         SceneKind::Andrews,
@@ -146,6 +149,7 @@ impl SceneKind {
         SceneKind::WallPendulum,
         SceneKind::FallingBar,
         SceneKind::FrictionBlock,
+        SceneKind::FrictionPuck,
     ];
 
     /// A consistent start for the given parameters (the scene's own, where it has one), with a
@@ -235,7 +239,8 @@ impl SceneKind {
             SceneKind::Ball
             | SceneKind::WallPendulum
             | SceneKind::FallingBar
-            | SceneKind::FrictionBlock => contact_state(self, p, rng),
+            | SceneKind::FrictionBlock
+            | SceneKind::FrictionPuck => contact_state(self, p, rng),
         }
     }
 }
@@ -386,6 +391,20 @@ fn contact_state(scene: SceneKind, p: &Parameters, rng: &mut Rng) -> (Vec<Float>
             };
             (vec![x, gap_offset(rng)], vec![vx, gap_speed(rng)])
         }
+        SceneKind::FrictionPuck => {
+            // The block's state in x and z, and a slip across the belt (often none: at rest).
+            let (q, v) = contact_state(SceneKind::FrictionBlock, p, rng);
+            let y = rng.random_range(-1.0..1.0) * Float::from(rng.random_bool(0.5));
+            let vy = match rng.random_range(0..4) {
+                0 | 1 => 0.0,
+                2 => {
+                    let hair = log_uniform(rng, -14.0, -8.0);
+                    signed(rng, hair)
+                }
+                _ => rng.random_range(-3.0..3.0),
+            };
+            (vec![q[0], y, q[1]], vec![v[0], vy, v[1]])
+        }
         _ => unreachable!("not a contact scene"),
     }
 }
@@ -414,7 +433,8 @@ fn contact_parameters(rng: &mut Rng, scene: SceneKind, p: &mut Parameters) {
     if rng.random_bool(0.6) {
         p["e"] = restitution(rng);
     }
-    if scene == SceneKind::FrictionBlock && rng.random_bool(0.6) {
+    let rough = matches!(scene, SceneKind::FrictionBlock | SceneKind::FrictionPuck);
+    if rough && rng.random_bool(0.6) {
         p["mu"] = match rng.random_range(0..10) {
             0..=4 => rng.random_range(0.0..1.5),
             5 => 0.0,
@@ -1235,7 +1255,7 @@ pub struct Outcome {
     /// Whether the run's multipliers were solved at every stage (at its end).
     pub every_stage: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
-    /// largest step.
+    /// largest step since the run last started.
     recent_steps: std::collections::VecDeque<Float>,
     last_end: Float,
     largest_step: Float,
@@ -1420,7 +1440,8 @@ fn step_bounds(step: StepControl) -> (Float, Float) {
 
 /// An accepted step from `previous` to `report` under `options` with the stop time `stop`;
 /// `crossing`: the step was shortened to end at a zero crossing (an event, a gap closing, a
-/// contact opening), a landing that may be shorter than `min_step` or the fixed step.
+/// contact opening), a landing that may be shorter than `min_step` or the fixed step, and as
+/// long as a landing on the stop time (the try it was shortened from may have been one).
 fn check_step<const N: usize, const Z: usize>(
     previous: &StepReport<N, Z>,
     report: &StepReport<N, Z>,
@@ -1469,7 +1490,8 @@ fn check_step<const N: usize, const Z: usize>(
                 ),
             );
         }
-    } else if (h < min - slack && !crossing) || h > max + slack {
+    } else if (h < min - slack && !crossing) || (h > max + slack && !(crossing && h <= landing_max))
+    {
         return fail(
             FailureClass::OptionViolation,
             format!(
@@ -2677,6 +2699,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                     );
                 }
                 self.stop = self.stop.filter(|&s| s > t);
+                // A run started afresh: its steps are measured against its own, not those
+                // before (a run that went to t = 1e60 and restarted at 1e-308 is not stalled
+                // where its steps are a millionth of those).
+                self.outcome.largest_step = 0.0;
             }
             Err(error) => {
                 before.unchanged(sim, &call, &error)?;
@@ -2829,4 +2855,5 @@ scene_table! {
     WallPendulum => WallPendulum [2, 2] { m: 1.0, length: 1.0, g: 9.81, e: 0.8, height: -0.5 };
     FallingBar => FallingBar [3, 3] { m: 1.0, j: 0.1, a: 0.5, g: 9.81, e: 0.5 };
     FrictionBlock => FrictionBlock [2, 2] { m: 1.0, k: 50.0, mu: 0.4, belt: 0.3, g: 9.81, e: 0.5 };
+    FrictionPuck => FrictionPuck [3, 3] { m: 1.0, k: 50.0, mu: 0.4, belt: 0.3, g: 9.81, e: 0.5 };
 }

@@ -207,3 +207,41 @@ impl FrictionBlock {
         [self.mu]
     }
 }
+
+/// [`FrictionBlock`] in space: a puck on a floor (`z ≥ 0`) held by a spring to the `z` axis,
+/// sliding on a belt that moves along `x` with Coulomb's cone a disc, so that its slip turns.
+pub struct FrictionPuck {
+    pub m: Float,
+    pub k: Float,
+    pub mu: Float,
+    pub belt: Float,
+    pub g: Float,
+    pub e: Float,
+}
+
+#[constrained_system]
+impl FrictionPuck {
+    fn mass(&self) -> [Float; 3] {
+        [self.m, self.m, self.m]
+    }
+
+    fn force(&self, [x, y, _z]: [Float; 3]) -> [Float; 3] {
+        [-self.k * x, -self.k * y, -self.m * self.g]
+    }
+
+    fn gaps(&self, [_x, _y, z]: [Float; 3]) -> [Float; 1] {
+        [z]
+    }
+
+    fn restitution(&self) -> [Float; 1] {
+        [self.e]
+    }
+
+    fn slips(&self, _q: [Float; 3], [vx, vy, _vz]: [Float; 3]) -> [Float; 2] {
+        [vx - self.belt, vy]
+    }
+
+    fn friction(&self) -> [Float; 1] {
+        [self.mu]
+    }
+}

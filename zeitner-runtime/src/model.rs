@@ -6,7 +6,7 @@ use crate::gaps::{GapSet, Slipping, Tangent, MAX_SLIDING_CONTACTS};
 use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
 use crate::math::Real;
-use crate::output::Evaluations;
+use crate::output::{Evaluations, Point};
 use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
 use crate::system::{ConstrainedSystem, Matrix, Vector, MAX_EVENTS, MAX_GAPS};
@@ -409,9 +409,25 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         lambda: &Vector<Z>,
         factor: &FactorOf<S, N, Z>,
     ) -> Result<(), StepError> {
+        for (y, scale) in self.turning((q, v, t), lambda)?.into_iter().flatten() {
+            let x = factor.solve(&y) * scale;
+            self.derivatives.add_to_dv(&x, &y);
+        }
+        Ok(())
+    }
+
+    /// Each slipping contact's turning friction in space as `(y, c)`: `∂(M a)/∂q' = c y yᵀ`
+    /// (see [`Model::turning_friction`]), where its slip is faster than the floor.
+    #[allow(clippy::type_complexity)]
+    fn turning(
+        &mut self,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        lambda: &Vector<Z>,
+    ) -> Result<[Option<(Vector<N>, Float)>; MAX_SLIDING_CONTACTS], StepError> {
         let rates = self.slip_rates(q, v, t)?;
         self.evaluations.constraint_jacobians += 1;
         let unmasked = self.system.constraint_jacobian(q, v, t);
+        let mut terms = [None; MAX_SLIDING_CONTACTS];
         for k in self.masked.slipping().iter() {
             let (speed, direction) = unit(rates[k]);
             if speed <= self.slip_floor {
@@ -427,10 +443,23 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
                 + unmasked.row(self.masked.slip_row(k, 1)) * normal[1])
                 .transpose();
             let scale = side * self.system.friction(k) * lambda[self.masked.gap_row(k)] / speed;
-            let x = factor.solve(&y) * scale;
-            self.derivatives.add_to_dv(&x, &y);
+            terms[k] = Some((y, scale));
         }
-        Ok(())
+        Ok(terms)
+    }
+
+    /// In space, the fastest rate `|c| yᵀM⁻¹y` at which a slipping contact's turning friction
+    /// damps a slip across its direction at a consistent point: `μ|λ_N|/(m|ṡ|)` for a point
+    /// mass, stiff near rest, where an explicit method's own estimate, dominated by the slow
+    /// motion, does not see it. Zero in the plane and without a slip.
+    pub fn turning_rate(&mut self, point: &Point<N, Z>) -> Result<Float, StepError> {
+        if S::TANGENTS < 2 || !self.slips() {
+            return Ok(0.0);
+        }
+        let factor = self.mass_factor(&point.q, point.t)?;
+        let terms = self.turning((&point.q, &point.v, point.t), &point.lambda)?;
+        let rate = |(y, c): (Vector<N>, Float)| c.abs() * y.dot(&factor.solve(&y));
+        Ok(terms.into_iter().flatten().map(rate).fold(0.0, Float::max))
     }
 
     /// Sets the slip speed under which, in space, a slip's direction is its contact's own.
