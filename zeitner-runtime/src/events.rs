@@ -177,12 +177,14 @@ impl Watch {
         Ok(watch)
     }
 
-    /// The watch at a step end whose values were taken with `self`.
+    /// The watch at a step end whose values were taken with `self`. A slip that started from
+    /// rest (watched below zero by the tolerance, so that its start is not taken for a stop) is
+    /// watched at zero again once it has left zero, as a gap is once it has opened.
     pub fn after(
         &self,
         values: &Values,
         (events, gaps, slides): (usize, usize, usize),
-        open: GapSet,
+        (open, slipping): (GapSet, GapSet),
         tolerance: Float,
     ) -> Watch {
         let mut distances = [0.0; MAX_GAPS];
@@ -194,7 +196,9 @@ impl Watch {
             watch.levels[k] = self.levels[k];
         }
         for k in (0..slides).filter(|&k| !open.contains(k)) {
-            watch.levels[SLIDES + k] = self.levels[SLIDES + k];
+            let level = self.levels[SLIDES + k];
+            let left_zero = slipping.contains(k) && values.gaps[SLIDES + k] + level > 0.0;
+            watch.levels[SLIDES + k] = if left_zero { 0.0 } else { level };
         }
         watch
     }

@@ -131,9 +131,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<Option<StopReason>, StepError> {
         let open = self.model.open_gaps();
         let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS, S::SLIDING_CONTACTS);
-        let watch = self
-            .watch
-            .after(values, counts, open, self.options.constraint_tolerance);
+        let contacts = (open, self.model.slipping().contacts);
+        let tolerance = self.options.constraint_tolerance;
+        let watch = self.watch.after(values, counts, contacts, tolerance);
         let events = (0..S::EVENTS)
             .filter(|&i| watch.event(i) != self.watch.event(i))
             .fold(0u32, |bits, i| bits | (1 << i));
