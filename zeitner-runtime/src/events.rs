@@ -89,7 +89,7 @@ impl Contacts {
     ) -> Self {
         Contacts {
             open: model.open_gaps(),
-            slipping: model.slipping().contacts,
+            slipping: model.slipping_contacts(),
             slides: S::SLIDING_CONTACTS,
         }
     }
@@ -158,7 +158,7 @@ impl Watch {
             }
         }
         if S::SLIDING_CONTACTS > 0 {
-            let slipping = model.slipping().contacts;
+            let slipping = model.slipping_contacts();
             let rates = model.slip_rates(&point.q, &point.v, point.t)?;
             for k in closed.iter().filter(|&k| k < S::SLIDING_CONTACTS) {
                 watch.levels[SLIDES + k] = match slipping.contains(k) {
@@ -263,7 +263,7 @@ pub(crate) fn values<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>
         }
     }
     if S::SLIDING_CONTACTS > 0 {
-        let (open, slipping) = (model.open_gaps(), model.slipping().contacts);
+        let (open, slipping) = (model.open_gaps(), model.slipping_contacts());
         let rates = match slipping.without(open).is_empty() {
             true => [[0.0; 2]; SLIDES],
             false => model.slip_rates(&point.q, &point.v, point.t)?,

@@ -69,8 +69,9 @@ pub(crate) struct MaskedRows {
     open: GapSet,
     /// Slipping contacts: their slip rows are not enforced (those of open gaps neither).
     slipping: GapSet,
-    /// The gaps whose slip row is masked: open or slipping (none without slip rows).
-    masked_slides: GapSet,
+    /// The slip rows masked, by bit from the first slip row: those of the gaps open or
+    /// slipping (none without slip rows; at most 2 × 16 rows).
+    masked_slip_rows: u32,
     /// The first gap row, and the first slip row (0 where the scene has none), and how many
     /// slip rows each contact has: 32 bytes in all, as the directions that carry this are
     /// copied often.
@@ -88,15 +89,20 @@ impl MaskedRows {
     fn new(first: (usize, usize, u8), open: GapSet, slipping: GapSet, redundant: u64) -> Self {
         let slides = first.1 > 0 && !open.union(slipping).is_empty();
         let any = !open.is_empty() || redundant != 0 || slides;
-        let masked_slides = match first.1 {
-            0 => GapSet::EMPTY,
-            _ => open.union(slipping),
-        };
+        let mut masked_slip_rows = 0u32;
+        if first.1 > 0 {
+            let tangents = u32::from(first.2);
+            for k in open.union(slipping).iter() {
+                for j in 0..tangents {
+                    masked_slip_rows |= 1u32.checked_shl(tangents * k as u32 + j).unwrap_or(0);
+                }
+            }
+        }
         MaskedRows {
             redundant,
             open,
             slipping,
-            masked_slides,
+            masked_slip_rows,
             first: first.0 as u16,
             first_slip: first.1 as u16,
             tangents: first.2,
@@ -135,10 +141,17 @@ impl MaskedRows {
         self.slip_row(k, 0)..self.slip_row(k + 1, 0)
     }
 
-    /// The gaps whose slip row is masked: open or slipping (none without slip rows).
+    /// The slip rows masked (of the gaps open or slipping), ascending.
     #[inline(always)]
-    fn masked_slides(&self) -> GapSet {
-        self.masked_slides
+    fn masked_slip_rows(&self) -> impl Iterator<Item = usize> {
+        let (mut bits, first) = (self.masked_slip_rows, usize::from(self.first_slip));
+        core::iter::from_fn(move || {
+            (bits != 0).then(|| {
+                let row = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                first + row
+            })
+        })
     }
 
     /// The redundant rows, ascending.
@@ -155,9 +168,8 @@ impl MaskedRows {
 
     fn rows(&self) -> impl Iterator<Item = usize> + '_ {
         let gaps = self.open.iter().map(|k| self.first() + k);
-        let slides = self.masked_slides().iter();
-        let slides = slides.flat_map(|k| self.slip_rows(k));
-        gaps.chain(slides).chain(self.redundant_rows())
+        gaps.chain(self.masked_slip_rows())
+            .chain(self.redundant_rows())
     }
 
     #[inline(always)]
@@ -166,9 +178,8 @@ impl MaskedRows {
         (row >= self.first() && self.open.contains(row - self.first()))
             || (slip > 0
                 && row >= slip
-                && self
-                    .masked_slides()
-                    .contains((row - slip) / usize::from(self.tangents)))
+                && row - slip < 32
+                && self.masked_slip_rows >> (row - slip) & 1 == 1)
             || (row < REDUNDANT_ROWS && self.redundant >> row & 1 == 1)
     }
 
@@ -186,10 +197,8 @@ impl MaskedRows {
         for k in self.open.iter() {
             m.row_mut(self.first() + k).fill(0.0);
         }
-        for k in self.masked_slides().iter() {
-            for row in self.slip_rows(k) {
-                m.row_mut(row).fill(0.0);
-            }
+        for row in self.masked_slip_rows() {
+            m.row_mut(row).fill(0.0);
         }
     }
 
@@ -222,10 +231,8 @@ impl MaskedRows {
         for k in self.open.iter() {
             m[(self.first() + k, self.first() + k)] = scale;
         }
-        for k in self.masked_slides().iter() {
-            for row in self.slip_rows(k) {
-                m[(row, row)] = scale;
-            }
+        for row in self.masked_slip_rows() {
+            m[(row, row)] = scale;
         }
     }
 
@@ -344,6 +351,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             contacts: self.masked.slipping,
             along: self.along,
         }
+    }
+
+    /// The slipping contacts alone (without copying their directions, on paths every step
+    /// of a scene with gaps takes).
+    #[inline(always)]
+    pub fn slipping_contacts(&self) -> GapSet {
+        self.masked.slipping
     }
 
     /// Sets the slipping contacts (the others stick while closed) and their directions.
@@ -1070,6 +1084,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         if !self.slips() {
             return Ok(self.mask(*lambda));
         }
+        self.acting_slipping(point, lambda)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn acting_slipping(
+        &mut self,
+        point: (&Vector<N>, &Vector<N>, Float),
+        lambda: &Vector<Z>,
+    ) -> Result<Vector<Z>, StepError> {
         let directions = self.slip_directions(point)?;
         Ok(self.acting_along(lambda, &directions))
     }

@@ -131,7 +131,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<Option<StopReason>, StepError> {
         let open = self.model.open_gaps();
         let counts = (S::EVENTS, S::UNILATERAL_CONSTRAINTS, S::SLIDING_CONTACTS);
-        let contacts = (open, self.model.slipping().contacts);
+        let contacts = (open, self.model.slipping_contacts());
         let tolerance = self.options.constraint_tolerance;
         let watch = self.watch.after(values, counts, contacts, tolerance);
         let events = (0..S::EVENTS)
@@ -183,7 +183,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if S::SLIDING_CONTACTS == 0 {
             return Ok((to_slip, to_stop));
         }
-        let slipping = self.model.slipping().contacts;
+        let slipping = self.model.slipping_contacts();
         let closed = GapSet::first(S::SLIDING_CONTACTS).without(self.model.open_gaps());
         for k in closed.without(releasing).iter() {
             if values.gaps[events::SLIDES + k] < 0.0 {
