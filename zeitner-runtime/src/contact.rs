@@ -11,10 +11,9 @@
 
 use crate::consistency::{consistent_point, consistent_start, slipping_multipliers};
 use crate::error::StepError;
-use crate::gaps::{GapSet, Slipping, Tangent};
+use crate::gaps::{norm, unit, GapSet, Slipping, Tangent, MAX_SLIDING_CONTACTS};
 use crate::linalg::solve_spd;
 use crate::mass::MassMatrix;
-use crate::math::Real;
 use crate::model::Model;
 use crate::options::StartPolicy;
 use crate::output::Point;
@@ -140,10 +139,10 @@ fn slip_direction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     rate: Tangent,
     tolerance: Float,
 ) -> Option<Tangent> {
-    let speed = Real::hypot(rate[0], rate[1]);
+    let (speed, direction) = unit(rate);
     (speed > tolerance).then(|| match S::TANGENTS {
         1 => [if rate[0] > 0.0 { 1.0 } else { -1.0 }, 0.0],
-        _ => [rate[0] / speed, rate[1] / speed],
+        _ => direction,
     })
 }
 
@@ -154,14 +153,14 @@ pub(crate) fn impulse_rounding<S: ConstrainedSystem<N, Z>, const N: usize, const
     (q, after, t): (Vector<N>, Vector<N>, Float),
     v: &Vector<N>,
 ) -> Result<Float, StepError> {
-    let speeds = |rates: [Tangent; crate::gaps::MAX_SLIDING_CONTACTS]| {
-        rates
-            .iter()
-            .fold(0.0, |m: Float, s| m.max(Real::hypot(s[0], s[1])))
-    };
-    let before = speeds(model.slip_rates(&q, v, t)?);
-    let after = speeds(model.slip_rates(&q, &after, t)?);
+    let before = fastest(&model.slip_rates(&q, v, t)?);
+    let after = fastest(&model.slip_rates(&q, &after, t)?);
     Ok(RELEASE * before.max(after))
+}
+
+/// The largest of the contacts' slip speeds.
+fn fastest(rates: &[Tangent; MAX_SLIDING_CONTACTS]) -> Float {
+    rates.iter().fold(0.0, |m: Float, &s| m.max(norm(s)))
 }
 
 /// Sets slipping the closed sticking contacts whose force at a consistent point leaves
@@ -428,9 +427,7 @@ fn revised_friction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
     let mut slipping = model.slipping();
     let slips = model.slip_rates(q, after, t)?;
-    let scale = slips
-        .iter()
-        .fold(0.0, |m: Float, s| m.max(Real::hypot(s[0], s[1])));
+    let scale = fastest(&slips);
     let rough = || {
         let slipping = contacts.intersection(slipping.contacts).iter();
         slipping.filter(|&k| model.system.friction(k) > 0.0)
@@ -446,7 +443,7 @@ fn revised_friction<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         .filter_map(|k| Some((k, slip_direction::<S, N, Z>(slips[k], RELEASE * scale)?)))
         .map(|(k, direction)| {
             let along = slipping.along[k];
-            let turn = Real::hypot(direction[0] - along[0], direction[1] - along[1]);
+            let turn = norm([direction[0] - along[0], direction[1] - along[1]]);
             (k, direction, turn)
         })
         .filter(|&(_, _, turn)| turn > TURN_TOLERANCE)

@@ -94,6 +94,21 @@ pub const MAX_SLIDING_CONTACTS: usize = MAX_GAPS / 2;
 /// (in space).
 pub(crate) type Tangent = [crate::scalar::Float; 2];
 
+/// The length of a tangent vector.
+#[inline(always)]
+pub(crate) fn norm(x: Tangent) -> crate::scalar::Float {
+    crate::math::Real::hypot(x[0], x[1])
+}
+
+/// A tangent vector's length and direction (`[1, 0]` where it is zero).
+pub(crate) fn unit(x: Tangent) -> (crate::scalar::Float, Tangent) {
+    let size = norm(x);
+    match size > 0.0 {
+        true => (size, [x[0] / size, x[1] / size]),
+        false => (size, [1.0, 0.0]),
+    }
+}
+
 /// The slipping contacts, and the direction each slips along: for a contact in the plane the
 /// sign of its slip, for one in space the direction of its slip where it was last set (the
 /// step's start, or where it began to slip), which tells the slip's side of the contact.

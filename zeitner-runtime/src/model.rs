@@ -2,10 +2,9 @@
 //! checked for non-finite values, so that a bad model becomes a typed error, not a NaN trajectory.
 
 use crate::error::{ModelFunction, RowSet, StepError};
-use crate::gaps::{GapSet, Slipping, Tangent, MAX_SLIDING_CONTACTS};
+use crate::gaps::{norm, unit, GapSet, Slipping, Tangent, MAX_SLIDING_CONTACTS};
 use crate::linalg::{all_finite, finite, ldl_solve};
 use crate::mass::{MassFactor, MassMatrix};
-use crate::math::Real;
 use crate::output::{Evaluations, Point};
 use crate::scalar::Float;
 use crate::storage::{AccelerationAt, Derivatives, Storage};
@@ -293,8 +292,8 @@ pub(crate) struct Model<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z:
     masked: MaskedRows,
     /// The direction each slipping contact slips along (see [`Slipping`]).
     along: [Tangent; MAX_SLIDING_CONTACTS],
-    /// In space, the slip speed below which a slip's direction is taken from `along` more than
-    /// from the slip (see [`Model::slip_directions`]): the constraint tolerance.
+    /// In space, the slip speed at or below which a slip's direction is its contact's `along`,
+    /// not the slip's (see [`Model::slip_directions`]): the constraint tolerance.
     slip_floor: Float,
     /// Where sticking contacts hold the system statically indeterminately (one redundant row in
     /// a scene with friction), the multipliers' one free direction `n` (`Gᵀn = 0`): every
@@ -367,40 +366,21 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         self.along = slipping.along;
     }
 
-    /// In space, at a step's end `(q, v, t)`, each closed contact slipping (but those in
-    /// `stopping`) faster than the slip floor takes the direction of its slip there, so that
-    /// only a turn of more than a right angle within one step (a stop, or all but one) crosses
-    /// the watched `ṡ · along`. Where the slip stayed on the side of its direction the friction
-    /// is unchanged; a slip slower than the floor (starting from rest) is all rounding.
-    pub fn turn_slips(
-        &mut self,
-        (q, v, t): (&Vector<N>, &Vector<N>, Float),
-        stopping: GapSet,
-    ) -> Result<(), StepError> {
-        let turning = self.masked.slipping().without(stopping);
-        if S::TANGENTS < 2 || turning.is_empty() {
-            return Ok(());
-        }
-        let rates = self.slip_rates(q, v, t)?;
-        for k in turning.iter() {
-            let (speed, direction) = unit(rates[k]);
-            if speed > self.slip_floor {
-                self.along[k] = direction;
-            }
-        }
-        Ok(())
-    }
-
-    /// Of the slipping contacts in `crossed` (whose `ṡ · along` fell through zero at the step
-    /// end `(q, v, t)`), those that stop: all in the plane; in space those slipping slower
-    /// than `tolerance` there (the others turned by more than a right angle in the step).
-    pub fn stopping(
+    /// At a step's end `(q, v, t)`, of the slipping contacts in `crossed` (whose `ṡ · along`
+    /// fell through zero) those that stop: all in the plane; in space those slipping at most at
+    /// `tolerance` there (the others turned by more than a right angle in the step). In space
+    /// every other closed slipping contact faster than the slip floor takes its slip's direction
+    /// there, so that only a turn of more than a right angle within one step (a stop, or all but
+    /// one) crosses the watched `ṡ · along`. Where the slip stayed on the side of its direction
+    /// the friction is unchanged; a slip at or below the floor (starting from rest) is all
+    /// rounding.
+    pub fn settle_slips(
         &mut self,
         (q, v, t): (&Vector<N>, &Vector<N>, Float),
         crossed: GapSet,
         tolerance: Float,
     ) -> Result<GapSet, StepError> {
-        if S::TANGENTS < 2 || crossed.is_empty() {
+        if S::TANGENTS < 2 || self.masked.slipping().is_empty() {
             return Ok(crossed);
         }
         let rates = self.slip_rates(q, v, t)?;
@@ -408,7 +388,20 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         for k in crossed.iter().filter(|&k| norm(rates[k]) <= tolerance) {
             stopping.insert(k);
         }
+        for k in self.masked.slipping().without(stopping).iter() {
+            if let Some((_, direction, _)) = self.resolved_slip(k, rates[k]) {
+                self.along[k] = direction;
+            }
+        }
         Ok(stopping)
+    }
+
+    /// Slipping contact `k`'s slip `rate` where it is faster than the slip floor: its speed, its
+    /// direction, and its side of `along` (`-1` beyond zero, where `ṡ · along < 0`).
+    fn resolved_slip(&self, k: usize, rate: Tangent) -> Option<(Float, Tangent, Float)> {
+        let (speed, direction) = unit(rate);
+        let side = if self.along(k, rate) < 0.0 { -1.0 } else { 1.0 };
+        (speed > self.slip_floor).then_some((speed, direction, side))
     }
 
     /// Adds to `∂a/∂q'` how each slipping contact's friction in space turns with its slip:
@@ -443,14 +436,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let unmasked = self.system.constraint_jacobian(q, v, t);
         let mut terms = [None; MAX_SLIDING_CONTACTS];
         for k in self.masked.slipping().iter() {
-            let (speed, direction) = unit(rates[k]);
-            if speed <= self.slip_floor {
+            let Some((speed, direction, side)) = self.resolved_slip(k, rates[k]) else {
                 continue;
-            }
-            let side = if self.along(k, rates[k]) < 0.0 {
-                -1.0
-            } else {
-                1.0
             };
             let normal = [-direction[1], direction[0]];
             let y = (unmasked.row(self.masked.slip_row(k, 0)) * normal[0]
@@ -807,8 +794,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
 
     /// Of a closed contact `k` at multipliers `lambda`: how far its sticking force is inside
     /// Coulomb's cone (`μ|λ_N| - |λ_T|`), and the direction of that force `λ_T` (in the plane
-    /// its sign).
-    /// Of a statically indeterminate set, at the multipliers its cones admit.
+    /// its sign); of a statically indeterminate set, at the multipliers its cones admit.
     pub fn cone_margin(&self, k: usize, lambda: &Vector<Z>) -> (Float, Tangent) {
         let lambda = &self.within_cones(lambda);
         let normal = lambda[self.masked.gap_row(k)];
@@ -1020,11 +1006,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
     }
 
     /// The direction each slipping contact's friction opposes at `(q, v, t)`: in the plane the
-    /// sign it was set to; in space that of `ṡ + ε along` on the side of its direction `along`,
-    /// and beyond it (the slip through zero) of `-ṡ + ε along`, so that the force keeps its
-    /// direction through a stop as it does in the plane and the stop is a crossing of
-    /// `ṡ · along`. `ε`, the constraint tolerance, keeps a slip that starts from rest (or ends)
-    /// along its direction where `ṡ` is all rounding, as it would point anywhere.
+    /// sign it was set to; in space `ṡ/|ṡ|` on the side of its direction `along`, and beyond it
+    /// (the slip through zero) `-ṡ/|ṡ|`, so that the force keeps its direction through a stop as
+    /// it does in the plane and the stop is a crossing of `ṡ · along`. At or below the slip
+    /// floor (a slip that starts from rest, or ends, where `ṡ` is all rounding and would point
+    /// anywhere) it is `along` itself.
     #[cold]
     fn slip_directions(
         &mut self,
@@ -1036,13 +1022,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
         let rates = self.slip_rates(q, v, t)?;
         let mut directions = self.along;
         for k in self.masked.slipping().iter() {
-            let side = if self.along(k, rates[k]) < 0.0 {
-                -1.0
-            } else {
-                1.0
-            };
-            let (speed, direction) = unit(rates[k]);
-            if speed > self.slip_floor {
+            if let Some((_, direction, side)) = self.resolved_slip(k, rates[k]) {
                 directions[k] = [side * direction[0], side * direction[1]];
             }
         }
@@ -1359,21 +1339,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Model<'s, S
             dv: self.derivatives.dv(),
             dp,
         })
-    }
-}
-
-/// The length of a tangent vector.
-#[inline(always)]
-fn norm(x: Tangent) -> Float {
-    Real::hypot(x[0], x[1])
-}
-
-/// A tangent vector's length and direction (`[1, 0]` where it is zero).
-fn unit(x: Tangent) -> (Float, Tangent) {
-    let size = norm(x);
-    match size > 0.0 {
-        true => (size, [x[0] / size, x[1] / size]),
-        false => (size, [1.0, 0.0]),
     }
 }
 

@@ -196,8 +196,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let end = self.record.last.end;
         let tolerance = self.options.constraint_tolerance;
         let end = (&end.q, &end.v, end.t);
-        to_stop = self.model.stopping(end, to_stop, tolerance)?;
-        self.model.turn_slips(end, to_stop)?;
+        to_stop = self.model.settle_slips(end, to_stop, tolerance)?;
         Ok((to_slip, to_stop))
     }
 
