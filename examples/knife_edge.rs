@@ -41,7 +41,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let options = Options {
         multipliers: MultiplierModel::Automatic,
         step: StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: args.output_interval,
             rtol: args.rtol,

@@ -95,7 +95,7 @@ fn options(args: &Args) -> Result<Options, String> {
     let step = match (args.step, args.method) {
         (Some(step), _) => StepControl::Fixed { step },
         (None, Method::Dopri5 | Method::Dop853) => StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: args.rtol,

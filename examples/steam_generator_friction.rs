@@ -86,7 +86,7 @@ struct Run {
 fn simulate(scene: &SlidingSupportSteamGenerator, args: &Args) -> Result<Run, zeitner::StepError> {
     let options = Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.01,
             rtol: args.rtol,

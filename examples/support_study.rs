@@ -50,7 +50,7 @@ const OUTPUTS: [&str; 4] = [
 fn options() -> Options {
     Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.01,
             rtol: 1e-7,

@@ -76,7 +76,7 @@ fn ten_thousand_steps_allocate_nothing() {
         },
         Options {
             step: StepControl::Adaptive {
-                initial_step: 1e-5,
+                initial_step: Some(1e-5),
                 min_step: 1e-12,
                 max_step: 1e-4,
                 rtol: 1e-8,
@@ -178,7 +178,7 @@ fn the_sparse_simulator_allocates_only_when_built() {
         },
         Options {
             step: StepControl::Adaptive {
-                initial_step: 1e-5,
+                initial_step: Some(1e-5),
                 min_step: 1e-12,
                 max_step: 1e-3,
                 rtol: 1e-8,

@@ -86,7 +86,7 @@ fn end_at_the_published_time(options: Options) -> (Point<7, 6>, Statistics) {
 fn matches_the_published_solution_at_t_003() {
     let options = Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-6,
+            initial_step: Some(1e-6),
             min_step: 1e-14,
             max_step: 1e-3,
             rtol: 1e-12,
@@ -140,7 +140,7 @@ fn an_impossible_tolerance_is_refused_without_exhausting_the_newton_on_every_try
         method: InnerMethod::Esdirk43,
         multipliers: MultiplierModel::Quadratic,
         step: StepControl::Adaptive {
-            initial_step: 4.901888538017459e-4,
+            initial_step: Some(4.901888538017459e-4),
             min_step: 1e-300,
             max_step: f64::INFINITY,
             rtol: 2.5e-16,

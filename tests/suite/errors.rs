@@ -21,7 +21,7 @@ const PENDULUM: Pendulum = Pendulum {
 
 fn adaptive(initial_step: f64, min_step: f64, max_step: f64, rtol: f64, atol: f64) -> StepControl {
     StepControl::Adaptive {
-        initial_step,
+        initial_step: Some(initial_step),
         min_step,
         max_step,
         rtol,
@@ -335,7 +335,7 @@ pub(crate) fn options() -> impl Strategy<Value = Options> {
                     multipliers,
                     step: if adaptive {
                         StepControl::Adaptive {
-                            initial_step: step,
+                            initial_step: Some(step),
                             min_step: 1e-10,
                             max_step: 1.0,
                             rtol: tolerance.abs(),

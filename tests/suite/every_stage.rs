@@ -228,7 +228,7 @@ fn adaptive_steps_follow_the_tolerance() {
         let options = Options {
             method: InnerMethod::Dop853,
             step: StepControl::Adaptive {
-                initial_step: 1e-3,
+                initial_step: Some(1e-3),
                 min_step: 1e-12,
                 max_step: f64::INFINITY,
                 rtol,

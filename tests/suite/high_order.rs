@@ -58,7 +58,7 @@ fn steam_generator_converges_at_order_5() {
 fn andrews_within_the_published_reliability() {
     let scene = Andrews::published();
     let step = StepControl::Adaptive {
-        initial_step: 1e-6,
+        initial_step: Some(1e-6),
         min_step: 1e-14,
         max_step: 1e-3,
         rtol: 1e-11,

@@ -347,7 +347,7 @@ fn wall_pendulum_with(
     let options = Options {
         method,
         step: StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: 1e-12,
@@ -462,7 +462,7 @@ fn strut_engages_with(
     let options = Options {
         method,
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: 1e-10,

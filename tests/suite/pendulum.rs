@@ -44,7 +44,7 @@ fn energy(q: &Vector<2>, v: &Vector<2>) -> f64 {
 fn ten_seconds_within_1e8_of_the_angle_reference() {
     let options = Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.1,
             rtol: 1e-10,
@@ -90,7 +90,7 @@ fn esdirk32_with_quadratic_multipliers_reaches_tight_tolerances() {
             method: InnerMethod::Esdirk32,
             multipliers: MultiplierModel::Quadratic,
             step: StepControl::Adaptive {
-                initial_step: 1e-3,
+                initial_step: Some(1e-3),
                 min_step: 1e-12,
                 max_step: 0.1,
                 rtol,

@@ -15,7 +15,7 @@ use zeitner::{
 fn adaptive(rtol: f64) -> Options {
     Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.1,
             rtol,

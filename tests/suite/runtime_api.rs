@@ -169,7 +169,7 @@ fn reinitialise_makes_the_new_state_consistent_and_goes_on() {
 fn the_step_stays_within_its_bounds() {
     let (q, v) = released();
     let bounded = StepControl::Adaptive {
-        initial_step: 1e-3,
+        initial_step: Some(1e-3),
         min_step: 1e-4,
         max_step: 1e-2,
         rtol: 1e-6,
@@ -192,7 +192,7 @@ fn the_step_stays_within_its_bounds() {
     let mut sim = Simulator::new(&PENDULUM, Start { q, v, t: 0.0 }, Options::paper(0.2)).unwrap();
     sim.step().unwrap();
     let tight = StepControl::Adaptive {
-        initial_step: 1e-3,
+        initial_step: Some(1e-3),
         min_step: 0.0,
         max_step: 1e-3,
         rtol: 1e-6,

@@ -247,7 +247,7 @@ mod runs {
 
     fn adaptive(rtol: f64) -> StepControl {
         StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.05,
             rtol,
@@ -489,7 +489,7 @@ mod velocity_rows {
         let edge = KnifeEdge::PAPER;
         let omega = 1.5;
         let adaptive = StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: 1e-10,
@@ -792,7 +792,7 @@ mod impacts {
         let dy = (v_plus / (2.0 * g)) * (tau + t1) - tau * tau / 2.0 - tau * t1 / 2.0;
         let dv = v_plus / (2.0 * g) - tau - t1 / 2.0;
         let adaptive = StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: 1e-10,
@@ -878,7 +878,7 @@ mod impacts {
     ) -> (Matrix<1, 2>, zeitner::Sensitivities<1, 1, 2>) {
         let options = Options {
             step: StepControl::Adaptive {
-                initial_step: 1e-3,
+                initial_step: Some(1e-3),
                 min_step: 1e-12,
                 max_step: 0.05,
                 rtol: 1e-10,
@@ -1393,7 +1393,7 @@ mod spring_gap {
         ];
         let scene = SpringStop { m, k, d };
         let step = StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.01,
             rtol: 1e-10,

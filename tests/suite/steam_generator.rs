@@ -14,7 +14,7 @@ fn tight() -> Options {
     Options {
         method: InnerMethod::DormandPrince54,
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.01,
             rtol: 1e-12,
@@ -192,7 +192,7 @@ fn the_load_s_kink_is_a_time_event_and_a_run_goes_straight_through_it() {
     // rejections that find the kink.
     let adaptive = Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.05,
             rtol: 1e-10,

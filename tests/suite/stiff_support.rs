@@ -17,7 +17,7 @@ fn run(method: InnerMethod, multipliers: MultiplierModel, rtol: f64) -> ([f64; 3
         method,
         multipliers,
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.1,
             rtol,

@@ -36,7 +36,7 @@ fn methods() -> [(&'static str, Options); 3] {
     let adaptive = |method, rtol: f64| Options {
         method,
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.05,
             rtol,

@@ -89,7 +89,7 @@ where
 
 fn adaptive(rtol: f64) -> StepControl {
     StepControl::Adaptive {
-        initial_step: 1e-5,
+        initial_step: Some(1e-5),
         min_step: 1e-14,
         max_step: 0.01,
         rtol,

@@ -130,7 +130,7 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
         ..Options::default()
     };
     let adaptive = StepControl::Adaptive {
-        initial_step: h,
+        initial_step: Some(h),
         min_step: h * 1e-6,
         max_step: h * 100.0,
         rtol: 1e-6,

@@ -124,7 +124,7 @@ fn min_factor_above_the_factor_after_a_rejection_must_not_panic() {
     let result = within_time(|| {
         let options = Options {
             step: StepControl::Adaptive {
-                initial_step: 0.5,
+                initial_step: Some(0.5),
                 min_step: 1e-12,
                 max_step: Float::INFINITY,
                 rtol: 1e-8,
@@ -155,7 +155,7 @@ fn a_step_of_f64_max_must_end() {
     let result = within_time(|| {
         let options = Options {
             step: StepControl::Adaptive {
-                initial_step: Float::MAX,
+                initial_step: Some(Float::MAX),
                 min_step: 1e-12,
                 max_step: Float::INFINITY,
                 rtol: 1e-8,
@@ -316,7 +316,7 @@ fn a_rejected_landing_step_must_shrink() {
             let rtol = (10 as Float).powf(-4.0 - 0.2 * Float::from(k));
             let options = Options {
                 step: StepControl::Adaptive {
-                    initial_step: 0.1,
+                    initial_step: Some(0.1),
                     min_step: 1e-12,
                     max_step: Float::INFINITY,
                     rtol,
@@ -472,7 +472,7 @@ fn a_two_link_arm_must_not_stall() {
         let options = Options {
             multipliers: MultiplierModel::Quadratic,
             step: StepControl::Adaptive {
-                initial_step: 1e-4,
+                initial_step: Some(1e-4),
                 min_step: 0.0,
                 max_step: 0.1,
                 rtol: 1e-8,

@@ -14,19 +14,33 @@ use crate::system::{ConstrainedSystem, Matrix, Vector};
 pub(crate) use crate::scalar::LARGEST_STEP;
 
 /// The controller's memory: the logarithm of the last accepted step's error norm (one `ln`
-/// and one `exp` per step instead of two powers).
+/// and one `exp` per step instead of two powers), and whether a step was accepted since the
+/// start.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Controller {
     ln_previous_error: Float,
+    first: bool,
 }
 
 /// Hairer & Wanner's start value of the previous error (`facold`).
 const FIRST_PREVIOUS_ERROR: Float = 1e-4;
 
 impl Controller {
+    /// Memory afresh, the step planned going on (after an impact).
     pub fn new() -> Self {
         Controller {
             ln_previous_error: Lm::log(FIRST_PREVIOUS_ERROR),
+            first: false,
+        }
+    }
+
+    /// Memory afresh before the run's first step, which may grow by `max_factor_after_first`
+    /// (not after a new state or a change of friction: a slip starting from rest is stiff, and
+    /// a block pulled past its cone lost its step there, in the stability report).
+    pub fn starting() -> Self {
+        Controller {
+            first: true,
+            ..Controller::new()
         }
     }
 
@@ -41,7 +55,13 @@ impl Controller {
         // Hairer & Wanner keep at least 1e-4, so that one very accurate step does not hold back
         // the next one's growth.
         self.ln_previous_error = ln_error.max(Lm::log(FIRST_PREVIOUS_ERROR));
-        factor.clamp(settings.min_factor, settings.max_factor)
+        let largest = if self.first {
+            settings.max_factor.max(settings.max_factor_after_first)
+        } else {
+            settings.max_factor
+        };
+        self.first = false;
+        factor.clamp(settings.min_factor, largest)
     }
 
     /// The factor for the retry after a step rejected with `error` > 1 (or NaN).
@@ -64,6 +84,81 @@ pub(crate) fn bounds(step: StepControl) -> (Float, Float) {
             min_step, max_step, ..
         } => (min_step, max_step),
     }
+}
+
+/// The first step from a start or a new state: `initial_step` where the options give one, else Hairer, Nørsett & Wanner's starting step (*Solving ODEs I*, II.4, as in
+/// DOPRI5 and DOP853's `HINIT`) for the state `y = (q, q')` with `y' = (q', a)`, an error
+/// estimate of order `k - 1`, and `acceleration_after(h)`, the acceleration at the Euler step
+/// `y + h y'` (`None` where it cannot be evaluated: then the last step estimated stands).
+/// Within `min_step..=max_step`.
+pub(crate) fn starting_step<const N: usize>(
+    step: StepControl,
+    (q, v, a): (&Vector<N>, &Vector<N>, &Vector<N>),
+    k: u32,
+    mut acceleration_after: impl FnMut(Float) -> Option<Vector<N>>,
+) -> Float {
+    let (min_step, max_step, rtol, atol) = match step {
+        StepControl::Fixed { step } => return step,
+        StepControl::Adaptive {
+            initial_step: Some(h),
+            ..
+        } => return h,
+        StepControl::Adaptive {
+            min_step,
+            max_step,
+            rtol,
+            atol,
+            ..
+        } => (min_step, max_step, rtol, atol),
+    };
+    // Scaled as the error norm scales a step of `h`: by the larger of the state at its ends
+    // (here the Euler step's end).
+    let scaled_rms = |x: &Vector<N>, y: &Vector<N>, h: Float| {
+        let squares = (0..N).fold(0.0, |sum: Float, i| {
+            let sq = atol + rtol * q[i].abs().max((q[i] + h * v[i]).abs());
+            let sv = atol + rtol * v[i].abs().max((v[i] + h * a[i]).abs());
+            sum + (x[i] / sq) * (x[i] / sq) + (y[i] / sv) * (y[i] / sv)
+        });
+        Lm::sqrt(squares / (2 * N).max(1) as Float)
+    };
+    let (size, rate) = (scaled_rms(q, v, 0.0), scaled_rms(v, a, 0.0));
+    // The state over its rate, a hundredth of it: a first guess of the scale it changes on.
+    let guess = if size < 1e-5 || rate < 1e-5 {
+        1e-6
+    } else {
+        0.01 * size / rate
+    };
+    // Hairer's step is at most 100 times the guess, where the curvature was measured; where it
+    // would be longer, the curvature is measured again there (up to 4 times, as CVODE
+    // iterates its estimate): from rest the guess is the velocities' absolute tolerance over
+    // the acceleration, orders of magnitude short (Andrews' mechanism: 1e-9 s, where 1e-3 s
+    // holds the tolerance).
+    // `min` then `max`, not `clamp`: that panics on bounds out of order, which options refuse.
+    let within = |h: Float| h.min(max_step).max(min_step);
+    let mut h = within(guess);
+    for _ in 0..4 {
+        let curvature = match acceleration_after(h) {
+            Some(after) if after.iter().all(|x| x.is_finite()) => {
+                scaled_rms(&(a * h), &(after - a), h) / h
+            }
+            _ => break,
+        };
+        let largest = scaled_rms(v, a, h).max(curvature);
+        let error_bound = if largest <= 1e-15 {
+            (h * 1e-3).max(1e-6)
+        } else {
+            Lm::exp(Lm::log(0.01 / largest) / k.max(1) as Float)
+        };
+        if !error_bound.is_finite() {
+            break;
+        }
+        let capped = error_bound > 100.0 * h;
+        h = within(error_bound.min(100.0 * h));
+        if !capped || h >= max_step {
+            break;
+        }
+    }
+    h
 }
 
 /// The next try of a step of size `h` from `(t, carry)` (the time and what its compensated sum
@@ -405,6 +500,7 @@ mod tests {
         min_factor: 0.2,
         max_factor: 5.0,
         max_factor_after_rejection: 0.9,
+        max_factor_after_first: 1e4,
         beta_times_order: 0.2,
         newton_failure_factor: 0.25,
         slow_newton_iterations: 5,
@@ -415,7 +511,7 @@ mod tests {
     fn newton_holds_the_constraints_to_what_the_step_tolerance_allows() {
         let adaptive = |rtol, atol| Options {
             step: StepControl::Adaptive {
-                initial_step: 1e-3,
+                initial_step: Some(1e-3),
                 min_step: 0.0,
                 max_step: 1.0,
                 rtol,
@@ -475,6 +571,11 @@ mod tests {
         // Tiny errors are capped by max_factor, an error of 1 never grows the step.
         assert_eq!(Controller::new().accepted(&SETTINGS, 0.0, 5), 5.0);
         assert!(Controller::new().accepted(&SETTINGS, 1.0, 5) < 1.0);
+        // The first step of a start may grow by more; the second by max_factor again.
+        let mut starting = Controller::starting();
+        let first = starting.accepted(&SETTINGS, 0.0, 5);
+        assert!(first > 30.0 && first <= 1e4, "{first}");
+        assert_eq!(starting.accepted(&SETTINGS, 0.0, 5), 5.0);
     }
 
     #[test]
@@ -488,7 +589,7 @@ mod tests {
     #[test]
     fn error_norm_is_finite_with_zero_components_and_rejects_nan() {
         let step = StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: Some(1e-3),
             min_step: 0.0,
             max_step: 1.0,
             rtol: 1e-6,
@@ -597,7 +698,7 @@ mod retry_tests {
     use super::*;
 
     const ADAPTIVE: StepControl = StepControl::Adaptive {
-        initial_step: 1e-3,
+        initial_step: Some(1e-3),
         min_step: 0.0,
         max_step: 1.0,
         rtol: 1e-6,
@@ -626,5 +727,95 @@ mod retry_tests {
         let factor = ControllerSettings::default().newton_failure_factor;
         let tries = (1e-12 / LARGEST_STEP).ln() / factor.ln();
         assert!(tries.ceil() < MAX_ATTEMPTS as Float, "{tries}");
+    }
+
+    /// Free fall from rest, `q = 1`, `q' = 0`, `a = -9.81`, rtol 1e-6, atol 1e-9.
+    fn free_fall_start(evaluations: &mut u32, order: u32) -> Float {
+        let (q, v, a) = (
+            Vector::<1>::new(1.0),
+            Vector::<1>::zeros(),
+            Vector::<1>::new(-9.81),
+        );
+        let step = StepControl::Adaptive {
+            initial_step: None,
+            min_step: 1e-12,
+            max_step: 1.0,
+            rtol: 1e-6,
+            atol: 1e-9,
+        };
+        starting_step(step, (&q, &v, &a), order, |_| {
+            *evaluations += 1;
+            Some(a)
+        })
+    }
+
+    #[test]
+    fn a_starting_step_given_is_taken_as_it_is() {
+        let (q, v) = (Vector::<1>::new(1.0), Vector::<1>::zeros());
+        let step = StepControl::Adaptive {
+            initial_step: Some(0.25),
+            min_step: 0.0,
+            max_step: 1.0,
+            rtol: 1e-6,
+            atol: 1e-9,
+        };
+        let never = |_| -> Option<Vector<1>> { panic!("no estimate where a step is given") };
+        assert_eq!(starting_step(step, (&q, &v, &v), 5, never), 0.25);
+        let fixed = StepControl::Fixed { step: 0.5 };
+        assert_eq!(starting_step(fixed, (&q, &v, &v), 5, never), 0.5);
+    }
+
+    #[test]
+    fn the_starting_step_is_hairers_error_bound_not_a_hundred_times_the_first_guess() {
+        // By hand, with the scales at the start (atol + rtol|q|, atol): the rate (q', a) in
+        // RMS, the first guess a hundredth of the state's size over it, and Hairer's error
+        // bound (0.01 / rate)^(1/k), as the curvature (the change of y' over the Euler step)
+        // is smaller. At the Euler step's end |q'| grows, so its scale does, and the rate
+        // measured there is smaller: the step is at least that bound, and well beyond the cap.
+        let rate = (9.81 / 1e-9) / Float::sqrt(2.0);
+        let size = (1.0 / (1e-9 + 1e-6)) / Float::sqrt(2.0);
+        let guess = 0.01 * size / rate;
+        let bound = Lm::exp(Lm::log(0.01 / rate) / 5.0);
+        assert!(bound > 1e3 * guess, "the cap would bind: {guess} {bound}");
+        let mut evaluations = 0;
+        let h = free_fall_start(&mut evaluations, 5);
+        assert!(h >= bound && h <= 1e8 * guess, "{h} against {bound}");
+        // Over the step found, the velocity's change `a h` is what the bound allows: with the
+        // end's scale (atol + rtol |a| h) the same rule gives the same step to a few per cent.
+        let end_rate = (9.81 / (1e-9 + 1e-6 * 9.81 * h)) / Float::sqrt(2.0);
+        let at_end = Lm::exp(Lm::log(0.01 / end_rate) / 5.0);
+        assert!((h / at_end - 1.0).abs() < 0.5, "{h} against {at_end}");
+        assert!((2..=4).contains(&evaluations), "{evaluations}");
+        // A higher order takes a longer first step.
+        assert!(free_fall_start(&mut evaluations, 9) > h);
+    }
+
+    #[test]
+    fn a_starting_step_whose_probe_fails_is_the_first_guess_within_bounds() {
+        let (q, v, a) = (
+            Vector::<1>::new(1.0),
+            Vector::<1>::zeros(),
+            Vector::<1>::new(-9.81),
+        );
+        let step = StepControl::Adaptive {
+            initial_step: None,
+            min_step: 1e-3,
+            max_step: 1.0,
+            rtol: 1e-6,
+            atol: 1e-9,
+        };
+        // The first guess (1e-6 s) is below min_step: min_step.
+        assert_eq!(starting_step(step, (&q, &v, &a), 5, |_| None), 1e-3);
+        let nan = |_| Some(Vector::<1>::new(Float::NAN));
+        assert_eq!(starting_step(step, (&q, &v, &a), 5, nan), 1e-3);
+        let capped = StepControl::Adaptive {
+            initial_step: None,
+            min_step: 1e-12,
+            max_step: 1e-4,
+            rtol: 1e-6,
+            atol: 1e-9,
+        };
+        let h = starting_step(capped, (&q, &v, &a), 5, |_| Some(a));
+        assert_eq!(h, 1e-4);
     }
 }

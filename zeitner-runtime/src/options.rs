@@ -343,7 +343,7 @@ impl MultiplierModel {
 /// assert!(fixed.validate().is_ok());
 /// // Bounds out of order: `min_step` above `initial_step`.
 /// let step = StepControl::Adaptive {
-///     initial_step: 1e-4,
+///     initial_step: Some(1e-4),
 ///     min_step: 1e-3,
 ///     max_step: 0.1,
 ///     rtol: 1e-6,
@@ -361,11 +361,16 @@ pub enum StepControl {
     /// Newton iteration count, always within `min_step..=max_step`. The error of `q` and `q'` is
     /// measured component by component against `atol + rtol·|x|` in a root mean square;
     /// `atol` must be positive (a coordinate that stays at zero has no relative scale).
-    /// Default: `initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞, `rtol` 1e-8, `atol` 1e-10
+    /// `initial_step` is the first step, at the start and at a new state (`reinitialise`);
+    /// `None` estimates it there from the scene (Hairer, Nørsett & Wanner's starting step,
+    /// *Solving ODEs I*, II.4: one more acceleration, at an Euler step), as most integrators do.
+    /// After an impact the run goes on with the step it planned; after a change of friction
+    /// too, unless `initial_step` is given: then it starts again from it.
+    /// Default: `initial_step` `None`, `min_step` 1e-12, `max_step` ∞, `rtol` 1e-8, `atol` 1e-10
     /// (`f32`: `rtol` 1e-5, `atol` 1e-7). An `rtol` below the scalar's ε is refused
     /// ([`InvalidOption::BelowResolution`]).
     Adaptive {
-        initial_step: Float,
+        initial_step: Option<Float>,
         min_step: Float,
         #[cfg_attr(feature = "serde", serde(with = "unbounded"))]
         max_step: Float,
@@ -394,7 +399,7 @@ mod unbounded {
 
 impl StepControl {
     /// Adaptive steps to the relative tolerance `rtol`, with `atol = rtol / 100` and the
-    /// default bounds (`initial_step` 1e-3, `min_step` 1e-12, `max_step` ∞); the default
+    /// default bounds (the first step estimated, `min_step` 1e-12, `max_step` ∞); the default
     /// options' steps are `StepControl::adaptive(1e-8)`.
     ///
     /// ```
@@ -409,7 +414,7 @@ impl StepControl {
     /// ```
     pub fn adaptive(rtol: Float) -> Self {
         StepControl::Adaptive {
-            initial_step: 1e-3,
+            initial_step: None,
             min_step: 1e-12,
             max_step: Float::INFINITY,
             rtol,
@@ -695,11 +700,12 @@ impl Options {
                 rtol,
                 atol,
             } => {
-                let ordered = min_step.is_finite()
-                    && min_step >= 0.0
-                    && min_step <= initial_step
-                    && initial_step <= max_step;
-                if !(positive(initial_step) && ordered) {
+                let first = initial_step.unwrap_or(min_step.max(Float::MIN_POSITIVE));
+                // No step is longer than `LARGEST_STEP` (`t + h` would overflow).
+                let ordered = (0.0..=crate::scalar::LARGEST_STEP).contains(&min_step)
+                    && min_step <= first
+                    && first <= max_step;
+                if !(positive(first) && ordered) {
                     return refuse(InvalidOption::StepSize);
                 }
                 if !(positive(rtol) && positive(atol)) {
@@ -740,6 +746,10 @@ pub struct ControllerSettings {
     pub max_factor: Float,
     /// The largest factor after a rejected step (so that a rejection always shrinks). Default 0.9.
     pub max_factor_after_rejection: Float,
+    /// The largest factor after the run's first step, whose size was a guess (estimated or
+    /// given): the first error estimate is the first measurement of the scene's time scale.
+    /// Default 1e4, SUNDIALS CVODE's `ETAMX1`.
+    pub max_factor_after_first: Float,
     /// `β·k` of the PI controller `h₊ = h · safety · e⁻ᵅ · e₋ᵝ` with `β = beta_times_order / k`,
     /// `α = 1/k - 0.75 β` and `k` one more than the lower order of the error estimate
     /// (Hairer & Wanner's stabilised control; 0.2 gives their DOPRI5 default `β = 0.04`);
@@ -763,6 +773,7 @@ impl Default for ControllerSettings {
             min_factor: 0.2,
             max_factor: 5.0,
             max_factor_after_rejection: 0.9,
+            max_factor_after_first: 1e4,
             beta_times_order: 0.2,
             newton_failure_factor: 0.25,
             slow_newton_iterations: 5,
@@ -783,6 +794,8 @@ impl ControllerSettings {
             && factor(self.max_factor_after_rejection)
             && self.max_factor_after_rejection < 1.0
             && self.min_factor <= self.max_factor_after_rejection
+            && factor(self.max_factor_after_first)
+            && self.max_factor_after_first >= 1.0
             && self.beta_times_order.is_finite()
             && (0.0..=0.5).contains(&self.beta_times_order)
             && factor(self.newton_failure_factor)

@@ -113,7 +113,7 @@ impl Stepper {
             },
             Stepper::SparseDopri => Options {
                 step: StepControl::Adaptive {
-                    initial_step: STEP,
+                    initial_step: Some(STEP),
                     min_step: 1e-10,
                     max_step: 0.1,
                     rtol: 1e-6,
@@ -314,7 +314,7 @@ fn reference<S: ConstrainedSystem<N, Z> + Sync, const N: usize, const Z: usize>(
 pub fn reference_options() -> Options {
     Options {
         step: StepControl::Adaptive {
-            initial_step: 1e-4,
+            initial_step: Some(1e-4),
             min_step: 1e-12,
             max_step: 0.01,
             rtol: 1e-12,

@@ -75,7 +75,7 @@ impl Grid {
             .iter()
             .map(|&rtol| {
                 let step = StepControl::Adaptive {
-                    initial_step: t_end * 1e-4,
+                    initial_step: None,
                     min_step: t_end * 1e-14,
                     max_step: t_end / 20.0,
                     rtol,

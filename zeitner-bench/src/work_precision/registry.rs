@@ -574,7 +574,7 @@ fn andrews_scene() -> Result<Scene, String> {
     let options = Options {
         method: InnerMethod::DormandPrince54,
         step: StepControl::Adaptive {
-            initial_step: 1e-7,
+            initial_step: Some(1e-7),
             min_step: 1e-15,
             max_step: 1e-4,
             rtol: 1e-13,

@@ -1,12 +1,13 @@
 //! The one transaction that re-anchors the run at a consistent point (a start, a new state, a
 //! re-projection, an impact), and the restart after a discontinuity.
 
-use super::{first_step, Simulator};
+use super::Simulator;
 use crate::consistency::StartReport;
-use crate::control::Controller;
+use crate::control::{starting_step, Controller};
 use crate::events::Watch;
 use crate::method::Method;
 use crate::output::StepReport;
+use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
 /// What re-anchoring the run at a consistent point forgets besides the multipliers' history
@@ -15,8 +16,12 @@ use crate::system::ConstrainedSystem;
 pub(super) enum Forget {
     /// Nothing more: the step size and its controller go on (a re-projection).
     History,
-    /// The step size, its controller and the remainder carried towards stop times too (a new
-    /// state, an impact).
+    /// The controller's memory and the remainder carried towards stop times; the step planned
+    /// goes on, as the motion is as smooth after the point as before it (an impact: starting
+    /// again from the first step cost a bouncing ball 17 of its 24 steps).
+    Controller,
+    /// The step size too: the first step again (a new state; a change of friction with the
+    /// first step given).
     Steps,
 }
 
@@ -25,7 +30,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// impact: the one transaction that re-anchors the run there. The state, the report, the
     /// watched functions' values and (where the point was made as a start) the start report are
     /// replaced; the multipliers' history and the inner method's memory start afresh from the
-    /// point's acceleration, and with [`Forget::Steps`] the step size too. Cold: off the step's
+    /// point's acceleration, and the step size as `forget` says. Cold: off the step's
     /// hot path.
     #[cold]
     pub(super) fn anchor(
@@ -43,10 +48,12 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.record.state_gram = None;
         self.pending.singular = false;
         Method::<N, Z, S::Storage>::restart(&mut *self.method, || Ok(point.a));
-        if forget == Forget::Steps {
+        if forget != Forget::History {
             self.t_carry = 0.0;
             self.controller = Controller::new();
-            self.planned_step = first_step(self.options.step);
+        }
+        if forget == Forget::Steps {
+            self.planned_step = self.first_step();
         }
     }
 
@@ -57,5 +64,19 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.predictor.reset();
         self.record.state_gram = None;
         self.restart_method();
+    }
+
+    /// The first step from the last point: the options' `initial_step`, or one estimated there
+    /// (its multipliers held for the estimate's one more acceleration).
+    pub(super) fn first_step(&mut self) -> Float {
+        let end = self.record.last.end;
+        let (q, v, a, t, lambda) = (end.q, end.v, end.a, end.t, end.lambda);
+        let order = self.error_order();
+        let model = &mut self.model;
+        starting_step(self.options.step, (&q, &v, &a), order, |h| {
+            let after = (q + v * h, v + a * h);
+            let acceleration = model.acceleration(&after.0, &after.1, t + h, &lambda);
+            acceleration.ok().map(|acceleration| acceleration.a)
+        })
     }
 }

@@ -37,7 +37,7 @@ use crate::gaps::GapSet;
 use crate::method::{AnyMethod, EndSensitivity, Method};
 use crate::model::Model;
 use crate::multipliers::Predictor;
-use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
+use crate::options::{InnerMethod, MultiplierModel, Options};
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
 use crate::output::{Statistics, StepReport, StopReason};
@@ -156,7 +156,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             active: options.method.first(options.multipliers, options.step),
             stiffness: StiffnessTest::default(),
             options,
-            controller: Controller::new(),
+            controller: Controller::starting(),
             predictor: Predictor::default(),
             q: point.q,
             v: point.v,
@@ -164,7 +164,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             lambda: point.lambda,
             jacobian_row_scale: Vector::from_fn(|j, _| start_jacobian.row(j).norm()),
             stop_time: None,
-            planned_step: first_step(options.step),
+            planned_step: 0.0,
             progress: Progress::default(),
             record: S::Storage::hold(Record {
                 last,
@@ -188,6 +188,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         }
         .with_next_time_event();
         simulator.restart_method();
+        simulator.planned_step = simulator.first_step();
         Ok(simulator)
     }
 
@@ -389,12 +390,4 @@ pub(crate) fn already_there(now: Float, t_end: Float) -> Result<bool, StepError>
         return Err(StepError::InvalidOption(InvalidOption::EndTime));
     }
     Ok(t_end == now)
-}
-
-/// The first step the options plan.
-pub(crate) fn first_step(step: StepControl) -> Float {
-    match step {
-        StepControl::Fixed { step } => step,
-        StepControl::Adaptive { initial_step, .. } => initial_step,
-    }
 }

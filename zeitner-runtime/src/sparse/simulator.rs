@@ -12,8 +12,8 @@ use super::configuration::{
 };
 use crate::consistency::{Start, StartReport};
 use crate::control::{
-    bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, Controller,
-    Progress, LARGEST_STEP,
+    bounds, error_norm, frozen_estimate, next_step_size, plan_step, retry_step, starting_step,
+    Controller, Progress, LARGEST_STEP,
 };
 use crate::error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 use crate::linalg::max_abs;
@@ -27,7 +27,7 @@ use crate::output::Evaluations;
 use crate::output::Statistics;
 use crate::output::{Point, StepReport, StopReason};
 use crate::polynomial::StepPolynomial;
-use crate::simulator::{already_there, first_step};
+use crate::simulator::already_there;
 use crate::system::{ConstrainedSystem, MassKind, Vector};
 
 /// Position projections at the start take at most this many Newton sweeps.
@@ -135,14 +135,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             stage_jacobian: vec![0.0; nonzeros],
             structure,
             options,
-            controller: Controller::new(),
+            controller: Controller::starting(),
             predictor: Predictor::default(),
             q: q0,
             v: v0,
             t_carry: 0.0,
             lambda: Vector::zeros(),
             stop_time: None,
-            planned_step: first_step(options.step),
+            planned_step: 0.0,
             progress: Progress::default(),
             last: empty_report(t0),
             start_report: StartReport::unmoved(),
@@ -150,6 +150,14 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             evaluations: Evaluations::default(),
         };
         simulator.start(q0, v0, t0)?;
+        let end = simulator.last.end;
+        let (q, v, t, lambda) = (end.q, end.v, end.t, end.lambda);
+        simulator.planned_step = starting_step(options.step, (&q, &v, &end.a), 5, |h| {
+            let after = (q + v * h, v + end.a * h);
+            simulator
+                .acceleration(&after.0, &after.1, t + h, &lambda)
+                .ok()
+        });
         Ok(simulator)
     }
 
