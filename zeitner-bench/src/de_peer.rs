@@ -405,31 +405,33 @@ pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
     };
     timed_runs(rtols, |rtol| {
         let mut end = Record::new(start);
-        let (steps, cpu) = between_impacts(&mut end, (start, t_end), |t0, y0, record| {
-            // No projection: Radau5 holds the constraints itself.
-            let solout = EndState::<S, N, Z, Y> {
-                scene,
-                rtol,
-                record,
-                projection: None,
-            };
-            // Per-component tolerances: 0.7.0 rescales a scalar tolerance once per component
-            // (RADAU5's rtol → 0.1·rtol^(2/3), n times over), which pins it near 1e-3.
-            let method = ImplicitRungeKutta::radau5()
-                .rtol([rtol; Y])
-                .atol([atol(rtol); Y])
-                .index2_equations(by_index(2))
-                .index3_equations(by_index(3))
-                .max_steps(10_000_000);
-            solved(|| {
-                IVP::dae(&dae, t0, t_end, y0)
-                    .method(method)
-                    .solout(solout)
-                    .solve()
-            })
-        })?;
+        let (steps, evaluations, cpu) =
+            between_impacts(&mut end, (start, t_end), |t0, y0, record| {
+                // No projection: Radau5 holds the constraints itself.
+                let solout = EndState::<S, N, Z, Y> {
+                    scene,
+                    rtol,
+                    record,
+                    projection: None,
+                };
+                // Per-component tolerances: 0.7.0 rescales a scalar tolerance once per component
+                // (RADAU5's rtol → 0.1·rtol^(2/3), n times over), which pins it near 1e-3.
+                let method = ImplicitRungeKutta::radau5()
+                    .rtol([rtol; Y])
+                    .atol([atol(rtol); Y])
+                    .index2_equations(by_index(2))
+                    .index3_equations(by_index(3))
+                    .max_steps(10_000_000);
+                solved(|| {
+                    IVP::dae(&dae, t0, t_end, y0)
+                        .method(method)
+                        .solout(solout)
+                        .solve()
+                })
+            })?;
         Ok(PeerEnd {
             steps,
+            stage_evaluations: Some(evaluations),
             cpu_seconds: cpu,
             max_g: end.max_g,
             values: end.last.to_vec(),
@@ -437,24 +439,26 @@ pub fn radau5<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
     })
 }
 
-/// How one piece of a run stopped, its accepted steps and its CPU seconds.
-type Piece<const Y: usize> = (Status<f64, [f64; Y]>, usize, f64);
+/// How one piece of a run stopped, its accepted steps, its right-hand-side evaluations and its
+/// CPU seconds.
+type Piece<const Y: usize> = (Status<f64, [f64; Y]>, usize, usize, f64);
 
 /// Integrates from `start` to the end in pieces between impacts: `solve(t0, y0, record)` runs
 /// one piece, which ends at the end time or where an impact is recorded, and the next piece is
 /// a new problem from the state after that impact. (A restart of the same problem through
 /// `ControlFlag::ModifyState` would leave 0.7.0's Radau5 on a zeroed Jacobian, as its
 /// `initialize` clears the Jacobian without asking for a new one, and would rescale its rtol
-/// once more at every restart.) The steps and CPU seconds of all pieces.
+/// once more at every restart.) The steps, evaluations and CPU seconds of all pieces.
 fn between_impacts<const Y: usize>(
     record: &mut Record<Y>,
     (start, t_end): ([f64; Y], f64),
     mut solve: impl FnMut(f64, [f64; Y], &mut Record<Y>) -> Result<Piece<Y>, String>,
-) -> Result<(u64, f64), String> {
-    let (mut t0, mut y0, mut steps, mut cpu) = (0.0, start, 0, 0.0);
+) -> Result<(u64, u64, f64), String> {
+    let (mut t0, mut y0, mut steps, mut evaluations, mut cpu) = (0.0, start, 0, 0, 0.0);
     loop {
-        let (status, piece_steps, piece_cpu) = solve(t0, y0, record)?;
+        let (status, piece_steps, piece_evaluations, piece_cpu) = solve(t0, y0, record)?;
         steps += piece_steps as u64;
+        evaluations += piece_evaluations as u64;
         cpu += piece_cpu;
         match (record.impact.take(), status) {
             // Each piece must move on: impacts piling up at one time (Zeno) or at the end
@@ -465,21 +469,26 @@ fn between_impacts<const Y: usize>(
             }
             (Some(Ok((t, _))), _) => return Err(format!("impacts do not move on at t = {t}")),
             (Some(Err(failure)), _) => return Err(failure),
-            (None, Status::Complete) => return Ok((steps, cpu)),
+            (None, Status::Complete) => return Ok((steps, evaluations, cpu)),
             (None, status) => return Err(format!("stopped before the end: {status:?}")),
         }
     }
 }
 
-/// Runs `solve` under the CPU clock: how it stopped, its accepted steps and its CPU seconds, or
-/// why it failed.
+/// Runs `solve` under the CPU clock: how it stopped, its accepted steps, its right-hand-side
+/// evaluations and its CPU seconds, or why it failed.
 fn solved<const Y: usize>(
     solve: impl FnOnce() -> Result<Solution<f64, [f64; Y]>, Error<f64, [f64; Y]>>,
 ) -> Result<Piece<Y>, String> {
     let before = cpu_seconds();
     let solution = solve().map_err(|e| format!("{e:?}"))?;
     let cpu = cpu_seconds() - before;
-    Ok((solution.status, solution.steps.accepted, cpu))
+    Ok((
+        solution.status,
+        solution.steps.accepted,
+        solution.evals.function,
+        cpu,
+    ))
 }
 
 /// DOP853 on the index-1 ODE with projection, for each relative tolerance; with `fused`, its
@@ -502,34 +511,36 @@ pub fn dop853<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize, const 
     let ode = Index1 { scene, fused };
     timed_runs(rtols, |rtol| {
         let mut end = Record::new(start);
-        let (steps, cpu) = between_impacts(&mut end, (start, t_end), |t0, y0, record| {
-            let solout = EndState::<S, N, Z, X> {
-                scene,
-                rtol,
-                record,
-                projection: Some(Projection {
-                    tolerance: atol(rtol),
-                    t_end,
-                    first_step: None,
-                }),
-            };
-            let method = ExplicitRungeKutta::dop853()
-                .rtol(rtol)
-                .atol(atol(rtol))
-                .max_steps(10_000_000);
-            solved(|| {
-                IVP::ode(&ode, t0, t_end, y0)
-                    .method(method)
-                    .solout(solout)
-                    .solve()
-            })
-        })?;
+        let (steps, evaluations, cpu) =
+            between_impacts(&mut end, (start, t_end), |t0, y0, record| {
+                let solout = EndState::<S, N, Z, X> {
+                    scene,
+                    rtol,
+                    record,
+                    projection: Some(Projection {
+                        tolerance: atol(rtol),
+                        t_end,
+                        first_step: None,
+                    }),
+                };
+                let method = ExplicitRungeKutta::dop853()
+                    .rtol(rtol)
+                    .atol(atol(rtol))
+                    .max_steps(10_000_000);
+                solved(|| {
+                    IVP::ode(&ode, t0, t_end, y0)
+                        .method(method)
+                        .solout(solout)
+                        .solve()
+                })
+            })?;
         let q = Vector::<N>::from_column_slice(&end.last[..N]);
         let v = Vector::<N>::from_column_slice(&end.last[N..]);
         let (_, lambda) = index1_acceleration(scene, &q, &v, t_end)
             .ok_or("the multipliers at the end are singular")?;
         Ok(PeerEnd {
             steps,
+            stage_evaluations: Some(evaluations),
             cpu_seconds: cpu,
             max_g: end.max_g,
             values: end.last.iter().chain(lambda.iter()).copied().collect(),

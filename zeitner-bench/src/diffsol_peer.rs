@@ -197,6 +197,7 @@ fn integrate<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         )
     }?;
     Ok(PeerEnd {
+        stage_evaluations: None,
         steps,
         cpu_seconds: cpu,
         max_g,

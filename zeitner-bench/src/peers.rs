@@ -12,6 +12,9 @@ pub struct PeerRun {
 
 pub struct PeerEnd {
     pub steps: u64,
+    /// Right-hand-side evaluations, where the peer counts them (the in-process
+    /// differential-equations peers): the floor's count of stages.
+    pub stage_evaluations: Option<u64>,
     pub cpu_seconds: f64,
     pub max_g: f64,
     /// q, then v, then λ.
@@ -221,6 +224,7 @@ pub fn run(
                     let parsed: Option<Vec<f64>> = rest.iter().map(|x| x.parse().ok()).collect();
                     let end = (|| {
                         Some(PeerEnd {
+                            stage_evaluations: None,
                             steps: steps.parse().ok()?,
                             cpu_seconds: cpu.parse().ok()?,
                             max_g: max_g.parse().ok()?,

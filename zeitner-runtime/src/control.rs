@@ -729,20 +729,27 @@ mod retry_tests {
         assert!(tries.ceil() < MAX_ATTEMPTS as Float, "{tries}");
     }
 
-    /// Free fall from rest, `q = 1`, `q' = 0`, `a = -9.81`, rtol 1e-6, atol 1e-9.
-    fn free_fall_start(evaluations: &mut u32, order: u32) -> Float {
-        let (q, v, a) = (
+    /// Free fall from rest, `(q, q', a) = (1, 0, -9.81)`, and the first step left to the
+    /// estimate within `[min_step, max_step]`, rtol 1e-6, atol 1e-9.
+    fn free_fall(min_step: Float, max_step: Float) -> ([Vector<1>; 3], StepControl) {
+        let state = [
             Vector::<1>::new(1.0),
             Vector::<1>::zeros(),
             Vector::<1>::new(-9.81),
-        );
+        ];
         let step = StepControl::Adaptive {
             initial_step: None,
-            min_step: 1e-12,
-            max_step: 1.0,
+            min_step,
+            max_step,
             rtol: 1e-6,
             atol: 1e-9,
         };
+        (state, step)
+    }
+
+    /// The estimate's first step for the free fall, counting its evaluations.
+    fn free_fall_start(evaluations: &mut u32, order: u32) -> Float {
+        let ([q, v, a], step) = free_fall(1e-12, 1.0);
         starting_step(step, (&q, &v, &a), order, |_| {
             *evaluations += 1;
             Some(a)
@@ -792,29 +799,12 @@ mod retry_tests {
 
     #[test]
     fn a_starting_step_whose_probe_fails_is_the_first_guess_within_bounds() {
-        let (q, v, a) = (
-            Vector::<1>::new(1.0),
-            Vector::<1>::zeros(),
-            Vector::<1>::new(-9.81),
-        );
-        let step = StepControl::Adaptive {
-            initial_step: None,
-            min_step: 1e-3,
-            max_step: 1.0,
-            rtol: 1e-6,
-            atol: 1e-9,
-        };
+        let ([q, v, a], step) = free_fall(1e-3, 1.0);
         // The first guess (1e-6 s) is below min_step: min_step.
         assert_eq!(starting_step(step, (&q, &v, &a), 5, |_| None), 1e-3);
         let nan = |_| Some(Vector::<1>::new(Float::NAN));
         assert_eq!(starting_step(step, (&q, &v, &a), 5, nan), 1e-3);
-        let capped = StepControl::Adaptive {
-            initial_step: None,
-            min_step: 1e-12,
-            max_step: 1e-4,
-            rtol: 1e-6,
-            atol: 1e-9,
-        };
+        let (_, capped) = free_fall(1e-12, 1e-4);
         let h = starting_step(capped, (&q, &v, &a), 5, |_| Some(a));
         assert_eq!(h, 1e-4);
     }

@@ -12,7 +12,8 @@
 use zeitner::{ConstrainedSystem, Options, SparseSimulator, Start, Vector};
 
 use super::scene::{
-    flattened, measure_runs, no_own_methods, rust_peers, worst_relative, Outcome, Scene,
+    flattened, measure_runs, no_own_methods, rust_peers, worst_relative, InProcessPeers, Outcome,
+    Scene,
 };
 use crate::measure::{cpu_seconds, Allocations};
 use crate::peers::PeerRun;
@@ -179,33 +180,37 @@ pub fn large_scene<
             })
             .unwrap_or_else(|failure| panic!("{name} {method} {setting}: {failure}"))
         }),
-        run_rust_peers: Box::new(move |rtols: &[f64]| {
-            on_large_stack(|| {
-                let start = ((large.start)(), Vector::zeros());
-                let scene = peer_model();
-                let mut runs = rust_peers::<P, N, W, X, Y>(peer_model(), start, END)(rtols);
-                if large.redundant {
-                    for (_, run) in &mut runs {
-                        if let Ok(end) = &mut run.outcome {
-                            let (q, rest) = end.values.split_at(N);
-                            let force = constraint_force(&scene, q, &rest[N..]);
-                            end.values.truncate(2 * N);
-                            end.values.extend(force);
+        rust_peers: InProcessPeers {
+            fused_stage_seconds: None,
+            run: Box::new(move |rtols: &[f64]| {
+                on_large_stack(|| {
+                    let start = ((large.start)(), Vector::zeros());
+                    let scene = peer_model();
+                    let mut runs =
+                        (rust_peers::<P, N, W, X, Y>(peer_model(), start, END).run)(rtols);
+                    if large.redundant {
+                        for (_, run) in &mut runs {
+                            if let Ok(end) = &mut run.outcome {
+                                let (q, rest) = end.values.split_at(N);
+                                let force = constraint_force(&scene, q, &rest[N..]);
+                                end.values.truncate(2 * N);
+                                end.values.extend(force);
+                            }
                         }
                     }
-                }
-                runs
-            })
-            .unwrap_or_else(|failure| {
-                let outcome = Err(failure);
-                vec![(
-                    "peers",
-                    PeerRun {
-                        setting: "all".into(),
-                        outcome,
-                    },
-                )]
-            })
-        }),
+                    runs
+                })
+                .unwrap_or_else(|failure| {
+                    let outcome = Err(failure);
+                    vec![(
+                        "peers",
+                        PeerRun {
+                            setting: "all".into(),
+                            outcome,
+                        },
+                    )]
+                })
+            }),
+        },
     })
 }

@@ -24,7 +24,7 @@ use super::large::{large_scene, Large};
 use super::methods::Method;
 use super::scene::{
     flattened, measure, no_own_methods, relative_to_largest, rust_peers, worst_relative,
-    PeerRunner, Runner, Scene,
+    InProcessPeers, Runner, Scene,
 };
 
 /// One scene of the benchmark.
@@ -268,7 +268,7 @@ fn pendulum_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 2, 1, 4, 5>(
+        rust_peers: rust_peers::<_, 2, 1, 4, 5>(
             Pendulum {
                 m: 1.0,
                 length: 1.0,
@@ -313,7 +313,7 @@ fn wall_pendulum_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 2, 2, 4, 6>(WallPendulum { ..scene }, start, t_end),
+        rust_peers: rust_peers::<_, 2, 2, 4, 6>(WallPendulum { ..scene }, start, t_end),
         run: to_the_end("wall_pendulum", scene, start, t_end, None),
     })
 }
@@ -338,16 +338,12 @@ fn bouncing_ball_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 1, 1, 2, 3>(Ball { ..scene }, start, t_end),
+        rust_peers: rust_peers::<_, 1, 1, 2, 3>(Ball { ..scene }, start, t_end),
         run: to_the_end("bouncing_ball", scene, start, t_end, None),
     })
 }
 
 /// No in-process peer models friction: they integrate the frictionless index-1 form.
-fn no_rust_peers() -> PeerRunner {
-    Box::new(|_| Vec::new())
-}
-
 fn incline_scene() -> Result<Scene, String> {
     let (t_end, speed) = (1.0, 2.0);
     let scene = Incline {
@@ -378,7 +374,7 @@ fn incline_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: no_rust_peers(),
+        rust_peers: InProcessPeers::none(),
         run: to_the_end("incline", scene, start, t_end, None),
     })
 }
@@ -407,7 +403,7 @@ fn belt_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: no_rust_peers(),
+        rust_peers: InProcessPeers::none(),
         run: to_the_end("belt", scene, start, t_end, None),
     })
 }
@@ -427,7 +423,7 @@ fn steam_generator_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: hand_written_twin,
-        run_rust_peers: rust_peers::<_, 3, 2, 6, 8>(
+        rust_peers: rust_peers::<_, 3, 2, 6, 8>(
             SteamGenerator::paper(),
             (Vector::<3>::zeros(), Vector::zeros()),
             t_end,
@@ -491,7 +487,7 @@ fn knife_edge_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 3, 1, 6, 7>(KnifeEdge::PAPER, start, t_end),
+        rust_peers: rust_peers::<_, 3, 1, 6, 7>(KnifeEdge::PAPER, start, t_end),
         run: to_the_end("knife_edge", scene, start, t_end, None),
     })
 }
@@ -515,7 +511,7 @@ fn spring_support_scene() -> Result<Scene, String> {
         error_measure: relative_to_largest,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 4, 1, 8, 9>(SpringSupportedPendulum::STIFF, start, t_end),
+        rust_peers: rust_peers::<_, 4, 1, 8, 9>(SpringSupportedPendulum::STIFF, start, t_end),
         run: to_the_end("spring_support", scene, start, t_end, None),
     })
 }
@@ -554,7 +550,7 @@ fn structure_scene() -> Result<Scene, String> {
         velocity_rows: false,
         large: false,
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 200, 4, 400, 404>(scene, start, t_end),
+        rust_peers: rust_peers::<_, 200, 4, 400, 404>(scene, start, t_end),
         run: to_the_end(
             "structure",
             scene,
@@ -626,7 +622,7 @@ fn andrews_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 7, 6, 14, 20>(
+        rust_peers: rust_peers::<_, 7, 6, 14, 20>(
             Andrews::published(),
             (Vector::from(Andrews::Q0), Vector::zeros()),
             t_end,
@@ -661,7 +657,7 @@ fn slider_crank_scene() -> Result<Scene, String> {
         error_measure: worst_relative,
         velocity_rows: has_velocity_rows(&scene),
         own_methods: no_own_methods,
-        run_rust_peers: rust_peers::<_, 4, 3, 8, 11>(SliderCrankOnAxis::nominal(), start, t_end),
+        rust_peers: rust_peers::<_, 4, 3, 8, 11>(SliderCrankOnAxis::nominal(), start, t_end),
         run: to_the_end("slider_crank", scene, start, t_end, None),
     })
 }

@@ -1,6 +1,7 @@
 //! A scene of the work-precision benchmark and how one configuration of it is measured.
 
 use crate::measure::{cpu_seconds, median, Allocations};
+use crate::peer_gaps::index1_acceleration_fused;
 use crate::peers;
 use crate::scenes::reference::State;
 use zeitner::{ConstrainedSystem, Options, Simulator, Start, StopReason, Vector};
@@ -19,6 +20,9 @@ pub struct Row {
     pub max_g: f64,
     pub steps: u64,
     pub newton_iterations: u64,
+    /// Stage evaluations (`F`, once per stage), where the method counts them: ours and the
+    /// differential-equations peers.
+    pub stage_evaluations: Option<u64>,
     pub cpu_seconds: f64,
     /// Heap allocations during the integration; unknown for peers.
     pub allocations: Option<u64>,
@@ -168,6 +172,7 @@ pub fn measure_runs(
         max_g: f64::NAN,
         steps: 0,
         newton_iterations: 0,
+        stage_evaluations: None,
         cpu_seconds: f64::NAN,
         allocations: Some(0),
         failure: None,
@@ -180,6 +185,7 @@ pub fn measure_runs(
             row.max_g = max_g;
             row.steps = outcome.statistics.steps;
             row.newton_iterations = outcome.statistics.newton_iterations;
+            row.stage_evaluations = Some(outcome.statistics.evaluations.forces);
         }
         Err(error) => {
             row.failure = Some(error);
@@ -198,7 +204,8 @@ pub fn measure_runs(
     row
 }
 
-/// The in-process peers on `scene`; `X = 2N` and `Y = 2N + Z` size the peers' state arrays.
+/// The in-process peers on `scene`, and the cost of one fused stage; `X = 2N` and `Y = 2N + Z`
+/// size the peers' state arrays.
 pub fn rust_peers<
     S: ConstrainedSystem<N, Z> + 'static,
     const N: usize,
@@ -209,8 +216,9 @@ pub fn rust_peers<
     scene: S,
     start: (Vector<N>, Vector<N>),
     t_end: f64,
-) -> PeerRunner {
-    Box::new(move |rtols: &[f64]| {
+) -> InProcessPeers {
+    let fused_stage_seconds = fused_stage_seconds(&scene, start);
+    let run = Box::new(move |rtols: &[f64]| {
         let mut runs: Vec<(&'static str, peers::PeerRun)> = Vec::new();
         let mut add = |name: &'static str, results: Vec<peers::PeerRun>| {
             runs.extend(results.into_iter().map(|run| (name, run)));
@@ -254,7 +262,41 @@ pub fn rust_peers<
         }
         let _ = (&mut add, &scene, start, t_end, rtols);
         runs
-    })
+    });
+    InProcessPeers {
+        run,
+        fused_stage_seconds,
+    }
+}
+
+/// The CPU seconds of one fused stage at `start` — the generated `stage` (`M`, `F`, `G`, `b`),
+/// `M`'s factor and the multipliers from `G M⁻¹Gᵀ`, what every stage of an index-1 method must
+/// evaluate: the median over 15 batches of at least a millisecond each. `None` where the macro
+/// generated no fused stage (64 coordinates and more).
+pub fn fused_stage_seconds<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    scene: &S,
+    (q, v): (Vector<N>, Vector<N>),
+) -> Option<f64> {
+    use std::hint::black_box;
+    S::SUMMARY.function("stage")?;
+    let batch = |calls: u64| {
+        let before = cpu_seconds();
+        for _ in 0..calls {
+            black_box(index1_acceleration_fused(
+                black_box(scene),
+                black_box(&q),
+                black_box(&v),
+                black_box(0.0),
+            ));
+        }
+        cpu_seconds() - before
+    };
+    let mut calls = 1u64;
+    while batch(calls) < 1e-3 && calls < 1 << 30 {
+        calls *= 2;
+    }
+    let times: Vec<f64> = (0..15).map(|_| batch(calls) / calls as f64).collect();
+    Some(median(times))
 }
 
 /// Runs one configuration: `(method, setting, options, repeats)`.
@@ -262,6 +304,23 @@ pub type Runner = Box<dyn Fn(&str, &str, Options, usize) -> Row>;
 /// Runs the in-process peers for these relative tolerances: `(method, run)` for each peer
 /// built (the features `diffsol` and `differential-equations`, on by default).
 pub type PeerRunner = Box<dyn Fn(&[f64]) -> Vec<(&'static str, peers::PeerRun)>>;
+
+/// A scene's in-process peers, and the cost of its fused stage ([`fused_stage_seconds`]) that
+/// the floor is counted in.
+pub struct InProcessPeers {
+    pub run: PeerRunner,
+    pub fused_stage_seconds: Option<f64>,
+}
+
+impl InProcessPeers {
+    /// No in-process peer and no fused stage measured.
+    pub fn none() -> Self {
+        InProcessPeers {
+            run: Box::new(|_| Vec::new()),
+            fused_stage_seconds: None,
+        }
+    }
+}
 
 /// How an end state's error is measured against the reference's, per part (q, q' or λ).
 pub type ErrorMeasure = fn(&[f64], &[f64]) -> f64;
@@ -287,7 +346,7 @@ pub struct Scene {
     /// Methods of the scene's own beside the common ones (which it is given).
     pub own_methods: fn(&[Method]) -> Vec<Method>,
     pub run: Runner,
-    pub run_rust_peers: PeerRunner,
+    pub rust_peers: InProcessPeers,
 }
 
 impl Scene {
@@ -338,6 +397,7 @@ pub fn peer_row(scene: &Scene, method: &str, run: peers::PeerRun) -> Row {
         max_g: f64::NAN,
         steps: 0,
         newton_iterations: 0,
+        stage_evaluations: None,
         cpu_seconds: f64::NAN,
         allocations: None,
         failure: None,
@@ -348,6 +408,7 @@ pub fn peer_row(scene: &Scene, method: &str, run: peers::PeerRun) -> Row {
             row.end = end.values;
             row.max_g = end.max_g;
             row.steps = end.steps;
+            row.stage_evaluations = end.stage_evaluations;
             row.cpu_seconds = end.cpu_seconds;
         }
         Err(failure) => row.failure = Some(failure),

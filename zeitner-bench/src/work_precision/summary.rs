@@ -80,7 +80,7 @@ pub fn peer_rows(
     for (_, scene) in scenes {
         let (rtols, _) = large_settings(scene, rtols, step_sizes);
         rows.extend(
-            (scene.run_rust_peers)(rtols)
+            (scene.rust_peers.run)(rtols)
                 .into_iter()
                 .map(|(name, run)| peer_row(scene, name, run)),
         );
@@ -152,6 +152,69 @@ fn implicit_against_explicit(scenes: &[Scene], rows: &[Row]) -> String {
     out
 }
 
+/// The floor of each scene with a fused stage and each error target: the fewest stage
+/// evaluations any counted run (ours, the differential-equations peers) needed to reach the
+/// error, times the CPU time of one fused stage; our fastest run against it.
+fn floor(scenes: &[Scene], rows: &[Row]) -> String {
+    let mut out = String::from(
+        "## Against the floor\n\n\
+         The floor at an error is the fewest stage evaluations any run reaching it needed (ours, \
+         counted as evaluations of `F`, and the differential-equations peers', counted by the \
+         crate as right-hand sides), times the CPU time of one fused stage: the generated `stage` \
+         (`M`, `F`, `G`, `b`), `M`'s factor and the multipliers from `G M⁻¹Gᵀ`, timed at the \
+         scene's start (median of 15 batches of at least 1 ms). No run can do less work per stage \
+         than that; the step's other work (the error estimate, the correction back onto the \
+         constraints, the controller) is what lies between.\n\n\
+         | scene | error ≤ | fused stage | fewest stages (run) | floor | our fastest | ours / floor |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    for scene in scenes {
+        let Some(stage) = scene.rust_peers.fused_stage_seconds else {
+            continue;
+        };
+        for target in [1e-4, 1e-6, 1e-8] {
+            let fewest = rows
+                .iter()
+                .filter(|r| r.scene == scene.name && r.failure.is_none() && r.error() <= target)
+                .filter_map(|r| Some((r.stage_evaluations?, r)))
+                .min_by_key(|(stages, _)| *stages);
+            let ours = fastest_run(rows, scene.name, target, |m| m.starts_with("zeitner-"));
+            let _ = write!(
+                out,
+                "| {} | {target:.0e} | {:.0} ns |",
+                scene.name,
+                stage * 1e9
+            );
+            match fewest {
+                Some((stages, r)) => {
+                    let floor = stages as f64 * stage;
+                    let _ = write!(
+                        out,
+                        " {stages} (`{}` {}) | {:.4} ms |",
+                        r.method,
+                        r.setting,
+                        floor * 1e3
+                    );
+                    match ours {
+                        Some(o) => {
+                            let _ = writeln!(
+                                out,
+                                " {:.4} ms | {:.2} |",
+                                o.cpu_seconds * 1e3,
+                                o.cpu_seconds / floor
+                            );
+                        }
+                        None => out.push_str(" not reached | – |\n"),
+                    }
+                }
+                None => out.push_str(" not reached | – | – | – |\n"),
+            }
+        }
+    }
+    out.push('\n');
+    out
+}
+
 /// The fastest run on `scene` that reaches the error `target`, among the methods `keep` admits.
 fn fastest_run<'r>(
     rows: &'r [Row],
@@ -173,6 +236,7 @@ pub fn summary_markdown(scenes: &[Scene], rows: &[Row], args: &Args, repeats: us
     let _ = writeln!(out, "{}", preamble(&command(args), repeats));
     let _ = writeln!(out, "{}", headline(scenes, rows));
     out.push_str(&implicit_against_explicit(scenes, rows));
+    out.push_str(&floor(scenes, rows));
     for scene in scenes {
         out.push_str(&scene_section(scene, rows));
     }
