@@ -164,7 +164,9 @@ fn floor(scenes: &[Scene], rows: &[Row]) -> String {
          (`M`, `F`, `G`, `b`), `M`'s factor and the multipliers from `G M⁻¹Gᵀ`, timed at the \
          scene's start (median of 15 batches of at least 1 ms). No run can do less work per stage \
          than that; the step's other work (the error estimate, the correction back onto the \
-         constraints, the controller) is what lies between.\n\n\
+         constraints, the controller) is what lies between. On a stiff scene the fewest count may \
+         be an implicit method's, whose stages also form Jacobians and factorise: there the floor \
+         lies below what any method reaches.\n\n\
          | scene | error ≤ | fused stage | fewest stages (run) | floor | our fastest | ours / floor |\n\
          |---|---|---|---|---|---|---|\n",
     );
