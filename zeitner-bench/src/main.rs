@@ -140,7 +140,7 @@ fn run(command: Command) -> Result<(), Box<dyn std::error::Error>> {
 mod tests {
     use super::*;
 
-    const HEADER: &str = "scene,method,setting,error_q,error_v,error_lambda,max_g,steps,newton_iterations,cpu_seconds,allocations";
+    const HEADER: &str = "scene,method,setting,error_q,error_v,error_lambda,max_g,steps,newton_iterations,stage_evaluations,cpu_seconds,allocations";
 
     /// `work-precision --quick` on `scenes` into a fresh directory: each scene's CSV has the
     /// documented header and rows, and its figure is written.
