@@ -271,9 +271,7 @@ pub fn rust_peers<
 /// The CPU seconds of one fused stage at `start` — the generated `stage` (`M`, `F`, `G`, `b`),
 /// `M`'s factor and the multipliers from `G M⁻¹Gᵀ`, what every stage of an index-1 method must
 /// evaluate: the median over 15 batches of at least a millisecond each. `None` where the macro
-/// generated no fused stage (64 coordinates and more), and in a build without the in-process
-/// peers, whose index-1 form it times.
-#[cfg(any(feature = "diffsol", feature = "differential-equations"))]
+/// generated no fused stage (64 coordinates and more).
 pub fn fused_stage_seconds<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     scene: &S,
     (q, v): (Vector<N>, Vector<N>),
@@ -299,14 +297,6 @@ pub fn fused_stage_seconds<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     }
     let times: Vec<f64> = (0..15).map(|_| batch(calls) / calls as f64).collect();
     Some(median(times))
-}
-
-#[cfg(not(any(feature = "diffsol", feature = "differential-equations")))]
-pub fn fused_stage_seconds<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
-    _: &S,
-    _: (Vector<N>, Vector<N>),
-) -> Option<f64> {
-    None
 }
 
 /// Runs one configuration: `(method, setting, options, repeats)`.

@@ -198,7 +198,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
         step: StepControl,
     ) -> Self {
         // Only a method that may change estimates the stiffness.
-        let automatic = method.when_stiff().is_some();
+        let automatic = method.when_stiff(step).is_some();
         match method.first(multipliers, step) {
             InnerMethod::Rk4 { substeps } => {
                 AnyMethod::Explicit4(explicit::Explicit::new(&explicit::RK4, substeps, false))

@@ -162,7 +162,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !self.stiffness.record(h_lambda) {
             return;
         }
-        let Some(next) = self.options.method.when_stiff() else {
+        let Some(next) = self.options.method.when_stiff(self.options.step) else {
             return;
         };
         let method = AnyMethod::new::<S>(next, self.options.multipliers, self.options.step);

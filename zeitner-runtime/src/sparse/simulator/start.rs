@@ -38,6 +38,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         }
         let mut q = q0;
         for sweep in 0..=PROJECTION_SWEEPS {
+            // `G` and `G M⁻¹Gᵀ` where the sweep starts: the last sweep's serve the rest.
+            self.here.evaluate(
+                self.system,
+                &self.structure,
+                &mut self.evaluations,
+                (&q, &v0, t),
+            )?;
             let mut g = self.residual(&q, &v0, t)?;
             g.rows_mut(S::POSITION_CONSTRAINTS, Z - S::POSITION_CONSTRAINTS)
                 .fill(0.0);
@@ -49,21 +56,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             if self.options.start == StartPolicy::Refuse || sweep == PROJECTION_SWEEPS {
                 return Err(inconsistent::<S, N, Z>(t, (worst, residual), redundant));
             }
-            self.here.evaluate(
-                self.system,
-                &self.structure,
-                &mut self.evaluations,
-                (&q, &v0, t),
-            )?;
             let correction = self.here.solve(&self.structure, &g);
             q -= self.here.directions(&self.structure, &correction);
         }
-        self.here.evaluate(
-            self.system,
-            &self.structure,
-            &mut self.evaluations,
-            (&q, &v0, t),
-        )?;
         // The end configuration too, so that its buffers for redundant rows are sized before
         // the first step (they grow again only if more rows become redundant).
         let at = (&q, &v0, t);
