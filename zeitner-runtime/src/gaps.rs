@@ -136,3 +136,64 @@ impl Slipping {
         self.along[k] = [0.0; 2];
     }
 }
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    use super::*;
+    use std::format;
+    use std::vec::Vec;
+
+    /// The set's operations against a plain array of flags, over a fixed stream of gaps.
+    #[test]
+    fn the_set_behaves_as_an_array_of_flags() {
+        let mut set = GapSet::EMPTY;
+        let mut flags = [false; MAX_GAPS];
+        let mut state = 12345u32;
+        for _ in 0..500 {
+            state = state.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+            let gap = (state >> 16) as usize % MAX_GAPS;
+            if state & 1 == 0 {
+                set.insert(gap);
+                flags[gap] = true;
+            } else {
+                set.remove(gap);
+                flags[gap] = false;
+            }
+            let listed: Vec<usize> = set.iter().collect();
+            let expected: Vec<usize> = (0..MAX_GAPS).filter(|&k| flags[k]).collect();
+            assert_eq!(listed, expected);
+            assert_eq!(set.len(), expected.len());
+            assert_eq!(set.is_empty(), expected.is_empty());
+            assert!((0..MAX_GAPS).all(|k| set.contains(k) == flags[k]));
+        }
+        assert!(!set.contains(MAX_GAPS) && !set.contains(100));
+    }
+
+    #[test]
+    fn the_first_gaps_and_the_set_algebra() {
+        assert_eq!(GapSet::first(0), GapSet::EMPTY);
+        assert_eq!(GapSet::first(3).iter().collect::<Vec<_>>(), [0, 1, 2]);
+        assert_eq!(GapSet::first(32).len(), 32);
+        assert_eq!(GapSet::first(40), GapSet::first(32));
+        let (a, b) = (GapSet::first(4), GapSet::first(6).without(GapSet::first(2)));
+        assert_eq!(a.union(b).iter().collect::<Vec<_>>(), [0, 1, 2, 3, 4, 5]);
+        assert_eq!(a.intersection(b).iter().collect::<Vec<_>>(), [2, 3]);
+        assert_eq!(a.without(b).iter().collect::<Vec<_>>(), [0, 1]);
+        assert_eq!(format!("{:?}", a.intersection(b)), "{2, 3}");
+    }
+
+    #[test]
+    fn a_tangent_has_a_unit_direction_even_at_rest() {
+        let (size, direction) = unit([3.0, -4.0]);
+        assert_eq!(size, 5.0);
+        assert!((direction[0] - 0.6).abs() < 1e-15 && (direction[1] + 0.8).abs() < 1e-15);
+        assert_eq!(unit([0.0, 0.0]), (0.0, [1.0, 0.0]));
+        let mut slipping = Slipping::NONE;
+        slipping.insert(3, [0.0, 1.0]);
+        assert!(slipping.contacts.contains(3));
+        slipping.remove(3);
+        assert_eq!(slipping, Slipping::NONE);
+    }
+}

@@ -124,3 +124,45 @@ macro_rules! elementary_functions {
 
 elementary_functions!(f64);
 elementary_functions!(f32);
+
+#[cfg(test)]
+mod tests {
+    use super::Real;
+
+    #[test]
+    fn binary_powering_matches_repeated_products_for_every_sign_of_the_exponent() {
+        for x in [0.5f64, -1.25, 3.0, 1e-3] {
+            let mut product = 1.0;
+            for n in 0..=12 {
+                let power = Real::powi(x, n);
+                assert!((power - product).abs() <= 1e-14 * product.abs(), "{x}^{n}");
+                let inverse = Real::powi(x, -n);
+                assert!((inverse * product - 1.0).abs() < 1e-13, "{x}^-{n}");
+                product *= x;
+            }
+        }
+        assert_eq!(Real::powi(0.0f64, 0), 1.0);
+        assert_eq!(Real::powi(0.0f64, -1), f64::INFINITY);
+        assert!((Real::powi(1.5f32, 3) - 3.375).abs() < 1e-6);
+    }
+
+    #[test]
+    fn signum_keeps_the_sign_of_zero_and_passes_nan_on() {
+        assert_eq!(Real::signum(0.0f64), 1.0);
+        assert_eq!(Real::signum(-0.0f64), -1.0);
+        assert_eq!(Real::signum(-3.0f64), -1.0);
+        assert!(Real::signum(f64::NAN).is_nan());
+        assert_eq!(Real::signum(-2.0f32), -1.0);
+    }
+
+    #[test]
+    fn the_elementary_functions_agree_with_std() {
+        for x in [0.1f64, 0.7, 2.5] {
+            assert!((Real::sin(x) - x.sin()).abs() < 1e-15);
+            assert!((Real::exp(x) - x.exp()).abs() < 1e-14 * x.exp());
+            assert!((Real::atan2(x, -1.0) - x.atan2(-1.0)).abs() < 1e-15);
+            assert!((Real::hypot(x, 3.0) - x.hypot(3.0)).abs() < 1e-15);
+            assert!((Real::powf(x, 1.5) - x.powf(1.5)).abs() < 1e-15 * x.powf(1.5).max(1.0));
+        }
+    }
+}

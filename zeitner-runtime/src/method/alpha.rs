@@ -358,3 +358,82 @@ type StepEnds<'a, F, const N: usize, const Z: usize> = (
     &'a StepEnd<N>,
     &'a mut EndSensitivity<N, Z>,
 );
+
+#[cfg(test)]
+mod tests {
+    use super::Parameters;
+    use crate::scalar::Float;
+    use crate::system::Matrix;
+
+    /// One step of the scheme in the module's documentation on `q'' = -ω² q`, on the scaled
+    /// state `(q, h q', h² ā)` with `Ω = ω h`: the amplification matrix's columns.
+    fn amplification(p: Parameters, omega_h: Float) -> [[Float; 3]; 3] {
+        let w2 = omega_h * omega_h;
+        let step = |[q, hv, h2abar]: [Float; 3]| {
+            let a0 = -w2 * q;
+            // `(1 − α_m) ā₁ + α_m ā₀ = (1 − α_f) a₁ + α_f a₀` with `a₁ = -Ω² q₁` solved for ā₁.
+            let known = q + hv + (0.5 - p.beta) * h2abar;
+            let abar1 = (-p.alpha_m * h2abar - (1.0 - p.alpha_f) * w2 * known + p.alpha_f * a0)
+                / ((1.0 - p.alpha_m) + (1.0 - p.alpha_f) * w2 * p.beta);
+            let q1 = known + p.beta * abar1;
+            let hv1 = hv + (1.0 - p.gamma) * h2abar + p.gamma * abar1;
+            [q1, hv1, abar1]
+        };
+        [
+            step([1.0, 0.0, 0.0]),
+            step([0.0, 1.0, 0.0]),
+            step([0.0, 0.0, 1.0]),
+        ]
+    }
+
+    /// The largest modulus among the amplification matrix's eigenvalues.
+    fn spectral_radius(columns: [[Float; 3]; 3]) -> Float {
+        let matrix = Matrix::<3, 3>::from_fn(|i, j| columns[j][i]);
+        matrix
+            .complex_eigenvalues()
+            .iter()
+            .map(|lambda| lambda.re.hypot(lambda.im))
+            .fold(0.0, Float::max)
+    }
+
+    #[test]
+    fn the_parameters_damp_infinite_frequencies_by_rho_inf_and_keep_the_low_ones() {
+        for rho_inf in [0.0, 0.5, 0.8, 1.0] {
+            let p = Parameters::new(rho_inf);
+            // Chung & Hulbert's second-order condition.
+            assert!((p.gamma - (0.5 + p.alpha_f - p.alpha_m)).abs() < 1e-15);
+            let high = spectral_radius(amplification(p, 1e6));
+            assert!((high - rho_inf).abs() < 2e-3, "ρ∞ {rho_inf}: {high}");
+            let low = spectral_radius(amplification(p, 1e-2));
+            assert!((low - 1.0).abs() < 1e-5, "ρ∞ {rho_inf}: {low}");
+            // Unconditionally stable in between.
+            for omega_h in [0.1, 1.0, 10.0, 100.0] {
+                let radius = spectral_radius(amplification(p, omega_h));
+                assert!(radius <= 1.0 + 1e-9, "ρ∞ {rho_inf}, Ωh {omega_h}: {radius}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_scheme_with_these_parameters_is_second_order_on_an_oscillator() {
+        // `q(T)` of `q'' = -q` from `(1, 0)`, ā₀ = a₀, against `cos T`.
+        let error = |steps: usize| {
+            let p = Parameters::new(0.7);
+            let h = 1.0 / steps as Float;
+            let columns = amplification(p, h);
+            let mut x = [1.0, 0.0, -h * h];
+            for _ in 0..steps {
+                let mut y = [0.0; 3];
+                for (j, column) in columns.iter().enumerate() {
+                    for i in 0..3 {
+                        y[i] += column[i] * x[j];
+                    }
+                }
+                x = y;
+            }
+            (x[0] - Float::cos(1.0)).abs()
+        };
+        let order = (error(50) / error(100)).log2();
+        assert!((order - 2.0).abs() < 0.1, "{order}");
+    }
+}
