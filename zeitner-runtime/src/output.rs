@@ -383,3 +383,50 @@ pub struct Statistics {
     pub turned_implicit_after: Option<u64>,
     pub evaluations: Evaluations,
 }
+
+#[cfg(test)]
+mod interpolation_tests {
+    use super::*;
+
+    #[test]
+    fn on_a_smooth_motion_the_errors_fall_as_the_sixth_and_fifth_power_of_the_step() {
+        let point = |t: Float| Point::<1, 1> {
+            t,
+            q: Vector::from([t.sin()]),
+            v: Vector::from([t.cos()]),
+            a: Vector::from([-t.sin()]),
+            lambda: Vector::zeros(),
+        };
+        let errors = |h: Float| {
+            let (a, b) = (point(1.0), point(1.0 + h));
+            let middle = interpolate(&a, &b, 1.0 + 0.37 * h);
+            let exact = point(1.0 + 0.37 * h);
+            ((middle.q - exact.q).amax(), (middle.v - exact.v).amax())
+        };
+        // A step of no length gives its end.
+        assert_eq!(interpolate(&point(1.0), &point(1.0), 2.0), point(1.0));
+        let (coarse, fine) = (errors(0.4), errors(0.2));
+        let order_q = (coarse.0 / fine.0).log2();
+        let order_v = (coarse.1 / fine.1).log2();
+        assert!((order_q - 6.0).abs() < 0.3, "{order_q}");
+        assert!((order_v - 5.0).abs() < 0.3, "{order_v}");
+    }
+
+    #[test]
+    fn a_step_that_barely_moves_takes_its_velocities_from_the_cubic_of_its_ends() {
+        // `q' = 1e-3 + t - t³` over a step of 1e-9 s at q = 1: the quintic's slope is rounding.
+        let h = 1e-9;
+        let v = |t: Float| 1e-3 + t - t * t * t;
+        let point = |t: Float| Point::<1, 1> {
+            t,
+            q: Vector::from([1.0 + 1e-3 * t]),
+            v: Vector::from([v(t)]),
+            a: Vector::from([1.0 - 3.0 * t * t]),
+            lambda: Vector::zeros(),
+        };
+        let (a, b) = (point(0.5), point(0.5 + h));
+        let t = 0.5 + 0.3 * h;
+        let got = interpolate_velocities(&a, &b, t).v[0];
+        assert!((got - v(t)).abs() < 1e-15, "{got} against {}", v(t));
+    }
+}
