@@ -165,3 +165,54 @@ pub(crate) fn inverse_mass<S: ConstrainedSystem<N, Z>, const N: usize, const Z: 
     let ones = Matrix::<N, 1>::repeat(1.0);
     Ok(factor.solve(&ones))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{SpringPendulum, PENDULUM};
+
+    #[test]
+    fn the_products_and_the_gram_solve_agree_with_the_dense_matrices() {
+        let structure = Structure::of::<SpringPendulum, 2, 1>();
+        let mut at = Configuration::<2, 1>::new(&structure);
+        let (q, v) = (Vector::<2>::new(0.6, -0.92), Vector::<2>::new(1.5, 0.4));
+        let mut evaluations = Evaluations::default();
+        at.evaluate(&PENDULUM, &structure, &mut evaluations, (&q, &v, 0.0))
+            .unwrap();
+        let g = PENDULUM.constraint_jacobian(&q, &v, 0.0);
+        let (x, y) = (Vector::<2>::new(0.3, -2.0), Vector::<1>::new(1.7));
+        assert!((at.times(&structure, &x) - g * x).amax() < 1e-15);
+        assert!((at.transpose_times(&structure, &y) - g.transpose() * y).amax() < 1e-15);
+        let directions = g.transpose() * y / PENDULUM.m;
+        assert!((at.directions(&structure, &y) - directions).amax() < 1e-15);
+        // `G M⁻¹Gᵀ` is `|G|²/m` here.
+        let gram = g.norm_squared() / PENDULUM.m;
+        assert!((at.solve(&structure, &y)[0] * gram - y[0]).abs() < 1e-14);
+        assert!(at.redundant_rows(&structure).is_empty());
+        assert_eq!(
+            (
+                evaluations.constraint_jacobians,
+                evaluations.mass_factorizations
+            ),
+            (1, 1)
+        );
+    }
+
+    #[test]
+    fn a_jacobian_that_is_not_finite_is_named() {
+        let structure = Structure::of::<SpringPendulum, 2, 1>();
+        let mut at = Configuration::<2, 1>::new(&structure);
+        let q = Vector::<2>::new(Float::NAN, 1.0);
+        let evaluated = at.evaluate(
+            &PENDULUM,
+            &structure,
+            &mut Evaluations::default(),
+            (&q, &Vector::zeros(), 0.5),
+        );
+        let named = StepError::NonFinite {
+            t: 0.5,
+            function: ModelFunction::ConstraintJacobian,
+        };
+        assert_eq!(evaluated, Err(named));
+    }
+}
