@@ -363,11 +363,11 @@ type StepEnds<'a, F, const N: usize, const Z: usize> = (
 mod tests {
     use super::Parameters;
     use crate::scalar::Float;
-    use crate::system::Matrix;
+    use crate::system::{Matrix, Vector};
 
     /// One step of the scheme in the module's documentation on `q'' = -ω² q`, on the scaled
-    /// state `(q, h q', h² ā)` with `Ω = ω h`: the amplification matrix's columns.
-    fn amplification(p: Parameters, omega_h: Float) -> [[Float; 3]; 3] {
+    /// state `(q, h q', h² ā)` with `Ω = ω h`: the amplification matrix.
+    fn amplification(p: Parameters, omega_h: Float) -> Matrix<3, 3> {
         let w2 = omega_h * omega_h;
         let step = |[q, hv, h2abar]: [Float; 3]| {
             let a0 = -w2 * q;
@@ -379,16 +379,16 @@ mod tests {
             let hv1 = hv + (1.0 - p.gamma) * h2abar + p.gamma * abar1;
             [q1, hv1, abar1]
         };
-        [
+        let columns = [
             step([1.0, 0.0, 0.0]),
             step([0.0, 1.0, 0.0]),
             step([0.0, 0.0, 1.0]),
-        ]
+        ];
+        Matrix::<3, 3>::from_fn(|i, j| columns[j][i])
     }
 
-    /// The largest modulus among the amplification matrix's eigenvalues.
-    fn spectral_radius(columns: [[Float; 3]; 3]) -> Float {
-        let matrix = Matrix::<3, 3>::from_fn(|i, j| columns[j][i]);
+    /// The largest modulus among a matrix's eigenvalues.
+    fn spectral_radius(matrix: Matrix<3, 3>) -> Float {
         matrix
             .complex_eigenvalues()
             .iter()
@@ -420,16 +420,10 @@ mod tests {
         let error = |steps: usize| {
             let p = Parameters::new(0.7);
             let h = 1.0 / steps as Float;
-            let columns = amplification(p, h);
-            let mut x = [1.0, 0.0, -h * h];
+            let step = amplification(p, h);
+            let mut x = Vector::<3>::new(1.0, 0.0, -h * h);
             for _ in 0..steps {
-                let mut y = [0.0; 3];
-                for (j, column) in columns.iter().enumerate() {
-                    for i in 0..3 {
-                        y[i] += column[i] * x[j];
-                    }
-                }
-                x = y;
+                x = step * x;
             }
             (x[0] - Float::cos(1.0)).abs()
         };
