@@ -166,6 +166,46 @@ fn on_a_velocity_level_row_dop853_keeps_its_order() {
     assert_orders("knife edge, DOP853", orders(InnerMethod::Dop853, 10), 8.0);
 }
 
+/// HEM5 keeps its order 5 in q, q' and λ on position rows (the pendulum against its angle ODE)
+/// and on a velocity-level row (the knife edge against its closed form), and takes its stages
+/// half-explicitly: each of its eight stages evaluates the rows' velocity form `w` once, and
+/// only the step's end point the acceleration-level bias `b` (the index-1 stages would take
+/// `b` at every stage).
+#[test]
+fn hem5_keeps_its_order_5_with_its_stages_half_explicit() {
+    let pendulum = (
+        pendulum_errors(InnerMethod::Hem5, 50),
+        pendulum_errors(InnerMethod::Hem5, 100),
+    );
+    assert_orders("pendulum, HEM5", pendulum, 5.0);
+    let knife = (
+        knife_edge_errors(InnerMethod::Hem5, 10),
+        knife_edge_errors(InnerMethod::Hem5, 20),
+    );
+    assert_orders("knife edge, HEM5", knife, 5.0);
+
+    let start = Start {
+        q: Vector::<2>::new(1.0, 0.0),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&PENDULUM, start, fixed(InnerMethod::Hem5, 0.01)).unwrap();
+    sim.advance_to(1.0, |_| {}).unwrap();
+    let statistics = sim.statistics();
+    let (steps, counted) = (statistics.steps, statistics.evaluations);
+    assert!(steps >= 100, "{steps} steps");
+    assert!(
+        counted.constraint_rates >= 8 * steps,
+        "{} rates in {steps} steps",
+        counted.constraint_rates
+    );
+    assert!(
+        counted.acceleration_biases <= 2 * steps,
+        "{} biases in {steps} steps",
+        counted.acceleration_biases
+    );
+}
+
 /// The knife edge in `n` fixed steps of `method`, sampled within the last step at `s = 0.4`:
 /// [`knife_edge_point_errors`] there.
 fn knife_edge_sample_errors(method: InnerMethod, n: u32) -> [f64; 3] {
@@ -290,12 +330,16 @@ fn implicit_methods_refuse_multipliers_solved_at_every_stage() {
 
 /// Held multipliers would cap DOP853 and Verner's pair at order 5 where their estimates assume
 /// 8 (the accuracy fuzzer found DOP853 runs up to 3.7e5 times their tolerance off before this
-/// refusal).
+/// refusal); HEM5's stages choose their own.
 #[test]
 fn the_high_order_pairs_refuse_held_multipliers() {
     let scene = PENDULUM;
     let q0 = Vector::<2>::new(1.0, 0.0);
-    let methods = [InnerMethod::Dop853, InnerMethod::Verner98];
+    let methods = [
+        InnerMethod::Dop853,
+        InnerMethod::Verner98,
+        InnerMethod::Hem5,
+    ];
     let held = [MultiplierModel::Constant, MultiplierModel::Quadratic];
     for (method, multipliers) in methods.into_iter().flat_map(|m| held.map(|h| (m, h))) {
         let options = Options {

@@ -161,6 +161,7 @@ fn methods(h: f64, tolerance: f64) -> Vec<(&'static str, Options)> {
             "verner98-every-stage",
             with(InnerMethod::Verner98, adaptive),
         ),
+        ("hem5-half-explicit", with(InnerMethod::Hem5, adaptive)),
         // The default method and multipliers: at rtol 1e-6 Verner's 9(8) pair until stiff, then
         // ESDIRK 5(4).
         ("automatic-adaptive", with(InnerMethod::Automatic, adaptive)),
@@ -918,7 +919,8 @@ pub fn markdown(cases: &[Case], long_steps: u64) -> String {
          `rk4-paperQ` (the paper as published), `rk4-exactQ`, `dopri5-adaptive` (rtol 1e-6, the step \
          below is the initial one), `dop853-every-stage` (DOP853 with the multipliers solved at \
          every stage, rtol 1e-6), `verner98-every-stage` (Verner's 9(8) pair, the same otherwise), \
-         `automatic-adaptive` (the default method and multipliers: at rtol 1e-6 Verner's 9(8) pair, \
+         `hem5-half-explicit` (Brasey & Hairer's HEM5, each stage's multipliers chosen so that the \
+         velocity form holds at the next stage; rtol 1e-6), `automatic-adaptive` (the default method and multipliers: at rtol 1e-6 Verner's 9(8) pair, \
          above it DOP853, with the multipliers at every stage until Hairer's stiffness test finds \
          its steps bound by stability, then ESDIRK 5(4) with quadratic multipliers; rtol 1e-6), \
          `sdirk2-exactQ` (L-stable, fixed steps), `esdirk32-adaptive` \

@@ -746,7 +746,8 @@ fn inner_method(rng: &mut Rng, wild: bool) -> InnerMethod {
 }
 
 /// The default `Automatic` (which starts with DOP853, or Dormand–Prince with held multipliers),
-/// Dormand–Prince, or one of the high-order pairs (DOP853, Verner's 9(8)), drawn from a stream
+/// Dormand–Prince, or one of the pairs that solve the multipliers at every stage (DOP853,
+/// Verner's 9(8), the half-explicit HEM5), drawn from a stream
 /// of its own like `implicit_method`, so that every case's model and settings stay as they
 /// were.
 pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
@@ -756,7 +757,11 @@ pub fn explicit_adaptive_method(rng: &Rng) -> InnerMethod {
     } else if side.random_bool(1.0 / 3.0) {
         // One draw more on the side stream: the cases drawn before Verner's pair stay the same
         // but for their pair.
-        [InnerMethod::Dop853, InnerMethod::Verner98][side.random_range(0..2)]
+        [
+            InnerMethod::Dop853,
+            InnerMethod::Verner98,
+            InnerMethod::Hem5,
+        ][side.random_range(0..3)]
     } else {
         InnerMethod::DormandPrince54
     }
@@ -811,6 +816,7 @@ fn step_control(rng: &mut Rng, method: InnerMethod, wild: bool) -> StepControl {
         InnerMethod::DormandPrince54
         | InnerMethod::Dop853
         | InnerMethod::Verner98
+        | InnerMethod::Hem5
         | InnerMethod::Automatic
         | InnerMethod::Esdirk32
         | InnerMethod::Esdirk43
@@ -1265,6 +1271,8 @@ pub struct Outcome {
     pub turned_implicit: bool,
     /// Whether the run's multipliers were solved at every stage (at its end).
     pub every_stage: bool,
+    /// Whether the run stepped with the half-explicit HEM5.
+    pub half_explicit: bool,
     /// The sizes of the last [`STALL_WINDOW`] accepted steps, the last one's end, and the
     /// largest step since the run last started.
     recent_steps: std::collections::VecDeque<Float>,
@@ -2092,6 +2100,10 @@ fn execute_on<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
             .resolve(sim.method(), S::POSITION_CONSTRAINTS, Z)
             == MultiplierModel::EveryStage
     });
+    outcome.half_explicit = run
+        .sim
+        .as_ref()
+        .is_some_and(|sim| sim.method() == InnerMethod::Hem5);
     outcome.turned_implicit = run
         .sim
         .as_ref()

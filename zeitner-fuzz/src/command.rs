@@ -134,7 +134,7 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
                 .failure
                 .map_or(("ok", String::new()), |f| (f.class.name(), f.detail));
             let storage = format!(
-                "{}{}{}",
+                "{}{}{}{}",
                 if outcome.sparse_storage {
                     "sparse"
                 } else {
@@ -147,6 +147,11 @@ fn robustness_verdict(seed: u64, budget: &Budget) -> String {
                 },
                 if outcome.every_stage {
                     "+every-stage"
+                } else {
+                    ""
+                },
+                if outcome.half_explicit {
+                    "+half-explicit"
                 } else {
                     ""
                 },
@@ -306,6 +311,8 @@ struct Tally {
     turned_implicit: u64,
     /// Runs with the multipliers solved at every stage.
     every_stage: u64,
+    /// Runs with the half-explicit HEM5 (among those at every stage).
+    half_explicit: u64,
     /// Failure class (or `hang`, `crash`) → (seed, detail).
     failures: BTreeMap<String, Vec<(u64, String)>>,
     /// Typed errors by variant.
@@ -355,6 +362,9 @@ impl Tally {
                 }
                 if storage.contains("+every-stage") {
                     self.every_stage += 1;
+                }
+                if storage.contains("+half-explicit") {
+                    self.half_explicit += 1;
                 }
                 for error in errors.split(',').filter(|e| *e != "-") {
                     *self.errors.entry(error.to_string()).or_default() += 1;
@@ -534,8 +544,8 @@ fn summary(tally: &Tally, args: &FuzzArgs, first: u64, elapsed: Duration) -> Str
             tally.turned_implicit
         ));
         out.push_str(&format!(
-            "  runs with the multipliers solved at every stage: {}\n",
-            tally.every_stage
+            "  runs with the multipliers solved at every stage: {} (half-explicit HEM5: {})\n",
+            tally.every_stage, tally.half_explicit
         ));
         for class in FailureClass::ALL
             .iter()

@@ -236,7 +236,7 @@ pub enum InvalidOption {
     /// Generalised-α's `rho_inf` outside `0..=1` (or NaN).
     SpectralRadius,
     /// A multiplier model the inner method cannot take: `Quadratic` with `GeneralizedAlpha`,
-    /// `EveryStage` with an implicit method, held multipliers with `Dop853` or `Verner98`.
+    /// `EveryStage` with an implicit method, held multipliers with `Dop853`, `Verner98` or `Hem5`.
     MultipliersForMethod,
     /// Constant multipliers with adaptive steps on a system with velocity-level rows: the step
     /// control cannot hold them to the tolerance.
@@ -260,8 +260,9 @@ impl fmt::Display for InvalidOption {
         match self {
             InvalidOption::SensitivitiesForMethod => f.write_str(
                 "sensitivities are followed through the explicit inner methods only (`Rk4`, \
-                 `DormandPrince54`, `Dop853`, `Verner98`, and `Automatic` until it turns implicit): \
-                 choose one of them",
+                 `DormandPrince54`, `Dop853`, `Verner98`, and `Automatic` until it turns implicit; \
+                 not the half-explicit `Hem5`, whose stages solve their own multipliers): choose one \
+                 of them",
             ),
             InvalidOption::SensitivitiesAcrossContacts => f.write_str(
                 "sensitivities follow one gap's impact at a time: here several gaps close at the same \
@@ -347,9 +348,10 @@ impl fmt::Display for InvalidOption {
                  multipliers only at the step's ends, where the two coefficients of \
                  `MultiplierModel::Quadratic` act alike; `EveryStage` solves them at the \
                  stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`, \
-                 `Verner98`); and `Dop853` and `Verner98` take only `EveryStage`, since held \
-                 multipliers would cap their order at 5 where their error estimates assume 8. Use `Automatic`, or another inner \
-                 method",
+                 `Verner98`, `Hem5`); `Dop853` and `Verner98` take only `EveryStage`, since held \
+                 multipliers would cap their order at 5 where their error estimates assume 8; and \
+                 `Hem5` takes only `EveryStage`, its stages choosing their own multipliers. Use \
+                 `Automatic`, or another inner method",
             ),
             InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(
                 "constant multipliers hold velocity-level rows to order 2 only, through an error \

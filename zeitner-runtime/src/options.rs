@@ -50,6 +50,17 @@ pub enum InnerMethod {
     /// only. Needs the `high-order` feature.
     #[cfg(feature = "high-order")]
     Verner98,
+    /// Brasey & Hairer's half-explicit HEM5 (1993): Zeitner's idea applied per stage. Each of
+    /// its eight stages holds the multipliers over the stage and chooses them so that the
+    /// constraints' velocity form (`ġ` of position rows, `g` of velocity rows) holds at the
+    /// next stage, the last ones at the step's end: order 5 in `q` and `q'` on the index-2
+    /// system without the acceleration-level bias, with an embedded order-3 estimate for
+    /// adaptive steps. Like `Dop853`, it takes the multipliers solved at every stage only
+    /// (here half-explicitly); the end is brought back onto `g = 0` like theirs. Where a
+    /// contact slips with friction, or a stage's Z×Z matrix is singular, that step takes its
+    /// tableau with the acceleration-level multipliers. Needs the `high-order` feature.
+    #[cfg(feature = "high-order")]
+    Hem5,
     /// The method chosen for the scene as it runs: [`InnerMethod::Dop853`] (at `rtol` ≤
     /// [`VERNER_FROM_RTOL`], [`InnerMethod::Verner98`]) with the multipliers solved at every
     /// stage (with held multipliers, which both refuse, [`InnerMethod::DormandPrince54`])
@@ -163,7 +174,7 @@ impl InnerMethod {
     }
 
     /// Whether the method takes only the multipliers solved at every stage (`Dop853`,
-    /// `Verner98`).
+    /// `Verner98`, `Hem5`).
     pub fn needs_every_stage(self) -> bool {
         self.is_explicit_pair()
     }
@@ -201,10 +212,14 @@ impl InnerMethod {
             ))
     }
 
-    /// Whether the method is one of the high-order explicit pairs (`Dop853`, `Verner98`).
+    /// Whether the method is one of the explicit pairs that solve the multipliers at every
+    /// stage (`Dop853`, `Verner98`, the half-explicit `Hem5`).
     fn is_explicit_pair(self) -> bool {
         #[cfg(feature = "high-order")]
-        return matches!(self, InnerMethod::Dop853 | InnerMethod::Verner98);
+        return matches!(
+            self,
+            InnerMethod::Dop853 | InnerMethod::Verner98 | InnerMethod::Hem5
+        );
         #[cfg(not(feature = "high-order"))]
         return false;
     }
@@ -214,7 +229,7 @@ impl InnerMethod {
         match self {
             InnerMethod::DormandPrince54 | InnerMethod::Automatic => true,
             #[cfg(feature = "high-order")]
-            InnerMethod::Dop853 | InnerMethod::Verner98 => true,
+            InnerMethod::Dop853 | InnerMethod::Verner98 | InnerMethod::Hem5 => true,
             #[cfg(feature = "implicit")]
             InnerMethod::Esdirk32 | InnerMethod::Esdirk43 | InnerMethod::Esdirk54 => true,
             _ => false,
@@ -324,7 +339,8 @@ pub enum MultiplierModel {
     /// inner method's full order in `q`, `q'` and `λ`, on position- and velocity-level rows
     /// alike. Explicit inner methods only (`Rk4`, `DormandPrince54`, `Dop853`, `Verner98`;
     /// with `Automatic`, until it turns implicit, after which the implicit method's automatic
-    /// model applies). The automatic model for `Dop853` and `Verner98`.
+    /// model applies). The automatic model for `Dop853` and `Verner98`. With `Hem5`, the
+    /// stages solve them half-explicitly instead (see [`InnerMethod::Hem5`]), the end alike.
     EveryStage,
 }
 

@@ -208,6 +208,12 @@ pub fn methods(t_end: f64, tolerance: f64, quick: bool, tightest_rtol: f64) -> V
             "zeitner-every-stage-verner98",
             grid.every_stage(InnerMethod::Verner98),
         ),
+        // Zeitner per stage: each stage's multipliers held over it and chosen so that the
+        // velocity form holds at the next one (Brasey & Hairer's HEM5).
+        method(
+            "zeitner-half-explicit-hem5",
+            grid.every_stage(InnerMethod::Hem5),
+        ),
         // Order 3: below 1e-10 the steps get too many for a benchmark run.
         method(
             "zeitner-quadratic-lambda-esdirk32-exactQ",

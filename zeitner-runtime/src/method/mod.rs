@@ -21,6 +21,8 @@ pub(crate) mod dirk;
 #[cfg(feature = "high-order")]
 pub(crate) mod dop853;
 pub(crate) mod explicit;
+#[cfg(feature = "high-order")]
+pub(crate) mod half_explicit;
 // Without `dense-output` the continuous extensions are built but never sampled.
 #[cfg_attr(not(feature = "dense-output"), allow(dead_code))]
 #[cfg(feature = "high-order")]
@@ -177,6 +179,8 @@ pub(crate) enum AnyMethod<const N: usize, const Z: usize, D: Storage<N>> {
         explicit::Explicit<16, N, Z, D>,
         D::Held<verner::Continuous<N>>,
     ),
+    #[cfg(feature = "high-order")]
+    HalfExplicit(half_explicit::HalfExplicit<N, Z, D>),
     #[cfg(feature = "implicit")]
     Dirk2(dirk::Dirk<dirk::Alexander2, 2, N, Z, D>),
     #[cfg(feature = "implicit")]
@@ -216,6 +220,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
                 explicit::Explicit::new(&verner::VERNER98, 1, automatic),
                 D::hold(verner::Continuous::new()),
             ),
+            #[cfg(feature = "high-order")]
+            InnerMethod::Hem5 => AnyMethod::HalfExplicit(half_explicit::HalfExplicit::new()),
             #[cfg(feature = "implicit")]
             InnerMethod::Sdirk2 => AnyMethod::Dirk2(dirk::Dirk::new::<S>(step)),
             #[cfg(feature = "implicit")]
@@ -240,7 +246,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> AnyMethod<N, Z, D> {
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => {}
             #[cfg(feature = "high-order")]
-            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) => {}
+            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) | AnyMethod::HalfExplicit(_) => {}
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.use_step_control(step),
             #[cfg(feature = "implicit")]
@@ -264,6 +270,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::order(m),
+            #[cfg(feature = "high-order")]
+            AnyMethod::HalfExplicit(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::order(m),
             #[cfg(feature = "implicit")]
@@ -286,6 +294,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit12(m, _) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => Method::<N, Z, D>::embedded_order(m),
+            #[cfg(feature = "high-order")]
+            AnyMethod::HalfExplicit(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::embedded_order(m),
             #[cfg(feature = "implicit")]
@@ -315,6 +325,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
             AnyMethod::Explicit12(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "high-order")]
             AnyMethod::Explicit16(m, _) => m.integrate(model, start, h, multipliers, sensitivity),
+            #[cfg(feature = "high-order")]
+            AnyMethod::HalfExplicit(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => m.integrate(model, start, h, multipliers, sensitivity),
             #[cfg(feature = "implicit")]
@@ -356,6 +368,8 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
                 h,
                 first,
             )),
+            #[cfg(feature = "high-order")]
+            AnyMethod::HalfExplicit(m) => m.integrate_every_stage(model, start, h, first),
             #[cfg(feature = "implicit")]
             _ => None,
         }
@@ -392,7 +406,7 @@ impl<const N: usize, const Z: usize, D: Storage<N>> Method<N, Z, D> for AnyMetho
         match self {
             AnyMethod::Explicit4(_) | AnyMethod::Explicit7(_) => 0,
             #[cfg(feature = "high-order")]
-            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) => 0,
+            AnyMethod::Explicit12(..) | AnyMethod::Explicit16(..) | AnyMethod::HalfExplicit(_) => 0,
             #[cfg(feature = "implicit")]
             AnyMethod::Dirk2(m) => Method::<N, Z, D>::factorizations(m),
             #[cfg(feature = "implicit")]

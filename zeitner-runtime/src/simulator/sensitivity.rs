@@ -28,7 +28,8 @@ use crate::system::{Matrix, ParametrisedSystem, Vector};
 ///
 /// Runs the explicit inner methods with any multiplier model — held constant or quadratic
 /// (`Rk4`, `DormandPrince54`) or solved at every stage (`Dop853`, `Verner98`, the default) —
-/// and refuses implicit ones ([`InvalidOption::SensitivitiesForMethod`]: `Automatic` is refused
+/// and refuses implicit ones and the half-explicit `Hem5`
+/// ([`InvalidOption::SensitivitiesForMethod`]: `Automatic` is refused
 /// at the step it would turn implicit), gaps closing together at one instant
 /// ([`InvalidOption::SensitivitiesAcrossContacts`]), and the raw output of
 /// `VelocityProjection::Off` ([`InvalidOption::SensitivitiesOfRawOutput`]). Each step costs about one more
@@ -418,6 +419,10 @@ where
 
 /// Whether the sensitivities follow `method` (while it stays explicit).
 fn followed(method: InnerMethod) -> bool {
+    #[cfg(feature = "high-order")]
+    if method == InnerMethod::Hem5 {
+        return false;
+    }
     !method.is_implicit()
 }
 
