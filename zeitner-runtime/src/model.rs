@@ -1357,3 +1357,223 @@ fn golden_maximum(f: &impl Fn(Float) -> Float, mut low: Float, mut high: Float) 
     }
     0.5 * (low + high)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
+    use std::vec::Vec;
+
+    /// Six rows: two bilateral (0, 1), two gaps (2, 3), and one slip row per contact (4, 5).
+    /// Gap 1 open, contact 0 slipping, row 0 redundant: rows 0, 3, 4 and 5 masked (an open
+    /// gap's slip row with it), rows 1 and 2 enforced.
+    fn six_rows() -> MaskedRows {
+        let mut open = GapSet::EMPTY;
+        open.insert(1);
+        let mut slipping = GapSet::EMPTY;
+        slipping.insert(0);
+        MaskedRows::new((2, 4, 1), open, slipping, 0b1)
+    }
+
+    #[test]
+    fn masked_rows_are_the_open_gaps_the_slipping_contacts_slip_rows_and_the_redundant_ones() {
+        let masked = six_rows();
+        let rows: Vec<usize> = (0..6).filter(|&r| masked.contains(r)).collect();
+        assert_eq!(rows, [0, 3, 4, 5]);
+        let mut listed: Vec<usize> = masked.rows().collect();
+        listed.sort_unstable();
+        assert_eq!(listed, rows);
+        assert_eq!((masked.gap_row(1), masked.slip_row(1, 0)), (3, 5));
+        assert_eq!(masked.slipping().iter().collect::<Vec<_>>(), [0]);
+        // A slipping contact whose gap opened is not reported slipping.
+        let mut both = GapSet::EMPTY;
+        both.insert(0);
+        let opened = MaskedRows::new((2, 4, 1), both, both, 0);
+        assert!(opened.slipping().is_empty());
+        assert_eq!(
+            MaskedRows::default(),
+            MaskedRows::new((0, 0, 0), GapSet::EMPTY, GapSet::EMPTY, 0)
+        );
+    }
+
+    #[test]
+    fn clearing_zeroes_the_masked_rows_only_and_regularising_puts_the_largest_enforced_diagonal_there(
+    ) {
+        let masked = six_rows();
+        let full = Matrix::<6, 6>::from_fn(|i, j| 1.0 + (i * 6 + j) as Float);
+        let mut cleared = full;
+        masked.clear(&mut cleared);
+        for i in 0..6 {
+            let expected = if masked.contains(i) { 0.0 } else { 1.0 };
+            for j in 0..6 {
+                assert_eq!(cleared[(i, j)], expected * full[(i, j)], "({i}, {j})");
+            }
+        }
+        let mut regularised = cleared;
+        masked.regularise(&mut regularised);
+        // Rows 1 and 2 enforced: the larger of their diagonals, `full[(2, 2)] = 15`.
+        for i in 0..6 {
+            let diagonal = if masked.contains(i) {
+                15.0
+            } else {
+                full[(i, i)]
+            };
+            assert_eq!(regularised[(i, i)], diagonal, "row {i}");
+        }
+        // The fast path declines redundant rows and leaves the matrix as it was.
+        let mut untouched = cleared;
+        assert!(!masked.regularise_unless_redundant(&mut untouched));
+        assert_eq!(untouched, cleared);
+        // Without redundant rows it regularises as the general one does.
+        let open_only = MaskedRows::new((2, 4, 1), masked.open, masked.slipping, 0);
+        let (mut fast, mut general) = (cleared, cleared);
+        assert!(open_only.regularise_unless_redundant(&mut fast));
+        open_only.regularise(&mut general);
+        assert_eq!(fast, general);
+        // Nothing enforced: a unit diagonal.
+        let all = MaskedRows::new((0, 0, 0), GapSet::first(2), GapSet::EMPTY, 0);
+        let mut zero = Matrix::<2, 2>::zeros();
+        all.regularise(&mut zero);
+        assert_eq!(zero, Matrix::<2, 2>::identity());
+    }
+
+    /// The index-1 solve on the test pendulum: its acceleration satisfies Newton's law with the
+    /// rod's force (`M a = F - Gᵀλ`) and keeps the bob on the circle to second order
+    /// (`g̈ = 2(q·a + |q'|²) = 0`), each to rounding; one evaluation of each function counted.
+    #[test]
+    fn the_index1_solve_meets_the_equations_of_motion_and_the_acceleration_constraint() {
+        let mut model = Model::new(&PENDULUM).unwrap();
+        let (q, v) = swinging();
+        let (a, lambda) = model.index1_unchecked(&q, &v, 0.0).unwrap().unwrap();
+        let force = PENDULUM.applied_force(&q, &v, 0.0);
+        let gt_lambda = Vector::from([2.0 * q[0], 2.0 * q[1]]) * lambda[0];
+        let newton = PENDULUM.m * a - force + gt_lambda;
+        assert!(newton.amax() < 1e-13 * force.amax(), "{newton}");
+        let second = 2.0 * (q.dot(&a) + v.dot(&v));
+        assert!(second.abs() < 1e-13 * v.dot(&v), "g̈ = {second:e}");
+        let counted = model.evaluations;
+        assert_eq!(
+            (
+                counted.forces,
+                counted.constraint_jacobians,
+                counted.acceleration_biases
+            ),
+            (1, 1, 1)
+        );
+        // With the multipliers given, the acceleration is the same.
+        let held = model.acceleration(&q, &v, 0.0, &lambda).unwrap();
+        assert!((held.a - a).amax() < 1e-14 * a.amax());
+    }
+
+    #[test]
+    fn a_non_finite_output_is_named_by_its_function() {
+        let mut model = Model::new(&PENDULUM).unwrap();
+        let (q, v) = swinging();
+        let nan = Vector::from([Float::NAN, 0.0]);
+        let named = |error: StepError| match error {
+            StepError::NonFinite { function, .. } => function,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(
+            named(model.force(&nan, &v, 0.0).unwrap_err()),
+            ModelFunction::AppliedForce
+        );
+        assert_eq!(
+            named(model.jacobian(&nan, &v, 0.0).unwrap_err()),
+            ModelFunction::ConstraintJacobian
+        );
+        assert_eq!(
+            named(model.rate(&q, &nan, 0.0).unwrap_err()),
+            ModelFunction::ConstraintRate
+        );
+        assert_eq!(
+            named(model.bias(&q, &nan, 0.0).unwrap_err()),
+            ModelFunction::ConstraintAccelerationBias
+        );
+        assert_eq!(
+            named(model.residual(&nan, &v, 0.0).unwrap_err()),
+            ModelFunction::ConstraintResidual
+        );
+    }
+
+    /// Redundant rows hold the others to their share of the tolerance; without, the tolerance
+    /// is the user's. (One row cannot be redundant: the share applies from two rows on.)
+    #[test]
+    fn redundant_rows_tighten_the_tolerance_by_their_share() {
+        let mut model = Model::<SpringPendulum, 2, 1>::new(&PENDULUM).unwrap();
+        assert_eq!(model.tightened(1e-9), 1e-9);
+        model.set_redundant_rows(0b1, 0.25);
+        assert_eq!(
+            model.tightened(1e-9),
+            1e-9,
+            "a single row is never redundant"
+        );
+        let pair = PairOfRods;
+        let mut model = Model::<PairOfRods, 2, 2>::new(&pair).unwrap();
+        model.set_redundant_rows(0b10, 0.25);
+        assert_eq!(model.tightened(1e-9), 0.25e-9);
+        model.set_redundant_rows(0, 1.0);
+        assert_eq!(model.tightened(1e-9), 1e-9);
+    }
+
+    /// The test pendulum's rod stated twice, for the tests that need two rows.
+    struct PairOfRods;
+
+    impl ConstrainedSystem<2, 2> for PairOfRods {
+        const POSITION_CONSTRAINTS: usize = 2;
+        const MASS_IS_CONSTANT: bool = true;
+        const SUMMARY: crate::system::SceneSummary = crate::system::SceneSummary {
+            coordinates: 2,
+            position_constraints: 2,
+            velocity_constraints: 0,
+            mass: crate::system::MassKind::ConstantDiagonal,
+            time_dependent: false,
+            functions: &[],
+        };
+        type Mass = <SpringPendulum as ConstrainedSystem<2, 1>>::Mass;
+        type Storage = crate::storage::Dense;
+
+        fn mass_matrix(&self, q: &Vector<2>, t: Float) -> Self::Mass {
+            PENDULUM.mass_matrix(q, t)
+        }
+        fn applied_force(&self, q: &Vector<2>, v: &Vector<2>, t: Float) -> Vector<2> {
+            PENDULUM.applied_force(q, v, t)
+        }
+        fn constraint_residual(&self, q: &Vector<2>, v: &Vector<2>, t: Float) -> Vector<2> {
+            Vector::repeat(PENDULUM.constraint_residual(q, v, t)[0])
+        }
+        fn constraint_jacobian(&self, q: &Vector<2>, v: &Vector<2>, t: Float) -> Matrix<2, 2> {
+            let row = PENDULUM.constraint_jacobian(q, v, t);
+            Matrix::from_rows(&[row, row])
+        }
+        fn constraint_rate(&self, q: &Vector<2>, v: &Vector<2>, t: Float) -> Vector<2> {
+            Vector::repeat(PENDULUM.constraint_rate(q, v, t)[0])
+        }
+        fn constraint_acceleration_bias(
+            &self,
+            q: &Vector<2>,
+            v: &Vector<2>,
+            t: Float,
+        ) -> Vector<2> {
+            Vector::repeat(PENDULUM.constraint_acceleration_bias(q, v, t)[0])
+        }
+        fn force_jacobians(
+            &self,
+            q: &Vector<2>,
+            v: &Vector<2>,
+            t: Float,
+        ) -> (Matrix<2, 2>, Matrix<2, 2>) {
+            PENDULUM.force_jacobians(q, v, t)
+        }
+        fn constraint_force_jacobians(
+            &self,
+            q: &Vector<2>,
+            v: &Vector<2>,
+            t: Float,
+            lambda: &Vector<2>,
+        ) -> (Matrix<2, 2>, Matrix<2, 2>) {
+            let sum = Vector::from([lambda[0] + lambda[1]]);
+            PENDULUM.constraint_force_jacobians(q, v, t, &sum)
+        }
+    }
+}
