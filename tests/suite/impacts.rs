@@ -332,7 +332,11 @@ fn a_pendulum_released_horizontally_strikes_the_wall_after_a_quarter_period_and_
     // The event y = -L/2: θ = 60° from the vertical, sin ψ = sin(θ/2)/k.
     let psi = ((std::f64::consts::PI / 6.0).sin() / k).asin();
     let event_time = (l / g).sqrt() * (complete_elliptic_k(k) - incomplete_elliptic_f(psi, k));
-    for method in [InnerMethod::Automatic, InnerMethod::Dop853] {
+    for method in [
+        InnerMethod::Automatic,
+        InnerMethod::Dop853,
+        InnerMethod::Hem5,
+    ] {
         wall_pendulum_with(&pendulum, method, (quarter, event_time));
     }
 }
@@ -396,7 +400,11 @@ fn wall_pendulum_with(
 
 #[test]
 fn a_bar_falling_flat_strikes_with_both_ends_at_once_and_stays_flat() {
-    let methods = [InnerMethod::Automatic, InnerMethod::Dop853];
+    let methods = [
+        InnerMethod::Automatic,
+        InnerMethod::Dop853,
+        InnerMethod::Hem5,
+    ];
     for (e, method) in [0.0, 0.5].into_iter().flat_map(|e| methods.map(|m| (e, m))) {
         let bar = FallingBar {
             m: 3.0,
@@ -448,7 +456,11 @@ fn the_steam_generator_s_strut_engages_when_its_free_flight_says() {
     use common::steam_generator::SteamGeneratorWithGap;
     let scene = SteamGeneratorWithGap::paper();
     let expected = steam_generator_first_contact(&scene);
-    for method in [InnerMethod::Automatic, InnerMethod::Dop853] {
+    for method in [
+        InnerMethod::Automatic,
+        InnerMethod::Dop853,
+        InnerMethod::Hem5,
+    ] {
         strut_engages_with(&scene, method, expected);
     }
 }

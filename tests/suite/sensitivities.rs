@@ -667,6 +667,21 @@ mod refusals {
             implicit,
         );
         refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
+        // HEM5's stages solve their own multipliers, which the sensitivities do not follow.
+        let half_explicit = Options {
+            method: InnerMethod::Hem5,
+            ..Options::default()
+        };
+        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
+            &paper,
+            Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            },
+            half_explicit,
+        );
+        refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
         let raw = Options {
             velocity_projection: VelocityProjection::Off,
             ..Options::default()
