@@ -54,8 +54,8 @@ pub enum InnerMethod {
     /// its eight stages holds the multipliers over the stage and chooses them so that the
     /// constraints' velocity form (`ġ` of position rows, `g` of velocity rows) holds at the
     /// next stage, the last ones at the step's end: order 5 in `q` and `q'` on the index-2
-    /// system without the acceleration-level bias, with an embedded order-3 estimate for
-    /// adaptive steps. Like `Dop853`, it takes the multipliers solved at every stage only
+    /// system without the acceleration-level bias (and in `λ`, the end's solved at its
+    /// consistent point), with an embedded order-3 estimate for adaptive steps. Like `Dop853`, it takes the multipliers solved at every stage only
     /// (here half-explicitly); the end is brought back onto `g = 0` like theirs. Where a
     /// contact slips with friction, or a stage's Z×Z matrix is singular, that step takes its
     /// tableau with the acceleration-level multipliers. Needs the `high-order` feature.

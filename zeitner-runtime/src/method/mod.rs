@@ -109,8 +109,9 @@ pub(crate) trait Method<const N: usize, const Z: usize, D: Storage<N>> {
         sensitivity: Option<&mut EndSensitivity<N, Z>>,
     ) -> Result<StepEnd<N>, StepError>;
     /// Integrates one step of size `h` from `(t, q, q')` with the multipliers solved at every
-    /// stage from the acceleration-level system ([`crate::MultiplierModel::EveryStage`]);
-    /// `first` is the acceleration at the start where it is known. `None` for a method that
+    /// stage ([`crate::MultiplierModel::EveryStage`]): from the acceleration-level system, or
+    /// (HEM5) so that the velocity form holds at the next stage; `first` is the acceleration at
+    /// the start where it is known. `None` for a method that
     /// cannot (the implicit ones, whose stage equations hold the multipliers given).
     fn integrate_every_stage<S: ConstrainedSystem<N, Z, Storage = D>>(
         &mut self,
