@@ -428,3 +428,95 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> JacobianSource<
         ConstrainedSystem::constraint_force_jacobian_nonzeros(self, q, v, t, lambda, values)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
+
+    /// The test pendulum's functions as a system's (its Jacobian functions are also a
+    /// `JacobianSource`'s).
+    type Pendulum = SpringPendulum;
+
+    #[test]
+    fn gathering_takes_the_pattern_s_entries_in_its_order_or_every_entry_row_by_row() {
+        let m = Matrix::<2, 3>::from_row_slice(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        let mut values = [0.0; 6];
+        assert_eq!(gather(&m, Some(&[(1, 2), (0, 0), (1, 0)]), &mut values), 3);
+        assert_eq!(values[..3], [6.0, 1.0, 4.0]);
+        assert_eq!(gather(&m, None, &mut values), 6);
+        assert_eq!(values, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        // A pair: the second's entries follow the first's.
+        let (a, b) = (Matrix::<2, 2>::identity(), Matrix::<2, 2>::repeat(7.0));
+        let mut pair = [0.0; 3];
+        gather_pair((&a, &b), Some([&[(1, 1)], &[(0, 1), (1, 0)]]), &mut pair);
+        assert_eq!(pair, [1.0, 7.0, 7.0]);
+    }
+
+    /// A hand-written model without a sparsity (the test pendulum) hands out its Jacobians'
+    /// every entry, row by row, `q` then `q'`, as the dense functions give them.
+    #[test]
+    fn the_default_nonzeros_are_the_dense_jacobians_row_by_row() {
+        assert!(<SpringPendulum as ConstrainedSystem<2, 1>>::SPARSITY.is_none());
+        let (q, v) = swinging();
+        let lambda = Vector::<1>::new(0.7);
+        let row_major = |m: &Matrix<2, 2>| [m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]];
+        let (fq, fv) =
+            <Pendulum as ConstrainedSystem<2, 1>>::force_jacobians(&PENDULUM, &q, &v, 0.0);
+        let mut force = [0.0; 8];
+        <Pendulum as ConstrainedSystem<2, 1>>::force_jacobian_nonzeros(
+            &PENDULUM, &q, &v, 0.0, &mut force,
+        );
+        assert_eq!(force[..4], row_major(&fq));
+        assert_eq!(force[4..], row_major(&fv));
+        let (rq, rv) = <Pendulum as ConstrainedSystem<2, 1>>::constraint_force_jacobians(
+            &PENDULUM, &q, &v, 0.0, &lambda,
+        );
+        let mut reaction = [0.0; 8];
+        <Pendulum as ConstrainedSystem<2, 1>>::constraint_force_jacobian_nonzeros(
+            &PENDULUM,
+            &q,
+            &v,
+            0.0,
+            &lambda,
+            &mut reaction,
+        );
+        assert_eq!(reaction[..4], row_major(&rq));
+        assert_eq!(reaction[4..], row_major(&rv));
+        let g = PENDULUM.constraint_jacobian(&q, &v, 0.0);
+        let mut rows = [0.0; 2];
+        PENDULUM.constraint_jacobian_nonzeros(&q, &v, 0.0, &mut rows);
+        assert_eq!(rows, [g[(0, 0)], g[(0, 1)]]);
+    }
+
+    /// The defaults a model without gaps, events or a configuration-dependent mass leaves:
+    /// the fused stage is the four functions; no time events, no restitution, no friction.
+    #[test]
+    fn the_defaults_are_the_plain_functions_and_nothing_else() {
+        let (q, v) = swinging();
+        let (mass, force, g, b) = PENDULUM.stage(&q, &v, 0.5);
+        assert_eq!(mass.0, PENDULUM.mass_matrix(&q, 0.5).0);
+        assert_eq!(force, PENDULUM.applied_force(&q, &v, 0.5));
+        assert_eq!(g, PENDULUM.constraint_jacobian(&q, &v, 0.5));
+        assert_eq!(b, PENDULUM.constraint_acceleration_bias(&q, &v, 0.5));
+        assert_eq!(PENDULUM.constraint_position_partials(&q, &v, 0.5), g);
+        let a = Vector::<2>::new(1.0, -2.0);
+        assert_eq!(
+            <Pendulum as ConstrainedSystem<2, 1>>::mass_jacobian_product(&PENDULUM, &q, 0.5, &a),
+            Matrix::<2, 2>::zeros()
+        );
+        assert_eq!(PENDULUM.time_event_after(0.5), None);
+        assert_eq!((PENDULUM.restitution(0), PENDULUM.friction(0)), (0.0, 0.0));
+        let mut values = [1.0; 2];
+        PENDULUM.event_functions(&q, &v, 0.5, &mut values);
+        assert_eq!(values, [1.0; 2], "no event function writes");
+        let unknown = EventGradient::<2, 1>::unknown();
+        assert!(unknown
+            .q
+            .iter()
+            .chain(&unknown.v)
+            .chain(&unknown.theta)
+            .all(|x| x.is_nan()));
+        assert!(unknown.t.is_nan());
+    }
+}
