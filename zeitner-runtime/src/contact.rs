@@ -467,3 +467,97 @@ const TURNS: usize = 64;
 /// A slipping contact's direction and its slip's after the impulse agree when they differ by
 /// less than this (a unit vector's distance).
 const TURN_TOLERANCE: Float = 64.0 * Float::EPSILON;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::Ball;
+
+    const BALL: Ball = Ball {
+        m: 2.0,
+        f: -2.0 * 9.81,
+        e: 0.5,
+    };
+
+    fn y(value: Float) -> Vector<1> {
+        Vector::from([value])
+    }
+
+    /// A gap is closed where it touches (within the tolerance) and does not separate.
+    #[test]
+    fn touching_gaps_are_those_at_zero_that_do_not_separate() {
+        let mut model = Model::new(&BALL).unwrap();
+        let closed = |model: &mut Model<'_, Ball, 1, 1>, q: Float, v: Float| {
+            touching(model, (&y(q), &y(v), 0.0), 1e-9).unwrap()
+        };
+        assert!(closed(&mut model, 0.0, -1.0).contains(0));
+        assert!(
+            closed(&mut model, 1e-10, 0.0).contains(0),
+            "within the tolerance"
+        );
+        assert!(closed(&mut model, -1e-3, 0.0).contains(0), "overlapping");
+        assert!(closed(&mut model, 0.1, 0.0).is_empty(), "apart");
+        assert!(closed(&mut model, 0.0, 1.0).is_empty(), "separating");
+    }
+
+    /// Newton's impact law: the ball leaves at `e` times the speed it struck with, by an
+    /// impulse `-m(1 + e)|v|` (pushing, so negative), losing `(1 - e²)` of its kinetic energy.
+    #[test]
+    fn a_fast_impact_bounces_by_newton_s_law() {
+        let mut model = Model::new(&BALL).unwrap();
+        let mut open = GapSet::EMPTY;
+        open.insert(0);
+        model.set_open_gaps(open);
+        let impacting = GapSet::first(1);
+        let struck = impact(&mut model, (&y(0.0), &y(-2.0), 0.3), impacting, 1e-3).unwrap();
+        assert!((struck.velocity_after[0] - 1.0).abs() < 1e-14);
+        assert!((struck.impulse[0] + BALL.m * 3.0).abs() < 1e-13);
+        let lost = 0.5 * BALL.m * (4.0 - 1.0);
+        assert!((struck.energy_lost - lost).abs() < 1e-13);
+        assert_eq!((struck.gaps, struck.persistent), (impacting, GapSet::EMPTY));
+        assert_eq!(
+            (struck.gap_rate_before[0], struck.gap_rate_after[0]),
+            (-2.0, struck.velocity_after[0])
+        );
+        assert!(
+            model.open_gaps().contains(0),
+            "the bouncing gap opens again"
+        );
+    }
+
+    /// An approach slower than the rest velocity is inelastic: the contact stays closed.
+    #[test]
+    fn a_slow_impact_comes_to_rest_and_stays_in_contact() {
+        let mut model = Model::new(&BALL).unwrap();
+        model.set_open_gaps(GapSet::first(1));
+        let impacting = GapSet::first(1);
+        let struck = impact(&mut model, (&y(0.0), &y(-1e-4), 0.0), impacting, 1e-3).unwrap();
+        assert!(struck.velocity_after[0].abs() < 1e-18);
+        assert_eq!(struck.persistent, impacting);
+        assert!(model.open_gaps().is_empty());
+    }
+
+    /// A closed contact whose multiplier would pull (the force lifts the ball) opens; one that
+    /// pushes (gravity) stays.
+    #[test]
+    fn a_contact_that_would_pull_opens() {
+        let resting = |f: Float| {
+            let ball = Ball { f, ..BALL };
+            let mut model = Model::new(&ball).unwrap();
+            let mut point = consistent_point(&mut model, 0.0, y(0.0), y(0.0)).unwrap();
+            let opened = open_pulling(&mut model, &mut point).unwrap();
+            (opened, point.lambda[0], point.a[0])
+        };
+        let (opened, lambda, a) = resting(BALL.f);
+        assert!(opened.is_empty());
+        // The floor carries the weight: λ = F = -m g, pushing.
+        assert!(
+            (lambda - BALL.f).abs() < 1e-12 && a.abs() < 1e-12,
+            "λ {lambda}, a {a}"
+        );
+        let (opened, lambda, a) = resting(5.0);
+        assert!(opened.contains(0));
+        assert_eq!(lambda, 0.0);
+        assert!((a - 5.0 / BALL.m).abs() < 1e-14, "free: a = F/m");
+    }
+}

@@ -87,3 +87,66 @@ pub(crate) fn swinging() -> (Vector<2>, Vector<2>) {
         Vector::from([1.5 * c, 1.5 * s]),
     )
 }
+
+/// A ball of mass `m` above a floor, `y ≥ 0` (one gap, restitution `e`), under a force `f`
+/// along `y` (`-m g` for gravity; positive lifts it off the floor).
+pub(crate) struct Ball {
+    pub m: Float,
+    pub f: Float,
+    pub e: Float,
+}
+
+impl ConstrainedSystem<1, 1> for Ball {
+    const POSITION_CONSTRAINTS: usize = 1;
+    const UNILATERAL_CONSTRAINTS: usize = 1;
+    const MASS_IS_CONSTANT: bool = true;
+    const SUMMARY: SceneSummary = SceneSummary {
+        coordinates: 1,
+        position_constraints: 1,
+        velocity_constraints: 0,
+        mass: MassKind::ConstantDiagonal,
+        time_dependent: false,
+        functions: &[],
+    };
+    type Mass = DiagonalMass<1>;
+    type Storage = crate::storage::Dense;
+
+    fn mass_matrix(&self, _: &Vector<1>, _: Float) -> DiagonalMass<1> {
+        DiagonalMass(Vector::from([self.m]))
+    }
+    fn applied_force(&self, _: &Vector<1>, _: &Vector<1>, _: Float) -> Vector<1> {
+        Vector::from([self.f])
+    }
+    fn constraint_residual(&self, q: &Vector<1>, _: &Vector<1>, _: Float) -> Vector<1> {
+        *q
+    }
+    fn constraint_jacobian(&self, _: &Vector<1>, _: &Vector<1>, _: Float) -> Matrix<1, 1> {
+        Matrix::identity()
+    }
+    fn constraint_rate(&self, _: &Vector<1>, v: &Vector<1>, _: Float) -> Vector<1> {
+        *v
+    }
+    fn constraint_acceleration_bias(&self, _: &Vector<1>, _: &Vector<1>, _: Float) -> Vector<1> {
+        Vector::zeros()
+    }
+    fn force_jacobians(
+        &self,
+        _: &Vector<1>,
+        _: &Vector<1>,
+        _: Float,
+    ) -> (Matrix<1, 1>, Matrix<1, 1>) {
+        (Matrix::zeros(), Matrix::zeros())
+    }
+    fn constraint_force_jacobians(
+        &self,
+        _: &Vector<1>,
+        _: &Vector<1>,
+        _: Float,
+        _: &Vector<1>,
+    ) -> (Matrix<1, 1>, Matrix<1, 1>) {
+        (Matrix::zeros(), Matrix::zeros())
+    }
+    fn restitution(&self, _: usize) -> Float {
+        self.e
+    }
+}
