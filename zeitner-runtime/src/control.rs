@@ -197,11 +197,26 @@ pub(crate) const MAX_ATTEMPTS: u32 = 1000;
 /// How many accepted steps in a row may be too small to matter before the run stops.
 pub(crate) const STALL_STEPS: u32 = 100;
 
+/// How little of its scale the time may advance over [`STALL_STEPS`] accepted steps of any
+/// size, [`CRAWL_WINDOWS`] times in a row, before the run is stalled: a run that would need
+/// more than a billion steps to double its time.
+pub(crate) const CRAWL: Float = 1e-7;
+
+/// The windows of [`STALL_STEPS`] steps in a row that must crawl: a run that crawls through a
+/// hard place (a transition, a cluster of events) for a few hundred steps and goes on is not
+/// stalled.
+pub(crate) const CRAWL_WINDOWS: u32 = 4;
+
 /// Whether accepted steps still advance the time. A step too small to matter is one within a
 /// few ulps of the time, or a billionth of the largest step of the run (where the default
 /// `min_step` of 1e-12 pins steps); [`STALL_STEPS`] of them in a row, together advancing the
 /// time by less than 1e-4 of its scale, are a stall: before, runs went on for millions of
-/// steps of picoseconds without an error.
+/// steps of picoseconds without an error. So are [`CRAWL_WINDOWS`] windows of [`STALL_STEPS`]
+/// steps of any size that each advance it by less than [`CRAWL`] of its scale: steps that
+/// alternate about the
+/// billionth (a contact chattering at its slip floor, 1e-10 and 1e-12 s at t = 0.58 s) reset
+/// the count of tiny ones, and the runtime fuzzer's seeds beyond the first 100 000 found five
+/// such runs that used up their budget without an error.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Progress {
     largest_step: Float,
@@ -209,6 +224,11 @@ pub(crate) struct Progress {
     tiny_span: Float,
     /// The size of the last tiny step.
     last_tiny: Float,
+    /// The steps of the current window of [`STALL_STEPS`] and the time they spanned.
+    window_steps: u32,
+    window_span: Float,
+    /// How many full windows in a row crawled, and the last step of the last one.
+    crawled: (u32, Float),
 }
 
 impl Progress {
@@ -224,6 +244,17 @@ impl Progress {
             self.tiny_steps = 0;
             self.tiny_span = 0.0;
         }
+        self.window_steps += 1;
+        self.window_span += h;
+        if self.window_steps == STALL_STEPS {
+            let scale = t.abs().max(self.largest_step);
+            self.crawled = match self.window_span < CRAWL * scale {
+                true => (self.crawled.0 + 1, h),
+                false => (0, h),
+            };
+            self.window_steps = 0;
+            self.window_span = 0.0;
+        }
     }
 
     /// The error that ends a run stalled at `t`, if it is.
@@ -236,7 +267,14 @@ impl Progress {
                 steps: self.tiny_steps,
             });
         }
-        Ok(())
+        match self.crawled {
+            (windows, step) if windows >= CRAWL_WINDOWS => Err(StepError::Stalled {
+                t,
+                step,
+                steps: windows * STALL_STEPS,
+            }),
+            _ => Ok(()),
+        }
     }
 }
 
@@ -648,6 +686,42 @@ mod progress_tests {
             })
         ));
         progress.record(1e-4, t + 1e-4);
+        assert_eq!(progress.check(t), Ok(()));
+    }
+
+    /// Steps alternating about the billionth of the run's largest (as a contact chattering at
+    /// its slip floor took them) are a stall once `CRAWL_WINDOWS` windows of a hundred in a
+    /// row each move the time by less than `CRAWL` of it; fewer are a hard place the run
+    /// crawls through, and a window that moves it clears them.
+    #[test]
+    fn steps_that_crawl_are_a_stall_whatever_their_sizes() {
+        let mut progress = Progress::default();
+        let mut t = 0.0;
+        // 50 steps that move it, then the crawl: the first window of it is full 50 steps in.
+        for _ in 0..50 {
+            t += 1e-2;
+            progress.record(1e-2, t);
+        }
+        let crawl = (CRAWL_WINDOWS + 1) * STALL_STEPS;
+        for k in 0..crawl {
+            let h = if k % 2 == 0 { 1e-10 } else { 1e-12 };
+            t += h;
+            progress.record(h, t);
+            let stalled = progress.check(t).is_err();
+            assert_eq!(
+                stalled,
+                k + 1 >= 50 + CRAWL_WINDOWS * STALL_STEPS,
+                "step {k}"
+            );
+        }
+        assert!(matches!(
+            progress.check(t),
+            Err(StepError::Stalled { steps, .. }) if steps == CRAWL_WINDOWS * STALL_STEPS
+        ));
+        for _ in 0..STALL_STEPS {
+            t += 1e-3;
+            progress.record(1e-3, t);
+        }
         assert_eq!(progress.check(t), Ok(()));
     }
 

@@ -420,7 +420,9 @@ pub enum StepError {
     },
     /// The run stopped advancing: the last `steps` accepted steps, the last of size `step`, were
     /// all too small to matter (a billionth of the run's largest step, or a few ulps of the
-    /// time) and together moved it by almost nothing. Nothing was changed by the call.
+    /// time) and together moved it by almost nothing, or whatever their sizes moved it by less
+    /// than 1e-7 of its scale in each hundred (more than a billion steps to double it). Nothing
+    /// was changed by the call.
     Stalled { t: Float, step: Float, steps: u32 },
     /// The start is off the constraints and could not be projected, or the options refuse an
     /// inconsistent start: this row stays violated.
@@ -526,8 +528,9 @@ impl fmt::Display for StepError {
             ),
             StepError::Stalled { t, step, steps } => write!(
                 f,
-                "the run stalled at t = {t}: the last {steps} accepted steps were all about \
-                 {step:e} or smaller and barely moved the time"
+                "the run stalled at t = {t}: the last {steps} accepted steps (the last one \
+                 {step:e}) barely moved the time; loosen the tolerances, or look for a motion or a \
+                 contact that the steps cannot leave"
             ),
             StepError::InconsistentStart {
                 worst_row,
