@@ -653,35 +653,24 @@ mod refusals {
     fn what_the_sensitivities_cannot_follow_is_refused_by_name() {
         let zero = Vector::<3>::zeros();
         let paper = SteamGenerator::paper();
-        let implicit = Options {
-            method: InnerMethod::Esdirk54,
-            ..Options::default()
-        };
-        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
-            &paper,
-            Start {
-                q: zero,
-                v: zero,
-                t: 0.0,
-            },
-            implicit,
-        );
-        refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
-        // HEM5's stages solve their own multipliers, which the sensitivities do not follow.
-        let half_explicit = Options {
-            method: InnerMethod::Hem5,
-            ..Options::default()
-        };
-        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
-            &paper,
-            Start {
-                q: zero,
-                v: zero,
-                t: 0.0,
-            },
-            half_explicit,
-        );
-        refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
+        // An implicit method, and HEM5, whose stages solve their own multipliers: the
+        // sensitivities follow neither.
+        for method in [InnerMethod::Esdirk54, InnerMethod::Hem5] {
+            let options = Options {
+                method,
+                ..Options::default()
+            };
+            let error = SensitivitySimulator::<_, 3, 2, 4>::new(
+                &paper,
+                Start {
+                    q: zero,
+                    v: zero,
+                    t: 0.0,
+                },
+                options,
+            );
+            refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
+        }
         let raw = Options {
             velocity_projection: VelocityProjection::Off,
             ..Options::default()

@@ -213,10 +213,9 @@ pub(crate) const CRAWL_WINDOWS: u32 = 4;
 /// time by less than 1e-4 of its scale, are a stall: before, runs went on for millions of
 /// steps of picoseconds without an error. So are [`CRAWL_WINDOWS`] windows of [`STALL_STEPS`]
 /// steps of any size that each advance it by less than [`CRAWL`] of its scale: steps that
-/// alternate about the
-/// billionth (a contact chattering at its slip floor, 1e-10 and 1e-12 s at t = 0.58 s) reset
-/// the count of tiny ones, and the runtime fuzzer's seeds beyond the first 100 000 found five
-/// such runs that used up their budget without an error.
+/// alternate about the billionth (a contact chattering at its slip floor, 1e-10 and 1e-12 s at
+/// t = 0.58 s) reset the count of tiny ones, and the runtime fuzzer's seeds beyond the first
+/// 100 000 found five such runs that used up their budget without an error.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Progress {
     largest_step: Float,

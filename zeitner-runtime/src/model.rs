@@ -1474,26 +1474,34 @@ mod tests {
             StepError::NonFinite { function, .. } => function,
             other => panic!("{other:?}"),
         };
-        assert_eq!(
-            named(model.force(&nan, &v, 0.0).unwrap_err()),
-            ModelFunction::AppliedForce
-        );
-        assert_eq!(
-            named(model.jacobian(&nan, &v, 0.0).unwrap_err()),
-            ModelFunction::ConstraintJacobian
-        );
-        assert_eq!(
-            named(model.rate(&q, &nan, 0.0).unwrap_err()),
-            ModelFunction::ConstraintRate
-        );
-        assert_eq!(
-            named(model.bias(&q, &nan, 0.0).unwrap_err()),
-            ModelFunction::ConstraintAccelerationBias
-        );
-        assert_eq!(
-            named(model.residual(&nan, &v, 0.0).unwrap_err()),
-            ModelFunction::ConstraintResidual
-        );
+        let calls = [
+            (
+                model.force(&nan, &v, 0.0).err(),
+                ModelFunction::AppliedForce,
+            ),
+            (
+                model.jacobian(&nan, &v, 0.0).err(),
+                ModelFunction::ConstraintJacobian,
+            ),
+            (
+                model.rate(&q, &nan, 0.0).err(),
+                ModelFunction::ConstraintRate,
+            ),
+            (
+                model.bias(&q, &nan, 0.0).err(),
+                ModelFunction::ConstraintAccelerationBias,
+            ),
+            (
+                model.residual(&nan, &v, 0.0).err(),
+                ModelFunction::ConstraintResidual,
+            ),
+        ];
+        for (error, function) in calls {
+            assert_eq!(
+                named(error.expect("a non-finite output is an error")),
+                function
+            );
+        }
     }
 
     /// Redundant rows hold the others to their share of the tolerance; without, the tolerance
