@@ -681,3 +681,120 @@ where
     };
     Ok((after, dt))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::consistency;
+    use crate::method::explicit::DOPRI5;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
+
+    /// The pendulum with its parameters `(L, k)` moved by `d`.
+    fn moved(d: [Float; 2]) -> SpringPendulum {
+        SpringPendulum {
+            length: PENDULUM.length + d[0],
+            k: PENDULUM.k + d[1],
+            ..PENDULUM
+        }
+    }
+
+    /// A tangent of the start in two columns, one per parameter, that the derivatives below
+    /// follow together with the parameter itself.
+    fn tangent() -> Tangent<2, 2> {
+        Tangent {
+            q: Matrix::from_row_slice(&[0.3, -0.2, 0.1, 0.4]),
+            v: Matrix::from_row_slice(&[-0.5, 0.7, 0.2, 0.6]),
+        }
+    }
+
+    const STEP: Float = 1e-6;
+
+    /// Column `j` of `f`'s derivative along the tangent's column `j` and parameter `j`, by
+    /// central differences: `f` takes the moved pendulum and state.
+    fn central<const R: usize>(
+        j: usize,
+        f: impl Fn(&SpringPendulum, Vector<2>, Vector<2>) -> Vector<R>,
+    ) -> Vector<R> {
+        let (q, v) = swinging();
+        let x = tangent();
+        let at = |sign: Float| {
+            let mut d = [0.0; 2];
+            d[j] = sign * STEP;
+            let q = q + (sign * STEP) * x.q.column(j);
+            let v = v + (sign * STEP) * x.v.column(j);
+            f(&moved(d), q, v)
+        };
+        (at(1.0) - at(-1.0)) / (2.0 * STEP)
+    }
+
+    /// `|a - b|` against `b`'s size, each column.
+    fn agree<const R: usize>(a: &Vector<R>, b: &Vector<R>) {
+        let error = (a - b).amax() / b.amax().max(1.0);
+        assert!(error < 1e-7, "{a} against {b}: {error:e}");
+    }
+
+    #[test]
+    fn the_consistent_multipliers_tangent_is_their_difference_quotient() {
+        let (q, v) = swinging();
+        let mut model = Model::new(&PENDULUM).unwrap();
+        let point = consistency::consistent_point(&mut model, 0.0, q, v).unwrap();
+        let dl = consistent_multipliers(&mut model, (&q, &v, 0.0), &point.lambda, &tangent());
+        let dl = dl.unwrap();
+        for j in 0..2 {
+            let lambda = central(j, |system, q, v| {
+                let mut model = Model::new(system).unwrap();
+                consistency::consistent_point(&mut model, 0.0, q, v)
+                    .unwrap()
+                    .lambda
+            });
+            agree(&dl.column(j).into_owned(), &lambda);
+        }
+        // The rod's length changes the multiplier only through the state: `dl` is not zero.
+        assert!(dl.amax() > 0.1, "{dl}");
+    }
+
+    #[test]
+    fn the_projections_tangents_are_their_difference_quotients() {
+        let (q, v) = swinging();
+        let mut model = Model::new(&PENDULUM).unwrap();
+        let mut positions = tangent();
+        project_positions(&mut model, (&q, &v, 0.0), &mut positions).unwrap();
+        let mut velocities = tangent();
+        project_velocities(&mut model, (&q, &v, 0.0), &mut velocities).unwrap();
+        for j in 0..2 {
+            let projected_q = central(j, |system, q, v| {
+                let mut model = Model::new(system).unwrap();
+                consistency::project_positions(&mut model, q, &v, 0.0, 1e-15).unwrap()
+            });
+            agree(&positions.q.column(j).into_owned(), &projected_q);
+            let projected_v = central(j, |system, q, v| {
+                let mut model = Model::new(system).unwrap();
+                consistency::project_velocities(&mut model, &q, v, 0.0, 1e-15).unwrap()
+            });
+            agree(&velocities.v.column(j).into_owned(), &projected_v);
+        }
+        // The length moves the projected positions radially, outwards.
+        let radial = q.normalize();
+        assert!(positions.q.column(0).dot(&radial) > 0.0);
+    }
+
+    #[test]
+    fn a_step_s_tangent_with_the_multipliers_at_every_stage_is_its_difference_quotient() {
+        let (q, v) = swinging();
+        let h = 0.05;
+        let mut model = Model::new(&PENDULUM).unwrap();
+        let step = (&DOPRI5, 1);
+        let (_, x) = every_stage(&mut model, step, (&q, &v, 0.0), h, (&tangent(), None)).unwrap();
+        for j in 0..2 {
+            let end = central(j, |system, q, v| {
+                let mut model = Model::new(system).unwrap();
+                let zero = Tangent::<2, 2>::zero();
+                let ((q, v), _) =
+                    every_stage(&mut model, step, (&q, &v, 0.0), h, (&zero, None)).unwrap();
+                Vector::<4>::from([q[0], q[1], v[0], v[1]])
+            });
+            let (xq, xv) = (x.q.column(j), x.v.column(j));
+            agree(&Vector::<4>::from([xq[0], xq[1], xv[0], xv[1]]), &end);
+        }
+    }
+}

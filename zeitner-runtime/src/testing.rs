@@ -4,7 +4,9 @@
 
 use crate::mass::DiagonalMass;
 use crate::scalar::{Float, Lm};
-use crate::system::{ConstrainedSystem, MassKind, Matrix, SceneSummary, Vector};
+use crate::system::{
+    ConstrainedSystem, MassKind, Matrix, ParametrisedSystem, SceneSummary, Vector,
+};
 
 pub(crate) struct SpringPendulum {
     pub m: Float,
@@ -74,6 +76,53 @@ impl ConstrainedSystem<2, 1> for SpringPendulum {
         lambda: &Vector<1>,
     ) -> (Matrix<2, 2>, Matrix<2, 2>) {
         ((2.0 * lambda[0]) * Matrix::identity(), Matrix::zeros())
+    }
+}
+
+/// The pendulum's parameters `θ = (L, k)`: the rod's length (in the constraint only) and the
+/// spring's constant (in the force only), with their derivatives written out by hand.
+impl ParametrisedSystem<2, 1, 2> for SpringPendulum {
+    const PARAMETER_NAMES: [&'static str; 2] = ["length", "k"];
+    fn parameter_values(&self) -> Vector<2> {
+        Vector::from([self.length, self.k])
+    }
+    fn parameter_force(
+        &self,
+        q: &Vector<2>,
+        _: &Vector<2>,
+        _: Float,
+        _: &Vector<1>,
+        _: &Vector<2>,
+    ) -> Matrix<2, 2> {
+        Matrix::from_row_slice(&[0.0, -q[0] * q[0] * q[0], 0.0, 0.0])
+    }
+    fn parameter_constraints(
+        &self,
+        _: &Vector<2>,
+        _: &Vector<2>,
+        _: Float,
+    ) -> (Matrix<1, 2>, Matrix<1, 2>) {
+        (
+            Matrix::from_row_slice(&[-2.0 * self.length, 0.0]),
+            Matrix::zeros(),
+        )
+    }
+    fn rate_jacobians(
+        &self,
+        q: &Vector<2>,
+        v: &Vector<2>,
+        _: Float,
+    ) -> (Matrix<1, 2>, Matrix<1, 2>) {
+        (2.0 * v.transpose(), 2.0 * q.transpose())
+    }
+    fn acceleration_constraint_jacobians(
+        &self,
+        _: &Vector<2>,
+        v: &Vector<2>,
+        _: Float,
+        a: &Vector<2>,
+    ) -> (Matrix<1, 2>, Matrix<1, 2>, Matrix<1, 2>) {
+        (2.0 * a.transpose(), 4.0 * v.transpose(), Matrix::zeros())
     }
 }
 

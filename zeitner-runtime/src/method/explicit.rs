@@ -455,25 +455,51 @@ pub(crate) fn stage_state<const N: usize, const ST: usize, const C: usize>(
 pub(crate) fn solution<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     h: Float,
-    (q0, v0): (&Vector<N>, &Vector<N>),
-    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+    start: (&Vector<N>, &Vector<N>),
+    slopes: (&[Vector<N>; ST], &[Vector<N>; ST]),
 ) -> StepEnd<N> {
-    let combine = |(mut q, mut v): (Vector<N>, Vector<N>), w: &[Float; ST]| {
-        for i in 0..ST {
-            q += (h * w[i]) * kq[i];
-            v += (h * w[i]) * kv[i];
-        }
-        (q, v)
-    };
-    let zero = (Vector::zeros(), Vector::zeros());
-    let (q, v) = combine((*q0, *v0), &tableau.b);
+    let (q, v) = weighted_end(tableau, h, start, slopes);
     StepEnd {
         q,
         v,
-        error: tableau.e.as_ref().map(|e| combine(zero, e)),
-        error_low: tableau.e_low.as_ref().map(|e| combine(zero, e)),
+        error: tableau.e.as_ref().map(|e| combine(h, e, zero(), slopes)),
+        error_low: tableau
+            .e_low
+            .as_ref()
+            .map(|e| combine(h, e, zero(), slopes)),
         stiffness: None,
     }
+}
+
+/// The step end `(q₀, q₀') + h Σ bᵢ kᵢ` alone, without the embedded estimates.
+#[inline(always)]
+pub(crate) fn weighted_end<const N: usize, const ST: usize>(
+    tableau: &Tableau<ST>,
+    h: Float,
+    (q0, v0): (&Vector<N>, &Vector<N>),
+    slopes: (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> (Vector<N>, Vector<N>) {
+    combine(h, &tableau.b, (*q0, *v0), slopes)
+}
+
+#[inline(always)]
+fn zero<const N: usize>() -> (Vector<N>, Vector<N>) {
+    (Vector::zeros(), Vector::zeros())
+}
+
+/// `(q, q') + h Σ wᵢ kᵢ`.
+#[inline(always)]
+fn combine<const N: usize, const ST: usize>(
+    h: Float,
+    w: &[Float; ST],
+    (mut q, mut v): (Vector<N>, Vector<N>),
+    (kq, kv): (&[Vector<N>; ST], &[Vector<N>; ST]),
+) -> (Vector<N>, Vector<N>) {
+    for i in 0..ST {
+        q += (h * w[i]) * kq[i];
+        v += (h * w[i]) * kv[i];
+    }
+    (q, v)
 }
 
 /// One explicit Runge–Kutta step with the multipliers solved at every stage from the

@@ -8,7 +8,9 @@
 //! systems of index 2", SIAM J. Numer. Anal. 30 (1993); the coefficients as Brasey's code
 //! `hem5.f` lists them (subroutine `COEF`, as vendored in Siconos' `externals/hairer`).
 
-use super::explicit::{index1_stages, patterned, row, solution, stage_state, Nonzeros, Tableau};
+use super::explicit::{
+    index1_stages, patterned, row, solution, stage_state, weighted_end, Nonzeros, Tableau,
+};
 use super::{EndSensitivity, Method, Start, StepEnd};
 use crate::error::{InvalidOption, StepError};
 use crate::linalg::Lu;
@@ -199,8 +201,9 @@ where
             let state = stage_state(tableau, i + 1, h, (q0, v0), (&*kq, &*kv));
             (tableau.a[i + 1][i], t0 + tableau.c[i + 1] * h, state)
         } else {
-            let end = solution(tableau, h, (q0, v0), (&*kq, &*kv));
-            (tableau.b[i], t0 + h, (end.q, end.v))
+            // The embedded estimates wait for the corrected last slope.
+            let end = weighted_end(tableau, h, (q0, v0), (&*kq, &*kv));
+            (tableau.b[i], t0 + h, end)
         };
         // `w(q, q' - hw M⁻¹Gᵀλ) = 0`, linear in `λ` (exact for rows linear in `q'`: every
         // position row, and Pfaffian velocity rows).
