@@ -255,117 +255,126 @@ pub enum InvalidOption {
     SensitivitiesWithFriction,
 }
 
+/// Each variant's message, where it has no value in it.
+impl InvalidOption {
+    const SENSITIVITIES_FOR_METHOD: &str =
+        "sensitivities are followed through the explicit inner methods only (`Rk4`, \
+         `DormandPrince54`, `Dop853`, `Verner98`, and `Automatic` until it turns implicit; \
+         not the half-explicit `Hem5`, whose stages solve their own multipliers): choose one \
+         of them";
+    const SENSITIVITIES_ACROSS_CONTACTS: &str =
+        "sensitivities follow one gap's impact at a time: here several gaps close at the same \
+         instant, whose impact has no single time to differentiate";
+    const SENSITIVITIES_OF_RAW_OUTPUT: &str =
+        "sensitivities are those of consistent points: use `VelocityProjection::Output` \
+         (the default) or `State`, not `Off`";
+    const SENSITIVITIES_WITH_FRICTION: &str =
+        "sensitivities are not followed through friction yet: run the scene without \
+         `friction`, or with `Simulator`";
+    const START_DERIVATIVES_AFTER_START: &str =
+        "the start's derivatives are set before the first step: set them right after \
+         `SensitivitySimulator::new`";
+    const CONSTRAINT_TOLERANCE: &str =
+        "`constraint_tolerance` must be finite and positive, in the constraints' units (default 1e-10)";
+    const ERROR_TOLERANCES: &str =
+        "`rtol` and `atol` of adaptive steps must be finite and positive (defaults 1e-8 and 1e-10): \
+         with `atol = 0` a coordinate that stays at zero has no error scale";
+    const STEP_SIZE: &str =
+        "step sizes must be finite and positive, with `min_step <= initial_step <= max_step`";
+    const ITERATION_LIMIT: &str = "`max_newton_iterations` must be between 1 and 1000 (default 12)";
+    const SUBSTEPS: &str = "RK4 `substeps` must be between 1 and 10 000";
+    const CONTROLLER: &str =
+        "a `ControllerSettings` value is out of range: factors positive with min < 1 < max \
+         and `min_factor <= max_factor_after_rejection < 1`, `safety` at most 1, `beta_times_order` in 0..=0.5, `landing_fraction` in 0..=0.5";
+    const END_TIME: &str = "the end or stop time must be finite and not before the current time";
+    const SAMPLE_TIME: &str =
+        "dense output is available only within the last accepted step: sample at a finite \
+         time between `last().start.t` and `last().end.t`";
+    const INITIAL_MULTIPLIERS: &str = "the given initial multipliers must be finite";
+    const ADAPTIVE_NEEDS_ERROR_ESTIMATE: &str =
+        "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, \
+         `Esdirk32`, `Esdirk43` or `Esdirk54`, or `StepControl::Fixed` with this method";
+    const STEP_WORK: &str =
+        "RK4 `substeps` times `max_newton_iterations` must not exceed 20 000: one step \
+         would integrate that many substeps; take smaller steps or fewer Newton sweeps";
+    const EVENTS: &str =
+        "`events.time_tolerance` must be positive and at most 1e-3 s (default 1e-12), \
+         `events.rest_velocity` finite and not negative (default 1e-3)";
+    const TOO_MANY_EVENTS: &str =
+        "the system has more than 32 gaps or more than 32 event functions; split them or \
+         combine several into one event function";
+    const FRICTION: &str =
+        "every friction coefficient must be finite and at least 0 (0: frictionless); a \
+         negative one would drive the slip";
+    const RESTITUTION: &str =
+        "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
+         1: elastic); above 1 an impact would create energy";
+    const SPECTRAL_RADIUS: &str =
+        "generalised-α's `rho_inf`, its spectral radius at infinite frequency, must lie \
+         in 0..=1: 1 damps no frequency (the trapezoidal rule), 0 annihilates the highest \
+         in one step; 0.5 to 0.9 are usual";
+    const MULTIPLIERS_FOR_METHOD: &str =
+        "the inner method cannot take this multiplier model: generalised-α evaluates the \
+         multipliers only at the step's ends, where the two coefficients of \
+         `MultiplierModel::Quadratic` act alike; `EveryStage` solves them at the \
+         stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`, \
+         `Verner98`, `Hem5`); `Dop853` and `Verner98` take only `EveryStage`, since held \
+         multipliers would cap their order at 5 where their error estimates assume 8; and \
+         `Hem5` takes only `EveryStage`, its stages choosing their own multipliers. Use \
+         `Automatic`, or another inner method";
+    const CONSTANT_MULTIPLIERS_ON_VELOCITY_ROWS: &str =
+        "constant multipliers hold velocity-level rows to order 2 only, through an error \
+         the adaptive step control does not see (a knife edge ended 300 times its \
+         tolerance off at rtol 1e-6 and 25 000 times at 1e-12): use \
+         `MultiplierModel::Automatic` or `Quadratic` with adaptive steps, or fixed steps";
+}
+
 impl fmt::Display for InvalidOption {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            InvalidOption::SensitivitiesForMethod => f.write_str(
-                "sensitivities are followed through the explicit inner methods only (`Rk4`, \
-                 `DormandPrince54`, `Dop853`, `Verner98`, and `Automatic` until it turns implicit; \
-                 not the half-explicit `Hem5`, whose stages solve their own multipliers): choose one \
-                 of them",
-            ),
-            InvalidOption::SensitivitiesAcrossContacts => f.write_str(
-                "sensitivities follow one gap's impact at a time: here several gaps close at the same \
-                 instant, whose impact has no single time to differentiate",
-            ),
-            InvalidOption::SensitivitiesOfRawOutput => f.write_str(
-                "sensitivities are those of consistent points: use `VelocityProjection::Output` \
-                 (the default) or `State`, not `Off`",
-            ),
-            InvalidOption::SensitivitiesWithFriction => f.write_str(
-                "sensitivities are not followed through friction yet: run the scene without \
-                 `friction`, or with `Simulator`",
-            ),
-            InvalidOption::StartDerivativesAfterStart => f.write_str(
-                "the start's derivatives are set before the first step: set them right after \
-                 `SensitivitySimulator::new`",
-            ),
-            InvalidOption::ConstraintTolerance => f.write_str(
-                "`constraint_tolerance` must be finite and positive, in the constraints' units (default 1e-10)",
-            ),
-            InvalidOption::ErrorTolerances => f.write_str(
-                "`rtol` and `atol` of adaptive steps must be finite and positive (defaults 1e-8 and 1e-10): \
-                 with `atol = 0` a coordinate that stays at zero has no error scale",
-            ),
-            InvalidOption::BelowResolution => write!(
-                f,
-                "`rtol` is below the resolution of this build's scalar (ε = {:e}): no step can \
-                 meet it; ask for at least ε, or build in `f64` (without the feature `f32`)",
-                crate::scalar::SMALLEST_RTOL
-            ),
-            InvalidOption::StepSize => f.write_str(
-                "step sizes must be finite and positive, with `min_step <= initial_step <= max_step`",
-            ),
-            InvalidOption::IterationLimit => {
-                f.write_str("`max_newton_iterations` must be between 1 and 1000 (default 12)")
+        let message = match self {
+            InvalidOption::SensitivitiesForMethod => Self::SENSITIVITIES_FOR_METHOD,
+            InvalidOption::SensitivitiesAcrossContacts => Self::SENSITIVITIES_ACROSS_CONTACTS,
+            InvalidOption::SensitivitiesOfRawOutput => Self::SENSITIVITIES_OF_RAW_OUTPUT,
+            InvalidOption::SensitivitiesWithFriction => Self::SENSITIVITIES_WITH_FRICTION,
+            InvalidOption::StartDerivativesAfterStart => Self::START_DERIVATIVES_AFTER_START,
+            InvalidOption::ConstraintTolerance => Self::CONSTRAINT_TOLERANCE,
+            InvalidOption::ErrorTolerances => Self::ERROR_TOLERANCES,
+            InvalidOption::BelowResolution => {
+                return write!(
+                    f,
+                    "`rtol` is below the resolution of this build's scalar (ε = {:e}): no step can \
+                     meet it; ask for at least ε, or build in `f64` (without the feature `f32`)",
+                    crate::scalar::SMALLEST_RTOL
+                );
             }
-            InvalidOption::Substeps => f.write_str("RK4 `substeps` must be between 1 and 10 000"),
-            InvalidOption::Controller => f.write_str(
-                "a `ControllerSettings` value is out of range: factors positive with min < 1 < max \
-                 and `min_factor <= max_factor_after_rejection < 1`, `safety` at most 1, `beta_times_order` in 0..=0.5, `landing_fraction` in 0..=0.5",
-            ),
-            InvalidOption::EndTime => {
-                f.write_str("the end or stop time must be finite and not before the current time")
+            InvalidOption::StepSize => Self::STEP_SIZE,
+            InvalidOption::IterationLimit => Self::ITERATION_LIMIT,
+            InvalidOption::Substeps => Self::SUBSTEPS,
+            InvalidOption::Controller => Self::CONTROLLER,
+            InvalidOption::EndTime => Self::END_TIME,
+            InvalidOption::SampleTime => Self::SAMPLE_TIME,
+            InvalidOption::InitialMultipliers => Self::INITIAL_MULTIPLIERS,
+            InvalidOption::AdaptiveNeedsErrorEstimate => Self::ADAPTIVE_NEEDS_ERROR_ESTIMATE,
+            InvalidOption::StepWork => Self::STEP_WORK,
+            InvalidOption::Events => Self::EVENTS,
+            InvalidOption::TooManyEvents => Self::TOO_MANY_EVENTS,
+            InvalidOption::Friction => Self::FRICTION,
+            InvalidOption::Restitution => Self::RESTITUTION,
+            InvalidOption::SpectralRadius => Self::SPECTRAL_RADIUS,
+            InvalidOption::MultipliersForMethod => Self::MULTIPLIERS_FOR_METHOD,
+            InvalidOption::ConstantMultipliersOnVelocityRows => {
+                Self::CONSTANT_MULTIPLIERS_ON_VELOCITY_ROWS
             }
-            InvalidOption::SampleTime => f.write_str(
-                "dense output is available only within the last accepted step: sample at a finite \
-                 time between `last().start.t` and `last().end.t`",
-            ),
-            InvalidOption::InitialMultipliers => {
-                f.write_str("the given initial multipliers must be finite")
+            InvalidOption::NotForSparseSimulator(what) => {
+                return write!(
+                    f,
+                    "the sparse simulator does not run {what} yet: it takes a diagonal mass, \
+                     `InnerMethod::Rk4` or `DormandPrince54` and constant multipliers; use `Simulator` \
+                     (dense, fixed-size) for the rest"
+                );
             }
-            InvalidOption::AdaptiveNeedsErrorEstimate => f.write_str(
-                "adaptive steps need an error estimate: use `InnerMethod::DormandPrince54`, \
-                 `Esdirk32`, `Esdirk43` or `Esdirk54`, or `StepControl::Fixed` with this method",
-            ),
-            InvalidOption::StepWork => f.write_str(
-                "RK4 `substeps` times `max_newton_iterations` must not exceed 20 000: one step \
-                 would integrate that many substeps; take smaller steps or fewer Newton sweeps",
-            ),
-            InvalidOption::Events => f.write_str(
-                "`events.time_tolerance` must be positive and at most 1e-3 s (default 1e-12), \
-                 `events.rest_velocity` finite and not negative (default 1e-3)",
-            ),
-            InvalidOption::TooManyEvents => f.write_str(
-                "the system has more than 32 gaps or more than 32 event functions; split them or \
-                 combine several into one event function",
-            ),
-            InvalidOption::Friction => f.write_str(
-                "every friction coefficient must be finite and at least 0 (0: frictionless); a \
-                 negative one would drive the slip",
-            ),
-            InvalidOption::Restitution => f.write_str(
-                "every coefficient of restitution must lie in 0..=1 (0: the contact stays closed, \
-                 1: elastic); above 1 an impact would create energy",
-            ),
-            InvalidOption::SpectralRadius => f.write_str(
-                "generalised-α's `rho_inf`, its spectral radius at infinite frequency, must lie \
-                 in 0..=1: 1 damps no frequency (the trapezoidal rule), 0 annihilates the highest \
-                 in one step; 0.5 to 0.9 are usual",
-            ),
-            InvalidOption::MultipliersForMethod => f.write_str(
-                "the inner method cannot take this multiplier model: generalised-α evaluates the \
-                 multipliers only at the step's ends, where the two coefficients of \
-                 `MultiplierModel::Quadratic` act alike; `EveryStage` solves them at the \
-                 stages of explicit methods only (`Rk4`, `DormandPrince54`, `Dop853`, \
-                 `Verner98`, `Hem5`); `Dop853` and `Verner98` take only `EveryStage`, since held \
-                 multipliers would cap their order at 5 where their error estimates assume 8; and \
-                 `Hem5` takes only `EveryStage`, its stages choosing their own multipliers. Use \
-                 `Automatic`, or another inner method",
-            ),
-            InvalidOption::ConstantMultipliersOnVelocityRows => f.write_str(
-                "constant multipliers hold velocity-level rows to order 2 only, through an error \
-                 the adaptive step control does not see (a knife edge ended 300 times its \
-                 tolerance off at rtol 1e-6 and 25 000 times at 1e-12): use \
-                 `MultiplierModel::Automatic` or `Quadratic` with adaptive steps, or fixed steps",
-            ),
-            InvalidOption::NotForSparseSimulator(what) => write!(
-                f,
-                "the sparse simulator does not run {what} yet: it takes a diagonal mass, \
-                 `InnerMethod::Rk4` or `DormandPrince54` and constant multipliers; use `Simulator` \
-                 (dense, fixed-size) for the rest"
-            ),
-        }
+        };
+        f.write_str(message)
     }
 }
 
