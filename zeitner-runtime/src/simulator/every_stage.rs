@@ -99,7 +99,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
 /// Whether a failure of the step's integration or projection is retried with a smaller step:
 /// a stage or an end off the trajectory's reach (non-finite, or where `G` loses rank), which a
 /// shorter step keeps nearer the start.
-fn retried(cause: &StepError) -> bool {
+pub(super) fn retried(cause: &StepError) -> bool {
     matches!(
         cause,
         StepError::NonFinite { .. }

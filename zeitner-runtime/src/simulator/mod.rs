@@ -18,6 +18,8 @@ mod observation;
 mod reconfigure;
 mod sensitivity;
 mod start;
+#[cfg(test)]
+mod tests;
 
 use start::{report_at, start_point, suits_the_contacts, suits_the_rows, watch_at};
 
