@@ -7,7 +7,10 @@ use crate::common;
 use common::reference::spring_supported_pendulum;
 use common::relative_error;
 use common::spring_support::SpringSupportedPendulum;
-use zeitner::{InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl, Vector};
+use zeitner::{
+    AbsoluteTolerances, InnerMethod, MultiplierModel, Options, Simulator, Start, StepControl,
+    Vector,
+};
 
 const END: f64 = 0.25;
 
@@ -99,4 +102,45 @@ fn dormand_prince_needs_the_support_resolved() {
         implicit_steps * 10 < steps,
         "{implicit_steps} against {steps}"
     );
+}
+
+/// The rod's force on the stiff support is `k` times a deflection of 2.4e-7 m, and damped by
+/// the support's velocity: one `atol` for the metre-sized bob leaves both unchecked, and at rtol
+/// 1e-5 the default options end the run with the force off by 4e-4. The support's own absolute
+/// tolerances — `rtol` times its deflection and times its speed — hold it to the tolerance (at
+/// about nine times the steps: the error estimates of the stiff support are not filtered, and
+/// the force ends far below `rtol`).
+#[test]
+fn per_coordinate_tolerances_hold_the_force_on_the_stiff_support() {
+    let scene = SpringSupportedPendulum::STIFF;
+    let (rtol, end) = (1e-5, 1.0);
+    let options = Options {
+        step: StepControl::adaptive(rtol).with_atol(rtol * 1e-3),
+        constraint_tolerance: 1e-12,
+        ..Options::default()
+    };
+    let reference = spring_supported_pendulum(&scene, end);
+    let start = Start {
+        q: Vector::from(scene.start()),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let run = |tolerances: Option<AbsoluteTolerances<4>>| {
+        let mut sim = Simulator::new(&scene, start, options).unwrap();
+        sim.set_absolute_tolerances(tolerances).unwrap();
+        sim.advance_to(end, |_| {}).unwrap();
+        let error = relative_error(sim.last().end.lambda.as_slice(), &reference.lambda);
+        (error, sim.statistics().steps)
+    };
+    let atol = rtol * 1e-3;
+    let support = AbsoluteTolerances {
+        q: Vector::<4>::new(rtol * 1e-7, rtol * 1e-7, atol, atol),
+        v: Vector::<4>::new(rtol * 1e-6, rtol * 1e-6, atol, atol),
+    };
+    let (loose, loose_steps) = run(None);
+    let (held, held_steps) = run(Some(support));
+    println!(
+        "λ error {loose:.2e} in {loose_steps} steps; per coordinate {held:.2e} in {held_steps}"
+    );
+    assert!(held < rtol, "{held:e}");
 }

@@ -271,16 +271,18 @@ pub(crate) fn project_positions<S: ConstrainedSystem<N, Z>, const N: usize, cons
 /// Newton sweeps onto the velocity-level constraint `w(q, q', t) = 0`, minimal change in the
 /// mass metric (one is exact when `w` is linear in `q'`): at least one and at most
 /// `max_sweeps`, ending early once the `w` a later sweep starts from is `settled`. Returns the
-/// velocities and the directions (`G`, `M⁻¹Gᵀ`) of the last sweep.
+/// velocities, the directions (`G`, `M⁻¹Gᵀ`) of the last sweep, and whether `w` was seen
+/// settled (not where the sweeps ran out).
 #[inline]
 fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     (q, mut v, t): (&Vector<N>, Vector<N>, Float),
     max_sweeps: u32,
     settled: impl Fn(&Vector<Z>) -> bool,
-) -> Result<(Vector<N>, ConstraintDirections<FactorOf<S, N, Z>, N, Z>), StepError> {
+) -> Result<(Vector<N>, DirectionsOf<S, N, Z>, bool), StepError> {
     let mut w = model.rate(q, &v, t)?;
     let mut sweeps = 0;
+    let mut seen_settled = false;
     let directions = loop {
         let directions = model.directions(q, &v, t)?;
         let mu = solve_spd(&directions.gram(), &w, S::POSITION_CONSTRAINTS).map_err(|rows| {
@@ -296,14 +298,18 @@ fn sweep_velocities<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
         }
         w = model.rate(q, &v, t)?;
         if settled(&w) {
+            seen_settled = true;
             break directions;
         }
     };
     if !all_finite(v.as_slice()) {
         return Err(StepError::non_finite_state(t));
     }
-    Ok((v, directions))
+    Ok((v, directions, seen_settled))
 }
+
+type DirectionsOf<S, const N: usize, const Z: usize> =
+    ConstraintDirections<FactorOf<S, N, Z>, N, Z>;
 
 /// The start's velocities on the velocity-level constraint: Newton until `|w|` is a thousandth
 /// of the tolerance, and refused as `InconsistentStart` if it ends above the tolerance — down to
@@ -316,7 +322,7 @@ pub(crate) fn project_velocities<S: ConstrainedSystem<N, Z>, const N: usize, con
     tolerance: Float,
 ) -> Result<Vector<N>, StepError> {
     let settled = |w: &Vector<Z>| max_abs(w).0 <= tolerance * 1e-3;
-    let (v, directions) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
+    let (v, directions, _) = sweep_velocities(model, (q, v, t), VELOCITY_SWEEPS, settled)?;
     let (residual, index) = max_abs(&model.rate(q, &v, t)?);
     let jacobian = directions.jacobian;
     let reach = (0..Z).map(|j| jacobian.row(j).norm()).fold(0.0, Float::max);
@@ -509,7 +515,10 @@ pub(crate) struct Gram<const N: usize, const Z: usize> {
 /// The consistent point at a step end: velocities projected once onto the velocity-level
 /// constraint (exact for constraints linear in `q'`, up to the rounding of the solve; a scene
 /// with velocity-level rows gets up to two more sweeps where that rounding — a badly scaled
-/// `G M⁻¹Gᵀ` — leaves them above the tolerance), then multipliers and accelerations.
+/// `G M⁻¹Gᵀ` — leaves them above the tolerance), then multipliers and accelerations. Velocity
+/// rows the sweeps leave above the tolerance, and above the rounding of `G q'`, are
+/// `InconsistentStart` naming the worst: a try to take again shorter, never a point returned
+/// off its constraints (a mass of 2e-89 beside one of 0.5 left a velocity row at 5e52).
 #[inline]
 pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -521,7 +530,10 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
     let r = S::POSITION_CONSTRAINTS;
     let sweeps = if r < Z { 3 } else { 1 };
     let velocity_rows_hold = |w: &Vector<Z>| w.iter().skip(r).all(|x| x.abs() <= tolerance);
-    let (v, directions) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
+    let (v, directions, settled) = sweep_velocities(model, (&q, v, t), sweeps, velocity_rows_hold)?;
+    if r < Z && !settled {
+        velocity_rows_within(model, (&q, &v, t), &directions.jacobian, tolerance)?;
+    }
     model.redundant_rows_hold((&q, &v, t), tolerance)?;
     // `G` of position rows does not depend on the velocities: the last sweep's serves the
     // projected ones. `q` is finite (the step's end), `v` checked by the sweeps.
@@ -531,6 +543,37 @@ pub(crate) fn end_point<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usi
         model.directions(&q, &v, t)?
     };
     point_with(model, (t, q, v), directions)
+}
+
+/// Whether the velocity rows of `w` at `(q, q', t)` are within `tolerance`, or within the
+/// rounding of `G q'` (`4 ε Σ_k |G_jk| max|q'|`, row by row), as [`end_point`] promises.
+#[cold]
+fn velocity_rows_within<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    model: &mut Model<'_, S, N, Z>,
+    (q, v, t): (&Vector<N>, &Vector<N>, Float),
+    jacobian: &Matrix<Z, N>,
+    tolerance: Float,
+) -> Result<(), StepError> {
+    let r = S::POSITION_CONSTRAINTS;
+    let w = model.rate(q, v, t)?;
+    let speed = v.amax();
+    let beyond = |j: usize| {
+        let rounding = 4.0 * Float::EPSILON * jacobian.row(j).abs().sum() * speed;
+        w[j].abs() > tolerance.max(rounding)
+    };
+    let worst = (r..Z)
+        .filter(|&j| beyond(j))
+        .max_by(|&i, &j| w[i].abs().total_cmp(&w[j].abs()));
+    match worst {
+        None => Ok(()),
+        Some(index) => Err(StepError::InconsistentStart {
+            worst_row: Row {
+                index,
+                position_rows: r,
+            },
+            residual: w[index].abs(),
+        }),
+    }
 }
 
 /// The part of an error estimate `(e_q, e_v)` along the constraints at `(q, v, t)`: `e_q`

@@ -5,7 +5,7 @@
 use crate::error::StepError;
 use crate::mass::MassFactor;
 use crate::model::Model;
-use crate::options::{ControllerSettings, Options, StepControl};
+use crate::options::{AbsoluteTolerances, ControllerSettings, Options, StepControl};
 use crate::scalar::{Float, Lm};
 use crate::system::{ConstrainedSystem, Matrix, Vector};
 
@@ -92,7 +92,7 @@ pub(crate) fn bounds(step: StepControl) -> (Float, Float) {
 /// `y + h y'` (`None` where it cannot be evaluated: then the last step estimated stands).
 /// Within `min_step..=max_step`.
 pub(crate) fn starting_step<const N: usize>(
-    step: StepControl,
+    (step, absolute): (StepControl, Option<&AbsoluteTolerances<N>>),
     (q, v, a): (&Vector<N>, &Vector<N>, &Vector<N>),
     k: u32,
     mut acceleration_after: impl FnMut(Float) -> Option<Vector<N>>,
@@ -115,8 +115,9 @@ pub(crate) fn starting_step<const N: usize>(
     // (here the Euler step's end).
     let scaled_rms = |x: &Vector<N>, y: &Vector<N>, h: Float| {
         let squares = (0..N).fold(0.0, |sum: Float, i| {
-            let sq = atol + rtol * q[i].abs().max((q[i] + h * v[i]).abs());
-            let sv = atol + rtol * v[i].abs().max((v[i] + h * a[i]).abs());
+            let (atol_q, atol_v) = AbsoluteTolerances::of(absolute, atol, i);
+            let sq = atol_q + rtol * q[i].abs().max((q[i] + h * v[i]).abs());
+            let sv = atol_v + rtol * v[i].abs().max((v[i] + h * a[i]).abs());
             sum + (x[i] / sq) * (x[i] / sq) + (y[i] / sv) * (y[i] / sv)
         });
         Lm::sqrt(squares / (2 * N).max(1) as Float)
@@ -409,7 +410,7 @@ const RESOLUTION_ULPS: Float = 64.0;
 /// thousand integrations on every try of a step). `row_scale` holds `|∂g_j/∂x|` at the start;
 /// fixed steps keep `constraint_tolerance`.
 pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
-    options: &Options,
+    (options, absolute): (&Options, Option<&AbsoluteTolerances<N>>),
     (q, v): (&Vector<N>, &Vector<N>),
     row_scale: &Vector<Z>,
     position_rows: usize,
@@ -418,19 +419,22 @@ pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
     let StepControl::Adaptive { rtol, atol, .. } = options.step else {
         return epsilon;
     };
-    let rms = |x: &Vector<N>| {
+    // Component `i`'s scale, of `q` (`k = 0`) or of `q'` (`k = 1`).
+    let rms = |x: &Vector<N>, k: usize| {
         let sum: Float = x
             .iter()
-            .map(|x| {
-                let scale = atol + rtol * x.abs();
+            .enumerate()
+            .map(|(i, x)| {
+                let atol = AbsoluteTolerances::of(absolute, atol, i);
+                let scale = [atol.0, atol.1][k] + rtol * x.abs();
                 scale * scale
             })
             .sum();
         Lm::sqrt(sum / N.max(1) as Float)
     };
     let resolution = |x: &Vector<N>| RESOLUTION_ULPS * Float::EPSILON * x.amax();
-    let position_scale = (RESIDUAL_SHARE * rms(q)).max(resolution(q));
-    let velocity_scale = (RESIDUAL_SHARE * rms(v)).max(resolution(v));
+    let position_scale = (RESIDUAL_SHARE * rms(q, 0)).max(resolution(q));
+    let velocity_scale = (RESIDUAL_SHARE * rms(v, 1)).max(resolution(v));
     let allowed = row_scale.iter().enumerate().map(|(j, &reach)| {
         let scale = if j < position_rows {
             position_scale
@@ -446,11 +450,11 @@ pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
 }
 
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
-/// with the scale `atol + rtol·max(|x₁|, |x₂|)` per component; 0 with fixed steps or without an
+/// with the scale `atol_i + rtol·max(|x₁|, |x₂|)` per component (`atol`, or `absolute`'s); 0 with fixed steps or without an
 /// estimate, infinite when the estimate is not finite (so that the step is rejected).
 #[inline]
 pub(crate) fn error_norm<const N: usize>(
-    step: StepControl,
+    (step, absolute): (StepControl, Option<&AbsoluteTolerances<N>>),
     start: (&Vector<N>, &Vector<N>),
     end: (&Vector<N>, &Vector<N>),
     estimate: Option<(Vector<N>, Vector<N>)>,
@@ -461,8 +465,9 @@ pub(crate) fn error_norm<const N: usize>(
     };
     let mut sum = 0.0;
     for i in 0..N {
-        let sq = atol + rtol * start.0[i].abs().max(end.0[i].abs());
-        let sv = atol + rtol * start.1[i].abs().max(end.1[i].abs());
+        let (atol_q, atol_v) = AbsoluteTolerances::of(absolute, atol, i);
+        let sq = atol_q + rtol * start.0[i].abs().max(end.0[i].abs());
+        let sv = atol_v + rtol * start.1[i].abs().max(end.1[i].abs());
         let xq = (eq[i].abs() + frozen.0[i].abs()) / sq;
         let xv = (ev[i].abs() + frozen.1[i].abs()) / sv;
         sum += xq * xq + xv * xv;
@@ -561,26 +566,29 @@ mod tests {
         let rows = Vector::<2>::new(2.0, 1.0);
         // Loose tolerances: ε as given.
         let loose = adaptive(1e-6, 1e-6);
-        assert_eq!(newton_tolerance(&loose, (&q, &v), &rows, 1), 1e-10);
+        assert_eq!(newton_tolerance((&loose, None), (&q, &v), &rows, 1), 1e-10);
         // Tight ones: a tenth of the RMS scale, in each row's units; the velocity row (scale
         // atol, since q' = 0) binds: 0.1 · 1 · 1e-14.
         let tight = adaptive(1e-12, 1e-14);
         let expected = 0.1 * 1e-14;
-        assert!((newton_tolerance(&tight, (&q, &v), &rows, 1) - expected).abs() < 1e-30);
+        assert!((newton_tolerance((&tight, None), (&q, &v), &rows, 1) - expected).abs() < 1e-30);
         // Both rows position rows: RMS of 1e-14 + 1e-12·(3, 4) is 3.55e-12; times 0.1 and the
         // smaller |∂g/∂q|, 1.
-        let position = newton_tolerance(&tight, (&q, &v), &rows, 2);
+        let position = newton_tolerance((&tight, None), (&q, &v), &rows, 2);
         let rms =
             Lm::sqrt(((1e-14 + 3e-12 as Float).powi(2) + (1e-14 + 4e-12 as Float).powi(2)) / 2.0);
         assert!((position - 0.1 * rms).abs() < 1e-25, "{position:e}");
         // Fixed steps, and rows whose gradient vanished, keep ε.
         let fixed = Options::paper(1e-3);
-        assert_eq!(newton_tolerance(&fixed, (&q, &v), &rows, 1), 1e-10);
+        assert_eq!(newton_tolerance((&fixed, None), (&q, &v), &rows, 1), 1e-10);
         let vanished = Vector::<2>::new(0.0, 0.0);
-        assert_eq!(newton_tolerance(&tight, (&q, &v), &vanished, 1), 1e-10);
+        assert_eq!(
+            newton_tolerance((&tight, None), (&q, &v), &vanished, 1),
+            1e-10
+        );
         // Not below the state's rounding: 64 ulps of |q|∞ = 4, times the smaller |∂g/∂q|, 1.
         let hostile = adaptive(1e-16, 1e-300);
-        let floor = newton_tolerance(&hostile, (&q, &v), &rows, 2);
+        let floor = newton_tolerance((&hostile, None), (&q, &v), &rows, 2);
         assert_eq!(floor, 64.0 * Float::EPSILON * 4.0);
     }
 
@@ -635,7 +643,7 @@ mod tests {
         let zero = Vector::<2>::zeros();
         let estimate = Some((Vector::<2>::new(1e-9, 0.0), zero));
         let norm = error_norm(
-            step,
+            (step, None),
             (&zero, &zero),
             (&zero, &zero),
             estimate,
@@ -643,12 +651,18 @@ mod tests {
         );
         assert!((norm - 0.5).abs() < 1e-12, "{norm}");
         let nan = Some((Vector::<2>::new(Float::NAN, 0.0), zero));
-        let norm = error_norm(step, (&zero, &zero), (&zero, &zero), nan, (&zero, &zero));
+        let norm = error_norm(
+            (step, None),
+            (&zero, &zero),
+            (&zero, &zero),
+            nan,
+            (&zero, &zero),
+        );
         assert_eq!(norm, Float::INFINITY);
         let fixed = StepControl::Fixed { step: 0.1 };
         assert_eq!(
             error_norm(
-                fixed,
+                (fixed, None),
                 (&zero, &zero),
                 (&zero, &zero),
                 estimate,
@@ -823,7 +837,7 @@ mod retry_tests {
     /// The estimate's first step for the free fall, counting its evaluations.
     fn free_fall_start(evaluations: &mut u32, order: u32) -> Float {
         let ([q, v, a], step) = free_fall(1e-12, 1.0);
-        starting_step(step, (&q, &v, &a), order, |_| {
+        starting_step((step, None), (&q, &v, &a), order, |_| {
             *evaluations += 1;
             Some(a)
         })
@@ -840,9 +854,9 @@ mod retry_tests {
             atol: 1e-9,
         };
         let never = |_| -> Option<Vector<1>> { panic!("no estimate where a step is given") };
-        assert_eq!(starting_step(step, (&q, &v, &v), 5, never), 0.25);
+        assert_eq!(starting_step((step, None), (&q, &v, &v), 5, never), 0.25);
         let fixed = StepControl::Fixed { step: 0.5 };
-        assert_eq!(starting_step(fixed, (&q, &v, &v), 5, never), 0.5);
+        assert_eq!(starting_step((fixed, None), (&q, &v, &v), 5, never), 0.5);
     }
 
     #[test]
@@ -874,11 +888,11 @@ mod retry_tests {
     fn a_starting_step_whose_probe_fails_is_the_first_guess_within_bounds() {
         let ([q, v, a], step) = free_fall(1e-3, 1.0);
         // The first guess (1e-6 s) is below min_step: min_step.
-        assert_eq!(starting_step(step, (&q, &v, &a), 5, |_| None), 1e-3);
+        assert_eq!(starting_step((step, None), (&q, &v, &a), 5, |_| None), 1e-3);
         let nan = |_| Some(Vector::<1>::new(Float::NAN));
-        assert_eq!(starting_step(step, (&q, &v, &a), 5, nan), 1e-3);
+        assert_eq!(starting_step((step, None), (&q, &v, &a), 5, nan), 1e-3);
         let (_, capped) = free_fall(1e-12, 1e-4);
-        let h = starting_step(capped, (&q, &v, &a), 5, |_| Some(a));
+        let h = starting_step((capped, None), (&q, &v, &a), 5, |_| Some(a));
         assert_eq!(h, 1e-4);
     }
 }

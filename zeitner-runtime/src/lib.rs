@@ -76,8 +76,9 @@ pub use error::{InvalidOption, ModelFunction, Row, RowSet, StepError};
 pub use gaps::GapSet;
 pub use mass::{DiagonalMass, FullMass, MassFactor, MassMatrix};
 pub use options::{
-    ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options, Sensitivity,
-    StartPolicy, StepControl, VelocityProjection, ESDIRK43_FROM_RTOL, VERNER_FROM_RTOL,
+    AbsoluteTolerances, ControllerSettings, EventSettings, InnerMethod, MultiplierModel, Options,
+    Sensitivity, StartPolicy, StepControl, VelocityProjection, ESDIRK43_FROM_RTOL,
+    VERNER_FROM_RTOL,
 };
 pub use output::{
     Direction, Evaluations, Point, Sensitivities, Statistics, StepReport, StopReason,

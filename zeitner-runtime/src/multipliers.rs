@@ -8,7 +8,7 @@ use crate::linalg::{dependent_rows, finite_state, max_abs, solve_blocks};
 use crate::mass::MassFactor;
 use crate::method::{EndSensitivity, Method, Start, StepEnd};
 use crate::model::Model;
-use crate::options::StepControl;
+use crate::options::{AbsoluteTolerances, StepControl};
 use crate::outline::apart;
 use crate::polynomial::{Multipliers, StepPolynomial};
 use crate::scalar::Float;
@@ -137,7 +137,7 @@ impl<const Z: usize> Predictor<Z> {
 
 /// What the Newton needs from the options.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct NewtonSettings {
+pub(crate) struct NewtonSettings<'a, const N: usize> {
     /// How far `g` may end from where Newton aims it (see `control::newton_tolerance`); the
     /// velocity-level end condition uses that over `min(τ, 1)`, or itself with
     /// `steady_velocity_tolerance`.
@@ -159,8 +159,10 @@ pub(crate) struct NewtonSettings {
     /// The exact sensitivity of the method's step map, or else the paper's estimate.
     pub exact: bool,
     pub accept_linearised: bool,
-    /// The step control, whose error weights bound what accepting a linearised state neglects.
+    /// The step control and the per-coordinate absolute tolerances, whose error weights bound
+    /// what accepting a linearised state neglects.
     pub step: StepControl,
+    pub absolute: Option<&'a AbsoluteTolerances<N>>,
 }
 
 /// The share of the step's error tolerance that the term neglected by accepting the linearly
@@ -213,7 +215,12 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
 
     /// How far the conditions end from `targets`, in units of their tolerances: the largest
     /// `|g_j - target_j| / tolerance` and the same of the velocity-level conditions.
-    fn miss(&self, settings: &NewtonSettings, h: Float, targets: &[Vector<Z>; K]) -> Float {
+    fn miss<const N: usize>(
+        &self,
+        settings: &NewtonSettings<'_, N>,
+        h: Float,
+        targets: &[Vector<Z>; K],
+    ) -> Float {
         let stretch = if settings.steady_velocity_tolerance {
             1.0
         } else {
@@ -227,7 +234,12 @@ impl<const Z: usize, const K: usize> Conditions<Z, K> {
 
     /// Whether the conditions end within the tolerances of `targets`, and `g` within the
     /// ceiling.
-    fn hold(&self, settings: &NewtonSettings, h: Float, targets: &[Vector<Z>; K]) -> bool {
+    fn hold<const N: usize>(
+        &self,
+        settings: &NewtonSettings<'_, N>,
+        h: Float,
+        targets: &[Vector<Z>; K],
+    ) -> bool {
         self.worst().0 <= settings.ceiling && self.miss(settings, h, targets) <= 1.0
     }
 }
@@ -285,7 +297,7 @@ pub(crate) fn solve<S, M, const N: usize, const Z: usize, const K: usize>(
     h: Float,
     t_end: Float,
     (mut multipliers, targets): (Multipliers<Z, K>, &[Vector<Z>; K]),
-    settings: &NewtonSettings,
+    settings: &NewtonSettings<'_, N>,
 ) -> Result<NewtonOutcome<N, Z, K>, StepError>
 where
     S: ConstrainedSystem<N, Z>,
@@ -397,7 +409,7 @@ impl<const N: usize, const Z: usize> LinearStep<'_, N, Z> {
     fn correct<S: ConstrainedSystem<N, Z>, const K: usize>(
         &self,
         model: &mut Model<'_, S, N, Z>,
-        settings: &NewtonSettings,
+        settings: &NewtonSettings<'_, N>,
         (start, t_end): (&Start<N>, Float),
         multipliers: &mut Multipliers<Z, K>,
         (mut conditions, targets): (Conditions<Z, K>, &[Vector<Z>; K]),
@@ -456,7 +468,7 @@ impl<const N: usize, const Z: usize> LinearStep<'_, N, Z> {
 /// the largest row norm of `∂g/∂q`, per unit of position) by `ε` at most.
 fn linearisation_is_negligible<S, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
-    settings: &NewtonSettings,
+    settings: &NewtonSettings<'_, N>,
     (start, q, v, t_end): (&Start<N>, &Vector<N>, &Vector<N>, Float),
     (dq, dp, dg_dq): (Vector<N>, Vector<Z>, &Matrix<Z, N>),
 ) -> Result<bool, StepError>
@@ -469,7 +481,7 @@ where
     let (eq, ev) = ((h * h / 12.0) * turn, (h / 3.0) * turn);
     if let StepControl::Adaptive { .. } = settings.step {
         let norm = error_norm(
-            settings.step,
+            (settings.step, settings.absolute),
             (&start.q, &start.v),
             (q, v),
             Some((eq, ev)),
@@ -747,6 +759,7 @@ mod tests {
             exact,
             accept_linearised: false,
             step: StepControl::Fixed { step: 0.02 },
+            absolute: None,
         };
         let h = 0.02;
         let aim = (guess, &[Vector::zeros()]);

@@ -1,6 +1,7 @@
 //! Plain-data options, in the model's own units. Every field has a documented default
 //! ([`Options::default`]); [`Options::validate`] refuses what cannot work before anything runs.
 
+use crate::dense::Vector;
 use crate::error::{InvalidOption, StepError};
 use crate::scalar::Float;
 
@@ -415,6 +416,46 @@ pub enum StepControl {
         rtol: Float,
         atol: Float,
     },
+}
+
+/// Absolute tolerances of adaptive steps per coordinate, of `q` and of `q'`, in place of
+/// [`StepControl::Adaptive`]'s one `atol` ([`crate::Simulator::set_absolute_tolerances`]):
+/// each component's error is measured against `atol_i + rtol·|x_i|`. A coordinate that moves
+/// far less than the others needs its own: a stiff support deflected by a micrometre under a
+/// force `k·x` has that force only as accurate as `x`, which one `atol` for a metre-sized
+/// structure leaves unchecked.
+///
+/// ```
+/// use zeitner_runtime::{AbsoluteTolerances, InvalidOption, StepError, Vector};
+///
+/// let support = AbsoluteTolerances { q: Vector::<2>::new(1e-14, 1e-8), v: Vector::repeat(1e-8) };
+/// assert!(support.validate().is_ok());
+/// let zero = AbsoluteTolerances { q: Vector::<2>::new(0.0, 1e-8), ..support };
+/// assert_eq!(zero.validate(), Err(StepError::InvalidOption(InvalidOption::ErrorTolerances)));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AbsoluteTolerances<const N: usize> {
+    pub q: Vector<N>,
+    pub v: Vector<N>,
+}
+
+impl<const N: usize> AbsoluteTolerances<N> {
+    /// Refuses a tolerance that is not finite and positive, as [`Options::validate`] refuses
+    /// such an `atol`.
+    pub fn validate(&self) -> Result<(), StepError> {
+        let positive = |x: &Float| x.is_finite() && *x > 0.0;
+        match self.q.iter().chain(self.v.iter()).all(positive) {
+            true => Ok(()),
+            false => Err(StepError::InvalidOption(InvalidOption::ErrorTolerances)),
+        }
+    }
+
+    /// The absolute tolerances of component `i` of `q` and of `q'`: these, or `atol` for both
+    /// where none are given.
+    #[inline(always)]
+    pub(crate) fn of(given: Option<&Self>, atol: Float, i: usize) -> (Float, Float) {
+        given.map_or((atol, atol), |given| (given.q[i], given.v[i]))
+    }
 }
 
 /// `max_step`'s default `∞` as `None`: text formats such as JSON have no infinity.

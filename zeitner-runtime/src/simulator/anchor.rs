@@ -73,7 +73,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (q, v, a, t, lambda) = (end.q, end.v, end.a, end.t, end.lambda);
         let order = self.error_order();
         let model = &mut self.model;
-        starting_step(self.options.step, (&q, &v, &a), order, |h| {
+        let absolute = self.absolute.as_ref();
+        starting_step((self.options.step, absolute), (&q, &v, &a), order, |h| {
             let after = (q + v * h, v + a * h);
             let acceleration = model.acceleration(&after.0, &after.1, t + h, &lambda);
             acceleration.ok().map(|acceleration| acceleration.a)

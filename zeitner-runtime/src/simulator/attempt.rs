@@ -207,7 +207,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             steady_velocity_tolerance: self.embedded_order().is_some_and(|order| order < 3)
                 || self.active.is_stiff(),
             tolerance: self.model.tightened(newton_tolerance(
-                &self.options,
+                (&self.options, self.absolute.as_ref()),
                 (&self.q, &self.v),
                 &self.jacobian_row_scale,
                 S::POSITION_CONSTRAINTS,
@@ -217,6 +217,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             exact: self.options.exact(),
             accept_linearised: self.options.accept_linearised_update,
             step: self.options.step,
+            absolute: self.absolute.as_ref(),
         };
         let outcome = multipliers::solve(
             &mut self.model,
@@ -265,7 +266,26 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         (h, t_end): (Float, Float),
     ) -> Result<Attempt<N, Z>, StepError> {
         let tolerance = self.options.constraint_tolerance;
-        let (point, gram) = end_point(&mut self.model, t_end, end.q, end.v, tolerance)?;
+        let (point, gram) = match end_point(&mut self.model, t_end, end.q, end.v, tolerance) {
+            Ok(consistent) => consistent,
+            // Velocities the end's sweeps could not bring onto the velocity rows: the try's
+            // Newton at its end did not converge, and a shorter one starts nearer.
+            Err(StepError::InconsistentStart {
+                worst_row,
+                residual,
+            }) => {
+                let cause = StepError::NewtonDidNotConverge {
+                    t: t_end,
+                    step: h,
+                    iterations: integrations,
+                    residual,
+                    worst_row,
+                };
+                let factor = self.options.controller.newton_failure_factor;
+                return Ok(Attempt::Rejected { factor, cause });
+            }
+            Err(error) => return Err(error),
+        };
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
             // `G` at the step start is the last end point's, where no gap can have opened since.
@@ -293,7 +313,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         let start = (&self.q, &self.v);
         let error = error_norm(
-            self.options.step,
+            (self.options.step, self.absolute.as_ref()),
             start,
             (&end.q, &end.v),
             estimate,
@@ -303,7 +323,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             Some(low) => {
                 let none = Vector::zeros();
                 let low = error_norm(
-                    self.options.step,
+                    (self.options.step, self.absolute.as_ref()),
                     start,
                     (&end.q, &end.v),
                     Some(low),

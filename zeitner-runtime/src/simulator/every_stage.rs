@@ -51,7 +51,7 @@ impl<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'_, S
         // As the Newton of the held multipliers would hold `g`: down to what the state's
         // rounding and the step's error scales allow.
         let tolerance = self.model.tightened(newton_tolerance(
-            &self.options,
+            (&self.options, self.absolute.as_ref()),
             (&self.q, &self.v),
             &self.jacobian_row_scale,
             S::POSITION_CONSTRAINTS,

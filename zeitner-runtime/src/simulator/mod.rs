@@ -39,7 +39,7 @@ use crate::gaps::GapSet;
 use crate::method::{AnyMethod, EndSensitivity, Method};
 use crate::model::Model;
 use crate::multipliers::Predictor;
-use crate::options::{InnerMethod, MultiplierModel, Options};
+use crate::options::{AbsoluteTolerances, InnerMethod, MultiplierModel, Options};
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
 use crate::output::{Statistics, StepReport, StopReason};
@@ -89,6 +89,8 @@ pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     /// Whether the steps are bound by stability, for `Automatic`'s change of method.
     stiffness: StiffnessTest,
     options: Options,
+    /// Per-coordinate absolute tolerances in place of the options' `atol`, if set.
+    absolute: Option<AbsoluteTolerances<N>>,
     controller: Controller,
     predictor: Predictor<Z>,
     /// The integration state; `v` is raw unless velocities are projected into the state.
@@ -158,6 +160,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             active: options.method.first(options.multipliers, options.step),
             stiffness: StiffnessTest::default(),
             options,
+            absolute: None,
             controller: Controller::starting(),
             predictor: Predictor::default(),
             q: point.q,

@@ -6,7 +6,7 @@ use crate::consistency::consistent_start;
 use crate::control::{bounds, Progress, StiffnessTest};
 use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
-use crate::options::{InnerMethod, Options, StepControl};
+use crate::options::{AbsoluteTolerances, InnerMethod, Options, StepControl};
 use crate::scalar::Float;
 use crate::storage::Storage;
 use crate::system::ConstrainedSystem;
@@ -80,6 +80,56 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             StepControl::Adaptive { .. } => self.planned_step.clamp(min, max),
         };
         Ok(())
+    }
+
+    /// Measures each coordinate's error, of `q` and of `q'`, against its own absolute tolerance
+    /// instead of the options' one `atol` (`None`: the options' `atol` again), with adaptive
+    /// steps; kept across [`Simulator::set_options`]. Refused (and nothing changed) where one is
+    /// not finite and positive.
+    ///
+    /// # Example
+    ///
+    /// A coordinate that moves a million times less than the other (a stiff support's
+    /// deflection) held to `rtol` of its own size:
+    ///
+    /// ```
+    /// use zeitner::{constrained_system, AbsoluteTolerances, Options, Simulator, Start, Vector};
+    ///
+    /// pub struct Pendulum { pub m: f64, pub l: f64, pub g: f64 }
+    ///
+    /// #[constrained_system]
+    /// impl Pendulum {
+    ///     fn mass(&self) -> [f64; 2] { [self.m, self.m] }
+    ///     fn force(&self) -> [f64; 2] { [0.0, -self.m * self.g] }
+    ///     fn constraints(&self, [x, y]: [f64; 2]) -> [f64; 1] { [x * x + y * y - self.l * self.l] }
+    /// }
+    ///
+    /// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
+    /// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
+    /// let mut sim = Simulator::new(&pendulum, start, Options::default())?;
+    /// let tight = AbsoluteTolerances { q: Vector::new(1e-10, 1e-16), v: Vector::repeat(1e-10) };
+    /// sim.set_absolute_tolerances(Some(tight))?;
+    /// let negative = AbsoluteTolerances { q: Vector::new(-1.0, 1e-10), ..tight };
+    /// assert!(sim.set_absolute_tolerances(Some(negative)).is_err());
+    /// sim.advance_to(0.1, |_| {})?;
+    /// # Ok::<(), zeitner::StepError>(())
+    /// ```
+    pub fn set_absolute_tolerances(
+        &mut self,
+        tolerances: Option<AbsoluteTolerances<N>>,
+    ) -> Result<(), StepError> {
+        if let Some(tolerances) = &tolerances {
+            tolerances.validate()?;
+        }
+        self.absolute = tolerances;
+        // New tolerances may cure a stall, as new options may.
+        self.progress = Progress::default();
+        Ok(())
+    }
+
+    /// The per-coordinate absolute tolerances set by [`Simulator::set_absolute_tolerances`].
+    pub fn absolute_tolerances(&self) -> Option<&AbsoluteTolerances<N>> {
+        self.absolute.as_ref()
     }
 
     /// Makes the current state consistent to the options' tolerance, tighter than the one it

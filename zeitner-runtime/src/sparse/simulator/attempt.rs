@@ -216,7 +216,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         let point = self.consistent_point(end.q, v, t_end, false)?;
         let frozen = self.freezing_error(h, &point.lambda);
         let error = error_norm(
-            self.options.step,
+            (self.options.step, None),
             (&self.q, &self.v),
             (&end.q, &end.v),
             end.error,

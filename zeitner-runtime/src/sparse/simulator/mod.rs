@@ -135,7 +135,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
         simulator.start(q0, v0, t0)?;
         let end = simulator.last.end;
         let (q, v, t, lambda) = (end.q, end.v, end.t, end.lambda);
-        simulator.planned_step = starting_step(options.step, (&q, &v, &end.a), 5, |h| {
+        simulator.planned_step = starting_step((options.step, None), (&q, &v, &end.a), 5, |h| {
             let after = (q + v * h, v + end.a * h);
             simulator
                 .acceleration(&after.0, &after.1, t + h, &lambda)
