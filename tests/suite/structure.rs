@@ -153,6 +153,86 @@ fn a_thousand_coordinates_run_on_a_test_thread_s_stack() {
     );
 }
 
+/// Every inner method with each multiplier model it takes builds its simulator and steps at
+/// 1 024 coordinates on a thread with the 2 MiB stack a test thread has: what grows with N sits
+/// on the heap for all of them, not only for ESDIRK 5(4). The multipliers solved at every stage
+/// (and `Automatic`, which starts so) get 4 MiB here: the tests' `opt-level = 1` keeps their
+/// stage's points in frames that release builds merge, and they overflow 2 MiB in this
+/// profile only (the scaling report's stack column, in release: 2 MiB for Verner 9(8)).
+#[test]
+fn every_method_steps_a_thousand_coordinates_on_a_test_thread_s_stack() {
+    use MultiplierModel::{Automatic, Constant, EveryStage, Quadratic};
+    let fixed = |step| StepControl::Fixed { step };
+    let adaptive = StepControl::adaptive(1e-6);
+    let held = [
+        (InnerMethod::Rk4 { substeps: 1 }, Constant, fixed(1e-9)),
+        (InnerMethod::DormandPrince54, Constant, adaptive),
+        (InnerMethod::DormandPrince54, Quadratic, adaptive),
+        (InnerMethod::Sdirk2, Quadratic, fixed(1e-5)),
+        (InnerMethod::Esdirk32, Quadratic, adaptive),
+        (InnerMethod::Esdirk43, Quadratic, adaptive),
+        (InnerMethod::Esdirk54, Quadratic, adaptive),
+        (
+            InnerMethod::GeneralizedAlpha { rho_inf: 0.8 },
+            Constant,
+            fixed(1e-5),
+        ),
+    ];
+    let every_stage = [
+        (InnerMethod::Rk4 { substeps: 1 }, EveryStage, fixed(1e-9)),
+        (InnerMethod::DormandPrince54, EveryStage, adaptive),
+        (InnerMethod::Dop853, EveryStage, adaptive),
+        (InnerMethod::Verner98, EveryStage, adaptive),
+        (InnerMethod::Hem5, EveryStage, adaptive),
+        (InnerMethod::Automatic, Automatic, adaptive),
+    ];
+    ten_steps_at_a_thousand_coordinates(&held, 2);
+    ten_steps_at_a_thousand_coordinates(&every_stage, 4);
+}
+
+/// Ten steps of the 1 024-coordinate column with each of `cases`, on a thread of `mib` MiB.
+fn ten_steps_at_a_thousand_coordinates(
+    cases: &[(InnerMethod, MultiplierModel, StepControl)],
+    mib: usize,
+) {
+    let owned = cases.to_vec();
+    let run = std::thread::Builder::new()
+        .stack_size(mib << 20)
+        .spawn(move || {
+            let scene = Structure512::paper();
+            let (q0, v0) = scene.start();
+            let start = Start {
+                q: Vector::from(q0),
+                v: Vector::from(v0),
+                t: 0.0,
+            };
+            let ten_steps = |&(method, multipliers, step)| {
+                let options = Options {
+                    method,
+                    multipliers,
+                    step,
+                    ..Options::default()
+                };
+                let mut sim = Simulator::new(&scene, start, options).map_err(|e| e.to_string())?;
+                for _ in 0..10 {
+                    sim.step().map_err(|e| e.to_string())?;
+                }
+                let end = sim.last().end;
+                Ok::<_, String>((end.t, end.q.amax(), end.lambda.amax()))
+            };
+            owned.iter().map(ten_steps).collect::<Vec<_>>()
+        })
+        .unwrap();
+    let ends = run.join().expect("no stack overflow");
+    for ((method, multipliers, _), end) in cases.iter().zip(ends) {
+        let (t, q, lambda) = end.unwrap_or_else(|e| panic!("{method:?}, {multipliers:?}: {e}"));
+        println!(
+            "{mib} MiB, {method:?}, {multipliers:?}: t {t:.3e}, |q| {q:.3e}, |λ| {lambda:.3e}"
+        );
+        assert!(t > 0.0 && q.is_finite() && lambda.is_finite() && lambda > 0.0);
+    }
+}
+
 /// The default options on the stiff column: DOP853 finds its steps bound by the overdamped
 /// high modes' stability and hands over to ESDIRK 4(3) (the default `rtol` 1e-8 is below
 /// `ESDIRK43_FROM_RTOL`), which follows the modes. Dormand–Prince

@@ -57,16 +57,19 @@ enum Stepper {
     /// `Simulator` on the storage the scene chose (sparse from 64 coordinates), with the gap.
     OwnEsdirk54,
     OwnDopri,
+    /// Verner's 9(8) with the multipliers at every stage: the default's first method.
+    OwnVerner,
 }
 
 impl Stepper {
-    const ALL: [Stepper; 6] = [
+    const ALL: [Stepper; 7] = [
         Stepper::SparseRk4,
         Stepper::SparseRk4Tight,
         Stepper::SparseDopri,
         Stepper::DenseRk4,
         Stepper::OwnEsdirk54,
         Stepper::OwnDopri,
+        Stepper::OwnVerner,
     ];
 
     fn name(self) -> &'static str {
@@ -77,6 +80,7 @@ impl Stepper {
             Stepper::DenseRk4 => "dense-rk4-exactQ",
             Stepper::OwnEsdirk54 => "esdirk54-quadratic",
             Stepper::OwnDopri => "dopri5",
+            Stepper::OwnVerner => "verner98-every-stage",
         }
     }
 
@@ -85,7 +89,7 @@ impl Stepper {
     /// `SparseSimulator` and, while it fits, the dense storage.
     fn steps(self, family: &str, coordinates: usize) -> bool {
         match self {
-            Stepper::OwnEsdirk54 | Stepper::OwnDopri => family == "structure",
+            Stepper::OwnEsdirk54 | Stepper::OwnDopri | Stepper::OwnVerner => family == "structure",
             Stepper::DenseRk4 => family != "structure" && coordinates <= DENSE_LIMIT,
             _ => family != "structure",
         }
@@ -94,7 +98,7 @@ impl Stepper {
     /// Simulated time of a timed run: the structures' before the strut engages.
     fn end(self) -> f64 {
         match self {
-            Stepper::OwnEsdirk54 | Stepper::OwnDopri => 0.05,
+            Stepper::OwnEsdirk54 | Stepper::OwnDopri | Stepper::OwnVerner => 0.05,
             _ => END,
         }
     }
@@ -130,6 +134,12 @@ impl Stepper {
             },
             Stepper::OwnDopri => Options {
                 method: InnerMethod::DormandPrince54,
+                step: StepControl::adaptive(1e-6),
+                ..Options::default()
+            },
+            Stepper::OwnVerner => Options {
+                method: InnerMethod::Verner98,
+                multipliers: zeitner::MultiplierModel::EveryStage,
                 step: StepControl::adaptive(1e-6),
                 ..Options::default()
             },
@@ -219,7 +229,7 @@ fn run_here<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     end: f64,
 ) -> Result<Run, String> {
     match path {
-        Stepper::DenseRk4 | Stepper::OwnEsdirk54 | Stepper::OwnDopri => {
+        Stepper::DenseRk4 | Stepper::OwnEsdirk54 | Stepper::OwnDopri | Stepper::OwnVerner => {
             run_dense(scene, q0, path.options(), end)
         }
         _ => run_sparse(scene, q0, path.options(), end),
@@ -589,7 +599,7 @@ fn markdown(rows: &[Row], floor: &Floor) -> String {
          language's loops (`zeitner-bench/src/scaling/families.rs`); 0.2 s of simulated time. The structures: the paper's subject as a lumped-mass column \
          (`zeitner-scenes/src/structure.rs`, 2 coordinates per node, 4 constraints of which one is the strut's gap, highest frequency growing as the nodes squared), \
          0.05 s before the strut engages or 2 000 steps, whichever comes first (`TIMED_STEPS`: Dormand–Prince's steps on the damped columns are bound by their overdamped modes' stability), on the one `Simulator` with the storage the scene chose (dense below 64 coordinates, sparse from there): \
-         `esdirk54-quadratic` and `dopri5` adaptive at rtol 1e-6. `sparse-rk4` and `dense-rk4-exactQ`: fixed steps \
+         `esdirk54-quadratic`, `dopri5` and `verner98-every-stage` (the multipliers at every stage) adaptive at rtol 1e-6. `sparse-rk4` and `dense-rk4-exactQ`: fixed steps \
          of 1 ms, constraint tolerance 1e-10 (the default); `sparse-rk4-eps1e-12`: the same at 1e-12, where the error matches the floor's; `sparse-dopri5`: adaptive, rtol 1e-6, constant multipliers. CPU time per step, median of the timed runs after a warm-up. \
          The floor: a hand-written O(n) index-1 RK4 of the same chain with a tridiagonal solve per stage and the same 1 ms step (it drifts \
          off the constraints; Zeitner does not). Error: `max |q - q_ref|` at 0.2 s against the sparse simulator at rtol 1e-12. Stack: the \
