@@ -1218,11 +1218,13 @@ pub enum FailureClass {
 }
 
 /// The accepted steps over which a case that used up its budget must have moved the time: the
-/// runtime's promise, four windows of 100 crawling steps ending the run with `Stalled`
-/// (`control::CRAWL_WINDOWS` × `STALL_STEPS`). A shorter window flagged runs the rule was about
-/// to end: seeds 433113 and 537127 crawled through their last 200 of 1 500 steps, and with a
-/// budget of 4 000 the first ended `Stalled` at step 1 555 and the second moved on.
-pub const STALL_WINDOW: usize = 400;
+/// runtime's promise. It ends a run with `Stalled` after four windows of 100 crawling steps in a
+/// row (`control::CRAWL_WINDOWS` × `STALL_STEPS`), counted from where its own windows start, so
+/// a crawl that begins within one is ended within 499 steps. A shorter window flagged runs the
+/// rule was about to end: seeds 433113 and 537127 crawled through their last 200 of 1 500 steps
+/// (433113 through its last 400 too), and with a budget of 4 000 the first ended `Stalled` at
+/// step 1 555 and the second moved on.
+pub const STALL_WINDOW: usize = 500;
 
 impl FailureClass {
     pub const ALL: [FailureClass; 9] = [
@@ -2687,6 +2689,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                     );
                 }
                 (self.trace)(format!("{call}: set_options: Ok"));
+                // New options may cure a stall: the runtime watches the next steps afresh.
+                self.outcome.recent_steps.clear();
                 if let StepControl::Adaptive { atol, .. } = options.step {
                     self.set_absolute_tolerances(call, atol)?;
                 }
@@ -2782,8 +2786,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Run<'s, '_,
                 self.stop = self.stop.filter(|&s| s > t);
                 // A run started afresh: its steps are measured against its own, not those
                 // before (a run that went to t = 1e60 and restarted at 1e-308 is not stalled
-                // where its steps are a millionth of those).
+                // where its steps are a millionth of those); its stall window starts afresh with
+                // it, as the runtime's watch does (seed 433113 crawled to 4.6e-8 s, was
+                // re-initialised at 0.99 s and used up its budget 345 steps later).
                 self.outcome.largest_step = 0.0;
+                self.outcome.recent_steps.clear();
             }
             Err(error) => {
                 before.unchanged(sim, &call, &error)?;

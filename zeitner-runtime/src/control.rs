@@ -450,8 +450,9 @@ pub(crate) fn newton_tolerance<const N: usize, const Z: usize>(
 }
 
 /// Weighted RMS norm of the error estimate (the embedded one plus `frozen`, in `q` and `q'`)
-/// with the scale `atol_i + rtol·max(|x₁|, |x₂|)` per component (`atol`, or `absolute`'s); 0 with fixed steps or without an
-/// estimate, infinite when the estimate is not finite (so that the step is rejected).
+/// with the scale `atol_i + rtol·max(|x₁|, |x₂|)` per component (`atol_i` the options' `atol`,
+/// or `absolute`'s); 0 with fixed steps or without an estimate, infinite when the estimate is
+/// not finite (so that the step is rejected).
 #[inline]
 pub(crate) fn error_norm<const N: usize>(
     (step, absolute): (StepControl, Option<&AbsoluteTolerances<N>>),
@@ -629,6 +630,45 @@ mod tests {
             let factor = Controller::rejected(&SETTINGS, error, 5);
             assert!((0.2..=0.9).contains(&factor), "{error}: {factor}");
         }
+    }
+
+    /// Per-coordinate tolerances weigh each component by its own: equal to the options' `atol`
+    /// they change nothing; a coordinate held a thousand times tighter counts a thousand times
+    /// more.
+    #[test]
+    fn per_coordinate_tolerances_weigh_each_component_by_its_own() {
+        let step = StepControl::adaptive(1e-6).with_atol(1e-9);
+        let (q, v) = (Vector::<2>::new(1.0, 1e-6), Vector::<2>::new(0.5, 0.0));
+        let estimate = Some((Vector::<2>::new(1e-9, 1e-12), Vector::<2>::new(1e-9, 1e-12)));
+        let zero = Vector::<2>::zeros();
+        let norm = |absolute: Option<&AbsoluteTolerances<2>>| {
+            error_norm(
+                (step, absolute),
+                (&q, &v),
+                (&q, &v),
+                estimate,
+                (&zero, &zero),
+            )
+        };
+        let same = AbsoluteTolerances {
+            q: Vector::repeat(1e-9),
+            v: Vector::repeat(1e-9),
+        };
+        assert_eq!(norm(Some(&same)), norm(None));
+        let tight = AbsoluteTolerances {
+            q: Vector::<2>::new(1e-9, 1e-12),
+            ..same
+        };
+        // The second position's term goes from (1e-12 / 1.000001e-9)² to (1e-12 / 2e-12)².
+        let expected = |second: Float| {
+            let scale_q0 = 1e-9 + 1e-6;
+            let scale_v0 = 1e-9 + 0.5e-6;
+            let terms = [1e-9 / scale_q0, second, 1e-9 / scale_v0, 1e-12 / 1e-9];
+            Lm::sqrt(terms.iter().map(|x| x * x).sum::<Float>() / 4.0)
+        };
+        let relative = |a: Float, b: Float| (a - b).abs() / b;
+        assert!(relative(norm(None), expected(1e-12 / (1e-9 + 1e-12))) < 1e-12);
+        assert!(relative(norm(Some(&tight)), expected(0.5)) < 1e-12);
     }
 
     #[test]

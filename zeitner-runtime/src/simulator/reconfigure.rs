@@ -107,9 +107,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// let pendulum = Pendulum { m: 1.0, l: 1.0, g: 9.81 };
     /// let start = Start { q: Vector::<2>::new(1.0, 0.0), v: Vector::zeros(), t: 0.0 };
     /// let mut sim = Simulator::new(&pendulum, start, Options::default())?;
-    /// let tight = AbsoluteTolerances { q: Vector::new(1e-10, 1e-16), v: Vector::repeat(1e-10) };
+    /// let tight = AbsoluteTolerances { q: Vector::<2>::new(1e-10, 1e-16), v: Vector::repeat(1e-10) };
     /// sim.set_absolute_tolerances(Some(tight))?;
-    /// let negative = AbsoluteTolerances { q: Vector::new(-1.0, 1e-10), ..tight };
+    /// let negative = AbsoluteTolerances { q: Vector::<2>::new(-1.0, 1e-10), ..tight };
     /// assert!(sim.set_absolute_tolerances(Some(negative)).is_err());
     /// sim.advance_to(0.1, |_| {})?;
     /// # Ok::<(), zeitner::StepError>(())
