@@ -421,9 +421,9 @@ pub enum StepControl {
 /// Absolute tolerances of adaptive steps per coordinate, of `q` and of `q'`, in place of
 /// [`StepControl::Adaptive`]'s one `atol` ([`crate::Simulator::set_absolute_tolerances`]):
 /// each component's error is measured against `atol_i + rtol·|x_i|`. A coordinate that moves
-/// far less than the others needs its own: a stiff support deflected by a micrometre under a
-/// force `k·x` has that force only as accurate as `x`, which one `atol` for a metre-sized
-/// structure leaves unchecked.
+/// far less than the others needs its own: a stiff support deflected by a micrometre carries a
+/// force `k·x + c·x'` only as accurate as its deflection and its speed, which one `atol` for a
+/// metre-sized structure leaves unchecked.
 ///
 /// ```
 /// use zeitner_runtime::{AbsoluteTolerances, InvalidOption, StepError, Vector};
