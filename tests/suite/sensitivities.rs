@@ -651,8 +651,16 @@ mod refusals {
 
     #[test]
     fn what_the_sensitivities_cannot_follow_is_refused_by_name() {
-        let zero = Vector::<3>::zeros();
         let paper = SteamGenerator::paper();
+        let from_rest = |options| {
+            let zero = Vector::<3>::zeros();
+            let start = Start {
+                q: zero,
+                v: zero,
+                t: 0.0,
+            };
+            SensitivitySimulator::<_, 3, 2, 4>::new(&paper, start, options).err()
+        };
         // An implicit method, and HEM5, whose stages solve their own multipliers: the
         // sensitivities follow neither.
         for method in [InnerMethod::Esdirk54, InnerMethod::Hem5] {
@@ -660,32 +668,17 @@ mod refusals {
                 method,
                 ..Options::default()
             };
-            let error = SensitivitySimulator::<_, 3, 2, 4>::new(
-                &paper,
-                Start {
-                    q: zero,
-                    v: zero,
-                    t: 0.0,
-                },
-                options,
+            refused(
+                from_rest(options).unwrap(),
+                InvalidOption::SensitivitiesForMethod,
             );
-            refused(error.err().unwrap(), InvalidOption::SensitivitiesForMethod);
         }
         let raw = Options {
             velocity_projection: VelocityProjection::Off,
             ..Options::default()
         };
-        let error = SensitivitySimulator::<_, 3, 2, 4>::new(
-            &paper,
-            Start {
-                q: zero,
-                v: zero,
-                t: 0.0,
-            },
-            raw,
-        );
         refused(
-            error.err().unwrap(),
+            from_rest(raw).unwrap(),
             InvalidOption::SensitivitiesOfRawOutput,
         );
     }
