@@ -537,7 +537,7 @@ where
 /// The tableau's stiffness estimate of a step between two of its stages, `h|λ|` over its
 /// stability boundary; none where it compares the last stage with the step end, which the
 /// caller knows later ([`stiffness_against_end`]). Apart from the stage loop, which it would slow
-/// for every method (the stages' `q` are formed again from their slopes).
+/// for every method (the two stages' difference is formed again from their slopes).
 fn stiffness_estimate<const N: usize, const ST: usize>(
     tableau: &Tableau<ST>,
     start: (&Vector<N>, &Vector<N>),
@@ -548,11 +548,18 @@ fn stiffness_estimate<const N: usize, const ST: usize>(
     let ProbeStates::Stages(first, second) = probe.states else {
         return None;
     };
-    let stage = |i: usize| {
-        let (q, v) = stage_state(tableau, i, h, start, (kq, kv));
-        (q, v, kv[i])
-    };
-    stiffness_ratio(h, probe.boundary, stage(first), stage(second))
+    // The two stages' difference straight from the slopes, without forming either state.
+    let (mut dq, mut dv) = (Vector::<N>::zeros(), Vector::<N>::zeros());
+    for j in 0..second {
+        let w = h * (tableau.a[second][j] - tableau.a[first][j]);
+        if w != 0.0 {
+            dq += w * kq[j];
+            dv += w * kv[j];
+        }
+    }
+    let size = start.0.norm_squared() + start.1.norm_squared();
+    let slopes = (dq, dv, kv[second] - kv[first]);
+    stiffness_ratio(h, probe.boundary, slopes, size)
 }
 
 /// The stiffness estimate of a tableau that compares its last stage with the step end
@@ -569,21 +576,27 @@ pub(crate) fn stiffness_against_end<const N: usize, const ST: usize>(
         return None;
     };
     let (q, v) = stage_state(tableau, ST - 1, h, start, (kq, kv));
-    stiffness_ratio(h, probe.boundary, (q, v, kv[ST - 1]), end)
+    let (qe, ve, ae) = end;
+    let size = qe.norm_squared() + ve.norm_squared();
+    stiffness_ratio(h, probe.boundary, (qe - q, ve - v, ae - kv[ST - 1]), size)
 }
 
-/// `h‖Δf‖/‖Δy‖` between two states `(q, q', q'')` at one time, over the stability `boundary`;
-/// none where they coincide.
+/// `h‖Δf‖/‖Δy‖` between two states at one time, over the stability `boundary`, from their
+/// differences `(Δq, Δq', Δq'')` (`Δy = (Δq, Δq')`, `Δf = (Δq', Δq'')`); none where they coincide
+/// to the rounding of a state of squared size `size` (`|q|² + |q'|²`): states apart by their
+/// rounding only (a step of a few ulps) say nothing of the stiffness.
+#[inline]
 fn stiffness_ratio<const N: usize>(
     h: Float,
     boundary: Float,
-    (q1, v1, a1): (Vector<N>, Vector<N>, Vector<N>),
-    (q2, v2, a2): (Vector<N>, Vector<N>, Vector<N>),
+    (dq, dv, da): (Vector<N>, Vector<N>, Vector<N>),
+    size: Float,
 ) -> Option<Float> {
-    let dv = (v2 - v1).norm_squared();
-    let slope = (a2 - a1).norm_squared() + dv;
-    let state = (q2 - q1).norm_squared() + dv;
-    (state > 0.0).then(|| h * Lm::sqrt(slope / state) / boundary)
+    let dv = dv.norm_squared();
+    let slope = da.norm_squared() + dv;
+    let state = dq.norm_squared() + dv;
+    let floor = 64.0 * Float::EPSILON;
+    (state > floor * floor * size).then(|| h * Lm::sqrt(slope / state) / boundary)
 }
 
 #[cfg(test)]
