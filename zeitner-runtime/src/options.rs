@@ -928,3 +928,211 @@ mod serde_tests {
         );
     }
 }
+
+/// The automatic choices — the method a run starts with, the one it turns to when stiff, the
+/// multiplier model — as their documentation states them.
+#[cfg(all(
+    test,
+    feature = "implicit",
+    feature = "high-order",
+    feature = "quadratic-multipliers"
+))]
+mod choice_tests {
+    use super::*;
+
+    const EXPLICIT: [InnerMethod; 2] = [
+        InnerMethod::Rk4 { substeps: 1 },
+        InnerMethod::DormandPrince54,
+    ];
+    const PAIRS: [InnerMethod; 3] = [
+        InnerMethod::Dop853,
+        InnerMethod::Verner98,
+        InnerMethod::Hem5,
+    ];
+    const STIFF: [InnerMethod; 3] = [
+        InnerMethod::Esdirk32,
+        InnerMethod::Esdirk43,
+        InnerMethod::Esdirk54,
+    ];
+    const ALPHA: InnerMethod = InnerMethod::GeneralizedAlpha { rho_inf: 0.8 };
+
+    #[test]
+    fn automatic_starts_with_the_pair_for_the_tolerance() {
+        let every_stage = [MultiplierModel::Automatic, MultiplierModel::EveryStage];
+        for multipliers in every_stage {
+            let first = |step| InnerMethod::Automatic.first(multipliers, step);
+            assert_eq!(
+                first(StepControl::adaptive(VERNER_FROM_RTOL)),
+                InnerMethod::Verner98
+            );
+            assert_eq!(first(StepControl::adaptive(1e-9)), InnerMethod::Verner98);
+            assert_eq!(
+                first(StepControl::adaptive(10.0 * VERNER_FROM_RTOL)),
+                InnerMethod::Dop853
+            );
+            assert_eq!(
+                first(StepControl::Fixed { step: 1e-3 }),
+                InnerMethod::Dop853
+            );
+        }
+        // Held multipliers: Dormand–Prince, whatever the step.
+        for held in [MultiplierModel::Constant, MultiplierModel::Quadratic] {
+            let first = InnerMethod::Automatic.first(held, StepControl::adaptive(1e-9));
+            assert_eq!(first, InnerMethod::DormandPrince54);
+        }
+        // A method the user chose is kept.
+        for method in EXPLICIT
+            .into_iter()
+            .chain(PAIRS)
+            .chain(STIFF)
+            .chain([ALPHA])
+        {
+            let step = StepControl::adaptive(1e-9);
+            assert_eq!(method.first(MultiplierModel::Automatic, step), method);
+        }
+    }
+
+    #[test]
+    fn only_automatic_turns_implicit_and_to_the_esdirk_for_the_tolerance() {
+        let when_stiff = |step| InnerMethod::Automatic.when_stiff(step);
+        let at_the_switch = StepControl::adaptive(ESDIRK43_FROM_RTOL);
+        assert_eq!(when_stiff(at_the_switch), Some(InnerMethod::Esdirk43));
+        let looser = StepControl::adaptive(10.0 * ESDIRK43_FROM_RTOL);
+        assert_eq!(when_stiff(looser), Some(InnerMethod::Esdirk54));
+        let fixed = StepControl::Fixed { step: 1e-3 };
+        assert_eq!(when_stiff(fixed), Some(InnerMethod::Esdirk54));
+        for method in EXPLICIT
+            .into_iter()
+            .chain(PAIRS)
+            .chain(STIFF)
+            .chain([ALPHA])
+        {
+            assert_eq!(method.when_stiff(at_the_switch), None, "{method:?}");
+        }
+    }
+
+    #[test]
+    fn the_pairs_refuse_held_multipliers_and_the_rest_take_every_model() {
+        let held = [MultiplierModel::Constant, MultiplierModel::Quadratic];
+        let every_stage = [MultiplierModel::Automatic, MultiplierModel::EveryStage];
+        for pair in PAIRS {
+            assert!(pair.needs_every_stage() && !pair.is_implicit());
+            assert!(held.iter().all(|&m| !pair.takes(m)), "{pair:?}");
+            assert!(every_stage.iter().all(|&m| pair.takes(m)), "{pair:?}");
+        }
+        for method in EXPLICIT
+            .into_iter()
+            .chain(STIFF)
+            .chain([ALPHA, InnerMethod::Automatic])
+        {
+            assert!(!method.needs_every_stage(), "{method:?}");
+            assert!(held.into_iter().chain(every_stage).all(|m| method.takes(m)));
+        }
+        assert!(STIFF
+            .into_iter()
+            .chain([ALPHA])
+            .all(InnerMethod::is_implicit));
+        assert!(STIFF.into_iter().all(InnerMethod::is_stiff) && !ALPHA.is_stiff());
+        // Adaptive steps need an estimate: the ESDIRKs, Dormand–Prince and the pairs have one.
+        let estimated = STIFF
+            .into_iter()
+            .chain(PAIRS)
+            .chain([InnerMethod::DormandPrince54]);
+        assert!(estimated.into_iter().all(InnerMethod::has_error_estimate));
+        assert!(![InnerMethod::Rk4 { substeps: 1 }, ALPHA]
+            .iter()
+            .any(|m| m.has_error_estimate()));
+    }
+
+    #[test]
+    fn automatic_multipliers_resolve_for_the_method_and_the_rows() {
+        use MultiplierModel::{Automatic, Constant, EveryStage, Quadratic};
+        let rk4 = InnerMethod::Rk4 { substeps: 1 };
+        // (model, method, position rows, rows): what it resolves to.
+        let cases = [
+            (Automatic, InnerMethod::Verner98, 1, 1, EveryStage),
+            (Automatic, InnerMethod::Dop853, 1, 2, EveryStage),
+            // Fixed RK4 on position rows keeps the paper's constant multipliers...
+            (Automatic, rk4, 2, 2, Constant),
+            // ...and takes quadratic ones where a velocity-level row would lose order.
+            (Automatic, rk4, 1, 2, Quadratic),
+            (Automatic, InnerMethod::DormandPrince54, 2, 2, Quadratic),
+            (Automatic, InnerMethod::Esdirk54, 1, 1, Quadratic),
+            // Generalised-α evaluates the multipliers at the step's ends only.
+            (Automatic, ALPHA, 1, 2, Constant),
+            // An implicit method cannot solve them at every stage: its automatic model instead.
+            (EveryStage, InnerMethod::Esdirk43, 1, 1, Quadratic),
+            (EveryStage, ALPHA, 1, 1, Constant),
+            // A model the user chose is kept.
+            (Constant, InnerMethod::Esdirk54, 1, 2, Constant),
+            (Quadratic, rk4, 1, 1, Quadratic),
+            (EveryStage, rk4, 1, 1, EveryStage),
+        ];
+        for (model, method, position_rows, rows, resolved) in cases {
+            let got = model.resolve(method, position_rows, rows);
+            assert_eq!(
+                got, resolved,
+                "{model:?} with {method:?}, {position_rows}/{rows} rows"
+            );
+        }
+    }
+
+    #[test]
+    fn options_that_cannot_work_are_refused_by_name() {
+        use InvalidOption::AdaptiveNeedsErrorEstimate;
+        let refused = |options: Options| match options.validate() {
+            Err(StepError::InvalidOption(option)) => Some(option),
+            _ => None,
+        };
+        let with = |method, multipliers| Options {
+            method,
+            multipliers,
+            ..Options::default()
+        };
+        let for_method = Some(InvalidOption::MultipliersForMethod);
+        assert_eq!(
+            refused(with(InnerMethod::Verner98, MultiplierModel::Constant)),
+            for_method
+        );
+        assert_eq!(
+            refused(with(InnerMethod::Esdirk54, MultiplierModel::EveryStage)),
+            for_method
+        );
+        assert_eq!(refused(with(ALPHA, MultiplierModel::Quadratic)), for_method);
+        let no_damping_range = InnerMethod::GeneralizedAlpha { rho_inf: 1.5 };
+        let spectral = Some(InvalidOption::SpectralRadius);
+        assert_eq!(
+            refused(with(no_damping_range, MultiplierModel::Constant)),
+            spectral
+        );
+        let substeps = InnerMethod::Rk4 { substeps: 0 };
+        let rk4 = with(substeps, MultiplierModel::Constant);
+        assert_eq!(refused(rk4), Some(InvalidOption::Substeps));
+        // Every substep may take every Newton integration: their product is bounded.
+        let heavy = Options {
+            max_newton_iterations: 1000,
+            ..with(
+                InnerMethod::Rk4 { substeps: 100 },
+                MultiplierModel::Constant,
+            )
+        };
+        assert_eq!(refused(heavy), Some(InvalidOption::StepWork));
+        // Adaptive steps (the default's) need an error estimate; fixed ones take any method.
+        let adaptive = AdaptiveNeedsErrorEstimate;
+        for method in EXPLICIT
+            .into_iter()
+            .chain(PAIRS)
+            .chain(STIFF)
+            .chain([ALPHA])
+        {
+            let chosen = with(method, MultiplierModel::Automatic);
+            let expected = (!method.has_error_estimate()).then_some(adaptive);
+            assert_eq!(refused(chosen), expected, "{method:?}");
+            let fixed = Options {
+                step: StepControl::Fixed { step: 1e-3 },
+                ..chosen
+            };
+            assert_eq!(refused(fixed), None, "{method:?}");
+        }
+    }
+}
