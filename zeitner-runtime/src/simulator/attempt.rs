@@ -286,7 +286,53 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             }
             Err(error) => return Err(error),
         };
-        let error = self.step_error(end, (&point, &gram), (constant, K > 1), t_end)?;
+        let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
+        let frozen = if constant && adaptive {
+            // `G` at the step start is the last end point's, where no gap can have opened since.
+            let g1 = match &self.record.state_gram {
+                Some((at, _)) if S::UNILATERAL_CONSTRAINTS == 0 => at.jacobian,
+                _ => self.model.jacobian(&self.q, &self.v, self.time())?,
+            };
+            let start = (&g1, &self.lambda, self.time());
+            let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
+            freezing_error(&mut self.model, start, end_state)?
+        } else {
+            (Vector::zeros(), Vector::zeros())
+        };
+        // Both `g` and `ġ` hold at the end by construction: the estimate's normal part measures
+        // only the embedded solution, see `consistency::tangential`.
+        let projected = K > 1 && adaptive && self.embedded_order().is_some_and(|k| k < 3);
+        let estimate = match end.error {
+            Some(estimate) if projected => Some(tangential(
+                &mut self.model,
+                (&end.q, t_end),
+                &gram,
+                estimate,
+            )?),
+            other => other,
+        };
+        let start = (&self.q, &self.v);
+        let error = error_norm(
+            (self.options.step, self.absolute.as_ref()),
+            start,
+            (&end.q, &end.v),
+            estimate,
+            (&frozen.0, &frozen.1),
+        );
+        let error = match end.error_low {
+            Some(low) => {
+                let none = Vector::zeros();
+                let low = error_norm(
+                    (self.options.step, self.absolute.as_ref()),
+                    start,
+                    (&end.q, &end.v),
+                    Some(low),
+                    (&none, &none),
+                );
+                tempered(error, low)
+            }
+            None => error,
+        };
         if !(error <= 1.0) {
             let factor = Controller::rejected(&self.options.controller, error, self.error_order());
             let cause = StepError::StepSizeTooSmall {
@@ -308,70 +354,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             planned: h,
             positions_projected: false,
         }))
-    }
-
-    /// The try's error norm against the tolerances: the inner method's estimate (its normal
-    /// part left out where only the embedded solution has one), with the error of holding `G`
-    /// over the step where the multipliers were held constant, tempered by a lower-order estimate
-    /// where the method has one. `(constant, polynomial)`: whether the multipliers were held
-    /// constant, and whether their polynomial had more than one coefficient. Inlined: its one
-    /// caller is on every step's path, and called it cost 44 more instructions a step
-    /// (callgrind, the pendulum with Dormand–Prince and constant multipliers).
-    #[inline(always)]
-    fn step_error(
-        &mut self,
-        end: &StepEnd<N>,
-        (point, gram): (&Point<N, Z>, &Gram<N, Z>),
-        (constant, polynomial): (bool, bool),
-        t_end: Float,
-    ) -> Result<Float, StepError> {
-        let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
-        let frozen = if constant && adaptive {
-            // `G` at the step start is the last end point's, where no gap can have opened since.
-            let g1 = match &self.record.state_gram {
-                Some((at, _)) if S::UNILATERAL_CONSTRAINTS == 0 => at.jacobian,
-                _ => self.model.jacobian(&self.q, &self.v, self.time())?,
-            };
-            let start = (&g1, &self.lambda, self.time());
-            let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
-            freezing_error(&mut self.model, start, end_state)?
-        } else {
-            (Vector::zeros(), Vector::zeros())
-        };
-        // Both `g` and `ġ` hold at the end by construction: the estimate's normal part measures
-        // only the embedded solution, see `consistency::tangential`.
-        let projected = polynomial && adaptive && self.embedded_order().is_some_and(|k| k < 3);
-        let estimate = match end.error {
-            Some(estimate) if projected => Some(tangential(
-                &mut self.model,
-                (&end.q, t_end),
-                gram,
-                estimate,
-            )?),
-            other => other,
-        };
-        let start = (&self.q, &self.v);
-        let error = error_norm(
-            (self.options.step, self.absolute.as_ref()),
-            start,
-            (&end.q, &end.v),
-            estimate,
-            (&frozen.0, &frozen.1),
-        );
-        Ok(match end.error_low {
-            Some(low) => {
-                let none = Vector::zeros();
-                let low = error_norm(
-                    (self.options.step, self.absolute.as_ref()),
-                    start,
-                    (&end.q, &end.v),
-                    Some(low),
-                    (&none, &none),
-                );
-                tempered(error, low)
-            }
-            None => error,
-        })
     }
 
     /// The order of the inner method's embedded solution, if it has one.
