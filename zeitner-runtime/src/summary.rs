@@ -191,3 +191,58 @@ impl core::fmt::Display for SceneSummary {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::string::ToString;
+
+    #[test]
+    fn each_function_is_shown_with_its_nonzeros_of_its_entries_and_its_operations() {
+        const BLOCKS: [BlockSummary; 2] = [
+            BlockSummary {
+                name: "dq",
+                rows: 2,
+                cols: 2,
+                nonzeros: &[(0, 0), (1, 1)],
+            },
+            BlockSummary {
+                name: "dv",
+                rows: 2,
+                cols: 2,
+                nonzeros: &[(1, 0)],
+            },
+        ];
+        const OPS: OpCounts = OpCounts {
+            adds: 5,
+            muls: 7,
+            divs: 1,
+            transcendental: 2,
+            opaque_calls: 1,
+        };
+        const FUNCTIONS: [FunctionSummary; 1] = [FunctionSummary {
+            name: "force_jacobians",
+            blocks: &BLOCKS,
+            ops: OPS,
+            ops_unshared: OpCounts { muls: 12, ..OPS },
+        }];
+        let summary = SceneSummary {
+            coordinates: 2,
+            position_constraints: 0,
+            velocity_constraints: 1,
+            mass: MassKind::Full,
+            time_dependent: true,
+            functions: &FUNCTIONS,
+        };
+        let shown = summary.to_string();
+        let lines: std::vec::Vec<&str> = shown.lines().collect();
+        assert!(
+            lines[0].ends_with("mass Full, time-dependent"),
+            "{}",
+            lines[0]
+        );
+        let row: std::vec::Vec<&str> = lines[2].split_whitespace().collect();
+        // 3 of 8 entries; add, mul, div; the library and opaque calls together; unshared total.
+        assert_eq!(row, ["force_jacobians", "3/8", "5", "7", "1", "3", "21"]);
+    }
+}

@@ -219,3 +219,125 @@ where
         self.scene.event_gradient(index, q, v, t)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mass::DiagonalMass;
+    use crate::storage::Dense;
+    use crate::testing::{swinging, Ball, SpringPendulum, PENDULUM};
+
+    /// A model whose answers are not the trait's defaults: every function the wrapper
+    /// forwards is seen to reach the scene.
+    fn forwards_the_model<S, const N: usize, const Z: usize, const P: usize>(
+        scene: &S,
+        (q, v, t): (&Vector<N>, &Vector<N>, Float),
+        lambda: &Vector<Z>,
+    ) where
+        S: ParametrisedSystem<N, Z, P, Mass = DiagonalMass<N>>,
+    {
+        let wrapped = WithStorage::<_, Dense>::new(scene);
+        let a = Vector::<N>::from_fn(|i, _| 0.5 - i as Float);
+        assert_eq!(wrapped.mass_matrix(q, t).0, scene.mass_matrix(q, t).0);
+        assert_eq!(wrapped.applied_force(q, v, t), scene.applied_force(q, v, t));
+        assert_eq!(
+            wrapped.constraint_residual(q, v, t),
+            scene.constraint_residual(q, v, t)
+        );
+        assert_eq!(
+            wrapped.constraint_jacobian(q, v, t),
+            scene.constraint_jacobian(q, v, t)
+        );
+        assert_eq!(
+            wrapped.constraint_position_partials(q, v, t),
+            scene.constraint_position_partials(q, v, t)
+        );
+        assert_eq!(
+            wrapped.constraint_rate(q, v, t),
+            scene.constraint_rate(q, v, t)
+        );
+        assert_eq!(
+            wrapped.constraint_acceleration_bias(q, v, t),
+            scene.constraint_acceleration_bias(q, v, t)
+        );
+        let (stage, own) = (wrapped.stage(q, v, t), scene.stage(q, v, t));
+        assert_eq!(
+            (stage.0 .0, stage.1, stage.2, stage.3),
+            (own.0 .0, own.1, own.2, own.3)
+        );
+        assert_eq!(
+            wrapped.force_jacobians(q, v, t),
+            scene.force_jacobians(q, v, t)
+        );
+        assert_eq!(
+            wrapped.constraint_force_jacobians(q, v, t, lambda),
+            scene.constraint_force_jacobians(q, v, t, lambda)
+        );
+        assert_eq!(
+            wrapped.mass_jacobian_product(q, t, &a),
+            scene.mass_jacobian_product(q, t, &a)
+        );
+        for gap in 0..S::UNILATERAL_CONSTRAINTS {
+            assert_eq!(wrapped.restitution(gap), scene.restitution(gap));
+            assert_eq!(wrapped.friction(gap), scene.friction(gap));
+        }
+        assert_eq!(wrapped.time_event_after(t), scene.time_event_after(t));
+        assert_eq!(wrapped.parameter_values(), scene.parameter_values());
+        assert_eq!(
+            wrapped.parameter_force(q, v, t, lambda, &a),
+            scene.parameter_force(q, v, t, lambda, &a)
+        );
+        assert_eq!(
+            wrapped.parameter_constraints(q, v, t),
+            scene.parameter_constraints(q, v, t)
+        );
+        assert_eq!(
+            wrapped.rate_jacobians(q, v, t),
+            scene.rate_jacobians(q, v, t)
+        );
+        assert_eq!(
+            wrapped.acceleration_constraint_jacobians(q, v, t, &a),
+            scene.acceleration_constraint_jacobians(q, v, t, &a)
+        );
+    }
+
+    #[test]
+    fn the_wrapped_pendulum_is_the_pendulum() {
+        let (q, v) = swinging();
+        forwards_the_model::<SpringPendulum, 2, 1, 2>(
+            &PENDULUM,
+            (&q, &v, 0.4),
+            &Vector::<1>::new(1.7),
+        );
+        type Wrapped<'a> = WithStorage<'a, SpringPendulum, Dense>;
+        assert_eq!(
+            <Wrapped as ConstrainedSystem<2, 1>>::POSITION_CONSTRAINTS,
+            <SpringPendulum as ConstrainedSystem<2, 1>>::POSITION_CONSTRAINTS
+        );
+        assert_eq!(
+            <Wrapped as ParametrisedSystem<2, 1, 2>>::PARAMETER_NAMES,
+            <SpringPendulum as ParametrisedSystem<2, 1, 2>>::PARAMETER_NAMES
+        );
+    }
+
+    #[test]
+    fn the_wrapped_ball_keeps_its_gap_and_restitution() {
+        let ball = Ball {
+            m: 2.0,
+            f: -3.0,
+            e: 0.6,
+        };
+        let wrapped = WithStorage::<_, Dense>::new(&ball);
+        type Wrapped<'a> = WithStorage<'a, Ball, Dense>;
+        assert_eq!(
+            <Wrapped as ConstrainedSystem<1, 1>>::UNILATERAL_CONSTRAINTS,
+            1
+        );
+        assert_eq!(wrapped.restitution(0), 0.6);
+        let (q, v) = (Vector::<1>::new(0.3), Vector::<1>::new(-1.0));
+        assert_eq!(
+            wrapped.constraint_residual(&q, &v, 0.0),
+            ball.constraint_residual(&q, &v, 0.0)
+        );
+    }
+}

@@ -126,3 +126,112 @@ pub(crate) fn weighted<const N: usize, const L: usize>(
     }
     (q, v)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{swinging, PENDULUM};
+
+    /// Euler's extension over one slope: `q₀ + s h k`, enough to see what `Continuous` does
+    /// with the step it holds.
+    struct Euler;
+
+    impl Extension<2, 1> for Euler {
+        type Polynomial = [Vector<2>; 4];
+
+        fn polynomial<S: ConstrainedSystem<2, Z>, const Z: usize>(
+            _: &mut Model<'_, S, 2, Z>,
+            (_, q, v, h): (Float, Vector<2>, Vector<2>, Float),
+            (kq, kv): &([Vector<2>; 1], [Vector<2>; 1]),
+            _: &Point<2, Z>,
+        ) -> Result<[Vector<2>; 4], StepError> {
+            Ok([q, v, h * kq[0], h * kv[0]])
+        }
+
+        fn evaluate([q, v, dq, dv]: &[Vector<2>; 4], s: Float) -> (Vector<2>, Vector<2>) {
+            (q + s * dq, v + s * dv)
+        }
+    }
+
+    fn point(t: Float, q: Vector<2>, v: Vector<2>) -> Point<2, 1> {
+        Point {
+            t,
+            q,
+            v,
+            a: Vector::zeros(),
+            lambda: Vector::zeros(),
+        }
+    }
+
+    /// A step of 0.1 from t = 0.2, its slopes set, and its start and end points.
+    fn held_step() -> (Continuous<2, 1, Euler>, Point<2, 1>, Point<2, 1>) {
+        let (q, v) = swinging();
+        let mut step = Continuous::<2, 1, Euler>::new();
+        step.slopes = ([Vector::<2>::new(1.0, -2.0)], [Vector::<2>::new(0.5, 4.0)]);
+        step.integrated((0.2, &q, &v), 0.1);
+        let end = point(0.1 + 0.2, q, v);
+        (step, point(0.2, q, v), end)
+    }
+
+    #[test]
+    fn the_slopes_are_those_of_the_step_they_were_integrated_for() {
+        let (mut step, start, _) = held_step();
+        let at = (start.t, &start.q, &start.v);
+        assert!(step.slopes_of(at, 0.1).is_some());
+        // The same step's size to the rounding of the times, not another step.
+        assert!(step.slopes_of(at, 0.1 * (1.0 + Float::EPSILON)).is_some());
+        assert!(step.slopes_of(at, 0.1 + 1e-12).is_none());
+        assert!(step.slopes_of((0.2, &start.v, &start.q), 0.1).is_none());
+        step.forget();
+        assert!(step.slopes_of(at, 0.1).is_none());
+    }
+
+    #[test]
+    fn a_state_within_the_step_is_its_polynomial_formed_once() {
+        let (mut step, start, end) = held_step();
+        let mut model = crate::model::Model::new(&PENDULUM).unwrap();
+        let (q, v) = step
+            .state(&mut model, (&start, &end), 0.25)
+            .unwrap()
+            .unwrap();
+        let half = 0.5 * 0.1;
+        assert!((q - (start.q + half * Vector::<2>::new(1.0, -2.0))).amax() < 1e-15);
+        assert!((v - (start.v + half * Vector::<2>::new(0.5, 4.0))).amax() < 1e-15);
+        // Formed by the first sample only: new slopes do not reach it until a new step.
+        step.slopes.0[0] = Vector::<2>::new(100.0, 100.0);
+        let again = step
+            .state(&mut model, (&start, &end), 0.25)
+            .unwrap()
+            .unwrap();
+        assert_eq!(again, (q, v));
+        step.integrated((start.t, &start.q, &start.v), 0.1);
+        let formed_anew = step
+            .state(&mut model, (&start, &end), 0.25)
+            .unwrap()
+            .unwrap();
+        assert_ne!(formed_anew.0, q);
+    }
+
+    #[test]
+    fn another_step_has_no_state_from_these_slopes() {
+        let (mut step, start, end) = held_step();
+        let mut model = crate::model::Model::new(&PENDULUM).unwrap();
+        let moved = point(start.t, start.q + Vector::<2>::new(1e-9, 0.0), start.v);
+        assert!(step.state(&mut model, (&moved, &end), 0.25).is_none());
+        let later_end = point(end.t + 1e-9, end.q, end.v);
+        assert!(step.state(&mut model, (&start, &later_end), 0.25).is_none());
+        step.forget();
+        assert!(step.state(&mut model, (&start, &end), 0.25).is_none());
+    }
+
+    #[test]
+    fn weighted_skips_the_slopes_of_zero_weight() {
+        let from = (Vector::<2>::new(1.0, 2.0), Vector::<2>::new(-1.0, 0.0));
+        let nan = Vector::<2>::new(Float::NAN, Float::NAN);
+        let kq = [Vector::<2>::new(1.0, 0.0), nan, Vector::<2>::new(0.0, 1.0)];
+        let kv = [Vector::<2>::new(2.0, 0.0), nan, Vector::<2>::new(0.0, -2.0)];
+        let (q, v) = weighted(from, 0.5, &[0.25, 0.0, 0.75], (&kq, &kv));
+        assert_eq!(q, Vector::<2>::new(1.125, 2.375));
+        assert_eq!(v, Vector::<2>::new(-0.75, -0.75));
+    }
+}

@@ -183,3 +183,117 @@ impl<const N: usize> Iteration<N, Matrix<N, N>> for DenseIteration<N> {
         self.factor.solve(b)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mass::MassMatrix;
+    use crate::system::ConstrainedSystem;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
+
+    /// `a = M⁻¹(F - Gᵀλ)` of the test pendulum with `λ` held.
+    fn acceleration(q: &Vector<2>, v: &Vector<2>, lambda: &Vector<1>) -> Vector<2> {
+        let p = &PENDULUM;
+        let reaction = p.constraint_jacobian(q, v, 0.0).transpose() * lambda;
+        (p.applied_force(q, v, 0.0) - reaction) / p.m
+    }
+
+    fn evaluated(q: &Vector<2>, v: &Vector<2>, lambda: &Vector<1>) -> DenseDerivatives<2> {
+        let factor = PENDULUM
+            .mass_matrix(q, 0.0)
+            .factor()
+            .expect("positive masses");
+        let a = acceleration(q, v, lambda);
+        let mut derivatives = <Dense as Storage<2>>::derivatives::<SpringPendulum, 1>().unwrap();
+        let at = AccelerationAt {
+            a: &a,
+            factor: &factor,
+        };
+        derivatives
+            .evaluate(&PENDULUM, (q, v, 0.0), lambda, at)
+            .unwrap();
+        derivatives
+    }
+
+    #[test]
+    fn the_derivatives_are_the_accelerations_central_differences() {
+        let (q, v) = swinging();
+        let lambda = Vector::<1>::new(2.7);
+        let derivatives = evaluated(&q, &v, &lambda);
+        let h = 1e-6;
+        for j in 0..2 {
+            let e = Vector::<2>::from_fn(|i, _| if i == j { h } else { 0.0 });
+            let by_q = (acceleration(&(q + e), &v, &lambda) - acceleration(&(q - e), &v, &lambda))
+                / (2.0 * h);
+            let by_v = (acceleration(&q, &(v + e), &lambda) - acceleration(&q, &(v - e), &lambda))
+                / (2.0 * h);
+            assert!(
+                (derivatives.dq().column(j) - by_q).amax() < 1e-8,
+                "∂a/∂q_{j}"
+            );
+            assert!(
+                (derivatives.dv().column(j) - by_v).amax() < 1e-8,
+                "∂a/∂q'_{j}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_slip_term_is_added_to_the_velocity_derivative_only() {
+        let (q, v) = swinging();
+        let lambda = Vector::<1>::new(2.7);
+        let mut derivatives = evaluated(&q, &v, &lambda);
+        let (dq, dv) = (*derivatives.dq(), *derivatives.dv());
+        let (x, y) = (Vector::<2>::new(1.0, -2.0), Vector::<2>::new(0.5, 3.0));
+        derivatives.add_to_dv(&x, &y);
+        assert_eq!(*derivatives.dq(), dq);
+        assert_eq!(*derivatives.dv(), dv + x * y.transpose());
+    }
+
+    #[test]
+    fn the_constraint_force_product_is_its_jacobian_times_the_vector() {
+        let (q, v) = swinging();
+        let lambda = Vector::<1>::new(-1.25);
+        let mut derivatives = evaluated(&q, &v, &lambda);
+        let x = Vector::<2>::new(0.3, -0.8);
+        let product = derivatives
+            .constraint_force_times(&PENDULUM, (&q, &v, 0.0), &lambda, &x)
+            .unwrap();
+        // `Gᵀλ = 2λ (x, y)`: its derivative in `q` is `2λ I`.
+        assert_eq!(product, 2.0 * lambda[0] * x);
+    }
+
+    #[test]
+    fn a_square_times_a_matrix_is_the_product_to_the_bit() {
+        let a = Matrix::<3, 3>::from_fn(|i, j| (1.0 + i as Float) / (2.0 + j as Float) - 0.3);
+        let x = Matrix::<3, 2>::from_fn(|i, j| 0.7 * i as Float - 1.1 * j as Float + 0.1);
+        assert_eq!(Square::<3>::times(&a, &x), a * x);
+    }
+
+    #[test]
+    fn the_iteration_solves_its_matrix_and_keeps_the_last_regular_one() {
+        let dq = Matrix::<2, 2>::new(-4.0, 1.0, 0.5, -9.0);
+        let dv = Matrix::<2, 2>::new(-0.3, 0.0, 0.2, -0.3);
+        let c = Combination {
+            identity: 1.0,
+            dv: 0.1,
+            dq: 0.01,
+        };
+        let mut iteration = <Dense as Storage<2>>::iteration::<SpringPendulum, 1>();
+        assert!(iteration.refresh(c, &dq, &dv));
+        let b = Matrix::<2, 2>::new(1.0, 0.0, -2.0, 3.0);
+        let matrix = c.identity * Matrix::<2, 2>::identity() - c.dv * dv - c.dq * dq;
+        assert!((matrix * iteration.solve(&b) - b).amax() < 1e-14);
+        assert_eq!(iteration.formed_dq_times(&b), dq * b);
+        // `0 I - 1 dv - 0 dq` with a singular `dv`: refused, the last factor and `dq` kept.
+        let singular = Combination {
+            identity: 0.0,
+            dv: 1.0,
+            dq: 0.0,
+        };
+        let before = iteration.solve(&b);
+        assert!(!iteration.refresh(singular, &Matrix::zeros(), &Matrix::zeros()));
+        assert_eq!(iteration.solve(&b), before);
+        assert_eq!(iteration.formed_dq_times(&b), dq * b);
+    }
+}
