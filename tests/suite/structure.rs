@@ -258,8 +258,14 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
             )
             .unwrap();
             assert_eq!(sim.method(), InnerMethod::Verner98);
+            let first = (sim.last().method, sim.last().multipliers);
             let t = modes.first_contact() - 1e-3;
-            sim.advance_to(t, |_| {}).unwrap();
+            // Each step's report names what took it.
+            let mut taken_by = Vec::new();
+            sim.advance_to(t, |report| {
+                taken_by.push((report.method, report.multipliers))
+            })
+            .unwrap();
             let errors = against(&sim.last().end, &modes.state(t));
             let statistics = sim.statistics();
             (
@@ -267,13 +273,25 @@ fn the_default_method_turns_implicit_on_the_stiff_column() {
                 sim.method(),
                 statistics.steps,
                 statistics.turned_implicit_after,
+                (first, taken_by),
             )
         })
         .unwrap();
-    let (errors, method, steps, turned) = run.join().unwrap();
+    let (errors, method, steps, turned, (first, taken_by)) = run.join().unwrap();
     println!("errors {errors:?}, {method:?} after {steps} steps, implicit after {turned:?}");
     assert_eq!(method, InnerMethod::Esdirk43);
     assert!(turned.is_some_and(|steps| steps <= 50), "{turned:?}");
+    // The start names the pair the run starts with; the steps switch once, after the step
+    // the statistics name, to the implicit method with quadratic multipliers.
+    let explicit = (InnerMethod::Verner98, MultiplierModel::EveryStage);
+    let implicit = (InnerMethod::Esdirk43, MultiplierModel::Quadratic);
+    assert_eq!(first, explicit);
+    let switch = taken_by.iter().position(|taken| *taken != explicit);
+    assert_eq!(switch.map(|k| k as u64), turned);
+    assert!(taken_by[switch.unwrap()..]
+        .iter()
+        .all(|taken| *taken == implicit));
+    assert_eq!(taken_by.len() as u64, steps);
     assert!(steps < 5_000, "{steps}");
     let within = [5e-9, 1e-7, 5e-6];
     assert!(errors.iter().zip(within).all(|(e, w)| *e < w), "{errors:?}");

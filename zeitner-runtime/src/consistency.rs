@@ -10,7 +10,7 @@ use crate::linalg::{
 };
 use crate::mass::MassFactor;
 use crate::model::{ConstraintDirections, FactorOf, Model, REDUNDANT_ROWS};
-use crate::options::StartPolicy;
+use crate::options::{InnerMethod, MultiplierModel, StartPolicy};
 use crate::outline::apart;
 use crate::output::{Point, StepReport};
 use crate::scalar::Float;
@@ -614,7 +614,8 @@ pub(crate) fn tangential<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
 }
 
 /// The report of a step from its end point, with the constraint forces and residuals there;
-/// `jacobian` is `G` at the end point if the caller has it already.
+/// `jacobian` is `G` at the end point if the caller has it already, `taken_by` the inner
+/// method and multiplier model that took the step.
 #[inline(always)]
 pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
@@ -623,6 +624,7 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
     step_multipliers: Vector<Z>,
     newton_iterations: u32,
     jacobian: Option<&Matrix<Z, N>>,
+    (method, multipliers): (InnerMethod, MultiplierModel),
 ) -> Result<StepReport<N, Z>, StepError> {
     let g = match jacobian {
         Some(g) => *g,
@@ -653,6 +655,8 @@ pub(crate) fn end_report<S: ConstrainedSystem<N, Z>, const N: usize, const Z: us
         residual,
         rate_residual,
         newton_iterations,
+        method,
+        multipliers,
     })
 }
 

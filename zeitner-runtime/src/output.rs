@@ -3,6 +3,7 @@
 //! simulator it borrows; the reports are made in `consistency`.)
 
 use crate::gaps::GapSet;
+use crate::options::{InnerMethod, MultiplierModel};
 use crate::scalar::Float;
 use crate::system::{Matrix, Vector};
 
@@ -33,7 +34,7 @@ pub struct Point<const N: usize, const Z: usize> {
 /// What one accepted step produced.
 ///
 /// ```
-/// use zeitner_runtime::{Float, Point, StepReport, Vector};
+/// use zeitner_runtime::{Float, InnerMethod, MultiplierModel, Point, StepReport, Vector};
 ///
 /// // A step of 1 ms of a pendulum (unit mass and length) hanging at rest.
 /// let rest = |t: Float| Point::<2, 1> {
@@ -44,6 +45,7 @@ pub struct Point<const N: usize, const Z: usize> {
 ///     start: rest(0.0), end: rest(1e-3), step_multipliers: Vector::<1>::new(9.81),
 ///     constraint_force: Vector::<2>::new(0.0, 9.81), // -Gᵀλ with G = (0, -1)
 ///     residual: Vector::zeros(), rate_residual: Vector::zeros(), newton_iterations: 1,
+///     method: InnerMethod::Rk4 { substeps: 1 }, multipliers: MultiplierModel::Constant,
 /// };
 /// assert_eq!(report.end.t - report.start.t, 1e-3);
 /// assert_eq!(report.constraint_force + Vector::<2>::new(0.0, -9.81), Vector::<2>::zeros());
@@ -68,6 +70,13 @@ pub struct StepReport<const N: usize, const Z: usize> {
     pub rate_residual: Vector<Z>,
     /// Integrations of the step (Newton sweeps), the first one included.
     pub newton_iterations: u32,
+    /// The inner method that took the step: the one chosen, or with
+    /// [`InnerMethod::Automatic`] the one it ran — its explicit pair, or its implicit method
+    /// once it found the run stiff (never `Automatic`).
+    pub method: InnerMethod,
+    /// How the step held its multipliers, resolved for `method` and the scene's rows
+    /// ([`MultiplierModel::resolve`]; never `Automatic`).
+    pub multipliers: MultiplierModel,
 }
 
 /// The derivatives of a reported point by the scene's `P` parameters, a column each
@@ -107,7 +116,7 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     /// step it extrapolates.
     ///
     /// ```
-    /// use zeitner_runtime::{Float, Point, StepReport, Vector};
+    /// use zeitner_runtime::{Float, InnerMethod, MultiplierModel, Point, StepReport, Vector};
     ///
     /// // A step from t = 0 to 0.5 of a coordinate accelerated uniformly, `q = t²`.
     /// let point = |t: Float| Point::<1, 1> {
@@ -118,6 +127,7 @@ impl<const N: usize, const Z: usize> StepReport<N, Z> {
     ///     start: point(0.0), end: point(0.5), step_multipliers: Vector::zeros(),
     ///     constraint_force: Vector::zeros(), residual: Vector::zeros(),
     ///     rate_residual: Vector::zeros(), newton_iterations: 1,
+    ///     method: InnerMethod::Rk4 { substeps: 1 }, multipliers: MultiplierModel::Constant,
     /// };
     /// assert_eq!(report.interpolate(0.5), report.end);
     /// let middle = report.interpolate(0.25); // exact for a quadratic
@@ -298,6 +308,8 @@ mod tests {
             residual: Vector::zeros(),
             rate_residual: Vector::zeros(),
             newton_iterations: 1,
+            method: InnerMethod::Rk4 { substeps: 1 },
+            multipliers: MultiplierModel::Constant,
         };
         for t in [1.0, 1.2, 1.37, 1.5] {
             let sampled = report.interpolate(t);

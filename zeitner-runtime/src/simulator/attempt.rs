@@ -399,6 +399,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         // some row depends on them.
         let raw = self.options.velocity_projection == VelocityProjection::Off;
         let known = (!raw || S::POSITION_CONSTRAINTS == Z).then_some(&step.gram.jacobian);
+        let taken_by = self.taken_by();
         let report = end_report(
             &mut self.model,
             self.record.last.end,
@@ -406,6 +407,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             step_multipliers,
             step.integrations,
             known,
+            taken_by,
         )?;
         self.t_carry = if landing {
             0.0

@@ -222,6 +222,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let last = &self.record.last;
         let (start, before) = (last.start, last.end);
         let step = (last.step_multipliers, last.newton_iterations);
+        let taken_by = (last.method, last.multipliers);
         let mut slipping = self.model.slipping();
         for k in to_slip.iter() {
             slipping.insert(k, self.model.cone_margin(k, &before.lambda).1);
@@ -237,7 +238,15 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (mut point, _) =
             consistent_start(&mut self.model, state, tolerance, StartPolicy::Project)?;
         let slipped = contact::slip_beyond_cone(&mut self.model, &mut point, tolerance)?;
-        let last = end_report(&mut self.model, start, point, step.0, step.1, None)?;
+        let last = end_report(
+            &mut self.model,
+            start,
+            point,
+            step.0,
+            step.1,
+            None,
+            taken_by,
+        )?;
         let watch = watch_at(&mut self.model, &last.end, tolerance)?;
         // With a first step given, from it again (a slip starting from rest is stiff: from the
         // step planned while it stuck, Verner's pair lost its step on the stability report's
@@ -287,9 +296,18 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let last = &self.record.last;
         let (start, end) = (last.start, last.end);
         let step = (last.step_multipliers, last.newton_iterations);
+        let taken_by = (last.method, last.multipliers);
         let tolerance = self.options.constraint_tolerance;
         let settled = consistent_point(&mut self.model, end.t, end.q, end.v).and_then(|point| {
-            let report = end_report(&mut self.model, start, point, step.0, step.1, None)?;
+            let report = end_report(
+                &mut self.model,
+                start,
+                point,
+                step.0,
+                step.1,
+                None,
+                taken_by,
+            )?;
             Ok((report, watch_at(&mut self.model, &point, tolerance)?))
         });
         let (report, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
@@ -371,7 +389,16 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<(), StepError> {
         let before = self.record.last.end;
         let tolerance = self.options.constraint_tolerance;
-        let last = end_report(&mut self.model, before, point, point.lambda, 0, None)?;
+        let taken_by = self.taken_by();
+        let last = end_report(
+            &mut self.model,
+            before,
+            point,
+            point.lambda,
+            0,
+            None,
+            taken_by,
+        )?;
         let watch = watch_at(&mut self.model, &last.end, tolerance)?;
         self.anchor((last, watch, Some(report)), Forget::Controller);
         self.record.last_impact = Some(impact);

@@ -147,7 +147,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let mut model = Model::new(system)?;
         let (point, start_report) = start_point(&mut model, (start.q, start.v, start.t), &options)?;
         let start_jacobian = model.jacobian(&point.q, &point.v, point.t)?;
-        let last = report_at(&mut model, point, Some(&start_jacobian))?;
+        let first = options.method.first(options.multipliers, options.step);
+        let held = options
+            .multipliers
+            .resolve(first, S::POSITION_CONSTRAINTS, Z);
+        let last = report_at(&mut model, point, Some(&start_jacobian), (first, held))?;
         let watch = watch_at(&mut model, &point, options.constraint_tolerance)?;
         let mut simulator = Simulator {
             model,
@@ -157,7 +161,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 options.step,
             )),
             end_sensitivity: S::Storage::hold(EndSensitivity::zeros()),
-            active: options.method.first(options.multipliers, options.step),
+            active: first,
             stiffness: StiffnessTest::default(),
             options,
             absolute: None,
@@ -258,6 +262,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.options
             .multipliers
             .resolve(method, S::POSITION_CONSTRAINTS, Z)
+    }
+
+    /// The inner method and multiplier model the next step takes, which its report names.
+    fn taken_by(&self) -> (InnerMethod, MultiplierModel) {
+        (self.active, self.multiplier_model())
     }
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports

@@ -140,12 +140,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let end = self.record.last.end;
         let (tolerance, policy) = (self.options.constraint_tolerance, self.options.start);
         let masks = self.model.saved_masks();
+        let taken_by = self.taken_by();
         let model = &mut self.model;
         let anchored = model.prepare(&end.q, end.t).and_then(|()| {
             let (point, report) =
                 consistent_start(model, (end.q, end.v, end.t), tolerance, policy)?;
             let jacobian = model.jacobian(&point.q, &point.v, end.t)?;
-            let last = report_at(model, point, Some(&jacobian))?;
+            let last = report_at(model, point, Some(&jacobian), taken_by)?;
             Ok((last, watch_at(model, &last.end, tolerance)?, report))
         });
         let (last, watch, report) = anchored.inspect_err(|_| self.model.restore_masks(masks))?;

@@ -9,7 +9,7 @@ use crate::error::{InvalidOption, StepError};
 use crate::events::Watch;
 use crate::gaps::GapSet;
 use crate::model::Model;
-use crate::options::{MultiplierModel, Options, StepControl};
+use crate::options::{InnerMethod, MultiplierModel, Options, StepControl};
 use crate::output::{Point, StepReport};
 use crate::scalar::Float;
 use crate::system::{
@@ -31,7 +31,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             .model
             .acceleration(&point.q, &point.v, point.t, &lambda)?
             .a;
-        self.record.last = report_at(&mut self.model, point, None)?;
+        let taken_by = self.taken_by();
+        self.record.last = report_at(&mut self.model, point, None, taken_by)?;
         self.lambda = lambda;
         self.record.start_report.multipliers = lambda;
         self.record.start_report.multipliers_given = true;
@@ -49,9 +50,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     ) -> Result<StartReport<N, Z>, StepError> {
         let masks = self.model.saved_masks();
         let tolerance = self.options.constraint_tolerance;
+        let taken_by = self.taken_by();
         let started =
             start_point(&mut self.model, (q, v, t), &self.options).and_then(|(point, report)| {
-                let last = report_at(&mut self.model, point, None)?;
+                let last = report_at(&mut self.model, point, None, taken_by)?;
                 Ok((last, report, watch_at(&mut self.model, &point, tolerance)?))
             });
         let (last, report, watch) = started.inspect_err(|_| self.model.restore_masks(masks))?;
@@ -169,13 +171,15 @@ pub(super) fn start_slipping_above<S: ConstrainedSystem<N, Z>, const N: usize, c
     Ok((point, report))
 }
 
-/// The report of a run standing at the consistent `point` (a start's, whose `G` may be known).
+/// The report of a run standing at the consistent `point` (a start's, whose `G` may be known),
+/// naming the method and multiplier model its next step takes.
 pub(super) fn report_at<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     model: &mut Model<'_, S, N, Z>,
     point: Point<N, Z>,
     jacobian: Option<&Matrix<Z, N>>,
+    taken_by: (InnerMethod, MultiplierModel),
 ) -> Result<StepReport<N, Z>, StepError> {
-    end_report(model, point, point, point.lambda, 0, jacobian)
+    end_report(model, point, point, point.lambda, 0, jacobian, taken_by)
 }
 
 /// The watch of events and gaps at a point.

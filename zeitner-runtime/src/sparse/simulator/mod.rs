@@ -127,7 +127,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             stop_time: None,
             planned_step: 0.0,
             progress: Progress::default(),
-            last: empty_report(t0),
+            last: empty_report(t0, method_run(options.method)),
             start_report: StartReport::unmoved(),
             statistics: Statistics::default(),
             evaluations: Evaluations::default(),
@@ -161,6 +161,8 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> SparseSimul
             residual: self.residual(&end.q, &end.v, end.t)?,
             rate_residual: self.rate(&end.q, &end.v, end.t)?,
             newton_iterations: integrations,
+            method: method_run(self.options.method),
+            multipliers: MultiplierModel::Constant,
         })
     }
 
@@ -338,7 +340,15 @@ fn check_options<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     }
 }
 
-fn empty_report<const N: usize, const Z: usize>(t: Float) -> StepReport<N, Z> {
+/// The inner method the steps run for the options' one: `Automatic` is Dormand–Prince here.
+fn method_run(method: InnerMethod) -> InnerMethod {
+    match method {
+        InnerMethod::Automatic => InnerMethod::DormandPrince54,
+        chosen => chosen,
+    }
+}
+
+fn empty_report<const N: usize, const Z: usize>(t: Float, method: InnerMethod) -> StepReport<N, Z> {
     let point = Point {
         t,
         q: Vector::zeros(),
@@ -354,5 +364,7 @@ fn empty_report<const N: usize, const Z: usize>(t: Float) -> StepReport<N, Z> {
         residual: Vector::zeros(),
         rate_residual: Vector::zeros(),
         newton_iterations: 0,
+        method,
+        multipliers: MultiplierModel::Constant,
     }
 }
