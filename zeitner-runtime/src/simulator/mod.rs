@@ -39,7 +39,7 @@ use crate::gaps::GapSet;
 use crate::method::{AnyMethod, EndSensitivity, Method};
 use crate::model::Model;
 use crate::multipliers::Predictor;
-use crate::options::{AbsoluteTolerances, InnerMethod, MultiplierModel, Options};
+use crate::options::{AbsoluteTolerances, InnerMethod, Options};
 #[cfg(feature = "dense-output")]
 use crate::output::Point;
 use crate::output::{Statistics, StepReport, StopReason};
@@ -252,21 +252,6 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
 
     pub fn options(&self) -> &Options {
         &self.options
-    }
-
-    /// The multiplier model the steps use: the options' one, with
-    /// [`MultiplierModel::Automatic`] resolved for the inner method and the scene's rows
-    /// ([`MultiplierModel::resolve`]).
-    pub fn multiplier_model(&self) -> MultiplierModel {
-        let method = self.active;
-        self.options
-            .multipliers
-            .resolve(method, S::POSITION_CONSTRAINTS, Z)
-    }
-
-    /// The inner method and multiplier model the next step takes, which its report names.
-    fn taken_by(&self) -> (InnerMethod, MultiplierModel) {
-        (self.active, self.multiplier_model())
     }
 
     /// Steps stop exactly at `t` (once; [`Simulator::step`] then reports

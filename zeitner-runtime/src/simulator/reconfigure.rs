@@ -6,7 +6,7 @@ use crate::consistency::consistent_start;
 use crate::control::{bounds, Progress, StiffnessTest};
 use crate::error::{InvalidOption, StepError};
 use crate::method::{AnyMethod, Method};
-use crate::options::{AbsoluteTolerances, InnerMethod, Options, StepControl};
+use crate::options::{AbsoluteTolerances, InnerMethod, MultiplierModel, Options, StepControl};
 use crate::scalar::Float;
 use crate::storage::Storage;
 use crate::system::ConstrainedSystem;
@@ -205,6 +205,21 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     /// the one it has chosen so far.
     pub fn method(&self) -> InnerMethod {
         self.active
+    }
+
+    /// The multiplier model the steps use: the options' one, with
+    /// [`MultiplierModel::Automatic`] resolved for the inner method and the scene's rows
+    /// ([`MultiplierModel::resolve`]).
+    pub fn multiplier_model(&self) -> MultiplierModel {
+        let method = self.active;
+        self.options
+            .multipliers
+            .resolve(method, S::POSITION_CONSTRAINTS, Z)
+    }
+
+    /// The inner method and multiplier model the next step takes, which its report names.
+    pub(super) fn taken_by(&self) -> (InnerMethod, MultiplierModel) {
+        (self.active, self.multiplier_model())
     }
 
     /// Learns from an accepted step's `h|λ|` estimate whether the run is stiff; once it is,
