@@ -1419,6 +1419,16 @@ fn check_report<const N: usize, const Z: usize>(
             format!("{call}: Ok with non-finite last().{field}: {report:?}"),
         );
     }
+    // The method and multipliers that took the step, resolved: never `Automatic`, and the
+    // explicit pairs only with the multipliers at every stage.
+    let (method, multipliers) = (report.method, report.multipliers);
+    let resolved = method != InnerMethod::Automatic && multipliers != MultiplierModel::Automatic;
+    if !resolved || (method.needs_every_stage() && multipliers != MultiplierModel::EveryStage) {
+        return fail(
+            FailureClass::ReportInconsistency,
+            format!("{call}: the report names {method:?} with {multipliers:?} multipliers"),
+        );
+    }
     for (j, g) in report.residual.iter().enumerate() {
         // A row linear in the velocities with unit coefficients (the fuzzer's velocity rows)
         // cannot be evaluated closer than a few ulps of the largest velocity: the runtime
