@@ -7,7 +7,7 @@ use super::every_stage::retried;
 use super::*;
 use crate::error::{Row, RowSet};
 use crate::events::{Crossing, Watched};
-use crate::options::StepControl;
+use crate::options::{MultiplierModel, StepControl};
 use crate::output::Direction;
 use crate::system::Matrix;
 use crate::testing::{swinging, Ball, PENDULUM};
