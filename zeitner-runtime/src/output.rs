@@ -442,3 +442,29 @@ mod interpolation_tests {
         assert!((got - v(t)).abs() < 1e-15, "{got} against {}", v(t));
     }
 }
+
+#[cfg(all(test, feature = "serde"))]
+mod serde_tests {
+    use super::*;
+
+    /// A stop reason and a point survive JSON exactly.
+    #[test]
+    fn reports_round_trip_through_json() {
+        let reason = StopReason::Event {
+            index: 3,
+            direction: Direction::Falling,
+        };
+        let text = serde_json::to_string(&reason).unwrap();
+        assert_eq!(serde_json::from_str::<StopReason>(&text).unwrap(), reason);
+        let mut point = Point::<2, 1> {
+            t: 0.5,
+            q: Vector::<2>::new(1.0, -2.0),
+            v: Vector::zeros(),
+            a: Vector::zeros(),
+            lambda: Vector::<1>::new(3.0),
+        };
+        point.v[1] = 0.25;
+        let text = serde_json::to_string(&point).unwrap();
+        assert_eq!(serde_json::from_str::<Point<2, 1>>(&text).unwrap(), point);
+    }
+}

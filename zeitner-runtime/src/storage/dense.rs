@@ -187,86 +187,30 @@ impl<const N: usize> Iteration<N, Matrix<N, N>> for DenseIteration<N> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mass::{DiagonalMass, MassMatrix};
-    use crate::scalar::Lm;
-    use crate::summary::{MassKind, Sparsity};
+    use crate::mass::MassMatrix;
+    use crate::system::ConstrainedSystem;
+    use crate::testing::{swinging, SpringPendulum, PENDULUM};
 
-    /// A pendulum `x² + y² = L²` with a cubic spring in `x` and damping, by hand: `M = m I`,
-    /// `F = (-k x³ - d x', -m g - d y')`, `Gᵀλ = 2λ (x, y)`. Written here as a
-    /// [`JacobianSource`] only, which is all a storage reads.
-    struct SpringPendulum;
-
-    const M: Float = 1.3;
-    const K: Float = 4.0;
-    const D: Float = 0.3;
-
-    impl SpringPendulum {
-        fn acceleration(q: &Vector<2>, v: &Vector<2>, lambda: &Vector<1>) -> Vector<2> {
-            let force = Vector::<2>::new(-K * q[0] * q[0] * q[0] - D * v[0], -M * 9.81 - D * v[1]);
-            (force - 2.0 * lambda[0] * q) / M
-        }
-    }
-
-    impl JacobianSource<2, 1> for SpringPendulum {
-        const MASS_IS_CONSTANT: bool = true;
-        const DYNAMICS_DEPEND_ON_VELOCITY: bool = true;
-        const MASS: MassKind = MassKind::ConstantDiagonal;
-        const SPARSITY: Option<Sparsity> = None;
-        fn force_jacobians(
-            &self,
-            q: &Vector<2>,
-            _: &Vector<2>,
-            _: Float,
-        ) -> (Matrix<2, 2>, Matrix<2, 2>) {
-            let dq = Matrix::<2, 2>::new(-3.0 * K * q[0] * q[0], 0.0, 0.0, 0.0);
-            (dq, -D * Matrix::<2, 2>::identity())
-        }
-        fn constraint_force_jacobians(
-            &self,
-            _: &Vector<2>,
-            _: &Vector<2>,
-            _: Float,
-            lambda: &Vector<1>,
-        ) -> (Matrix<2, 2>, Matrix<2, 2>) {
-            ((2.0 * lambda[0]) * Matrix::identity(), Matrix::zeros())
-        }
-        fn mass_jacobian_product(&self, _: &Vector<2>, _: Float, _: &Vector<2>) -> Matrix<2, 2> {
-            Matrix::zeros()
-        }
-        // The dense storage reads the dense Jacobians only.
-        fn force_jacobian_nonzeros(&self, _: &Vector<2>, _: &Vector<2>, _: Float, _: &mut [Float]) {
-            unreachable!("read by the sparse storage only")
-        }
-        fn constraint_force_jacobian_nonzeros(
-            &self,
-            _: &Vector<2>,
-            _: &Vector<2>,
-            _: Float,
-            _: &Vector<1>,
-            _: &mut [Float],
-        ) {
-            unreachable!("read by the sparse storage only")
-        }
-    }
-
-    /// A point on the circle of length 1.1, swinging.
-    fn swinging() -> (Vector<2>, Vector<2>) {
-        let (s, c) = (Lm::sin(0.7), Lm::cos(0.7));
-        (1.1 * Vector::<2>::new(s, -c), 1.5 * Vector::<2>::new(c, s))
+    /// `a = M⁻¹(F - Gᵀλ)` of the test pendulum with `λ` held.
+    fn acceleration(q: &Vector<2>, v: &Vector<2>, lambda: &Vector<1>) -> Vector<2> {
+        let p = &PENDULUM;
+        let reaction = p.constraint_jacobian(q, v, 0.0).transpose() * lambda;
+        (p.applied_force(q, v, 0.0) - reaction) / p.m
     }
 
     fn evaluated(q: &Vector<2>, v: &Vector<2>, lambda: &Vector<1>) -> DenseDerivatives<2> {
-        let factor = DiagonalMass(Vector::<2>::repeat(M))
+        let factor = PENDULUM
+            .mass_matrix(q, 0.0)
             .factor()
             .expect("positive masses");
-        let a = SpringPendulum::acceleration(q, v, lambda);
+        let a = acceleration(q, v, lambda);
         let mut derivatives = <Dense as Storage<2>>::derivatives::<SpringPendulum, 1>().unwrap();
         let at = AccelerationAt {
             a: &a,
             factor: &factor,
         };
         derivatives
-            .evaluate(&SpringPendulum, (q, v, 0.0), lambda, at)
+            .evaluate(&PENDULUM, (q, v, 0.0), lambda, at)
             .unwrap();
         derivatives
     }
@@ -276,12 +220,13 @@ mod tests {
         let (q, v) = swinging();
         let lambda = Vector::<1>::new(2.7);
         let derivatives = evaluated(&q, &v, &lambda);
-        let a = |q: &Vector<2>, v: &Vector<2>| SpringPendulum::acceleration(q, v, &lambda);
         let h = 1e-6;
         for j in 0..2 {
             let e = Vector::<2>::from_fn(|i, _| if i == j { h } else { 0.0 });
-            let by_q = (a(&(q + e), &v) - a(&(q - e), &v)) / (2.0 * h);
-            let by_v = (a(&q, &(v + e)) - a(&q, &(v - e))) / (2.0 * h);
+            let by_q = (acceleration(&(q + e), &v, &lambda) - acceleration(&(q - e), &v, &lambda))
+                / (2.0 * h);
+            let by_v = (acceleration(&q, &(v + e), &lambda) - acceleration(&q, &(v - e), &lambda))
+                / (2.0 * h);
             assert!(
                 (derivatives.dq().column(j) - by_q).amax() < 1e-8,
                 "∂a/∂q_{j}"
@@ -312,7 +257,7 @@ mod tests {
         let mut derivatives = evaluated(&q, &v, &lambda);
         let x = Vector::<2>::new(0.3, -0.8);
         let product = derivatives
-            .constraint_force_times(&SpringPendulum, (&q, &v, 0.0), &lambda, &x)
+            .constraint_force_times(&PENDULUM, (&q, &v, 0.0), &lambda, &x)
             .unwrap();
         // `Gᵀλ = 2λ (x, y)`: its derivative in `q` is `2λ I`.
         assert_eq!(product, 2.0 * lambda[0] * x);
