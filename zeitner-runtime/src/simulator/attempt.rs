@@ -4,8 +4,7 @@
 use super::Simulator;
 use crate::consistency::{end_point, end_report, tangential, Gram};
 use crate::control::{
-    error_norm, freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, tempered,
-    Controller,
+    freezing_error, newton_tolerance, next_step_size, plan_step, retry_step, step_error, Controller,
 };
 use crate::error::{RowSet, StepError};
 use crate::method::{Method, Start, StepEnd};
@@ -288,14 +287,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         };
         let adaptive = matches!(self.options.step, StepControl::Adaptive { .. });
         let frozen = if constant && adaptive {
-            // `G` at the step start is the last end point's, where no gap can have opened since.
-            let g1 = match &self.record.state_gram {
-                Some((at, _)) if S::UNILATERAL_CONSTRAINTS == 0 => at.jacobian,
-                _ => self.model.jacobian(&self.q, &self.v, self.time())?,
-            };
-            let start = (&g1, &self.lambda, self.time());
-            let end_state = (&gram.jacobian, &point.lambda, t_end, &end.q);
-            freezing_error(&mut self.model, start, end_state)?
+            self.frozen_error(&gram, &point.lambda, (t_end, &end.q))?
         } else {
             (Vector::zeros(), Vector::zeros())
         };
@@ -311,28 +303,13 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             )?),
             other => other,
         };
-        let start = (&self.q, &self.v);
-        let error = error_norm(
+        let error = step_error(
             (self.options.step, self.absolute.as_ref()),
-            start,
+            (&self.q, &self.v),
             (&end.q, &end.v),
-            estimate,
+            (estimate, end.error_low),
             (&frozen.0, &frozen.1),
         );
-        let error = match end.error_low {
-            Some(low) => {
-                let none = Vector::zeros();
-                let low = error_norm(
-                    (self.options.step, self.absolute.as_ref()),
-                    start,
-                    (&end.q, &end.v),
-                    Some(low),
-                    (&none, &none),
-                );
-                tempered(error, low)
-            }
-            None => error,
-        };
         if !(error <= 1.0) {
             let factor = Controller::rejected(&self.options.controller, error, self.error_order());
             let cause = StepError::StepSizeTooSmall {
@@ -354,6 +331,27 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             planned: h,
             positions_projected: false,
         }))
+    }
+
+    /// The error of holding the multipliers constant while `G` turns over the step to the
+    /// consistent end `gram`, `lambda_end` (see [`freezing_error`]).
+    fn frozen_error(
+        &mut self,
+        gram: &Gram<N, Z>,
+        lambda_end: &Vector<Z>,
+        (t_end, q_end): (Float, &Vector<N>),
+    ) -> Result<(Vector<N>, Vector<N>), StepError> {
+        // `G` at the step start is the last end point's, where no gap can have opened since.
+        let g1 = match &self.record.state_gram {
+            Some((at, _)) if S::UNILATERAL_CONSTRAINTS == 0 => at.jacobian,
+            _ => self.model.jacobian(&self.q, &self.v, self.time())?,
+        };
+        let start = (&g1, &self.lambda, self.time());
+        freezing_error(
+            &mut self.model,
+            start,
+            (&gram.jacobian, lambda_end, t_end, q_end),
+        )
     }
 
     /// The order of the inner method's embedded solution, if it has one.

@@ -13,7 +13,7 @@ use crate::gaps::GapSet;
 use crate::options::StartPolicy;
 use crate::options::StepControl;
 use crate::outline::apart;
-use crate::output::{Direction, Point, StopReason};
+use crate::output::{Direction, Point, StepReport, StopReason};
 use crate::scalar::Float;
 use crate::system::ConstrainedSystem;
 
@@ -219,10 +219,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         &mut self,
         (to_slip, to_stop): (GapSet, GapSet),
     ) -> Result<(GapSet, GapSet), StepError> {
-        let last = &self.record.last;
-        let (start, before) = (last.start, last.end);
-        let step = (last.step_multipliers, last.newton_iterations);
-        let taken_by = (last.method, last.multipliers);
+        let before = self.record.last.end;
         let mut slipping = self.model.slipping();
         for k in to_slip.iter() {
             slipping.insert(k, self.model.cone_margin(k, &before.lambda).1);
@@ -238,15 +235,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let (mut point, _) =
             consistent_start(&mut self.model, state, tolerance, StartPolicy::Project)?;
         let slipped = contact::slip_beyond_cone(&mut self.model, &mut point, tolerance)?;
-        let last = end_report(
-            &mut self.model,
-            start,
-            point,
-            step.0,
-            step.1,
-            None,
-            taken_by,
-        )?;
+        let last = self.last_step_ending_at(point)?;
         let watch = watch_at(&mut self.model, &last.end, tolerance)?;
         // With a first step given, from it again (a slip starting from rest is stiff: from the
         // step planned while it stuck, Verner's pair lost its step on the stability report's
@@ -293,21 +282,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
     pub(super) fn open_contacts(&mut self, gaps: GapSet) -> Result<(), StepError> {
         let open = self.model.open_gaps();
         self.model.set_open_gaps(open.union(gaps));
-        let last = &self.record.last;
-        let (start, end) = (last.start, last.end);
-        let step = (last.step_multipliers, last.newton_iterations);
-        let taken_by = (last.method, last.multipliers);
+        let end = self.record.last.end;
         let tolerance = self.options.constraint_tolerance;
         let settled = consistent_point(&mut self.model, end.t, end.q, end.v).and_then(|point| {
-            let report = end_report(
-                &mut self.model,
-                start,
-                point,
-                step.0,
-                step.1,
-                None,
-                taken_by,
-            )?;
+            let report = self.last_step_ending_at(point)?;
             Ok((report, watch_at(&mut self.model, &point, tolerance)?))
         });
         let (report, watch) = settled.inspect_err(|_| self.model.set_open_gaps(open))?;
@@ -316,6 +294,23 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         self.lambda = point.lambda;
         self.restart_predictors();
         Ok(())
+    }
+
+    /// The last step's report made again with the end `end` (the contacts changed there): its
+    /// start, multipliers, iterations and method kept.
+    fn last_step_ending_at(&mut self, end: Point<N, Z>) -> Result<StepReport<N, Z>, StepError> {
+        let last = &self.record.last;
+        let (start, held, iterations) = (last.start, last.step_multipliers, last.newton_iterations);
+        let taken_by = (last.method, last.multipliers);
+        end_report(
+            &mut self.model,
+            start,
+            end,
+            held,
+            iterations,
+            None,
+            taken_by,
+        )
     }
 
     /// The next event function found at the last step end and not yet returned.
