@@ -1,7 +1,7 @@
 //! The orchestration's own rules, each on a hand-written scene (`crate::testing`): where a step
 //! with a crossing is aimed, what re-anchoring forgets, which time event comes next, which
-//! failures are retried, when a constraint's gradient has vanished. Whole runs are in the root
-//! crate's `tests/suite`.
+//! failures are retried, when a constraint's gradient has vanished, what the report says when a
+//! contact opens. Whole runs are in the root crate's `tests/suite`.
 
 use super::every_stage::retried;
 use super::*;
@@ -186,4 +186,42 @@ fn failures_off_the_trajectory_s_reach_are_retried_and_refusals_are_not() {
         },
     ];
     assert!(!final_ones.iter().any(retried));
+}
+
+#[test]
+fn opening_a_contact_reports_the_last_step_again_from_the_same_start_by_the_same_method() {
+    // The ball resting on its floor under its weight: the contact closed, `λ = F = -m g`
+    // (`M q'' = F - Gᵀλ` with `G = 1`).
+    let start = Start {
+        q: Vector::zeros(),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let mut sim = Simulator::new(&BALL, start, Options::default()).unwrap();
+    assert!(sim.model.open_gaps().is_empty());
+    for _ in 0..2 {
+        sim.step().unwrap();
+    }
+    let before = *sim.last();
+    assert!(
+        (before.end.lambda[0] + 19.62).abs() < 1e-9,
+        "{}",
+        before.end.lambda[0]
+    );
+    sim.open_contacts(GapSet::first(1)).unwrap();
+    let after = *sim.last();
+    assert!(sim.model.open_gaps().contains(0));
+    // The same step, ending where it ended, now without the floor's force.
+    assert_eq!(after.start, before.start);
+    assert_eq!((after.end.t, after.end.q), (before.end.t, before.end.q));
+    assert_eq!(after.step_multipliers, before.step_multipliers);
+    assert_eq!(after.newton_iterations, before.newton_iterations);
+    assert_eq!(
+        (after.method, after.multipliers),
+        (before.method, before.multipliers)
+    );
+    assert_eq!(after.end.lambda[0], 0.0);
+    assert_eq!(sim.lambda, after.end.lambda);
+    // Free fall from there.
+    assert!((after.end.a[0] + 9.81).abs() < 1e-12, "{}", after.end.a[0]);
 }
