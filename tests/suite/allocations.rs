@@ -211,8 +211,9 @@ fn the_sparse_simulator_allocates_only_when_built() {
 
 /// The sparse storage: the structure's 200 coordinates with an implicit method (its sparse
 /// iteration matrix refreshed and factorised again and again), quadratic multipliers and the gap,
-/// and with Dormand–Prince; nothing allocated once the simulator is built. On a thread with a
-/// 16 MiB stack: this test's own frames are unoptimised.
+/// with Dormand–Prince, and with the default `Automatic`, whose hand-over to ESDIRK 5(4) takes
+/// the method built with the simulator; nothing allocated once the simulator is built. On a
+/// thread with a 16 MiB stack: this test's own frames are unoptimised.
 #[test]
 fn the_sparse_storage_allocates_only_when_built() {
     let run = std::thread::Builder::new()
@@ -221,10 +222,19 @@ fn the_sparse_storage_allocates_only_when_built() {
             let scene = common::structure::Structure100::paper();
             let (q0, v0) = scene.start();
             let mut counts = Vec::new();
-            for method in [InnerMethod::Esdirk54, InnerMethod::DormandPrince54] {
+            let methods = [
+                InnerMethod::Esdirk54,
+                InnerMethod::DormandPrince54,
+                InnerMethod::Automatic,
+            ];
+            for method in methods {
+                let multipliers = match method {
+                    InnerMethod::Automatic => MultiplierModel::Automatic,
+                    _ => MultiplierModel::Quadratic,
+                };
                 let options = Options {
                     method,
-                    multipliers: MultiplierModel::Quadratic,
+                    multipliers,
                     step: StepControl::adaptive(1e-6),
                     ..Options::default()
                 };
@@ -243,13 +253,23 @@ fn the_sparse_storage_allocates_only_when_built() {
                 // to 0.06 s).
                 let allocations = allocations_during(&mut sim, 1000);
                 let factorizations = sim.statistics().iteration_matrix_factorizations;
-                counts.push((method, allocations, factorizations, sim.time()));
+                counts.push((
+                    method,
+                    allocations,
+                    factorizations,
+                    sim.time(),
+                    sim.method(),
+                ));
             }
             counts
         })
         .unwrap();
-    for (method, allocations, factorizations, t) in run.join().unwrap() {
+    for (method, allocations, factorizations, t, last) in run.join().unwrap() {
         assert_eq!(allocations, 0, "{method:?}");
+        if method == InnerMethod::Automatic {
+            assert_eq!(last, InnerMethod::Esdirk54);
+            assert!(factorizations > 1, "{factorizations}");
+        }
         if method == InnerMethod::Esdirk54 {
             assert!(factorizations > 1, "{factorizations}");
             assert!(
@@ -258,4 +278,29 @@ fn the_sparse_storage_allocates_only_when_built() {
             );
         }
     }
+}
+
+/// The method the default's hand-over takes is built again by a change of options, not in the
+/// loop: on the sparse storage, started at rtol 1e-6 and changed to 1e-8, the stiff support
+/// hands over to ESDIRK 4(3) without allocating. (That it is ESDIRK 4(3)'s workspace, not the
+/// one built for 1e-6, is the runtime's unit test `the_hand_over_takes_the_method_built_for_the_options_it_runs_under`.)
+#[test]
+fn a_changed_tolerance_builds_the_method_for_the_hand_over_again() {
+    let scene = common::spring_support::SpringSupportedPendulum::STIFF;
+    let sparse = WithStorage::<_, zeitner::storage::Sparse>::new(&scene);
+    let start = Start {
+        q: Vector::from(scene.start()),
+        v: Vector::zeros(),
+        t: 0.0,
+    };
+    let at = |rtol| Options {
+        step: StepControl::adaptive(rtol),
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(&sparse, start, at(1e-6)).unwrap();
+    sim.set_options(at(1e-8)).unwrap();
+    let allocations = allocations_during(&mut sim, 200);
+    assert!(sim.statistics().turned_implicit_after.is_some());
+    assert_eq!(sim.method(), InnerMethod::Esdirk43);
+    assert_eq!(allocations, 0);
 }

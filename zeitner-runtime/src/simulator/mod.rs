@@ -82,6 +82,8 @@ type Held<S, T, const N: usize, const Z: usize> =
 pub struct Simulator<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> {
     model: Model<'s, S, N, Z>,
     method: Held<S, AnyMethod<N, Z, S::Storage>, N, Z>,
+    /// The implicit method `Automatic` turns to, built ahead where the storage allocates.
+    stiff_method: reconfigure::Spare<S, AnyMethod<N, Z, S::Storage>, N, Z>,
     /// The workspace of the Newton's step-end sensitivity to the multipliers' coefficients.
     end_sensitivity: Held<S, EndSensitivity<N, Z>, N, Z>,
     /// The method that steps now: the options' one, `Automatic` resolved.
@@ -160,6 +162,7 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
                 options.multipliers,
                 options.step,
             )),
+            stiff_method: reconfigure::stiff_spare::<S, N, Z>(&options),
             end_sensitivity: S::Storage::hold(EndSensitivity::zeros()),
             active: first,
             stiffness: StiffnessTest::default(),

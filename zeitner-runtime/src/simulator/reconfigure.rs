@@ -11,6 +11,20 @@ use crate::scalar::Float;
 use crate::storage::Storage;
 use crate::system::ConstrainedSystem;
 
+/// `T` kept as scene `S`'s storage keeps a spare.
+pub(super) type Spare<S, T, const N: usize, const Z: usize> =
+    <<S as ConstrainedSystem<N, Z>>::Storage as Storage<N>>::Spare<T>;
+
+/// The implicit method [`InnerMethod::Automatic`] turns to under `options`, built now where the
+/// storage allocates (so that the hand-over allocates nothing in the loop), none otherwise.
+pub(super) fn stiff_spare<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    options: &Options,
+) -> Spare<S, AnyMethod<N, Z, S::Storage>, N, Z> {
+    let (multipliers, step) = (options.multipliers, options.step);
+    let next = options.method.when_stiff(step);
+    S::Storage::spare(next.map(|next| move || AnyMethod::new::<S>(next, multipliers, step)))
+}
+
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
     /// Changes the options; the state is kept, unless a tighter `constraint_tolerance` than it
     /// meets makes it consistent again, with the contacts as they are (see
@@ -70,6 +84,11 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
             self.stiffness = StiffnessTest::default();
         }
         self.method.use_step_control(options.step);
+        // The spare the hand-over takes is built for the options it runs under.
+        let spare_for = |o: &Options| (o.method, o.multipliers, o.step);
+        if !self.active.is_implicit() && spare_for(&options) != spare_for(&previous_options) {
+            self.stiff_method = stiff_spare::<S, N, Z>(&options);
+        }
         self.model.set_slip_floor(tolerance);
         self.watch = watch;
         // New options may cure a stall: the next steps are watched afresh.
@@ -231,8 +250,10 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         let Some(next) = self.options.method.when_stiff(self.options.step) else {
             return;
         };
-        let method = AnyMethod::new::<S>(next, self.options.multipliers, self.options.step);
-        let previous = core::mem::replace(&mut self.method, S::Storage::hold(method));
+        let (multipliers, step) = (self.options.multipliers, self.options.step);
+        let build = || AnyMethod::new::<S>(next, multipliers, step);
+        let method = S::Storage::take_spare(&mut self.stiff_method, build);
+        let previous = core::mem::replace(&mut self.method, method);
         let factorizations = Method::<N, Z, S::Storage>::factorizations(&*previous);
         self.statistics.iteration_matrix_factorizations += factorizations;
         self.active = next;

@@ -225,3 +225,29 @@ fn opening_a_contact_reports_the_last_step_again_from_the_same_start_by_the_same
     // Free fall from there.
     assert!((after.end.a[0] + 9.81).abs() < 1e-12, "{}", after.end.a[0]);
 }
+
+/// `Automatic`'s hand-over takes the implicit method built for the options it runs under, on a
+/// storage that builds it ahead: the one built for rtol 1e-6 (ESDIRK 5(4)) is built again when
+/// the options change to 1e-8, where the run turns to ESDIRK 4(3), of order 4.
+#[cfg(all(feature = "alloc", feature = "implicit", feature = "high-order"))]
+#[test]
+fn the_hand_over_takes_the_method_built_for_the_options_it_runs_under() {
+    let sparse = crate::WithStorage::<_, crate::storage::Sparse>::new(&PENDULUM);
+    let (q, v) = swinging();
+    let at = |rtol| Options {
+        step: StepControl::adaptive(rtol),
+        ..Options::default()
+    };
+    let mut sim = Simulator::new(&sparse, Start { q, v, t: 0.0 }, at(1e-6)).unwrap();
+    sim.set_options(at(1e-8)).unwrap();
+    // Steps bound by stability, as the stiffness test would find them.
+    for _ in 0..100 {
+        if sim.active.is_implicit() {
+            break;
+        }
+        sim.watch_stiffness(Some(2.0));
+    }
+    assert_eq!(sim.active, InnerMethod::Esdirk43);
+    let method = &*sim.method;
+    assert_eq!(Method::<2, 1, crate::storage::Sparse>::order(method), 4);
+}

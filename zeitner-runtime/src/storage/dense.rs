@@ -19,6 +19,7 @@ impl<const N: usize> Storage<N> for Dense {
     type Iteration = DenseIteration<N>;
     type Rows<T: Copy + 'static, const L: usize> = [T; L];
     type Held<T: 'static> = InPlace<T>;
+    type Spare<T: 'static> = core::marker::PhantomData<fn() -> T>;
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>(
     ) -> Result<DenseDerivatives<N>, StepError> {
@@ -41,6 +42,14 @@ impl<const N: usize> Storage<N> for Dense {
 
     fn hold<T: 'static>(value: T) -> InPlace<T> {
         InPlace(value)
+    }
+
+    fn spare<T: 'static>(_: Option<impl FnOnce() -> T>) -> Self::Spare<T> {
+        core::marker::PhantomData
+    }
+
+    fn take_spare<T: 'static>(_: &mut Self::Spare<T>, build: impl FnOnce() -> T) -> InPlace<T> {
+        InPlace(build())
     }
 }
 

@@ -84,6 +84,11 @@ pub trait Storage<const N: usize>: Sized + 'static {
     /// One value a simulator keeps for its whole run, its method's workspace: in place where
     /// the scene is small, on the heap where its stage vectors would fill a thread's stack.
     type Held<T: 'static>: core::ops::Deref<Target = T> + core::ops::DerefMut;
+    /// A value a run may need later (the implicit method [`crate::InnerMethod::Automatic`]
+    /// turns to), kept until then: built with the simulator where this storage allocates, so
+    /// that taking it allocates nothing in the loop; not kept where values are held in place
+    /// (nothing to allocate when it is built, and no second workspace on the stack meanwhile).
+    type Spare<T: 'static>;
 
     /// The derivatives' workspace for `S`, or the refusal naming what this storage cannot hold.
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<Self::Derivatives, StepError>;
@@ -93,6 +98,13 @@ pub trait Storage<const N: usize>: Sized + 'static {
     fn rows<T: Copy + 'static, const L: usize>(fill: T) -> Self::Rows<T, L>;
     /// `value`, held as this storage holds a run's workspace.
     fn hold<T: 'static>(value: T) -> Self::Held<T>;
+    /// What `build` makes kept as a spare (by a storage that allocates), or nothing kept.
+    fn spare<T: 'static>(build: Option<impl FnOnce() -> T>) -> Self::Spare<T>;
+    /// The spare, or what `build` makes where none is kept, held; the spare is gone after.
+    fn take_spare<T: 'static>(
+        spare: &mut Self::Spare<T>,
+        build: impl FnOnce() -> T,
+    ) -> Self::Held<T>;
 }
 
 /// An N×N matrix as a storage keeps it. Used in [`Storage`]'s example.

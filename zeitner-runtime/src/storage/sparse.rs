@@ -34,6 +34,7 @@ impl<const N: usize> Storage<N> for Sparse {
     type Iteration = SparseIteration;
     type Rows<T: Copy + 'static, const L: usize> = Box<[T]>;
     type Held<T: 'static> = Box<T>;
+    type Spare<T: 'static> = Option<Box<T>>;
 
     fn derivatives<S: JacobianSource<N, Z>, const Z: usize>() -> Result<SparseDerivatives, StepError>
     {
@@ -56,6 +57,14 @@ impl<const N: usize> Storage<N> for Sparse {
 
     fn hold<T: 'static>(value: T) -> Box<T> {
         Box::new(value)
+    }
+
+    fn spare<T: 'static>(build: Option<impl FnOnce() -> T>) -> Option<Box<T>> {
+        build.map(|build| Box::new(build()))
+    }
+
+    fn take_spare<T: 'static>(spare: &mut Option<Box<T>>, build: impl FnOnce() -> T) -> Box<T> {
+        spare.take().unwrap_or_else(|| Box::new(build()))
     }
 }
 
