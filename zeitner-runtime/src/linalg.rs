@@ -97,6 +97,12 @@ pub(crate) fn ldl_solve<const Z: usize, const C: usize>(
     a: &Matrix<Z, Z>,
     b: &Matrix<Z, C>,
 ) -> Option<Matrix<Z, C>> {
+    if Z == 1 {
+        // One pivot, the largest and the smallest: the same tests and division, without the
+        // loops' bookkeeping (a pendulum's or a ball's every stage solves this).
+        let d = a[(0, 0)];
+        return (d > 0.0 && d > RELATIVE_PIVOT * d).then(|| b / d);
+    }
     // `l` holds `L` below its diagonal and `D` on it.
     let mut l = *a;
     let (mut lo, mut hi) = (Float::INFINITY, 0.0 as Float);
@@ -373,6 +379,26 @@ mod tests {
         assert!(solve_spd(&indefinite, &Vector::<2>::repeat(1.0), 2).is_err());
         let nan = Matrix::<2, 2>::new(Float::NAN, 0.0, 0.0, 1.0);
         assert!(solve_spd(&nan, &Vector::<2>::repeat(1.0), 2).is_err());
+    }
+
+    #[test]
+    fn a_single_pivot_divides_and_refuses_what_the_general_elimination_refuses() {
+        let b = Matrix::<1, 2>::new(3.0, -1.5);
+        let x = ldl_solve(&Matrix::<1, 1>::new(0.75), &b).unwrap();
+        assert_eq!(x, Matrix::<1, 2>::new(4.0, -2.0));
+        for d in [0.0, -1.0, Float::NAN, Float::INFINITY] {
+            assert!(ldl_solve(&Matrix::<1, 1>::new(d), &b).is_none(), "{d}");
+        }
+        // The 2×2 elimination on a decoupled pair: the same quotient and the same refusals.
+        let pair = |d| Matrix::<2, 2>::new(d, 0.0, 0.0, d);
+        let both = ldl_solve(&pair(0.75), &Matrix::<2, 1>::new(3.0, 3.0)).unwrap();
+        assert_eq!(both[0], x[0]);
+        for d in [0.0, -1.0, Float::NAN, Float::INFINITY] {
+            assert!(
+                ldl_solve(&pair(d), &Matrix::<2, 1>::new(1.0, 1.0)).is_none(),
+                "{d}"
+            );
+        }
     }
 
     #[test]

@@ -5,7 +5,7 @@
 #![allow(clippy::excessive_precision)]
 
 use super::continuous::{self, weighted, Extension};
-use super::explicit::{patterned, row, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
+use super::explicit::{patterned, row, Difference, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -111,6 +111,7 @@ pub(crate) const DOP853: Tableau<12> = patterned(Tableau {
         ]),
     ],
     nonzeros: Nonzeros::NONE,
+    probe_difference: Difference::NONE,
     b: B,
     c: [
         0.0,

@@ -39,6 +39,9 @@ pub(crate) struct Tableau<const S: usize> {
     pub embedded_order: Option<u32>,
     /// How the steps estimate the stiffness, if they can.
     pub stiffness: Option<StiffnessProbe>,
+    /// The nonzero coefficients of the probe's second stage less its first
+    /// ([`ProbeStates::Stages`]), found by [`patterned`]: the estimate skips the zeros.
+    pub probe_difference: Difference<S>,
 }
 
 /// Hairer's stiffness test for a tableau (Hairer & Wanner, *Solving ODEs II*, IV.2): `h‖Δf‖/‖Δy‖`
@@ -98,9 +101,56 @@ impl<const S: usize> Nonzeros<S> {
     }
 }
 
+/// The nonzero entries of one row of coefficients, by column, in ascending order.
+pub(crate) struct Difference<const S: usize> {
+    columns: [u8; S],
+    weights: [Float; S],
+    count: u8,
+}
+
+impl<const S: usize> Difference<S> {
+    /// Before [`patterned`] fills it in (and where the tableau compares no two stages).
+    pub const NONE: Self = Difference {
+        columns: [0; S],
+        weights: [0.0; S],
+        count: 0,
+    };
+
+    /// `a[second] - a[first]` where it is not zero.
+    const fn between(a: &[[Float; S]; S], first: usize, second: usize) -> Self {
+        let mut difference = Self::NONE;
+        let mut j = 0;
+        while j < S {
+            let weight = a[second][j] - a[first][j];
+            if weight != 0.0 {
+                difference.columns[difference.count as usize] = j as u8;
+                difference.weights[difference.count as usize] = weight;
+                difference.count += 1;
+            }
+            j += 1;
+        }
+        difference
+    }
+
+    /// `(column, weight)` of each nonzero entry.
+    #[inline(always)]
+    fn entries(&self) -> impl Iterator<Item = (usize, Float)> + '_ {
+        let n = self.count as usize;
+        let columns = self.columns[..n].iter().map(|&j| usize::from(j));
+        columns.zip(self.weights[..n].iter().copied())
+    }
+}
+
 /// `tableau` with its nonzeros found.
 pub(crate) const fn patterned<const S: usize>(mut tableau: Tableau<S>) -> Tableau<S> {
     tableau.nonzeros = Nonzeros::of(&tableau.a);
+    if let Some(StiffnessProbe {
+        states: ProbeStates::Stages(first, second),
+        ..
+    }) = &tableau.stiffness
+    {
+        tableau.probe_difference = Difference::between(&tableau.a, *first, *second);
+    }
     tableau
 }
 
@@ -122,6 +172,7 @@ pub(crate) const RK4: Tableau<4> = patterned(Tableau {
         [0.0, 0.0, 1.0, 0.0],
     ],
     nonzeros: Nonzeros::NONE,
+    probe_difference: Difference::NONE,
     b: [1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
     c: [0.0, 0.5, 0.5, 1.0],
     e: None,
@@ -168,6 +219,7 @@ pub(crate) const DOPRI5: Tableau<7> = patterned(Tableau {
         ],
     ],
     nonzeros: Nonzeros::NONE,
+    probe_difference: Difference::NONE,
     b: [
         35.0 / 384.0,
         0.0,
@@ -519,13 +571,18 @@ pub(crate) fn index1_stages<S, const N: usize, const Z: usize, const ST: usize>(
 where
     S: ConstrainedSystem<N, Z>,
 {
-    for i in 0..ST {
+    // The first stage is the start, whose acceleration may be known.
+    let solved_from = match first {
+        Some(a) => {
+            (kq[0], kv[0], lambdas[0]) = (*v0, *a, Vector::repeat(Float::NAN));
+            1
+        }
+        None => 0,
+    };
+    for i in solved_from..ST {
         let (q, v) = stage_state(tableau, i, h, (q0, v0), (&*kq, &*kv));
         kq[i] = v;
-        (kv[i], lambdas[i]) = match first.filter(|_| i == 0) {
-            Some(a) => (*a, Vector::repeat(Float::NAN)),
-            None => stage_acceleration(model, t0 + tableau.c[i] * h, q, v)?,
-        };
+        (kv[i], lambdas[i]) = stage_acceleration(model, t0 + tableau.c[i] * h, q, v)?;
     }
     let mut end = solution(tableau, h, (q0, v0), (&*kq, &*kv));
     if stiffness && cfg!(feature = "implicit") {
@@ -550,12 +607,10 @@ fn stiffness_estimate<const N: usize, const ST: usize>(
     };
     // The two stages' difference straight from the slopes, without forming either state.
     let (mut dq, mut dv) = (Vector::<N>::zeros(), Vector::<N>::zeros());
-    for j in 0..second {
-        let w = h * (tableau.a[second][j] - tableau.a[first][j]);
-        if w != 0.0 {
-            dq += w * kq[j];
-            dv += w * kv[j];
-        }
+    for (j, weight) in tableau.probe_difference.entries() {
+        let w = h * weight;
+        dq += w * kq[j];
+        dv += w * kv[j];
     }
     let size = start.0.norm_squared() + start.1.norm_squared();
     let slopes = (dq, dv, kv[second] - kv[first]);

@@ -9,7 +9,8 @@
 //! `hem5.f` lists them (subroutine `COEF`, as vendored in Siconos' `externals/hairer`).
 
 use super::explicit::{
-    index1_stages, patterned, row, solution, stage_state, weighted_end, Nonzeros, Tableau,
+    index1_stages, patterned, row, solution, stage_state, weighted_end, Difference, Nonzeros,
+    Tableau,
 };
 use super::{EndSensitivity, Method, Start, StepEnd};
 use crate::error::{InvalidOption, StepError};
@@ -65,6 +66,7 @@ pub(crate) const HEM5: Tableau<8> = patterned(Tableau {
         ]),
     ],
     nonzeros: Nonzeros::NONE,
+    probe_difference: Difference::NONE,
     b: B,
     c: [
         0.0,

@@ -9,7 +9,7 @@
 #![allow(clippy::excessive_precision)]
 
 use super::continuous::{self, weighted, Extension};
-use super::explicit::{patterned, row, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
+use super::explicit::{patterned, row, Difference, Nonzeros, ProbeStates, StiffnessProbe, Tableau};
 use crate::consistency::consistent_point;
 use crate::error::StepError;
 use crate::model::Model;
@@ -386,6 +386,7 @@ const fn leading<const L: usize>(a: &[[Float; STAGES]; STAGES]) -> [[Float; L]; 
 pub(crate) const VERNER98: Tableau<16> = patterned(Tableau {
     a: leading(&A),
     nonzeros: Nonzeros::NONE,
+    probe_difference: Difference::NONE,
     b: B,
     c: {
         let mut c = [0.0; 16];
