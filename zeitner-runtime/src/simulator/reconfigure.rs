@@ -15,14 +15,23 @@ use crate::system::ConstrainedSystem;
 pub(super) type Spare<S, T, const N: usize, const Z: usize> =
     <<S as ConstrainedSystem<N, Z>>::Storage as Storage<N>>::Spare<T>;
 
+/// The implicit method [`InnerMethod::Automatic`] turns to under `options` and how to build it
+/// (`None` for a method that is kept whatever the run): one recipe for the spare and the
+/// hand-over.
+fn stiff_method<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
+    options: &Options,
+) -> Option<(InnerMethod, impl FnOnce() -> AnyMethod<N, Z, S::Storage>)> {
+    let (multipliers, step) = (options.multipliers, options.step);
+    let next = options.method.when_stiff(step)?;
+    Some((next, move || AnyMethod::new::<S>(next, multipliers, step)))
+}
+
 /// The implicit method [`InnerMethod::Automatic`] turns to under `options`, built now where the
 /// storage allocates (so that the hand-over allocates nothing in the loop), none otherwise.
 pub(super) fn stiff_spare<S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize>(
     options: &Options,
 ) -> Spare<S, AnyMethod<N, Z, S::Storage>, N, Z> {
-    let (multipliers, step) = (options.multipliers, options.step);
-    let next = options.method.when_stiff(step);
-    S::Storage::spare(next.map(|next| move || AnyMethod::new::<S>(next, multipliers, step)))
+    S::Storage::spare(stiff_method::<S, N, Z>(options).map(|(_, build)| build))
 }
 
 impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'s, S, N, Z> {
@@ -247,11 +256,9 @@ impl<'s, S: ConstrainedSystem<N, Z>, const N: usize, const Z: usize> Simulator<'
         if !self.stiffness.record(h_lambda) {
             return;
         }
-        let Some(next) = self.options.method.when_stiff(self.options.step) else {
+        let Some((next, build)) = stiff_method::<S, N, Z>(&self.options) else {
             return;
         };
-        let (multipliers, step) = (self.options.multipliers, self.options.step);
-        let build = || AnyMethod::new::<S>(next, multipliers, step);
         let method = S::Storage::take_spare(&mut self.stiff_method, build);
         let previous = core::mem::replace(&mut self.method, method);
         let factorizations = Method::<N, Z, S::Storage>::factorizations(&*previous);
